@@ -1,0 +1,35 @@
+#pragma once
+// First and second fundamental forms and curvatures from the derivatives of a parametrisation.
+//
+// Conventions (FORMATS.md, "Orientation and curvature"):
+//   N = x_u ^ x_v / |x_u ^ x_v|,  E,F,G = <x_u,x_u>, <x_u,x_v>, <x_v,x_v>,
+//   e,f,g = <x_uu,N>, <x_uv,N>, <x_vv,N>,
+//   K = (eg - f^2)/(EG - F^2),  H = (eG - 2fF + gE) / (2(EG - F^2)).
+// So z = u^2 + v^2 has H = +2 at the origin.
+#include <Eigen/Core>
+
+namespace bpde {
+
+/// Position and derivatives up to order two of a surface at one parameter point.
+struct SurfaceJet {
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  Eigen::Vector3d xu = Eigen::Vector3d::Zero(), xv = Eigen::Vector3d::Zero();
+  Eigen::Vector3d xuu = Eigen::Vector3d::Zero(), xuv = Eigen::Vector3d::Zero(),
+                  xvv = Eigen::Vector3d::Zero();
+};
+
+/// Differential geometry at one point. When the parametrisation is singular there
+/// (|x_u ^ x_v| <= 1e-14 (|x_u| |x_v|), or a zero derivative) `regular` is false and the normal,
+/// second fundamental form and curvatures are set to 0: they are never NaN.
+struct FundamentalForms {
+  bool regular = false;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  double E = 0, F = 0, G = 0;  ///< first fundamental form
+  double e = 0, f = 0, g = 0;  ///< second fundamental form
+  double K = 0;                ///< Gaussian curvature
+  double H = 0;                ///< mean curvature
+};
+
+FundamentalForms fundamental_forms(const SurfaceJet& jet);
+
+}  // namespace bpde

@@ -1,0 +1,72 @@
+#pragma once
+// Typed exceptions of bezierpde.
+//
+// Every error the library raises derives from bpde::Error. Errors caused by bad input (the
+// caller's data is malformed, of the wrong size, non-finite, a degree too low for the method, a
+// singular parameter matrix, ...) derive from bpde::InvalidInput; the command maps them to one
+// line `error: ...` and exit status 2. A valid request that has no solution (a fold in a
+// continuation, no convergence, incompatible data) is NOT an exception: solvers report it in their
+// Summary (converged = false, message), and the command exits 1.
+#include <stdexcept>
+#include <string>
+
+namespace bpde {
+
+/// Base class of every exception bezierpde throws.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The input is not acceptable (command exit status 2). The message names the problem and,
+/// where known, where it is (a JSON path such as `net.points[3][1]`).
+class InvalidInput : public Error {
+ public:
+  using Error::Error;
+};
+
+/// Malformed JSON, a value of the wrong JSON type, an unknown field, a missing field.
+class ParseError : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+/// A missing or unreadable file, or one that cannot be written.
+class FileError : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+/// A degree out of range or too low for the method.
+class DegreeError : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+/// Arrays of the wrong size (point counts, matrix shapes, knot counts).
+class SizeError : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+/// NaN or infinite numbers, or numbers that overflow.
+class NonFiniteError : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+/// A parameter outside its valid set: a singular G, epsilon <= 0, a non-elliptic operator for a
+/// method that needs ellipticity, an option out of range, ...
+class ParameterError : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+/// A combination of net kind, fixed set and problem that the method cannot use (for example
+/// `u-boundaries` with a fourth-order PDE), or a solver that this build does not provide.
+class UnsupportedProblem : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+}  // namespace bpde
