@@ -1,0 +1,33 @@
+#pragma once
+// CGAL checks of a sampled surface. This header is CGAL-free on purpose: checks/mesh_checks.cpp is
+// the only translation unit of the project that includes CGAL, so its compile cost is paid once.
+//
+// Input: plain arrays.
+//   vertices:  3*#V doubles, (x, y, z) per vertex;
+//   triangles: 3*#F vertex indices, counter-clockwise in the parameter plane (so the geometric
+//              normal agrees with x_u ^ x_v).
+#include <optional>
+#include <vector>
+
+namespace bpde {
+
+struct MeshCheckReport {
+  /// Number of pairs of non-adjacent triangles that intersect (CGAL::Polygon_mesh_processing::
+  /// self_intersections after merging coincident vertices).
+  int self_intersections = 0;
+  /// True when the sampled surface (after merging coincident vertices) is a closed 2-manifold.
+  bool closed = false;
+  /// Enclosed volume: of the surface itself when closed, or of the surface capped by its planar
+  /// boundary when that boundary is planar; empty otherwise. Sign: positive when the normals
+  /// point outwards.
+  std::optional<double> volume;
+  /// Algebraic volume of the cone from the origin over the surface: (1/6) sum det(a, b, c) over
+  /// the triangles. For a patch this is the mesh analogue of V = 1/3 int <x_u ^ x_v, x>.
+  double cone_volume = 0.0;
+};
+
+/// Run the checks. Throws SizeError (from core/errors.h) for arrays whose length is not a
+/// multiple of 3, indices out of range, or non-finite coordinates (NonFiniteError).
+MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vector<int>& triangles);
+
+}  // namespace bpde
