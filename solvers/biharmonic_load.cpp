@@ -177,19 +177,32 @@ double admissibility_defect(const TensorNet& load) {
   check_square_degree(load, 4, "admissibility_defect");
   const int n = load.n();
   const Eigen::MatrixX3d p = to_factorial_power(load);
-  const double scale = p.cwiseAbs().maxCoeff();
-  if (scale == 0.0) return 0.0;
+  // Rounding scale of each p_ij: i! j! (|M| |R| |M|^T)_ij, M the Bernstein-to-power matrix.
+  const Eigen::MatrixXd Ma = bernstein_to_power_matrix(n).cwiseAbs();
+  Eigen::MatrixXd pabs = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  for (int c = 0; c < 3; ++c) {
+    const Eigen::Map<const RowMat> R(load.points().col(c).data(), n + 1, n + 1);
+    pabs = pabs.cwiseMax(Ma * R.cwiseAbs() * Ma.transpose());
+  }
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) pabs(i, j) *= factorial(i) * factorial(j);
   auto P = [&](int i, int j, int c) { return p(i * (n + 1) + j, c); };
-  double defect = 0.0;
-  for (int c = 0; c < 3; ++c)
-    for (int m = n - 1; m <= n; ++m)
-      for (int i = 0; i <= n; ++i) {
-        const int K = (n - i) / 2;
+  double defect = 0.0, scale = 0.0;
+  for (int m = n - 1; m <= n; ++m)
+    for (int i = 0; i <= n; ++i) {
+      const int K = (n - i) / 2;
+      double s1 = pabs(i, m), s2 = pabs(m, i);
+      for (int l = 1; l <= K - 1; ++l) {
+        s1 += (K - l) * pabs(i + 2 * l, m - 2 * l) / K;
+        s2 += (K - l) * pabs(m - 2 * l, i + 2 * l) / K;
+      }
+      scale = std::max({scale, s1, s2});
+      for (int c = 0; c < 3; ++c) {
         double rhs1 = 0.0, rhs2 = 0.0;
         for (int l = 1; l <= K - 1; ++l) {
-          const double s = ((l - 1) % 2 == 0 ? 1.0 : -1.0) * (K - l);
-          rhs1 += s * P(i + 2 * l, m - 2 * l, c);
-          rhs2 += s * P(m - 2 * l, i + 2 * l, c);
+          const double sg = ((l - 1) % 2 == 0 ? 1.0 : -1.0) * (K - l);
+          rhs1 += sg * P(i + 2 * l, m - 2 * l, c);
+          rhs2 += sg * P(m - 2 * l, i + 2 * l, c);
         }
         if (K > 0) {
           rhs1 /= K;
@@ -197,7 +210,8 @@ double admissibility_defect(const TensorNet& load) {
         }
         defect = std::max({defect, std::abs(P(i, m, c) - rhs1), std::abs(P(m, i, c) - rhs2)});
       }
-  return defect / scale;
+    }
+  return scale > 0.0 ? defect / scale : 0.0;
 }
 
 }  // namespace bpde

@@ -60,8 +60,11 @@ TensorNet complete_admissible_load(const TensorNet& load);
 /// load, the load is admissible iff for m in {n-1, n} and i = 0..n
 ///   p_{i,m} = (1/K) sum_{l=1}^{K-1} (-1)^(l-1) (K-l) p_{i+2l, m-2l},  K = floor((n-i)/2),
 /// and the same with the indices swapped (K = 0 reads p_{i,m} = 0; never divides by zero).
-/// Returns max |lhs - rhs| over all those equations and the 3 coordinates, divided by
-/// max |p_ij| (0 for the zero load). Goes through the power basis: meaningful up to n ~ 15.
+/// Returns max |lhs - rhs| over all those equations and the 3 coordinates, divided by the
+/// largest rounding scale of those equations (sum of |terms|, each |p_ij| bounded by
+/// i! j! (|M| |R| |M|^T)_ij with M the Bernstein-to-power matrix); 0 for the zero load.
+/// Admissible loads give ~1e-15..1e-12; a generic net gives O(1e-3..1). Goes through the power
+/// basis: meaningful up to n ~ 15.
 double admissibility_defect(const TensorNet& load);
 
 }  // namespace bpde
