@@ -65,6 +65,36 @@ struct LoadSolver {
   Eigen::MatrixXd G;
 };
 
+// The interior system is ill-conditioned in n (cond ~1e6 at n = 12, ~1e11 at n = 18), so G is
+// computed with a long-double LU and refined twice with residuals evaluated in binary128 from
+// exact matrix entries.
+using quad = __float128;
+using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+
+quad qbinom(int n, int k) {
+  if (k < 0 || k > n) return 0;
+  quad r = 1;
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+// T_d = elevation(n-d -> n) * derivative(n -> n-d) in quad, (n+1) x (n+1) row-major.
+std::vector<quad> qderivative_at_degree(int n, int d) {
+  std::vector<quad> T(static_cast<size_t>((n + 1) * (n + 1)), 0);
+  if (d > n) return T;
+  std::vector<quad> D(static_cast<size_t>((n - d + 1) * (n + 1)), 0);
+  quad s = 1;
+  for (int k = 0; k < d; ++k) s *= (n - k);
+  for (int j = 0; j <= n - d; ++j)
+    for (int k = 0; k <= d; ++k) D[static_cast<size_t>(j * (n + 1) + j + k)] = s * ((d - k) % 2 ? -1 : 1) * qbinom(d, k);
+  for (int r = 0; r <= n; ++r)
+    for (int i = std::max(0, r - d); i <= std::min(r, n - d); ++i) {
+      const quad e = qbinom(n - d, i) * qbinom(d, r - i) / qbinom(n, r);
+      for (int c = 0; c <= n; ++c) T[static_cast<size_t>(r * (n + 1) + c)] += e * D[static_cast<size_t>(i * (n + 1) + c)];
+    }
+  return T;
+}
+
 std::shared_ptr<const LoadSolver> load_solver(int n) {
   static std::mutex mutex;
   static std::map<int, std::shared_ptr<const LoadSolver>> cache;
@@ -76,14 +106,55 @@ std::shared_ptr<const LoadSolver> load_solver(int n) {
   auto s = std::make_shared<LoadSolver>();
   s->interior = interior_indices(n);
   s->fixed = TensorNet(n, n).fixed_indices(FixedSet::BoundaryAdjacent);
-  const Eigen::MatrixXd Op = bilaplacian_operator(n, 1.0, 2.0, 1.0);
+  const int n1 = n + 1, N = n1 * n1;
   const int ni = static_cast<int>(s->interior.size()), nf = static_cast<int>(s->fixed.size());
-  Eigen::MatrixXd A(ni, ni), B(ni, nf);
+  const std::vector<quad> T4 = qderivative_at_degree(n, 4), T2 = qderivative_at_degree(n, 2);
+  auto t4 = [&](int i, int k) { return T4[static_cast<size_t>(i * n1 + k)]; };
+  auto t2 = [&](int i, int k) { return T2[static_cast<size_t>(i * n1 + k)]; };
+  // (Op X)(i,j) = sum_k T4(i,k) X(k,j) + 2 sum_kl T2(i,k) T2(j,l) X(k,l) + sum_l T4(j,l) X(i,l).
+  auto op_entry = [&](int i, int j, int k, int l) -> quad {
+    return (j == l ? t4(i, k) : quad(0)) + 2 * t2(i, k) * t2(j, l) + (i == k ? t4(j, l) : quad(0));
+  };
+  MatL A(ni, ni), B(ni, nf);
   for (int r = 0; r < ni; ++r) {
-    for (int c = 0; c < ni; ++c) A(r, c) = Op(s->interior[r], s->interior[c]);
-    for (int c = 0; c < nf; ++c) B(r, c) = Op(s->interior[r], s->fixed[c]);
+    const int i = s->interior[static_cast<size_t>(r)] / n1, j = s->interior[static_cast<size_t>(r)] % n1;
+    for (int c = 0; c < ni; ++c)
+      A(r, c) = static_cast<long double>(op_entry(i, j, s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1));
+    for (int c = 0; c < nf; ++c)
+      B(r, c) = static_cast<long double>(op_entry(i, j, s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1));
   }
-  s->G = -Eigen::PartialPivLU<Eigen::MatrixXd>(A).solve(B);
+  const Eigen::PartialPivLU<MatL> lu(A);
+  MatL G = -lu.solve(B);
+  std::vector<quad> X(static_cast<size_t>(N));
+  for (int step = 0; step < (n <= 8 ? 0 : 2); ++step) {
+    MatL R(ni, nf);
+    for (int c = 0; c < nf; ++c) {
+      std::fill(X.begin(), X.end(), quad(0));
+      for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = G(r, c);
+      X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
+      // Y = T2 X T2^T (then the other terms entrywise on the interior rows).
+      std::vector<quad> XT(static_cast<size_t>(N), 0);
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+          quad acc = 0;
+          for (int l = 0; l <= n; ++l)
+            if (t2(j, l) != 0) acc += X[static_cast<size_t>(i * n1 + l)] * t2(j, l);
+          XT[static_cast<size_t>(i * n1 + j)] = acc;
+        }
+      for (int r = 0; r < ni; ++r) {
+        const int i = s->interior[static_cast<size_t>(r)] / n1, j = s->interior[static_cast<size_t>(r)] % n1;
+        quad acc = 0;
+        for (int k = 0; k <= n; ++k) {
+          if (t2(i, k) != 0) acc += 2 * t2(i, k) * XT[static_cast<size_t>(k * n1 + j)];
+          if (t4(i, k) != 0) acc += t4(i, k) * X[static_cast<size_t>(k * n1 + j)];
+          if (t4(j, k) != 0) acc += t4(j, k) * X[static_cast<size_t>(i * n1 + k)];
+        }
+        R(r, c) = static_cast<long double>(acc);
+      }
+    }
+    G -= lu.solve(R);
+  }
+  s->G = G.cast<double>();
   std::lock_guard<std::mutex> lock(mutex);
   return cache.emplace(n, std::move(s)).first->second;
 }

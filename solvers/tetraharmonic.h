@@ -19,12 +19,17 @@
 //     (eqs. (17), (18), (21), (22)); then for k = n, n-1, ..., 2 the 2x2 systems S^k, S_k
 //     (eqs. (19), (20), (23), (24)) give a_2k, a_3k, a_k2, a_k3, and Lemma 2's pentadiagonal
 //     (1,4,6,4,1) systems give the diagonal i + j = k + 3 (i, j >= 4); a_ij = 0 for
-//     i + j >= n + 4 (Remark 4). Works in the power basis: accuracy falls with n (about
-//     1e-13 relative at n = 7, see docs/c1.md for the measured table).
+//     i + j >= n + 4 (Remark 4). Works in the (factorial) power basis.
 //   LU (default): least squares of the (n+1)^2 Bernstein coefficients (at degree (n,n)) of Δ⁴x
-//     over the interior points, by Householder QR. The data always admit an exact solution
-//     (Theorem 1), so the least-squares residual is zero up to rounding. The solution operator
-//     (interior = G * data) is computed once per degree and cached (thread-safe).
+//     over the interior points. The data always admit an exact solution (Theorem 1), so the
+//     least-squares residual is zero up to rounding. The matrix is ill-conditioned
+//     (cond ~3e6 at n = 12, ~5e13 at n = 20), so the solution operator (interior = G * data) is
+//     computed by a long-double Householder QR refined twice with residuals evaluated in binary128
+//     from exact entries; it is computed once per degree and cached (thread-safe; ~0.1 s at
+//     n = 12, ~1-2 s at n = 20). A solve is then one (n-3)^2 x (8n-8) product.
+//   Accuracy: the problem itself amplifies data rounding (the interior grows like ~1e9 x the data
+//     at n = 20, NOTES.md), so both methods recover an exact tetraharmonic polynomial to about
+//     1e-14 (n = 8), 1e-12 (n = 12), 1e-9 (n = 16), 1e-8 (n = 18) relative; see docs/c1.md.
 #include <Eigen/Core>
 #include <string>
 
