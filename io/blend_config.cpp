@@ -106,6 +106,9 @@ BlendConfig blend_config_from_json(const json& j) {
 
   p.a = number(j["a"], "a");
   if (!(p.a > 0)) throw ParameterError("a must be > 0 (got " + std::to_string(p.a) + ")");
+  if (p.a < 1e-6 || p.a > 1e6)
+    throw ParameterError("a must be in [1e-6, 1e6] (got " + std::to_string(p.a) +
+                         "): beyond, the discrete problem is numerically singular");
   p.epsilon = number(j["epsilon"], "epsilon");
   if (!(p.epsilon > 0))
     throw ParameterError("epsilon must be > 0 (got " + std::to_string(p.epsilon) + ")");

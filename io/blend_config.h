@@ -7,14 +7,14 @@
 //    "points": [[x, y], ...], "data": [[x, y, z], ...], "samples": N}
 //
 // - partition: k intervals in x, l in y (integers in 1..BfsSpace::kMaxPartition);
-// - a > 0: the operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y; epsilon > 0;
+// - 1e-6 <= a <= 1e6: the operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y; epsilon > 0;
 // - edges: value and ∂/∂y at the k+1 nodes x_i = i/k of y = 0 and y = 1 (all four required);
 // - points / data: the approximation points A ⊂ [0,1]² and their values β; optional (default
 //   empty), equal lengths;
 // - samples: optional mesh resolution N (default 50, 1..4096).
 // Parsing is strict: an unknown field, a missing field or a value of the wrong JSON type is a
 // ParseError; a number that overflows (1e999) or is not finite is a NonFiniteError; arrays of the
-// wrong length are a SizeError; ε <= 0, a <= 0, a partition or samples out of range or a point
+// wrong length are a SizeError; ε <= 0, a outside [1e-6, 1e6], a partition or samples out of range or a point
 // outside [0,1]² is a ParameterError. Every message names the field (a JSON path such as
 // `edges.y0.value[3][1]`).
 #include <nlohmann/json_fwd.hpp>

@@ -4,6 +4,8 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <limits>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -29,6 +31,12 @@ void require_edge(const Eigen::MatrixX3d& M, int k, const std::string& name) {
   require_finite(M, name);
 }
 
+std::string sci(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", v);
+  return buf;
+}
+
 }  // namespace
 
 void SmoothingSplineProblem::validate() const {
@@ -38,10 +46,11 @@ void SmoothingSplineProblem::validate() const {
                          ", " + std::to_string(l) + "])");
   if (!std::isfinite(a)) throw NonFiniteError("a is not finite");
   if (!(a > 0)) throw ParameterError("a must be > 0 (the operator must be strongly elliptic)");
+  if (a < 1e-6 || a > 1e6)
+    throw ParameterError("a must be in [1e-6, 1e6]: beyond, the terms of (u,v)_L differ by more "
+                         "than 1e12 and the discrete problem is numerically singular");
   if (!std::isfinite(epsilon)) throw NonFiniteError("epsilon is not finite");
   if (!(epsilon > 0)) throw ParameterError("epsilon must be > 0");
-  if (!std::isfinite(a * a) || !std::isfinite(2 * a))
-    throw NonFiniteError("a: a^2 overflows");
   require_edge(y0_value, k, "edges.y0.value");
   require_edge(y0_dy, k, "edges.y0.dy");
   require_edge(y1_value, k, "edges.y1.value");
@@ -143,6 +152,7 @@ struct SmoothingSplineSolver::Impl {
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
   Eigen::SparseMatrix<double> Cff, Cfc;
+  double kkt_scale = 1.0;
   bool factored = false;
   std::string factor_message;
 };
@@ -202,9 +212,12 @@ SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& probl
     for (int col = 0; col < m.C.outerSize(); ++col)
       for (Eigen::SparseMatrix<double>::InnerIterator it(m.C, col); it; ++it)
         t.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+    // Equilibrate: D is scaled by s = max |C_ij| so that the LU pivots see blocks of one size
+    // (the constraint rows then read s·α_c = s·y).
+    m.kkt_scale = std::max(m.C.coeffs().cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
     for (int c = 0; c < nc; ++c) {
-      t.emplace_back(m.constrained[c], n + c, 1.0);
-      t.emplace_back(n + c, m.constrained[c], 1.0);
+      t.emplace_back(m.constrained[c], n + c, m.kkt_scale);
+      t.emplace_back(n + c, m.constrained[c], m.kkt_scale);
     }
     Eigen::SparseMatrix<double> K(n + nc, n + nc);
     K.setFromTriplets(t.begin(), t.end());
@@ -233,7 +246,10 @@ SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& probl
     m.Cfc.setFromTriplets(tc.begin(), tc.end());
     m.ldlt.compute(m.Cff);
     m.factored = m.ldlt.info() == Eigen::Success && (m.ldlt.vectorD().array() > 0).all();
-    if (!m.factored) m.factor_message = "the reduced system is not positive definite";
+    if (!m.factored)
+      m.factor_message =
+          "the reduced system is numerically singular (epsilon or a too small for the data "
+          "term?)";
   }
 }
 
@@ -278,7 +294,7 @@ SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem&
   } else if (m.options.method == SmoothingSplineOptions::Method::kKktLu) {
     Eigen::MatrixXd rhs(n + nc, 3);
     rhs.topRows(n) = F;
-    rhs.bottomRows(nc) = y;
+    rhs.bottomRows(nc) = m.kkt_scale * y;
     const Eigen::MatrixXd z = m.lu.solve(rhs);
     alpha = z.topRows(n);
   } else {
@@ -305,18 +321,49 @@ SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem&
   const double cscale = std::max(y.cwiseAbs().maxCoeff(), alpha.cwiseAbs().maxCoeff());
   const double constraint = cscale > 0 ? cmax / cscale : cmax;
   SmoothingSplineResult result{SmoothingSpline(V, Eigen::MatrixX3d::Zero(n, 3)), 0, 0, 0, 0, {}, {}};
+  // J of eq. (6) for a field
+  Eigen::MatrixX3d Fl = Fload;
+  auto functional = [&](const Eigen::MatrixX3d& c, double& misfit, double& maxerr, double& energy) {
+    const Eigen::MatrixX3d r = m.A * c - problem.data;
+    misfit = r.squaredNorm();
+    maxerr = r.rows() ? r.rowwise().norm().maxCoeff() : 0.0;
+    energy = (c.transpose() * (m.R * c)).trace();
+    return misfit + problem.epsilon * (energy - 2 * (Fl.transpose() * c).trace());
+  };
+  // The feasible field with the free dofs at 0: σ must do at least as well.
+  Eigen::MatrixX3d v0 = Eigen::MatrixX3d::Zero(n, 3);
+  for (int c = 0; c < nc; ++c) v0.row(m.constrained[c]) = y.row(c);
+  double mis0, err0, en0;
+  const double J0 = functional(v0, mis0, err0, en0);
+  if (!std::isfinite(J0))
+    throw NonFiniteError(
+        "the boundary data, data, load or epsilon are too large: the functional of eq. (6) overflows");
+  double mis = 0, err = 0, en = 0, J = 0;
+  if (alpha.allFinite()) J = functional(alpha, mis, err, en);
   if (m.factored) {
-    if (!alpha.allFinite()) {
+    if (!alpha.allFinite() || !std::isfinite(J)) {
       summary.converged = false;
-      summary.message = "the linear solve produced non-finite coefficients";
+      summary.message =
+          "the linear solve produced non-finite values (ill-conditioned: epsilon or a too small "
+          "or too large?)";
       alpha.setZero();
+      J = functional(alpha, mis, err, en);
+    } else if (const double en_abs =
+                   (alpha.cwiseAbs().transpose() * (m.R.cwiseAbs() * alpha.cwiseAbs())).trace();
+               J > J0 + 1e-9 * (std::abs(J0) + std::abs(J)) || en < -1e-10 * en_abs ||
+               (!problem.load && J < -1e-9 * J0)) {  // without load 0 <= J(sigma) <= J0
+      summary.converged = false;
+      summary.residual = stationarity;
+      summary.message =
+          "the linear solve is inaccurate: J(sigma) exceeds J of a feasible field, or J < 0 "
+          "(ill-conditioned: epsilon or a too small or too large?)";
     } else {
       summary.residual = stationarity;
       summary.converged = stationarity <= 1e-11 && constraint <= 1e-11;
       if (!summary.converged)
         summary.message = "the linear solve is inaccurate: stationarity residual " +
-                          std::to_string(stationarity) + ", constraint residual " +
-                          std::to_string(constraint) + " (ill-conditioned; increase epsilon?)";
+                          sci(stationarity) + ", constraint residual " + sci(constraint) +
+                          " (ill-conditioned: epsilon or a too small or too large?)";
       else
         summary.message = m.options.method == SmoothingSplineOptions::Method::kKktLu
                               ? "solved the KKT system of eq. (8) by sparse LU"
@@ -326,12 +373,12 @@ SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem&
   result.spline = SmoothingSpline(V, alpha);
   result.multipliers.resize(nc, 3);
   for (int c = 0; c < nc; ++c) result.multipliers.row(c) = -g.row(m.constrained[c]);
-  const Eigen::MatrixX3d misfit = m.A * alpha - problem.data;
-  result.data_misfit = misfit.squaredNorm();
-  result.max_data_error = misfit.rows() ? misfit.rowwise().norm().maxCoeff() : 0.0;
-  result.energy = (alpha.transpose() * (m.R * alpha)).trace();
-  const double load_term = (Fload.transpose() * alpha).trace();
-  result.functional = result.data_misfit + problem.epsilon * (result.energy - 2 * load_term);
+  if (!result.multipliers.allFinite()) result.multipliers.setZero();
+  if (!std::isfinite(summary.residual)) summary.residual = 0.0;
+  result.data_misfit = mis;
+  result.max_data_error = err;
+  result.energy = en;
+  result.functional = J;
   summary.iterations = 0;
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   result.summary = summary;

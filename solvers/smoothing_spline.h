@@ -41,7 +41,7 @@ namespace bpde {
 struct SmoothingSplineProblem {
   int k = 8;  ///< intervals in x
   int l = 4;  ///< intervals in y
-  double a = 1.0;        ///< operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y; a > 0
+  double a = 1.0;        ///< operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y; 1e-6 <= a <= 1e6
   double epsilon = 1.0;  ///< ε > 0
   /// Prescribed values and ∂/∂y at the k+1 nodes x_i = i/k of the edges y = 0 and y = 1, each
   /// (k+1) by 3, row i for node x_i.
@@ -53,7 +53,8 @@ struct SmoothingSplineProblem {
   /// element.
   std::function<Eigen::Vector3d(double, double)> load;
 
-  /// Throws ParameterError (k, l out of 1..BfsSpace::kMaxPartition, ε <= 0, a <= 0, a point
+  /// Throws ParameterError (k, l out of 1..BfsSpace::kMaxPartition, ε <= 0, a outside
+  /// [1e-6, 1e6] (beyond, the discrete problem is numerically singular), a point
   /// outside [0,1]²), SizeError (edge arrays not (k+1) by 3, points/data row counts differ) or
   /// NonFiniteError (NaN/inf anywhere), naming the field.
   void validate() const;

@@ -234,6 +234,20 @@ TEST(SmoothingSpline, ApproachesTheDataLinearlyInEpsilon) {
   EXPECT_GT(far.max_data_error, 0.1);
 }
 
+TEST(SmoothingSpline, NumericallySingularProblemsAreReportedNotConverged) {
+  // eps = 1e-300: the data term swamps the energy; the reduced system is singular in doubles.
+  for (auto method : {SmoothingSplineOptions::Method::kKktLu,
+                      SmoothingSplineOptions::Method::kElimination}) {
+    SmoothingSplineOptions o;
+    o.method = method;
+    const auto r = solve_smoothing_spline(cylinders(10.0, 1e-300, true), o);
+    EXPECT_FALSE(r.summary.converged);
+    EXPECT_FALSE(r.summary.message.empty());
+    EXPECT_TRUE(std::isfinite(r.functional));
+    EXPECT_TRUE(r.spline.coefficients().allFinite());
+  }
+}
+
 TEST(SmoothingSpline, SolverReusesItsFactorisation) {
   SmoothingSplineProblem p = cylinders(1.0, 1e-3, true);
   SmoothingSplineSolver solver(p);
@@ -305,6 +319,12 @@ TEST(SmoothingSpline, BadProblemsThrowTypedErrors) {
   bad = good;
   bad.a = 0;
   EXPECT_THROW(solve_smoothing_spline(bad), ParameterError);
+  bad = good;
+  bad.a = 2e6;
+  EXPECT_THROW(solve_smoothing_spline(bad), ParameterError);
+  bad = good;
+  bad.data *= 1e300;  // finite, but J overflows
+  EXPECT_THROW(solve_smoothing_spline(bad), NonFiniteError);
   bad = good;
   bad.epsilon = std::numeric_limits<double>::infinity();
   EXPECT_THROW(solve_smoothing_spline(bad), NonFiniteError);
