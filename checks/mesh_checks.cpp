@@ -30,7 +30,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -56,10 +55,11 @@ int find_root(std::vector<int>& parent, int i) {
   return i;
 }
 
-/// Union of the points closer than tol (spatial hash with cells of size tol, 27 neighbours).
-/// Returns for each input vertex the index of its representative (the smallest index of its
-/// cluster).
-std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double tol) {
+/// Union of the points closer than tol (spatial hash). Only points inside the box [lo, hi]
+/// (the referenced vertices' bounding box) take part; the others stay alone. Returns for each
+/// input vertex the index of its representative (the smallest index of its cluster).
+std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double tol,
+                                  const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
   const int n = static_cast<int>(p.size());
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
@@ -68,12 +68,9 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
     // All points coincide exactly or the mesh is a single point: merge exact duplicates only.
     tol = 0;
   }
-  auto cell_of = [&](const Eigen::Vector3d& x) {
-    if (tol == 0) return std::array<std::int64_t, 3>{0, 0, 0};
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(x[0] / tol)),
-                                       static_cast<std::int64_t>(std::floor(x[1] / tol)),
-                                       static_cast<std::int64_t>(std::floor(x[2] / tol))};
-  };
+  // Cells of size 2 tol: a point within tol of x lies in x's cell or, along each axis, in the
+  // neighbour on the side of the nearer cell face, so 8 cells are searched.
+  const double cell = 2 * tol;
   struct CellHash {
     std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
       std::size_t h = static_cast<std::size_t>(c[0]) * 73856093u;
@@ -82,24 +79,40 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
       return h;
     }
   };
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellHash> grid;
+  // cell -> last point inserted in it; next_in_cell chains the others
+  std::unordered_map<std::array<std::int64_t, 3>, int, CellHash> grid;
   grid.reserve(static_cast<std::size_t>(n) * 2);
+  std::vector<int> next_in_cell(n, -1);
   const double tol2 = tol * tol;
   for (int i = 0; i < n; ++i) {
-    const auto c = cell_of(p[i]);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == grid.end()) continue;
-          for (int j : it->second) {
-            if ((p[i] - p[j]).squaredNorm() <= tol2) {
-              const int ri = find_root(parent, i), rj = find_root(parent, j);
-              if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
-            }
-          }
+    if ((p[i].array() < lo.array()).any() || (p[i].array() > hi.array()).any()) continue;
+    std::array<std::int64_t, 3> c{0, 0, 0}, side{0, 0, 0};
+    if (cell > 0)
+      for (int a = 0; a < 3; ++a) {
+        // (p - lo) / cell <= diagonal / (2e-10 diagonal): no overflow of the cell index
+        const double q = (p[i][a] - lo[a]) / cell, f = std::floor(q);
+        c[a] = static_cast<std::int64_t>(f);
+        side[a] = q - f < 0.5 ? -1 : 1;
+      }
+    for (int mask = 0; mask < 8; ++mask) {
+      if (cell == 0 && mask) break;
+      const std::array<std::int64_t, 3> key{c[0] + ((mask & 1) ? side[0] : 0),
+                                            c[1] + ((mask & 2) ? side[1] : 0),
+                                            c[2] + ((mask & 4) ? side[2] : 0)};
+      auto it = grid.find(key);
+      if (it == grid.end()) continue;
+      for (int j = it->second; j >= 0; j = next_in_cell[j]) {
+        if ((p[i] - p[j]).squaredNorm() <= tol2) {
+          const int ri = find_root(parent, i), rj = find_root(parent, j);
+          if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
         }
-    grid[c].push_back(i);
+      }
+    }
+    auto [it, inserted] = grid.try_emplace(c, i);
+    if (!inserted) {
+      next_in_cell[i] = it->second;
+      it->second = i;
+    }
   }
   std::vector<int> rep(n);
   for (int i = 0; i < n; ++i) rep[i] = find_root(parent, i);
@@ -170,42 +183,67 @@ int count_self_intersections(const std::vector<Tri>& tris, const std::vector<Poi
 // ------------------------------------------------------------------ topology
 using Edge = std::pair<int, int>;
 
-/// Directed-edge multiplicities of the soup.
-std::map<Edge, int> directed_edges(const std::vector<Tri>& tris) {
-  std::map<Edge, int> e;
+/// Directed-edge multiplicities of the soup, keyed by (a << 32) | b.
+struct EdgeMap {
+  std::unordered_map<std::uint64_t, int> count;
+  static std::uint64_t key(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+           static_cast<std::uint32_t>(b);
+  }
+  int find(int a, int b) const {
+    auto it = count.find(key(a, b));
+    return it == count.end() ? 0 : it->second;
+  }
+  template <class F>
+  void for_each(F f) const {
+    for (const auto& [k, m] : count) f(static_cast<int>(k >> 32), static_cast<int>(k & 0xffffffffu), m);
+  }
+};
+
+EdgeMap directed_edges(const std::vector<Tri>& tris) {
+  EdgeMap e;
+  e.count.reserve(tris.size() * 4);
   for (const auto& t : tris)
-    for (int k = 0; k < 3; ++k) ++e[{t[k], t[(k + 1) % 3]}];
+    for (int k = 0; k < 3; ++k) ++e.count[EdgeMap::key(t[k], t[(k + 1) % 3])];
   return e;
 }
 
 /// Every undirected edge has exactly two triangles, in opposite directions, and every vertex's
 /// link is one cycle.
-bool is_closed_manifold(const std::vector<Tri>& tris, const std::map<Edge, int>& de) {
+bool is_closed_manifold(const std::vector<Tri>& tris, const EdgeMap& de, int num_vertices) {
   if (tris.empty()) return false;
-  for (const auto& [e, m] : de) {
-    if (m != 1) return false;
-    auto it = de.find({e.second, e.first});
-    if (it == de.end() || it->second != 1) return false;
-  }
-  // vertex links: at vertex a of triangle (a, b, c), the link edge b -> c.
-  std::unordered_map<int, std::vector<Edge>> link;
+  bool ok = true;
+  de.for_each([&](int a, int b, int m) {
+    if (m != 1 || de.find(b, a) != 1) ok = false;
+  });
+  if (!ok) return false;
+  // vertex links: at vertex a of triangle (a, b, c), the link edge b -> c (CSR by vertex).
+  std::vector<int> start(num_vertices + 1, 0);
   for (const auto& t : tris)
-    for (int k = 0; k < 3; ++k) link[t[k]].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
-  for (auto& [v, edges] : link) {
-    std::unordered_map<int, int> next;
-    for (const auto& [b, c] : edges) {
-      if (next.count(b)) return false;
-      next[b] = c;
-    }
-    int start = edges.front().first, cur = start;
-    std::size_t steps = 0;
+    for (int k = 0; k < 3; ++k) ++start[t[k] + 1];
+  for (int v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
+  std::vector<Edge> link(start.back());
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) link[fill[t[k]]++] = {t[(k + 1) % 3], t[(k + 2) % 3]};
+  for (int v = 0; v < num_vertices; ++v) {
+    const int lo = start[v], hi = start[v + 1];
+    if (lo == hi) continue;  // unreferenced vertex
+    std::sort(link.begin() + lo, link.begin() + hi);
+    for (int e = lo + 1; e < hi; ++e)
+      if (link[e].first == link[e - 1].first) return false;  // two link edges leave b
+    auto next = [&](int b) {
+      auto it = std::lower_bound(link.begin() + lo, link.begin() + hi, Edge{b, -1});
+      return (it != link.begin() + hi && it->first == b) ? it->second : -1;
+    };
+    const int first = link[lo].first;
+    int cur = first, steps = 0;
     do {
-      auto it = next.find(cur);
-      if (it == next.end()) return false;
-      cur = it->second;
+      cur = next(cur);
+      if (cur < 0) return false;
       ++steps;
-    } while (cur != start && steps <= edges.size());
-    if (cur != start || steps != edges.size()) return false;
+    } while (cur != first && steps <= hi - lo);
+    if (cur != first || steps != hi - lo) return false;  // one cycle through every link edge
   }
   return true;
 }
@@ -216,7 +254,7 @@ double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vec
 
 /// Volume of the soup closed by planar caps over its boundary loops, or empty when the boundary
 /// is not a set of disjoint planar loops or the soup is not closed up to them.
-std::optional<double> capped_volume(const std::vector<Tri>& tris, const std::map<Edge, int>& de,
+std::optional<double> capped_volume(const std::vector<Tri>& tris, const EdgeMap& de,
                                     const std::vector<Eigen::Vector3d>& X, const Eigen::Vector3d& o,
                                     bool closed) {
   if (tris.empty()) return std::nullopt;
@@ -227,20 +265,23 @@ std::optional<double> capped_volume(const std::vector<Tri>& tris, const std::map
 
   // Boundary: directed edges a -> b whose reverse is missing. Interior edges must pair up.
   std::unordered_map<int, int> out;  // boundary successor
-  for (const auto& [e, m] : de) {
-    auto it = de.find({e.second, e.first});
-    const int rev = it == de.end() ? 0 : it->second;
+  bool ok = true;
+  de.for_each([&](int a, int b, int m) {
+    const int rev = de.find(b, a);
     if (m == 1 && rev == 0) {
-      if (out.count(e.first)) return std::nullopt;  // pinched boundary vertex
-      out[e.first] = e.second;
+      if (!out.emplace(a, b).second) ok = false;  // pinched boundary vertex
     } else if (m != 1 || rev != 1) {
-      return std::nullopt;  // non-manifold or inconsistently oriented edge
+      ok = false;  // non-manifold or inconsistently oriented edge
     }
-  }
-  if (out.empty()) return std::nullopt;  // closed as a chain but not a manifold
+  });
+  if (!ok || out.empty()) return std::nullopt;  // (empty: closed as a chain, not a manifold)
+  // deterministic loop order (the sum does not depend on it beyond rounding)
+  std::vector<int> starts;
+  starts.reserve(out.size());
+  for (const auto& [a, b] : out) starts.push_back(a);
+  std::sort(starts.begin(), starts.end());
   std::unordered_map<int, bool> used;
-  for (const auto& [start, unused] : out) {
-    (void)unused;
+  for (int start : starts) {
     if (used[start]) continue;
     std::vector<int> loop;
     int cur = start;
@@ -326,7 +367,7 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
   if (!std::isfinite(diag))
     throw NonFiniteError("mesh check: the vertex coordinates overflow (bounding box not finite)");
 
-  const std::vector<int> rep = merge_coincident(X, 1e-10 * diag);
+  const std::vector<int> rep = merge_coincident(X, 1e-10 * diag, lo, hi);
   // compact the representatives
   std::vector<int> newid(nv, -1);
   int nm = 0;
@@ -354,7 +395,7 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
 
   report.self_intersections = count_self_intersections(tris, P);
   const auto de = directed_edges(tris);
-  report.closed = is_closed_manifold(tris, de);
+  report.closed = is_closed_manifold(tris, de, nm);
   report.volume = capped_volume(tris, de, Y, o, report.closed);
   if (report.volume && !std::isfinite(*report.volume))
     throw NonFiniteError("mesh check: the enclosed volume overflows (coordinates too large)");

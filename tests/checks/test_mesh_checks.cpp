@@ -70,6 +70,25 @@ TEST(MeshChecks, UnitCubeFromSixSampledFacesIsClosedWithVolumeOne) {
   EXPECT_NEAR(r.cone_volume, 1.0, 1e-13);
 }
 
+TEST(MeshChecks, SmallCubeFarFromTheOriginWithAnUnreferencedFarVertex) {
+  Soup s;
+  using A = std::array<double, 3>;
+  const double o = 1e6, h = 1e-3;
+  auto f = [&](double x, double y, double z) { return A{o + h * x, o + h * y, o + h * z}; };
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(v, u, 0); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(u, v, 1); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(u, 0, v); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(v, 1, u); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(0, v, u); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(1, u, v); });
+  s.add_vertex(1e300, -1e300, 0);  // not used by any triangle
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_TRUE(r.closed);
+  EXPECT_EQ(r.self_intersections, 0);
+  ASSERT_TRUE(r.volume.has_value());
+  EXPECT_NEAR(*r.volume, h * h * h, 1e-6 * h * h * h);
+}
+
 TEST(MeshChecks, ReversedCubeHasNegativeVolume) {
   Soup s;
   using A = std::array<double, 3>;
