@@ -106,6 +106,11 @@ SurfaceJet SmoothingSpline::jet(double x, double y) const {
   return j;
 }
 
+BSplineNet SmoothingSpline::to_bspline_net() const {
+  BfsSpace::BSplineForm b = to_bspline();
+  return BSplineNet(3, 3, std::move(b.knots_x), std::move(b.knots_y), std::move(b.points));
+}
+
 TriangleMesh SmoothingSpline::sample(int N) const {
   if (N < 1 || N > 4096) throw ParameterError("samples must be in 1..4096");
   TriangleMesh mesh;

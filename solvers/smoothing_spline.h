@@ -33,6 +33,7 @@
 #include "core/differential_geometry.h"
 #include "core/mesh.h"
 #include "solvers/bfs_element.h"
+#include "tensor/bspline_net.h"
 #include "solvers/summary.h"
 
 namespace bpde {
@@ -94,6 +95,8 @@ class SmoothingSpline {
 
   /// The same surface as a FORMATS.md "bspline" net of degree (3, 3) (BfsSpace::to_bspline).
   BfsSpace::BSplineForm to_bspline() const { return space_.to_bspline(coef_); }
+  /// The same, as the project's B-spline net class (what `bpde blend` writes as "net").
+  BSplineNet to_bspline_net() const;
 
  private:
   BfsSpace space_;

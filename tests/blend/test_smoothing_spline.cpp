@@ -306,6 +306,21 @@ TEST(SmoothingSpline, BSplineNetOfTheSolutionMatches) {
   // the clamped corners are the surface's corners
   EXPECT_LT((B.points.row(0).transpose() - r.spline.evaluate(0, 0)).norm(), 1e-14);
   EXPECT_LT((B.points.row(18 * 10 - 1).transpose() - r.spline.evaluate(1, 1)).norm(), 1e-14);
+  // the project's B-spline class evaluates it to the same surface, derivatives included
+  const BSplineNet net = r.spline.to_bspline_net();
+  for (double x : {0.0, 0.1, 0.37, 0.5, 0.93, 1.0})
+    for (double y : {0.0, 0.2, 0.61, 1.0})
+      for (int d = 0; d < 3; ++d) {
+        const int dx = d == 1, dy = d == 2;
+        EXPECT_LT((net.derivative(x, y, dx, dy) - r.spline.evaluate(x, y, dx, dy)).norm(), 1e-11)
+            << x << " " << y << " " << d;
+      }
+  // and its sampler gives the same mesh as the spline's
+  const TriangleMesh a = r.spline.sample(20), b = sample_mesh(net, 20);
+  ASSERT_EQ(a.V.rows(), b.V.rows());
+  EXPECT_LT((a.V - b.V).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(a.F, b.F);
+  EXPECT_LT((a.H - b.H).cwiseAbs().maxCoeff(), 1e-8 * (1 + a.H.cwiseAbs().maxCoeff()));
 }
 
 TEST(SmoothingSpline, BadProblemsThrowTypedErrors) {
