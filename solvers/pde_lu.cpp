@@ -120,25 +120,59 @@ PdeStructure analyse_pde_structure(const std::vector<double>& c, int n, int m, F
   return out;
 }
 
-Eigen::MatrixXd pde_bernstein_matrix(const std::vector<PdeTerm>& terms, int n, int m) {
+namespace {
+
+// The solve runs in long double: the Bernstein matrix has condition ~1e16 at n = 20, so double
+// (and even a long double solve of a matrix rounded to double) loses every digit, while a long
+// double matrix built from exact-in-long-double binomials keeps the error near the data-rounding
+// floor (docs/pde_accuracy.md).
+using LD = long double;
+using MatL = Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic>;
+using VecL = Eigen::Matrix<LD, Eigen::Dynamic, 1>;
+
+LD binomial_ld(int n, int k) {
+  if (k < 0 || k > n) return 0;
+  LD r = 1;
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+// (n-d+1) x (n+1): Bernstein coefficients of the d-th derivative, elevated back to degree n:
+// (n+1) x (n+1) in total.
+MatL derivative_elevated_ld(int n, int d) {
+  MatL D = MatL::Identity(n + 1, n + 1);
+  for (int q = 0; q < d; ++q) {
+    const int k = n - q;
+    MatL S = MatL::Zero(k, k + 1);
+    for (int i = 0; i < k; ++i) {
+      S(i, i) = -k;
+      S(i, i + 1) = k;
+    }
+    D = (S * D).eval();
+  }
+  const int nd = n - d;
+  MatL E = MatL::Zero(n + 1, nd + 1);
+  for (int i = 0; i <= nd; ++i)
+    for (int j = i; j <= i + d; ++j) E(j, i) = binomial_ld(nd, i) * binomial_ld(d, j - i) / binomial_ld(n, j);
+  return E * D;
+}
+
+MatL bernstein_matrix_ld(const std::vector<PdeTerm>& terms, int n, int m) {
   const int N = (n + 1) * (m + 1);
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N, N);
+  MatL K = MatL::Zero(N, N);
   for (const PdeTerm& t : terms) {
     if (t.du > n || t.dv > m || t.c == 0.0) continue;
-    const Eigen::MatrixXd Au = bernstein_elevation_operator(n - t.du, t.du) * bernstein_derivative_operator(n, t.du);
-    const Eigen::MatrixXd Av = bernstein_elevation_operator(m - t.dv, t.dv) * bernstein_derivative_operator(m, t.dv);
+    const MatL Au = derivative_elevated_ld(n, t.du), Av = derivative_elevated_ld(m, t.dv);
     for (int i = 0; i <= n; ++i)
       for (int k = 0; k <= n; ++k) {
-        const double a = t.c * Au(i, k);
-        if (a == 0.0) continue;
+        const LD a = static_cast<LD>(t.c) * Au(i, k);
+        if (a == 0) continue;
         for (int j = 0; j <= m; ++j)
           for (int l = 0; l <= m; ++l) K(i * (m + 1) + j, k * (m + 1) + l) += a * Av(j, l);
       }
   }
   return K;
 }
-
-namespace {
 
 struct Split {
   std::vector<int> fixed, free;
@@ -149,8 +183,8 @@ Split split_indices(int n, int m, FixedSet fixed) {
   return {shape.fixed_indices(fixed), shape.free_indices(fixed)};
 }
 
-Eigen::MatrixXd columns(const Eigen::MatrixXd& K, const std::vector<int>& idx) {
-  Eigen::MatrixXd out(K.rows(), static_cast<Eigen::Index>(idx.size()));
+MatL columns(const MatL& K, const std::vector<int>& idx) {
+  MatL out(K.rows(), static_cast<Eigen::Index>(idx.size()));
   for (size_t q = 0; q < idx.size(); ++q) out.col(static_cast<Eigen::Index>(q)) = K.col(idx[q]);
   return out;
 }
@@ -172,11 +206,11 @@ void check_problem(const EnergySpec& op, FixedSet fixed) {
 
 // Column-equilibrated QR of K_FF. Returns the factorisation and the column scales.
 struct ScaledQR {
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
-  Eigen::VectorXd scale;
+  Eigen::ColPivHouseholderQR<MatL> qr;
+  VecL scale;
 };
 
-void factor(const Eigen::MatrixXd& KFF, ScaledQR& f) {
+void factor(const MatL& KFF, ScaledQR& f) {
   f.scale = KFF.colwise().norm().transpose();
   for (Eigen::Index q = 0; q < f.scale.size(); ++q)
     if (!(f.scale(q) > 0)) f.scale(q) = 1.0;
@@ -184,13 +218,18 @@ void factor(const Eigen::MatrixXd& KFF, ScaledQR& f) {
 }
 
 // Compatibility functionals: the k strongest directions of Q2^T K_FB, Q2 the left null space of K_FF.
-Eigen::MatrixXd compatibility_rows(const ScaledQR& f, const Eigen::MatrixXd& KFB, int k) {
+Eigen::MatrixXd compatibility_rows(const ScaledQR& f, const MatL& KFB, int k) {
   const Eigen::Index R = KFB.rows(), r = f.qr.cols();
-  const Eigen::MatrixXd Q = f.qr.householderQ() * Eigen::MatrixXd::Identity(R, R);
-  const Eigen::MatrixXd T = Q.rightCols(R - r).transpose() * KFB;
+  const MatL Q = f.qr.householderQ() * MatL::Identity(R, R);
+  const Eigen::MatrixXd T = (Q.rightCols(R - r).transpose() * KFB).cast<double>();
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(T, Eigen::ComputeThinV);
   Eigen::MatrixXd W = svd.matrixV().leftCols(k).transpose();  // unit rows
   return W;
+}
+
+Eigen::MatrixXd conditions_without_unknowns(const MatL& KFB, int k) {
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(KFB.cast<double>(), Eigen::ComputeThinV);
+  return svd.matrixV().leftCols(k).transpose();
 }
 
 double violation(const Eigen::MatrixXd& W, const Eigen::MatrixXd& XB) {
@@ -246,20 +285,17 @@ PdeMould::PdeMould(const EnergySpec& op, int n, int m, FixedSet fixed, const Pde
   fixed_idx_ = sp.fixed;
   free_idx_ = sp.free;
   if (!structure_.unique) return;
-  const Eigen::MatrixXd K = pde_bernstein_matrix(pde_operator_terms(op), n, m);
-  const Eigen::MatrixXd KFF = columns(K, free_idx_), KFB = columns(K, fixed_idx_);
+  const MatL K = bernstein_matrix_ld(pde_operator_terms(op), n, m);
+  const MatL KFF = columns(K, free_idx_), KFB = columns(K, fixed_idx_);
   if (free_idx_.empty()) {
     S_.resize(0, static_cast<Eigen::Index>(fixed_idx_.size()));
+    // No unknowns: the conditions are L x = 0 itself, K_FB x_B = 0.
+    if (structure_.conditions > 0) W_ = conditions_without_unknowns(KFB, structure_.conditions);
   } else {
     ScaledQR f;
     factor(KFF, f);
-    S_ = f.scale.cwiseInverse().asDiagonal() * f.qr.solve(-KFB);
+    S_ = (f.scale.cwiseInverse().asDiagonal() * f.qr.solve(MatL(-KFB))).cast<double>();
     if (structure_.conditions > 0) W_ = compatibility_rows(f, KFB, structure_.conditions);
-  }
-  if (free_idx_.empty() && structure_.conditions > 0) {
-    // No unknowns: the conditions are L x = 0 itself, K_FB x_B = 0.
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(KFB, Eigen::ComputeThinV);
-    W_ = svd.matrixV().leftCols(structure_.conditions).transpose();
   }
 }
 
@@ -299,21 +335,25 @@ PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeL
                                                 options.rank_tolerance);
   if (!st.unique) return not_unique(data, st, t0);
   const Split sp = split_indices(n, m, FixedSet::Boundary);
-  const Eigen::MatrixXd K = pde_bernstein_matrix(pde_operator_terms(op), n, m);
-  const Eigen::MatrixXd KFB = columns(K, sp.fixed);
+  const MatL K = bernstein_matrix_ld(pde_operator_terms(op), n, m);
+  const MatL KFB = columns(K, sp.fixed);
   const Eigen::MatrixXd XB = rows_of(data.points(), sp.fixed);
   Eigen::MatrixXd XF(static_cast<Eigen::Index>(sp.free.size()), 3);
   double viol = 0;
   if (!sp.free.empty()) {
     ScaledQR f;
     factor(columns(K, sp.free), f);
-    XF = f.scale.cwiseInverse().asDiagonal() * f.qr.solve(-(KFB * XB));
+    XF = (f.scale.cwiseInverse().asDiagonal() * f.qr.solve(MatL(-(KFB * XB.cast<LD>())))).cast<double>();
     if (st.conditions > 0) viol = violation(compatibility_rows(f, KFB, st.conditions), XB);
   } else if (st.conditions > 0) {
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(KFB, Eigen::ComputeThinV);
-    viol = violation(svd.matrixV().leftCols(st.conditions).transpose(), XB);
+    viol = violation(conditions_without_unknowns(KFB, st.conditions), XB);
   }
   return finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st, t0);
+}
+
+Eigen::MatrixXd pde_bernstein_matrix(const std::vector<PdeTerm>& terms, int n, int m) {
+  check_degrees(n, m, "pde_bernstein_matrix");
+  return bernstein_matrix_ld(terms, n, m).cast<double>();
 }
 
 }  // namespace bpde
