@@ -242,7 +242,10 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
         case ExplicitOperator::Family::GNorm: {
           const double Cs = F(2, s), Ds = F(3, s), Cp = F(2, s - 1), Dp = F(3, s - 1);
           const double M = Cs * Dp - Ds * Cp;  // M_s(C, D)
-          const double Mscale = (std::abs(Cs) + std::abs(Ds)) * (std::abs(Cp) + std::abs(Dp));
+          // Scale of M_s: the squared size of the sequences so far (they do not grow exponentially
+          // for rho <= 1, which the transposition ensures); C_s, D_s themselves can all vanish.
+          const double fmax = F.leftCols(s + 1).cwiseAbs().maxCoeff();
+          const double Mscale = fmax * fmax;
           const double y0 = a(s, 0), y1 = a(s - 1, 1), ysm = a(1, s - 1), ys = a(0, s);
           if (std::abs(M) > options.singular_tolerance * Mscale) {
             const double As = F(0, s), Bs = F(1, s), Ap = F(0, s - 1), Bp = F(1, s - 1);
@@ -307,6 +310,19 @@ PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, cons
   const TensorNet work = flip ? transpose(data) : data;
   if (flip) e = transposed(e);
   PdeSolution out{data, Summary{}};
+  if (e.family == ExplicitOperator::Family::GNorm && std::abs(e.rho - 1) < 1e-6) {
+    // rho = 1 and t != pi/2: all characteristic roots lie on the unit circle and M_s can vanish,
+    // also on the anti-diagonals s > n+1 that the closed form sets to 0. Check them all (the
+    // small monomial blocks; ~1 ms at n = 20, only in this degenerate case).
+    const PdeStructure st =
+        analyse_pde_structure({e.A, e.B, e.C, e.D, e.E}, n, n, FixedSet::Boundary, options.rank_tolerance);
+    if (!st.unique) {
+      out.summary.converged = false;
+      out.summary.message = st.diagnosis + "; the data are returned unchanged";
+      out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      return out;
+    }
+  }
   const Eigen::MatrixX3d a = explicit_pde_coefficients(work, e, options, out.summary);
   if (out.summary.converged && !a.allFinite()) {
     out.summary.converged = false;

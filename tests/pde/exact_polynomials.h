@@ -6,10 +6,12 @@
 // mu is a root of sum_j c_j mu^j = 0; for a double root mu, u (u + mu v)^(k-1) does too. The real
 // and imaginary parts of these, k <= deg, span exact solutions of total degree <= deg, which lie
 // in bidegree (deg, deg) and are exactly representable at any bidegree (n, m) >= (deg, deg).
+#include <cmath>
 #include <complex>
 #include <random>
 #include <vector>
 
+#include "solvers/pde_lu.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde::testing {
@@ -99,6 +101,19 @@ inline TensorNet boundary_only(const TensorNet& net, bool u_rows_only = false) {
 inline double relative_error(const TensorNet& P, const TensorNet& Q) {
   return (P.points() - Q.points()).rowwise().norm().maxCoeff() / Q.points().rowwise().norm().maxCoeff();
 }
+
+/// The data-rounding floor: rounding the prescribed points to double (relative 2^-53) moves the
+/// free points by up to |S|_inf * 2^-53 * max|x_B| (S = the mould's boundary-to-free map). No
+/// method that reads double data can beat it reliably; relative to max|P_exact|.
+inline double floor_error(const PdeMould& mould, const TensorNet& exact) {
+  double xb = 0;
+  for (int idx : mould.fixed_indices()) xb = std::max(xb, exact.points().row(idx).cwiseAbs().maxCoeff());
+  return std::ldexp(1.0, -53) * mould.interior_from_boundary().cwiseAbs().rowwise().sum().maxCoeff() * xb /
+         exact.points().rowwise().norm().maxCoeff();
+}
+
+/// Tolerance for exact recovery: 50 x the floor plus 1e-14. A wrong formula gives O(1) errors.
+inline double floor_tolerance(double floor) { return 50 * floor + 1e-14; }
 
 // Roots of the common operators (mu with sum_j c_j mu^j = 0, one of each conjugate pair).
 inline std::vector<Root> biharmonic_roots() { return {{cld(0, 1), true}}; }
