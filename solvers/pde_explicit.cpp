@@ -99,6 +99,10 @@ ExplicitOperator classify_explicit_operator(const EnergySpec& op) {
   if (op.order() != 4)
     throw UnsupportedProblem("pde: method \"explicit\" is for the fourth-order operators of seed 001; \"" + op.name() +
                              "\" is second order (use fixed \"u-boundaries\" for the harmonic PDE, or method \"lu\")");
+  if (op.kind() == EnergyKind::ModifiedBiharmonic && op.alpha() == 0.0)
+    throw ParameterError(
+        "pde: modified-biharmonic with alpha = 0 is x_uuuu = 0, which is not elliptic: the boundary does not "
+        "determine the patch");
   const auto& c = op.operator_coeffs();
   double scale = 0;
   for (double x : c) scale += std::abs(x);

@@ -300,6 +300,9 @@ PdeMould::PdeMould(const EnergySpec& op, int n, int m, FixedSet fixed, const Pde
 }
 
 void PdeMould::apply(const TensorNet& data, TensorNet& out) const {
+  if (!structure_.unique) throw UnsupportedProblem("pde mould: " + structure_.diagnosis);
+  if (data.n() != n_ || data.m() != m_ || out.n() != n_ || out.m() != m_)
+    throw DegreeError("pde mould: apply needs nets of the mould's degree");
   const Eigen::MatrixXd XB = rows_of(data.points(), fixed_idx_);
   const Eigen::MatrixXd XF = S_ * XB;
   for (size_t q = 0; q < fixed_idx_.size(); ++q) out.points().row(fixed_idx_[q]) = XB.row(static_cast<Eigen::Index>(q));

@@ -102,8 +102,9 @@ class PdeMould {
   /// least-squares net is returned). summary.residual = compatibility_violation(data).
   PdeSolution solve(const TensorNet& data) const;
 
-  /// The product only: out's free points = S * data's fixed points (out must have degree (n, m)).
-  /// No checks; for benchmarks and callers that already validated.
+  /// The product only: out's free points = S * data's fixed points, out's fixed points = data's.
+  /// Both nets must have degree (n, m) (DegreeError); UnsupportedProblem if the solution is not
+  /// unique. No compatibility check (see compatibility_violation).
   void apply(const TensorNet& data, TensorNet& out) const;
 
   /// Largest relative violation of the compatibility conditions by the data (0 if none).

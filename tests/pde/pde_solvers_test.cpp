@@ -225,6 +225,13 @@ TEST(PdeExplicit, WrongOperatorsAreUnsupported) {
   EXPECT_THROW(solve_pde_explicit(data, EnergySpec::dirichlet()), UnsupportedProblem);
   EXPECT_THROW(solve_pde_explicit(random_net(5, 6, 1), EnergySpec::biharmonic()), DegreeError);
   EXPECT_THROW(solve_pde_lu(data, EnergySpec::dirichlet()), UnsupportedProblem);
+  // Non-elliptic: modified biharmonic with alpha = 0 is x_uuuu = 0.
+  EXPECT_THROW(solve_pde_explicit(data, EnergySpec::modified_biharmonic(0.0)), ParameterError);
+  const PdeSolution flat = solve_pde_lu(data, EnergySpec::modified_biharmonic(0.0));
+  EXPECT_FALSE(flat.summary.converged);
+  EXPECT_NE(flat.summary.message.find("not unique"), std::string::npos) << flat.summary.message;
+  TensorNet out(6, 6);
+  EXPECT_THROW(PdeMould(EnergySpec::modified_biharmonic(0.0), 6, 6).apply(data, out), UnsupportedProblem);
   PdeExplicitOptions bad;
   bad.singular_tolerance = 0;
   EXPECT_THROW(solve_pde_explicit(data, EnergySpec::biharmonic(), bad), ParameterError);
