@@ -86,11 +86,22 @@ class ExtremalSolver {
   /// Same result through the stored factorisation (two triangular solves) instead of the mould.
   Eigen::MatrixX3d solve_factored(const Eigen::MatrixX3d& points) const;
 
-  /// Relative optimality residual of a net (N x 3): max over free rows and coordinates of
-  /// |(Q P)_I| / Σ_J |Q_IJ| |P_J| (0 when the denominator is 0).
+  /// Relative optimality residual of a net (N x 3) in Bernstein coordinates: max over free rows
+  /// and coordinates of |(Q P)_I| / Σ_J |Q_IJ| |P_J| (0 when the denominator is 0). Meaningful up
+  /// to degree ~16; beyond, Q_ff is numerically singular and this number says little (the exact
+  /// extremal rounded to double has residual ~1e-16, but so do far-off nets).
   double optimality_residual(const Eigen::MatrixX3d& points) const;
-  /// The energy 1/2 Σ_c P_c^T Q P_c.
+  /// The optimality condition in the solver's (conditioned) coordinates X_f = S Y for the fixed
+  /// data of `points`: Y from the factorisation, then max |A Y + A_fb X_b| / (|A| |Y| + |A_fb| |X_b|)
+  /// componentwise. This is what solve_extremal reports as Summary::residual.
+  double reduced_residual(const Eigen::MatrixX3d& points) const;
+  /// The energy 1/2 Σ_c P_c^T Q P_c of any net (N x 3). At high degree the extremal's Bernstein
+  /// coefficients are large and this sum cancels badly: use extremal_energy for the extremal.
   double energy(const Eigen::MatrixX3d& points) const;
+  /// The energy of the extremal with the fixed data of `points`, evaluated in the solver's
+  /// coordinates: 1/2 Σ_c (Y^T A Y + 2 Y^T A_fb X_b + X_b^T Q_bb X_b); accurate relative to the
+  /// size of the boundary data at every degree.
+  double extremal_energy(const Eigen::MatrixX3d& points) const;
   /// The full Gram matrix Q.
   const Eigen::MatrixXd& gram() const { return Q_; }
 
@@ -106,7 +117,7 @@ class ExtremalSolver {
   // X_f = S Y with A_ff Y = -A_fb X_b, S = kron(Tu, Tv) diag(scale) (Tu, Tv empty: S = diag(scale)).
   Eigen::VectorXd scale_;
   Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> Tu_, Tv_;
-  Eigen::MatrixXd A_fb_;
+  Eigen::MatrixXd A_ff_, A_fb_;
   struct Factor;
   std::shared_ptr<const Factor> factor_;
   Eigen::MatrixXd mould_;
@@ -116,7 +127,7 @@ class ExtremalSolver {
 struct ExtremalResult {
   TensorNet net;
   double energy = 0.0;  ///< the energy of the extremal
-  Summary summary;      ///< converged = optimality residual <= 1e-11; residual as in ExtremalSolver
+  Summary summary;      ///< residual = ExtremalSolver::reduced_residual; converged = residual <= 1e-11
 };
 
 /// The extremal of `energy` with the `fixed` points of `net` prescribed (its other points are
