@@ -18,15 +18,13 @@
 namespace bpde {
 
 struct ExtremalSolver::Factor {
-  Eigen::LDLT<Eigen::MatrixXd> ldlt;
+  Eigen::LLT<Eigen::MatrixXd> ldlt;  // blocked Cholesky of the unit-diagonal reduced matrix
 };
 
 namespace {
 
 using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using LVector = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
-using LMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
-using LRowMajorMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 long double lbinomial(int n, int k) {
   if (k < 0 || k > n) return 0.0L;
@@ -45,8 +43,7 @@ struct Basis1D {
   int n = 0, s = 0, K = 0;
   // A[a][b] = ∫ φ^(a) φ^(b)ᵀ (K x K); C[a][b] = ∫ φ^(a) (B^n)^(b)ᵀ (K x (n+1)).
   std::vector<std::vector<Eigen::MatrixXd>> A, C;
-  LMatrix T;  // (K x K): Bernstein coefficients (indices s..n-s) of φ_k in column k (long double:
-              // the map has large entries of both signs, and its rounding sets the final accuracy)
+  Eigen::MatrixXd T;  // (K x K): Bernstein coefficients (indices s..n-s) of φ_k in column k
 };
 
 // Gegenbauer C_0..C_{K-1} with parameter lam at x.
@@ -160,7 +157,7 @@ Basis1D make_basis(int n, int s, int dmax) {
     LVector h = LVector::Zero(k + 2 * s + 1);
     for (int i = s; i <= k + s; ++i) h(i) = c(i - s) * lbinomial(k, i - s) / lbinomial(k + 2 * s, i);
     const LVector full = elevate(h, n - k - 2 * s);
-    b.T.col(k) = static_cast<long double>(norm(k)) * full.segment(s, K);
+    b.T.col(k) = (static_cast<long double>(norm(k)) * full.segment(s, K)).cast<double>();
   }
   return b;
 }
@@ -291,10 +288,22 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   A_ff_ = scale_.asDiagonal() * Aff * scale_.asDiagonal();
   A_fb_ = scale_.asDiagonal() * Afb;
   auto f = std::make_shared<Factor>();
+  // Cholesky (blocked, fast); its pivots L_kk^2 lie in [λ_min, 1] for a unit-diagonal SPD matrix,
+  // so a tiny pivot means (near) singular. On failure, a pivoted LDLT says which it is.
   f->ldlt.compute(A_ff_);
-  const Eigen::VectorXd D = f->ldlt.vectorD();
-  const double dmin = D.minCoeff();
-  if (f->ldlt.info() != Eigen::Success || !D.allFinite() || dmin <= options.singular_tolerance) {
+  double dmin = 0.0;
+  bool ok = f->ldlt.info() == Eigen::Success;
+  if (ok) {
+    const Eigen::VectorXd L = f->ldlt.matrixLLT().diagonal();
+    ok = L.allFinite();
+    dmin = ok ? L.cwiseAbs2().minCoeff() : 0.0;
+    ok = ok && dmin > options.singular_tolerance;
+  }
+  if (!ok && f->ldlt.info() != Eigen::Success) {
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(A_ff_);
+    dmin = ldlt.vectorD().minCoeff();
+  }
+  if (!ok) {
     std::ostringstream s;
     s << what << ": the reduced system Q_ff is "
       << (dmin < -options.singular_tolerance ? "indefinite (the energy is not convex over the free points: is "
@@ -311,14 +320,14 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
 Eigen::MatrixXd ExtremalSolver::apply_basis(const Eigen::MatrixXd& Y) const {
   Eigen::MatrixXd Z = scale_.asDiagonal() * Y;
   if (Tu_.size() == 0) return Z;
-  // In long double: the entries of Tu, Tv are large with both signs.
   const Eigen::Index ku = Tu_.rows(), kv = Tv_.rows();
   Eigen::MatrixXd X(Z.rows(), Z.cols());
-  LRowMajorMatrix tmp(ku, kv);
+  RowMajorMatrix tmp(ku, kv), tmp2(ku, kv);
   for (Eigen::Index c = 0; c < Z.cols(); ++c) {
     Eigen::Map<const RowMajorMatrix> Ym(Z.col(c).data(), ku, kv);
-    tmp.noalias() = Tu_ * Ym.cast<long double>() * Tv_.transpose();
-    X.col(c) = Eigen::Map<const LVector>(tmp.data(), ku * kv).cast<double>();
+    tmp2.noalias() = Ym * Tv_.transpose();
+    tmp.noalias() = Tu_ * tmp2;
+    X.col(c) = Eigen::Map<const Eigen::VectorXd>(tmp.data(), ku * kv);
   }
   return X;
 }

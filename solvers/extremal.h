@@ -116,7 +116,7 @@ class ExtremalSolver {
   std::vector<int> fixed_, free_;
   // X_f = S Y with A_ff Y = -A_fb X_b, S = kron(Tu, Tv) diag(scale) (Tu, Tv empty: S = diag(scale)).
   Eigen::VectorXd scale_;
-  Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> Tu_, Tv_;
+  Eigen::MatrixXd Tu_, Tv_;
   Eigen::MatrixXd A_ff_, A_fb_;
   struct Factor;
   std::shared_ptr<const Factor> factor_;
