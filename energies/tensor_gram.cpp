@@ -5,15 +5,8 @@
 #include <string>
 #include <utility>
 
-#include <Eigen/LU>
-
 #include "core/bernstein.h"
 #include "core/errors.h"
-
-// Workaround: energies/energy_spec.cpp calls Matrix2d::determinant() with only <Eigen/Core>
-// included, which leaves the symbol undefined in bpde_lib. This explicit instantiation provides
-// it. Remove once energy_spec.cpp includes <Eigen/LU>.
-template double Eigen::MatrixBase<Eigen::Matrix2d>::determinant() const;
 
 namespace bpde {
 namespace {
