@@ -255,18 +255,21 @@ ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet 
   const Eigen::Index nf = static_cast<Eigen::Index>(bu.K) * bv.K;
   if (nf != static_cast<Eigen::Index>(free_.size())) throw Error("extremal: internal error (free set is not a tensor product)");
   Eigen::MatrixXd Aff = Eigen::MatrixXd::Zero(nf, nf);
-  Eigen::MatrixXd Cfull = Eigen::MatrixXd::Zero(nf, N_);
+  Eigen::MatrixXd Afb = Eigen::MatrixXd::Zero(nf, static_cast<Eigen::Index>(fixed_.size()));
   for (const auto& t : terms) {
     const double h = 0.5 * t.w;
     const auto au = static_cast<size_t>(t.au), av = static_cast<size_t>(t.av), cu = static_cast<size_t>(t.bu),
                cv = static_cast<size_t>(t.bv);
     add_kron(Aff, h, bu.A[au][cu], bv.A[av][cv]);
     add_kron(Aff, h, bu.A[cu][au], bv.A[cv][av]);
-    add_kron(Cfull, h, bu.C[au][cu], bv.C[av][cv]);
-    add_kron(Cfull, h, bu.C[cu][au], bv.C[cv][av]);
+    // column J = (i, j) of the fixed set: h (Cu(a,b)[:, i] ⊗ Cv(a,b)[:, j] + Cu(b,a)[:, i] ⊗ Cv(b,a)[:, j])
+    const Eigen::MatrixXd &C1u = bu.C[au][cu], &C1v = bv.C[av][cv], &C2u = bu.C[cu][au], &C2v = bv.C[cv][av];
+    for (size_t c = 0; c < fixed_.size(); ++c) {
+      const int i = fixed_[c] / (m + 1), j = fixed_[c] % (m + 1);
+      Eigen::Map<RowMajorMatrix> col(Afb.col(static_cast<Eigen::Index>(c)).data(), bu.K, bv.K);
+      col.noalias() += h * (C1u.col(i) * C1v.col(j).transpose() + C2u.col(i) * C2v.col(j).transpose());
+    }
   }
-  Eigen::MatrixXd Afb(nf, static_cast<Eigen::Index>(fixed_.size()));
-  for (size_t c = 0; c < fixed_.size(); ++c) Afb.col(static_cast<Eigen::Index>(c)) = Cfull.col(fixed_[c]);
   Tu_ = bu.T;
   Tv_ = bv.T;
   factor(Aff, Afb, options, what);
