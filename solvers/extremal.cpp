@@ -291,18 +291,16 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   A_ff_ = scale_.asDiagonal() * Aff * scale_.asDiagonal();
   A_fb_ = scale_.asDiagonal() * Afb;
   auto f = std::make_shared<Factor>();
-  // Cholesky (blocked, fast); its pivots L_kk^2 lie in [λ_min, 1] for a unit-diagonal SPD matrix,
-  // so a tiny pivot means (near) singular. On failure, a pivoted LDLT says which it is.
+  // Cholesky (blocked, fast). Failure means indefinite or singular (a pivoted LDLT says which);
+  // success with a reciprocal condition estimate below the tolerance means numerically singular.
   f->ldlt.compute(A_ff_);
-  double dmin = 0.0;
-  bool ok = f->ldlt.info() == Eigen::Success;
+  double dmin = 0.0, rcond = 0.0;
+  bool ok = f->ldlt.info() == Eigen::Success && f->ldlt.matrixLLT().diagonal().allFinite();
   if (ok) {
-    const Eigen::VectorXd L = f->ldlt.matrixLLT().diagonal();
-    ok = L.allFinite();
-    dmin = ok ? L.cwiseAbs2().minCoeff() : 0.0;
-    ok = ok && dmin > options.singular_tolerance;
-  }
-  if (!ok && f->ldlt.info() != Eigen::Success) {
+    rcond = f->ldlt.rcond();
+    ok = rcond > options.singular_tolerance;
+    dmin = rcond;
+  } else {
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(A_ff_);
     dmin = ldlt.vectorD().minCoeff();
   }
@@ -312,7 +310,7 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
       << (dmin < -options.singular_tolerance ? "indefinite (the energy is not convex over the free points: is "
                                                "the operator elliptic?)"
                                              : "singular (the energy does not determine the free control points)")
-      << "; smallest scaled pivot " << dmin;
+      << (rcond > 0 ? "; reciprocal condition number " : "; smallest scaled pivot ") << dmin;
     if (Tu_.size() == 0) s << " (generic Bernstein path: high degrees are ill-conditioned)";
     throw ParameterError(s.str());
   }

@@ -13,9 +13,9 @@
 // ExtremalSolver factors once and precomputes the mould (#free x #fixed); each solve is then one
 // matrix product. Two ways to build it:
 //  - generic, from any Gram matrix Q and a fixed index list (tensor, triangular, B-spline nets).
-//    The reduced system is Jacobi-scaled to unit diagonal and Cholesky-factored; a pivot below
-//    ExtremalOptions::singular_tolerance means singular, a failed factorisation indefinite
-//    (classified by a pivoted LDLT). Note: in the Bernstein basis Q_ff is exponentially
+//    The reduced system is Jacobi-scaled to unit diagonal and Cholesky-factored; a reciprocal
+//    condition estimate below ExtremalOptions::singular_tolerance means singular, a failed
+//    factorisation indefinite (classified by a pivoted LDLT). Note: in the Bernstein basis Q_ff is exponentially
 //    ill-conditioned in the degree (about 1e15 at tensor degree 16, numerically singular from
 //    about 17), so at high degree this path refuses (ParameterError) rather than return garbage;
 //  - tensor, from (EnergySpec, n, m, FixedSet). Because the energy is a sum of Kronecker products
@@ -48,8 +48,9 @@
 namespace bpde {
 
 struct ExtremalOptions {
-  /// Smallest accepted LDLT pivot of the unit-diagonal (Jacobi-scaled) reduced system; a pivot
-  /// below it means "singular", below minus it "indefinite". Default 1e-13. Must be in [0, 1).
+  /// Smallest accepted reciprocal condition number (1-norm estimate) of the unit-diagonal
+  /// (Jacobi-scaled) reduced system; below it the system counts as singular. A failed Cholesky
+  /// factorisation means indefinite (or exactly singular). Default 1e-13. Must be in [0, 1).
   double singular_tolerance = 1e-13;
   /// Tensor nets: assemble in the well-conditioned Gegenbauer basis (default true). False uses the
   /// generic Bernstein path (for comparisons; refuses high degrees, see the header comment).
