@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <list>
 #include <mutex>
 #include <sstream>
@@ -18,7 +17,7 @@
 namespace bpde {
 
 struct ExtremalSolver::Factor {
-  Eigen::LLT<Eigen::MatrixXd> ldlt;  // blocked Cholesky of the unit-diagonal reduced matrix
+  Eigen::LLT<Eigen::MatrixXd> llt;  // blocked Cholesky of the unit-diagonal reduced matrix
 };
 
 namespace {
@@ -172,6 +171,14 @@ void add_kron(Eigen::MatrixXd& out, double c, const Eigen::MatrixXd& A, const Ei
     }
 }
 
+Eigen::MatrixXd submatrix(const Eigen::MatrixXd& Q, const std::vector<int>& rows, const std::vector<int>& cols) {
+  Eigen::MatrixXd S(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
+  for (size_t c = 0; c < cols.size(); ++c)
+    for (size_t r = 0; r < rows.size(); ++r)
+      S(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = Q(rows[r], cols[c]);
+  return S;
+}
+
 void check_min_degree(int n, int m, FixedSet fixed) {
   std::ostringstream s;
   switch (fixed) {
@@ -216,13 +223,7 @@ ExtremalSolver::ExtremalSolver(const Eigen::MatrixXd& Q, std::vector<int> fixed,
   for (int I = 0; I < N_; ++I)
     if (!is_fixed[static_cast<size_t>(I)]) free_.push_back(I);
   if (free_.empty()) throw ParameterError("extremal: no free control point");
-  const Eigen::Index nf = static_cast<Eigen::Index>(free_.size()), nb = static_cast<Eigen::Index>(fixed_.size());
-  Eigen::MatrixXd Aff(nf, nf), Afb(nf, nb);
-  for (Eigen::Index a = 0; a < nf; ++a) {
-    for (Eigen::Index c = 0; c < nf; ++c) Aff(a, c) = Q(free_[static_cast<size_t>(a)], free_[static_cast<size_t>(c)]);
-    for (Eigen::Index c = 0; c < nb; ++c) Afb(a, c) = Q(free_[static_cast<size_t>(a)], fixed_[static_cast<size_t>(c)]);
-  }
-  factor(Aff, Afb, options, "extremal");
+  factor(submatrix(Q, free_, free_), submatrix(Q, free_, fixed_), options, "extremal");
 }
 
 ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet fixed, const ExtremalOptions& options) {
@@ -239,13 +240,7 @@ ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet 
   int dmax = 0;
   for (const auto& t : terms) dmax = std::max({dmax, t.au, t.av, t.bu, t.bv});
   if (!options.conditioned_basis || terms.empty()) {
-    const Eigen::Index nf = static_cast<Eigen::Index>(free_.size()), nb = static_cast<Eigen::Index>(fixed_.size());
-    Eigen::MatrixXd Aff(nf, nf), Afb(nf, nb);
-    for (Eigen::Index a = 0; a < nf; ++a) {
-      for (Eigen::Index c = 0; c < nf; ++c) Aff(a, c) = Q_(free_[static_cast<size_t>(a)], free_[static_cast<size_t>(c)]);
-      for (Eigen::Index c = 0; c < nb; ++c) Afb(a, c) = Q_(free_[static_cast<size_t>(a)], fixed_[static_cast<size_t>(c)]);
-    }
-    factor(Aff, Afb, options, what);
+    factor(submatrix(Q_, free_, free_), submatrix(Q_, free_, fixed_), options, what);
     return;
   }
   // Free set = {su..n-su} x {sv..m-sv}.
@@ -293,11 +288,11 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   auto f = std::make_shared<Factor>();
   // Cholesky (blocked, fast). Failure means indefinite or singular (a pivoted LDLT says which);
   // success with a reciprocal condition estimate below the tolerance means numerically singular.
-  f->ldlt.compute(A_ff_);
+  f->llt.compute(A_ff_);
   double dmin = 0.0, rcond = 0.0;
-  bool ok = f->ldlt.info() == Eigen::Success && f->ldlt.matrixLLT().diagonal().allFinite();
+  bool ok = f->llt.info() == Eigen::Success && f->llt.matrixLLT().diagonal().allFinite();
   if (ok) {
-    rcond = f->ldlt.rcond();
+    rcond = f->llt.rcond();
     ok = rcond > options.singular_tolerance;
     dmin = rcond;
   } else {
@@ -315,7 +310,7 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
     throw ParameterError(s.str());
   }
   factor_ = f;
-  mould_ = apply_basis(f->ldlt.solve(-A_fb_));
+  mould_ = apply_basis(f->llt.solve(-A_fb_));
 }
 
 Eigen::MatrixXd ExtremalSolver::apply_basis(const Eigen::MatrixXd& Y) const {
@@ -352,7 +347,7 @@ Eigen::MatrixX3d ExtremalSolver::solve_factored(const Eigen::MatrixX3d& points) 
   check_rows(points.rows());
   Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
   for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
-  const Eigen::MatrixXd Xf = apply_basis(factor_->ldlt.solve(-(A_fb_ * Xb)));
+  const Eigen::MatrixXd Xf = apply_basis(factor_->llt.solve(-(A_fb_ * Xb)));
   Eigen::MatrixX3d out = points;
   for (size_t a = 0; a < free_.size(); ++a) out.row(free_[a]) = Xf.row(static_cast<Eigen::Index>(a));
   return out;
@@ -381,7 +376,7 @@ double ExtremalSolver::reduced_residual(const Eigen::MatrixX3d& points) const {
   Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
   for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
   const Eigen::MatrixXd rhs = A_fb_ * Xb;
-  const Eigen::MatrixXd Y = factor_->ldlt.solve(-rhs);
+  const Eigen::MatrixXd Y = factor_->llt.solve(-rhs);
   const Eigen::MatrixXd r = A_ff_ * Y + rhs;
   const Eigen::MatrixXd size = A_ff_.cwiseAbs() * Y.cwiseAbs() + A_fb_.cwiseAbs() * Xb.cwiseAbs();
   double out = 0.0;
@@ -396,11 +391,9 @@ double ExtremalSolver::extremal_energy(const Eigen::MatrixX3d& points) const {
   const Eigen::Index nb = static_cast<Eigen::Index>(fixed_.size());
   Eigen::MatrixX3d Xb(nb, 3);
   for (Eigen::Index c = 0; c < nb; ++c) Xb.row(c) = points.row(fixed_[static_cast<size_t>(c)]);
-  Eigen::MatrixXd Qbb(nb, nb);
-  for (Eigen::Index a = 0; a < nb; ++a)
-    for (Eigen::Index c = 0; c < nb; ++c) Qbb(a, c) = Q_(fixed_[static_cast<size_t>(a)], fixed_[static_cast<size_t>(c)]);
+  const Eigen::MatrixXd Qbb = submatrix(Q_, fixed_, fixed_);
   const Eigen::MatrixXd rhs = A_fb_ * Xb;
-  const Eigen::MatrixXd Y = factor_->ldlt.solve(-rhs);
+  const Eigen::MatrixXd Y = factor_->llt.solve(-rhs);
   return 0.5 * (Y.cwiseProduct(A_ff_ * Y).sum() + 2.0 * Y.cwiseProduct(rhs).sum() + Xb.cwiseProduct(Qbb * Xb).sum());
 }
 
