@@ -1,0 +1,106 @@
+// core/bernstein: tables, operators and exact integrals against independent computations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/bernstein.h"
+#include "core/errors.h"
+#include "core/quadrature.h"
+
+using namespace bpde;
+
+TEST(Bernstein, BinomialAndFactorial) {
+  EXPECT_EQ(binomial(10, 3), 120.0);
+  EXPECT_EQ(binomial(5, 6), 0.0);
+  EXPECT_EQ(binomial(56, 28), 7648690600760440.0);
+  EXPECT_EQ(factorial(10), 3628800.0);
+}
+
+TEST(Bernstein, ValuesMatchClosedFormAndSumToOne) {
+  for (int n : {1, 2, 7, 25, 64}) {
+    std::vector<double> b(n + 1);
+    for (double t : {0.0, 0.13, 0.5, 0.91, 1.0}) {
+      bernstein_values(n, t, b.data());
+      double sum = 0;
+      for (int i = 0; i <= n; ++i) {
+        const double direct = binomial(n, i) * std::pow(t, i) * std::pow(1 - t, n - i);
+        EXPECT_NEAR(b[i], direct, 1e-14 * (1 + direct));
+        sum += b[i];
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-14);
+    }
+  }
+}
+
+TEST(Bernstein, DerivativeTableMatchesFiniteDifferences) {
+  const int n = 9;
+  Eigen::VectorXd t(3);
+  t << 0.2, 0.5, 0.77;
+  const double h = 1e-5;
+  Eigen::VectorXd tp = t.array() + h, tm = t.array() - h;
+  const Eigen::MatrixXd d1 = bernstein_table(n, t, 1);
+  const Eigen::MatrixXd fd = (bernstein_table(n, tp) - bernstein_table(n, tm)) / (2 * h);
+  EXPECT_LT((d1 - fd).cwiseAbs().maxCoeff(), 1e-6);
+  const Eigen::MatrixXd d2 = bernstein_table(n, t, 2);
+  const Eigen::MatrixXd fd2 = (bernstein_table(n, tp, 1) - bernstein_table(n, tm, 1)) / (2 * h);
+  EXPECT_LT((d2 - fd2).cwiseAbs().maxCoeff(), 1e-4);
+}
+
+TEST(Bernstein, ProductIntegralsMatchQuadrature) {
+  const auto q = gauss_legendre01(20);
+  for (auto [n, m] : {std::pair{3, 5}, std::pair{7, 7}, std::pair{12, 4}}) {
+    const Eigen::MatrixXd G = bernstein_product_integrals(n, m);
+    const Eigen::MatrixXd Bn = bernstein_table(n, q.x), Bm = bernstein_table(m, q.x);
+    const Eigen::MatrixXd Gq = Bn.transpose() * q.w.asDiagonal() * Bm;
+    EXPECT_LT((G - Gq).cwiseAbs().maxCoeff(), 1e-15);
+    // int B_i^n = 1/(n+1): a wrong normalisation would show here
+    EXPECT_NEAR(G.sum(), 1.0, 1e-14);
+  }
+}
+
+TEST(Bernstein, DerivativeIntegralsMatchQuadrature) {
+  const auto q = gauss_legendre01(20);
+  const int n = 8;
+  for (int a = 0; a <= 2; ++a)
+    for (int b = 0; b <= 2; ++b) {
+      const Eigen::MatrixXd K = bernstein_derivative_integrals(n, a, b);
+      const Eigen::MatrixXd Kq = bernstein_table(n, q.x, a).transpose() * q.w.asDiagonal() * bernstein_table(n, q.x, b);
+      EXPECT_LT((K - Kq).cwiseAbs().maxCoeff(), 1e-10 * (1 + Kq.cwiseAbs().maxCoeff()));
+    }
+}
+
+TEST(Bernstein, ElevationPreservesValues) {
+  const int n = 6, r = 5;
+  Eigen::VectorXd p = Eigen::VectorXd::LinSpaced(n + 1, -1, 2).array().square();
+  const Eigen::VectorXd pe = bernstein_elevation_operator(n, r) * p;
+  Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(11, 0, 1);
+  EXPECT_LT((bernstein_table(n, t) * p - bernstein_table(n + r, t) * pe).cwiseAbs().maxCoeff(), 1e-14);
+}
+
+TEST(Bernstein, PowerBasisInverse) {
+  for (int n : {1, 4, 10}) {
+    const Eigen::MatrixXd I = bernstein_to_power_matrix(n) * power_to_bernstein_matrix(n);
+    EXPECT_LT((I - Eigen::MatrixXd::Identity(n + 1, n + 1)).cwiseAbs().maxCoeff(), 1e-9);
+  }
+  // B_1^2 = 2t - 2t^2
+  const Eigen::MatrixXd M = bernstein_to_power_matrix(2);
+  EXPECT_EQ(M(0, 1), 0.0);
+  EXPECT_EQ(M(1, 1), 2.0);
+  EXPECT_EQ(M(2, 1), -2.0);
+}
+
+TEST(Quadrature, GaussExactness) {
+  const auto g = gauss_legendre01(5);  // exact to degree 9
+  double s = 0;
+  for (int i = 0; i < 5; ++i) s += g.w(i) * std::pow(g.x(i), 9);
+  EXPECT_NEAR(s, 0.1, 1e-15);
+  const auto t = gauss_triangle(6);  // exact to total degree 10
+  double a = 0, m = 0;
+  for (Eigen::Index i = 0; i < t.w.size(); ++i) {
+    a += t.w(i);
+    m += t.w(i) * std::pow(t.uv(i, 0), 4) * std::pow(t.uv(i, 1), 3);  // 4! 3! / 9! = 1/2520
+  }
+  EXPECT_NEAR(a, 0.5, 1e-15);
+  EXPECT_NEAR(m, 1.0 / 2520, 1e-17);
+  EXPECT_THROW(gauss_legendre01(0), ParameterError);
+}
