@@ -43,10 +43,6 @@ void check_data(const TensorNet& data) {
                              ") is not finite");
 }
 
-struct LuSolver {
-  std::vector<int> interior, fixed;
-  Eigen::MatrixXd G;  // interior = G * fixed
-};
 
 // ---- high-precision pieces of the solution operator (computed once per degree).
 // The Bernstein least-squares matrix is ill-conditioned (cond(A_I) ~ 3e6 at n = 12, 3e10 at
@@ -77,6 +73,41 @@ std::vector<quad> qderivative_at_degree(int n, int d) {
       for (int c = 0; c <= n; ++c) T[static_cast<size_t>(r * (n + 1) + c)] += e * D[static_cast<size_t>(i * (n + 1) + c)];
     }
   return T;
+}
+
+struct LuSolver {
+  std::vector<int> interior, fixed;
+  Eigen::MatrixXd G;                   // interior = G * fixed
+  std::vector<std::vector<quad>> T;    // T_0, T_2, .., T_8 in quad (index d)
+  std::unique_ptr<Eigen::HouseholderQR<MatL>> qr;  // of the interior columns, for refinement
+};
+
+// sum_t C(4,t) T_{8-2t} X T_{2t}^T in quad for one coordinate (X row-major (n+1)^2).
+void apply_operator(const std::vector<std::vector<quad>>& T, int n, const std::vector<quad>& X, std::vector<quad>& Y) {
+  const int n1 = n + 1, N = n1 * n1;
+  std::fill(Y.begin(), Y.end(), quad(0));
+  std::vector<quad> XB(static_cast<size_t>(N));
+  for (int t = 0; t <= 4; ++t) {
+    if (8 - 2 * t > n || 2 * t > n) continue;
+    const auto& A = T[static_cast<size_t>(8 - 2 * t)];
+    const auto& B = T[static_cast<size_t>(2 * t)];
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        quad acc = 0;
+        for (int l = 0; l <= n; ++l) {
+          const quad b = B[static_cast<size_t>(j * n1 + l)];
+          if (b != 0) acc += X[static_cast<size_t>(i * n1 + l)] * b;
+        }
+        XB[static_cast<size_t>(i * n1 + j)] = acc;
+      }
+    for (int i = 0; i <= n; ++i)
+      for (int k = 0; k <= n; ++k) {
+        const quad a = A[static_cast<size_t>(i * n1 + k)];
+        if (a == 0) continue;
+        const quad ca = kBinom4[t] * a;
+        for (int j = 0; j <= n; ++j) Y[static_cast<size_t>(i * n1 + j)] += ca * XB[static_cast<size_t>(k * n1 + j)];
+      }
+  }
 }
 
 std::shared_ptr<const LuSolver> lu_solver(int n) {
@@ -111,13 +142,15 @@ std::shared_ptr<const LuSolver> lu_solver(int n) {
   MatL AI(N, ni), AF(N, nf);
   for (int c = 0; c < ni; ++c) column(s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1, AI.col(c));
   for (int c = 0; c < nf; ++c) column(s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1, AF.col(c));
-  const Eigen::HouseholderQR<MatL> qr(AI);
+  s->qr = std::make_unique<Eigen::HouseholderQR<MatL>>(AI);
+  const Eigen::HouseholderQR<MatL>& qr = *s->qr;
   MatL G = -qr.solve(AF);
   // Refinement: R = A_I G + A_F in quad (Kronecker form, X_c = G(:,c) on the interior + e_f),
   // then G -= QR \ R. The system is consistent (Theorem 1), so R -> 0.
-  const int steps = n <= 8 ? 0 : 2;
+  // Refine until the correction is below 1e-18 of G (at most 8 steps; 2 suffice up to n ~ 20).
   std::vector<quad> X(static_cast<size_t>(N)), Y(static_cast<size_t>(N));
-  for (int step = 0; step < steps; ++step) {
+  long double last = 0;
+  for (int step = 0; step < (n <= 8 ? 0 : 2); ++step) {
     MatL R(N, nf);
     for (int c = 0; c < nf; ++c) {
       std::fill(X.begin(), X.end(), quad(0));
@@ -150,9 +183,15 @@ std::shared_ptr<const LuSolver> lu_solver(int n) {
       }
       for (int r = 0; r < N; ++r) R(r, c) = static_cast<long double>(Y[static_cast<size_t>(r)]);
     }
-    G -= qr.solve(R);
+    const MatL dG = qr.solve(R);
+    const long double d = dG.cwiseAbs().maxCoeff();
+    if (step > 0 && d > 0.5L * last) break;  // not contracting (cond ~ 1e19 or worse): keep G
+    G -= dG;
+    last = d;
+    if (d <= 1e-18L * G.cwiseAbs().maxCoeff()) break;
   }
   s->G = G.cast<double>();
+  s->T = std::move(T);
   std::lock_guard<std::mutex> lock(mutex);
   return cache.emplace(n, std::move(s)).first->second;
 }
@@ -346,6 +385,31 @@ TetraharmonicResult solve_tetraharmonic(const TensorNet& data, const Tetraharmon
     const Eigen::MatrixXd xi = s->G * xf;
     for (size_t r = 0; r < s->interior.size(); ++r)
       net.points().row(s->interior[r]) = xi.row(static_cast<Eigen::Index>(r));
+    for (int r : fixed) net.points().row(r) = data.points().row(r);
+    // Per-solve refinement where G * data cancels (a small solution from a large G): residual
+    // of the net in binary128, correction by the cached long-double QR, up to 3 steps.
+    if (relative_residual(net) > 1e-12) {
+      const int N = (n + 1) * (n + 1);
+      std::vector<quad> X(static_cast<size_t>(N)), Y(static_cast<size_t>(N));
+      for (int c = 0; c < 3; ++c) {
+        std::vector<quad> xq(static_cast<size_t>(N));
+        for (int r = 0; r < N; ++r) xq[static_cast<size_t>(r)] = net.points()(r, c);
+        for (int step = 0; step < 3; ++step) {
+          apply_operator(s->T, n, xq, Y);
+          Eigen::Matrix<long double, Eigen::Dynamic, 1> res(N);
+          for (int r = 0; r < N; ++r) res(r) = static_cast<long double>(Y[static_cast<size_t>(r)]);
+          const Eigen::Matrix<long double, Eigen::Dynamic, 1> d = s->qr->solve(res);
+          long double dmax = 0, xmax = 0;
+          for (size_t r = 0; r < s->interior.size(); ++r) {
+            xq[static_cast<size_t>(s->interior[r])] -= static_cast<quad>(d(static_cast<Eigen::Index>(r)));
+            dmax = std::max(dmax, std::abs(d(static_cast<Eigen::Index>(r))));
+            xmax = std::max(xmax, std::abs(static_cast<long double>(xq[static_cast<size_t>(s->interior[r])])));
+          }
+          if (dmax <= 1e-18L * xmax) break;
+        }
+        for (int r : s->interior) net.points()(r, c) = static_cast<double>(xq[static_cast<size_t>(r)]);
+      }
+    }
   }
   for (int r : fixed) net.points().row(r) = data.points().row(r);
 

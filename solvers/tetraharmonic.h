@@ -24,9 +24,12 @@
 //     over the interior points. The data always admit an exact solution (Theorem 1), so the
 //     least-squares residual is zero up to rounding. The matrix is ill-conditioned
 //     (cond ~3e6 at n = 12, ~5e13 at n = 20), so the solution operator (interior = G * data) is
-//     computed by a long-double Householder QR refined twice with residuals evaluated in binary128
-//     from exact entries; it is computed once per degree and cached (thread-safe; ~0.1 s at
-//     n = 12, ~1-2 s at n = 20). A solve is then one (n-3)^2 x (8n-8) product.
+//     computed by a long-double Householder QR refined with residuals evaluated in binary128 from
+//     exact entries; it is computed once per degree and cached (thread-safe; ~0.1 s at n = 12,
+//     ~1-2 s at n = 20). A solve is one (n-3)^2 x (8n-8) product; when its relative Δ⁴ residual
+//     exceeds 1e-12 (G * data cancels: a small solution from a large G, typically n >= 16), the
+//     solve is refined in binary128 with the cached QR (up to 3 steps, ~10-40 ms at n = 16-20),
+//     which brings the residual to ~1e-17 (tested to n = 24).
 //   Accuracy: the problem itself amplifies data rounding (the interior grows like ~1e9 x the data
 //     at n = 20, NOTES.md), so both methods recover an exact tetraharmonic polynomial to about
 //     1e-14 (n = 8), 1e-12 (n = 12), 1e-9 (n = 16), 1e-8 (n = 18) relative; see docs/c1.md.
