@@ -104,6 +104,21 @@ TEST(Tetraharmonic, MethodsAgreeOnGenericData) {
   }
 }
 
+TEST(Tetraharmonic, LuConvergesAtDegree20WhereExplicitDoesNot) {
+  const int n = 20;
+  TensorNet data(n, n);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) data.set_point(i, j, Eigen::Vector3d(i / double(n), j / double(n), std::sin(3.0 * i / n)));
+  const auto lu = solve_tetraharmonic(data);
+  EXPECT_TRUE(lu.summary.converged) << lu.summary.message;
+  EXPECT_LT(lu.summary.residual, 1e-15);
+  TetraharmonicOptions o;
+  o.method = Method::Explicit;
+  const auto ex = solve_tetraharmonic(data, o);
+  EXPECT_FALSE(ex.summary.converged);  // the power-basis recursion is honest about its accuracy
+  EXPECT_NE(ex.summary.message.find("lu"), std::string::npos);
+}
+
 TEST(Tetraharmonic, SolutionSpaceHasDimension8nMinus8) {
   for (int n = 3; n <= 14; ++n) {
     const Eigen::MatrixXd Op = tetraharmonic_operator(n);
