@@ -1,0 +1,171 @@
+#include "energies/cmc.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include "core/bernstein.h"
+#include "core/errors.h"
+#include "energies/triangular_gram.h"
+#include "tensor/tensor_net.h"
+#include "triangular/triangular_net.h"
+
+namespace bpde {
+namespace {
+
+// kron(A, B) for the tensor index i*(m+1) + j.
+Eigen::MatrixXd kron(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+  Eigen::MatrixXd K(A.rows() * B.rows(), A.cols() * B.cols());
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    for (Eigen::Index k = 0; k < A.cols(); ++k)
+      K.block(i * B.rows(), k * B.cols(), B.rows(), B.cols()) = A(i, k) * B;
+  return K;
+}
+
+}  // namespace
+
+CmcFunctional CmcFunctional::triangular(int n) {
+  CmcFunctional f;
+  f.volume_ = VolumeForm::triangular(n);  // validates n
+  f.gram_ = triangular_dirichlet_gram(n);
+  return f;
+}
+
+CmcFunctional CmcFunctional::tensor(int n, int m) {
+  CmcFunctional f;
+  f.volume_ = VolumeForm::tensor(n, m);  // validates n, m
+  const Eigen::MatrixXd Ku = bernstein_derivative_integrals(n, 1, 1);
+  const Eigen::MatrixXd Mu = bernstein_product_integrals(n, n);
+  const Eigen::MatrixXd Kv = bernstein_derivative_integrals(m, 1, 1);
+  const Eigen::MatrixXd Mv = bernstein_product_integrals(m, m);
+  f.gram_ = kron(Ku, Mv) + kron(Mu, Kv);
+  return f;
+}
+
+std::shared_ptr<const CmcFunctional> CmcFunctional::cached_triangular(int n) {
+  static std::mutex mu;
+  static std::map<int, std::shared_ptr<const CmcFunctional>> cache;
+  std::lock_guard<std::mutex> lock(mu);
+  auto it = cache.find(n);
+  if (it != cache.end()) return it->second;
+  auto p = std::make_shared<const CmcFunctional>(triangular(n));
+  cache.emplace(n, p);
+  return p;
+}
+
+std::shared_ptr<const CmcFunctional> CmcFunctional::cached_tensor(int n, int m) {
+  static std::mutex mu;
+  static std::map<std::pair<int, int>, std::shared_ptr<const CmcFunctional>> cache;
+  std::lock_guard<std::mutex> lock(mu);
+  auto it = cache.find({n, m});
+  if (it != cache.end()) return it->second;
+  auto p = std::make_shared<const CmcFunctional>(tensor(n, m));
+  cache.emplace(std::make_pair(n, m), p);
+  return p;
+}
+
+std::size_t CmcFunctional::memory_bytes() const {
+  return volume_.memory_bytes() + sizeof(double) * static_cast<std::size_t>(gram_.size());
+}
+
+double CmcFunctional::dirichlet(const Eigen::MatrixX3d& P) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  return 0.5 * (P.transpose() * gram_ * P).trace();
+}
+
+double CmcFunctional::value(const Eigen::MatrixX3d& P, double H) const {
+  return dirichlet(P) + 2.0 * H * volume_.value(P);
+}
+
+Eigen::MatrixX3d CmcFunctional::gradient(const Eigen::MatrixX3d& P, double H) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  Eigen::MatrixX3d G = gram_ * P;
+  if (H != 0.0) G += 2.0 * H * volume_.gradient(P);
+  return G;
+}
+
+Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H,
+                                       const std::vector<int>& idx) const {
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
+  Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
+  if (H != 0.0) Hs = 2.0 * H * volume_.hessian(P, idx);
+  for (Eigen::Index a = 0; a < k; ++a)
+    for (Eigen::Index b = 0; b < k; ++b) {
+      const double c = gram_(idx[static_cast<size_t>(a)], idx[static_cast<size_t>(b)]);
+      for (int r = 0; r < 3; ++r) Hs(3 * a + r, 3 * b + r) += c;
+    }
+  return Hs;
+}
+
+double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H,
+                               const std::vector<int>& idx) const {
+  const Eigen::MatrixX3d F = gradient(P, H);
+  Eigen::MatrixX3d S = gram_.cwiseAbs() * P.cwiseAbs();
+  if (H != 0.0) S += 2.0 * std::abs(H) * volume_.gradient_scale(P);
+  double num = 0, den = 0;
+  for (int I : idx) {
+    num = std::max(num, F.row(I).cwiseAbs().maxCoeff());
+    den = std::max(den, S.row(I).maxCoeff());
+  }
+  if (!std::isfinite(num)) return std::numeric_limits<double>::infinity();
+  if (den == 0.0) return num == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  return num / den;
+}
+
+namespace {
+
+void check_sampling(int N, double margin) {
+  if (N < 1) throw ParameterError("mean_curvature_stats: samples must be >= 1");
+  if (!(margin >= 0.0 && margin < 0.5))
+    throw ParameterError("mean_curvature_stats: corner_margin must be in [0, 0.5)");
+}
+
+void accumulate(MeanCurvatureStats& s, const FundamentalForms& g, double& sum) {
+  if (!g.regular || !std::isfinite(g.H)) return;
+  if (s.count == 0) {
+    s.min = s.max = g.H;
+  } else {
+    s.min = std::min(s.min, g.H);
+    s.max = std::max(s.max, g.H);
+  }
+  sum += g.H;
+  ++s.count;
+}
+
+}  // namespace
+
+MeanCurvatureStats mean_curvature_stats(const TriangularNet& net, int N, double corner_margin) {
+  check_sampling(N, corner_margin);
+  MeanCurvatureStats s;
+  double sum = 0;
+  const double lim = 1.0 - corner_margin + 1e-12;
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N - a; ++b) {
+      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+      const double w = 1.0 - u - v;
+      if (u > lim || v > lim || w > lim) continue;
+      accumulate(s, net.geometry(u, v), sum);
+    }
+  if (s.count > 0) s.mean = sum / s.count;
+  return s;
+}
+
+MeanCurvatureStats mean_curvature_stats(const TensorNet& net, int N, double corner_margin) {
+  check_sampling(N, corner_margin);
+  MeanCurvatureStats s;
+  double sum = 0;
+  const double lim = corner_margin - 1e-12;
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N; ++b) {
+      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+      if (std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim) continue;
+      accumulate(s, net.geometry(u, v), sum);
+    }
+  if (s.count > 0) s.mean = sum / s.count;
+  return s;
+}
+
+}  // namespace bpde

@@ -1,0 +1,307 @@
+#include "solvers/cmc.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/errors.h"
+#include "energies/cmc.h"
+#include "solvers/cmc_problem.h"
+
+namespace bpde {
+
+CmcSolver parse_cmc_solver(const std::string& name) {
+  if (name == "newton") return CmcSolver::Newton;
+  if (name == "ceres") return CmcSolver::Ceres;
+  if (name == "nlopt") return CmcSolver::NLopt;
+  throw ParameterError("unknown cmc solver \"" + name + "\" (expected newton, ceres or nlopt)");
+}
+
+std::string to_string(CmcSolver s) {
+  switch (s) {
+    case CmcSolver::Newton: return "newton";
+    case CmcSolver::Ceres: return "ceres";
+    case CmcSolver::NLopt: return "nlopt";
+  }
+  return "?";
+}
+
+void CmcOptions::validate() const {
+  if (!std::isfinite(H)) throw NonFiniteError("cmc: H must be a finite number");
+  if (V && !std::isfinite(*V)) throw NonFiniteError("cmc: V must be a finite number");
+  if (V && solver != CmcSolver::NLopt)
+    throw UnsupportedProblem("cmc: the volume-constrained problem (V) is solved by the nlopt solver only");
+  if (!(tolerance > 0.0 && tolerance <= 1e-3))
+    throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
+  if (max_corrector_iterations < 1) throw ParameterError("cmc: max_corrector_iterations must be >= 1");
+  if (max_continuation_steps < 1) throw ParameterError("cmc: max_continuation_steps must be >= 1");
+  if (!(min_step > 0.0 && min_step < 1.0)) throw ParameterError("cmc: min_step must be in (0, 1)");
+}
+
+namespace cmc_detail {
+
+Eigen::VectorXd CmcProblem::get() const {
+  Eigen::VectorXd y(3 * k());
+  for (int a = 0; a < k(); ++a) y.segment<3>(3 * a) = P.row(free[static_cast<size_t>(a)]).transpose();
+  return y;
+}
+
+void CmcProblem::set(const Eigen::VectorXd& y) {
+  for (int a = 0; a < k(); ++a) P.row(free[static_cast<size_t>(a)]) = y.segment<3>(3 * a).transpose();
+}
+
+Eigen::VectorXd CmcProblem::gradient(double H) const {
+  const Eigen::MatrixX3d G = f->gradient(P, H);
+  Eigen::VectorXd g(3 * k());
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(free[static_cast<size_t>(a)]).transpose();
+  return g;
+}
+
+Eigen::VectorXd CmcProblem::volume_gradient() const {
+  const Eigen::MatrixX3d G = f->volume_form().gradient(P);
+  Eigen::VectorXd g(3 * k());
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(free[static_cast<size_t>(a)]).transpose();
+  return g;
+}
+
+double multiplier(const CmcProblem& p) {
+  const Eigen::VectorXd gD = p.gradient(0.0);
+  const Eigen::VectorXd gV = p.volume_gradient();
+  const double nv = gV.squaredNorm();
+  if (nv == 0.0) return 0.0;
+  return -gD.dot(gV) / (2.0 * nv);
+}
+
+CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations) {
+  CorrectorStats st;
+  double prev = std::numeric_limits<double>::infinity();
+  for (int it = 0;; ++it) {
+    st.residual = p.residual(H);
+    if (!std::isfinite(st.residual)) return st;
+    if (st.residual <= o.tolerance) {
+      st.ok = true;
+      return st;
+    }
+    if (it >= max_iterations) return st;
+    const Eigen::MatrixXd J = p.hessian(H);
+    const Eigen::VectorXd g = p.gradient(H);
+    Eigen::VectorXd dx;
+    Eigen::LLT<Eigen::MatrixXd> llt(J);
+    if (llt.info() == Eigen::Success) {
+      st.pd = 1;
+      dx = -llt.solve(g);
+    } else {
+      st.pd = 0;
+      dx = -J.partialPivLu().solve(g);
+    }
+    if (!dx.allFinite()) return st;
+    const double nrm = dx.norm();
+    if (it >= 2 && nrm > prev) return st;  // not contracting: off the basin
+    prev = nrm;
+    p.set(p.get() + dx);
+    ++st.iterations;
+  }
+}
+
+namespace {
+
+bool positive_definite(const CmcProblem& p, double H) {
+  Eigen::LLT<Eigen::MatrixXd> llt(p.hessian(H));
+  return llt.info() == Eigen::Success;
+}
+
+std::string fold_message(double h) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
+  return std::string("no critical point on the branch from H = 0 beyond H ≈ ") + buf;
+}
+
+void check_degree(const TriangularNet& net, FixedSet fixed) {
+  const int need = fixed == FixedSet::BoundaryAdjacent ? 6 : 3;
+  if (fixed == FixedSet::UBoundaries)
+    throw UnsupportedProblem("cmc: fixed \"u-boundaries\" is defined for tensor nets only");
+  if (net.n() < need)
+    throw DegreeError("cmc: a triangular net with " + to_string(fixed) + " data needs degree >= " +
+                      std::to_string(need) + " (got " + std::to_string(net.n()) + ")");
+}
+
+void check_degree(const TensorNet& net, FixedSet fixed) {
+  const int need = fixed == FixedSet::BoundaryAdjacent ? 4 : 2;
+  if (net.n() < need || (fixed != FixedSet::UBoundaries && net.m() < need))
+    throw DegreeError("cmc: a tensor net with " + to_string(fixed) + " data needs degree >= " +
+                      std::to_string(need) + " in each direction (got " + std::to_string(net.n()) +
+                      ", " + std::to_string(net.m()) + ")");
+}
+
+std::shared_ptr<const CmcFunctional> functional_for(const TriangularNet& net) {
+  return CmcFunctional::cached_triangular(net.n());
+}
+std::shared_ptr<const CmcFunctional> functional_for(const TensorNet& net) {
+  return CmcFunctional::cached_tensor(net.n(), net.m());
+}
+
+// Dirichlet extremal into p.P; returns the Cholesky factor of the free Gram (k x k).
+Eigen::MatrixXd dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
+  const Eigen::MatrixXd& C = p.f->gram();
+  const int k = p.k();
+  const int nf = static_cast<int>(fixed_idx.size());
+  Eigen::MatrixXd Cff(k, k), Cfx(k, nf);
+  Eigen::MatrixX3d Px(nf, 3);
+  for (int a = 0; a < k; ++a) {
+    for (int b = 0; b < k; ++b) Cff(a, b) = C(p.free[static_cast<size_t>(a)], p.free[static_cast<size_t>(b)]);
+    for (int b = 0; b < nf; ++b) Cfx(a, b) = C(p.free[static_cast<size_t>(a)], fixed_idx[static_cast<size_t>(b)]);
+  }
+  for (int b = 0; b < nf; ++b) Px.row(b) = p.P.row(fixed_idx[static_cast<size_t>(b)]);
+  Eigen::LLT<Eigen::MatrixXd> llt(Cff);
+  if (llt.info() != Eigen::Success)
+    throw UnsupportedProblem("cmc: the Dirichlet Gram over the free points is singular");
+  const Eigen::MatrixX3d Y = -llt.solve(Cfx * Px);
+  for (int a = 0; a < k; ++a) p.P.row(p.free[static_cast<size_t>(a)]) = Y.row(a);
+  return llt.matrixL();
+}
+
+template <class Net>
+Net make_net(const Net& data, const Eigen::MatrixX3d& P);
+template <>
+TriangularNet make_net(const TriangularNet& data, const Eigen::MatrixX3d& P) {
+  return TriangularNet(data.n(), P);
+}
+template <>
+TensorNet make_net(const TensorNet& data, const Eigen::MatrixX3d& P) {
+  return TensorNet(data.n(), data.m(), P);
+}
+
+template <class Net>
+CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  o.validate();
+  check_degree(data, o.fixed);
+  const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
+  CmcProblem p{functional_for(data), data.free_indices(o.fixed), data.points()};
+  for (int r : fixed_idx)
+    if (!p.P.row(r).allFinite())
+      throw NonFiniteError("cmc: prescribed control point " + std::to_string(r) + " is not finite");
+  for (int r : p.free) p.P.row(r).setZero();
+  const Eigen::MatrixXd L = dirichlet_solve(p, fixed_idx);
+
+  CmcResult<Net> res;
+  auto finish = [&](double H, bool converged, std::string message) {
+    res.H = H;
+    res.D = p.f->dirichlet(p.P);
+    res.V = p.f->volume(p.P);
+    res.DH = res.D + 2.0 * H * res.V;
+    res.net = make_net(data, p.P);
+    res.summary.converged = converged;
+    res.summary.residual = p.residual(H);
+    res.summary.message = std::move(message);
+    res.summary.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return res;
+  };
+
+  if (o.V) {
+    double H = 0.0;
+    std::string note;
+    const CorrectorStats st = nlopt_volume_solve(p, *o.V, o, L, H, note);
+    res.summary.iterations = st.iterations + st.polish_steps;
+    return finish(H, st.ok, note);
+  }
+
+  const double Ht = o.H;
+  if (Ht == 0.0) {
+    const double r = p.residual(0.0);
+    return finish(0.0, r <= o.tolerance,
+                  r <= o.tolerance ? "Dirichlet extremal (linear solve)"
+                                   : "Dirichlet extremal: the linear solve is not accurate to the tolerance");
+  }
+
+  // Tangent of the branch at H = 0: C_ff dY/dH = -2 dV/dP (free rows).
+  Eigen::VectorXd tangent(3 * p.k());
+  {
+    const Eigen::VectorXd gV = p.volume_gradient();
+    Eigen::MatrixX3d G(p.k(), 3);
+    for (int a = 0; a < p.k(); ++a) G.row(a) = gV.segment<3>(3 * a).transpose();
+    Eigen::MatrixX3d T = L.triangularView<Eigen::Lower>().solve(G);
+    T = L.transpose().triangularView<Eigen::Upper>().solve(T);
+    for (int a = 0; a < p.k(); ++a) tangent.segment<3>(3 * a) = -2.0 * T.row(a).transpose();
+  }
+
+  double h = 0.0, h_prev = 0.0;
+  Eigen::VectorXd y = p.get(), y_prev;
+  bool have_prev = false;
+  double step = Ht;
+  const double min_step = o.min_step * std::max(1.0, std::abs(Ht));
+  int attempts = 0, polish = 0;
+  while (h != Ht) {
+    if (++attempts > o.max_continuation_steps) {
+      p.set(y);
+      return finish(h, false, fold_message(h));
+    }
+    double s = step;
+    if (std::abs(Ht - h) <= std::abs(s) * (1 + 1e-12)) s = Ht - h;
+    const double hn = (Ht - h == s) ? Ht : h + s;
+    const Eigen::VectorXd pred =
+        have_prev ? Eigen::VectorXd(y + (y - y_prev) * (s / (h - h_prev))) : Eigen::VectorXd(y + tangent * s);
+    p.set(pred);
+    CorrectorStats st;
+    switch (o.solver) {
+      case CmcSolver::Newton: st = newton_correct(p, hn, o, o.max_corrector_iterations); break;
+      case CmcSolver::Ceres: st = ceres_correct(p, hn, o); break;
+      case CmcSolver::NLopt: st = nlopt_correct(p, hn, o, L); break;
+    }
+    res.summary.iterations += st.iterations + st.polish_steps;
+    bool accept = st.ok;
+    if (accept) accept = st.pd == 1 || (st.pd == -1 && positive_definite(p, hn)) ||
+                         (st.pd == 0 && positive_definite(p, hn));
+    if (accept) {
+      polish += st.polish_steps;
+      y_prev = y;
+      h_prev = h;
+      have_prev = true;
+      y = p.get();
+      h = hn;
+      ++res.continuation_steps;
+      if (st.iterations <= 4) step = 2 * s;
+      else step = s;
+    } else {
+      p.set(y);
+      step = s / 2;
+      if (std::abs(step) < min_step) return finish(h, false, fold_message(h));
+    }
+  }
+  std::string msg = "reached H = " + std::to_string(Ht) + " in " +
+                    std::to_string(res.continuation_steps) + " continuation step(s) with " +
+                    to_string(o.solver);
+  if (polish > 0) msg += " (+" + std::to_string(polish) + " Newton polish step(s))";
+  return finish(Ht, true, msg);
+}
+
+template <class Net>
+Net dirichlet_impl(const Net& data, FixedSet fixed) {
+  check_degree(data, fixed);
+  const std::vector<int> fixed_idx = data.fixed_indices(fixed);
+  CmcProblem p{functional_for(data), data.free_indices(fixed), data.points()};
+  dirichlet_solve(p, fixed_idx);
+  return make_net(data, p.P);
+}
+
+}  // namespace
+}  // namespace cmc_detail
+
+CmcResult<TriangularNet> solve_cmc(const TriangularNet& data, const CmcOptions& options) {
+  return cmc_detail::solve_impl(data, options);
+}
+CmcResult<TensorNet> solve_cmc(const TensorNet& data, const CmcOptions& options) {
+  return cmc_detail::solve_impl(data, options);
+}
+TriangularNet dirichlet_extremal(const TriangularNet& data, FixedSet fixed) {
+  return cmc_detail::dirichlet_impl(data, fixed);
+}
+TensorNet dirichlet_extremal(const TensorNet& data, FixedSet fixed) {
+  return cmc_detail::dirichlet_impl(data, fixed);
+}
+
+}  // namespace bpde

@@ -1,0 +1,57 @@
+#pragma once
+// Internal to solvers/cmc*.cpp: the CMC problem over the free control points, and the correctors.
+// The free unknowns form a vector y of length 3k, y(3a + c) = P(free[a], c).
+#include <Eigen/Core>
+#include <Eigen/Cholesky>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "energies/cmc.h"
+#include "solvers/cmc.h"
+
+namespace bpde::cmc_detail {
+
+struct CmcProblem {
+  std::shared_ptr<const CmcFunctional> f;
+  std::vector<int> free;
+  Eigen::MatrixX3d P;  // all points; rows not in `free` hold the data
+
+  int k() const { return static_cast<int>(free.size()); }
+  Eigen::VectorXd get() const;
+  void set(const Eigen::VectorXd& y);
+  /// Free rows of ∇D_H as a 3k vector.
+  Eigen::VectorXd gradient(double H) const;
+  /// Free rows of ∇V as a 3k vector.
+  Eigen::VectorXd volume_gradient() const;
+  Eigen::MatrixXd hessian(double H) const { return f->hessian(P, H, free); }
+  double residual(double H) const { return f->residual(P, H, free); }
+  double value(double H) const { return f->value(P, H); }
+};
+
+/// Outcome of one corrector run at fixed H, starting from problem.P.
+struct CorrectorStats {
+  bool ok = false;        ///< residual <= tolerance
+  int iterations = 0;
+  double residual = 0.0;
+  int pd = -1;            ///< 1/0: Hessian at the solution (positive definite / not); -1 unknown
+  int polish_steps = 0;   ///< Newton steps added after NLopt
+};
+
+/// Newton with the exact Hessian.
+CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations);
+/// Ceres LM on the residual blocks of eq. (11).
+CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o);
+/// NLopt LD_LBFGS on D_H (preconditioned by the Cholesky factor L of the free Gram), then polish.
+CorrectorStats nlopt_correct(CmcProblem& p, double H, const CmcOptions& o,
+                             const Eigen::MatrixXd& L);
+
+/// V mode: minimise D subject to V = V0 from problem.P (the Dirichlet extremal) with SLSQP, then a
+/// bordered Newton polish. On return H holds the multiplier.
+CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
+                                  const Eigen::MatrixXd& L, double& H, std::string& note);
+
+/// H = -<∇D,∇V>/(2|∇V|^2) over the free points (0 if ∇V = 0).
+double multiplier(const CmcProblem& p);
+
+}  // namespace bpde::cmc_detail
