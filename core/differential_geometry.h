@@ -33,3 +33,21 @@ struct FundamentalForms {
 FundamentalForms fundamental_forms(const SurfaceJet& jet);
 
 }  // namespace bpde
+
+namespace bpde {
+
+/// Mean curvature for sampled files: H of `jet` when it is regular; otherwise the H of
+/// geometry_at(h) (the point nudged by the fraction h towards the domain's centre) for
+/// h = 1e-7, 1e-5, 1e-3, 1e-2, the first regular one; 0 if none is. Never NaN.
+template <class GeometryAt>
+double mean_curvature_robust(const SurfaceJet& jet, GeometryAt&& geometry_at) {
+  FundamentalForms f = fundamental_forms(jet);
+  if (f.regular) return f.H;
+  for (double h : {1e-7, 1e-5, 1e-3, 1e-2}) {
+    f = geometry_at(h);
+    if (f.regular) return f.H;
+  }
+  return 0.0;
+}
+
+}  // namespace bpde

@@ -18,3 +18,21 @@ struct TriangleMesh {
 };
 
 }  // namespace bpde
+
+namespace bpde {
+
+/// The 2N^2 triangles of an (N+1) x (N+1) grid indexed a(N+1)+b, counter-clockwise when a runs
+/// along the first parameter and b along the second.
+inline Eigen::MatrixX3i grid_triangles(int N) {
+  Eigen::MatrixX3i F(2 * N * N, 3);
+  int f = 0;
+  for (int a = 0; a < N; ++a)
+    for (int b = 0; b < N; ++b) {
+      const int p00 = a * (N + 1) + b, p10 = (a + 1) * (N + 1) + b, p11 = p10 + 1, p01 = p00 + 1;
+      F.row(f++) << p00, p10, p11;
+      F.row(f++) << p00, p11, p01;
+    }
+  return F;
+}
+
+}  // namespace bpde

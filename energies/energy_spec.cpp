@@ -1,5 +1,7 @@
 #include "energies/energy_spec.h"
 
+#include <Eigen/LU>
+
 #include <cmath>
 #include <sstream>
 

@@ -185,22 +185,6 @@ std::vector<int> TensorNet::free_indices(FixedSet fixed) const {
   return out;
 }
 
-namespace {
-
-// Mean curvature at (u,v) in the unit square; at a singular point nudge towards the centre.
-double robust_mean_curvature(const SurfaceJet& j0, const TensorNet& net, double u, double v) {
-  FundamentalForms f = fundamental_forms(j0);
-  if (f.regular) return f.H;
-  for (double h : {1e-7, 1e-5, 1e-3, 1e-2}) {
-    const double uu = u + h * (0.5 - u), vv = v + h * (0.5 - v);
-    f = net.geometry(uu, vv);
-    if (f.regular) return f.H;
-  }
-  return 0.0;
-}
-
-}  // namespace
-
 TriangleMesh sample_mesh(const TensorNet& net, int N) {
   if (N < 1) throw ParameterError("sample_mesh: samples must be >= 1");
   Eigen::VectorXd t(N + 1);
@@ -221,17 +205,10 @@ TriangleMesh sample_mesh(const TensorNet& net, int N) {
       j.xuu = Xuu.row(k).transpose();
       j.xuv = Xuv.row(k).transpose();
       j.xvv = Xvv.row(k).transpose();
-      mesh.H(k) = robust_mean_curvature(j, net, t(a), t(b));
+      const double u = t(a), v = t(b);
+      mesh.H(k) = mean_curvature_robust(j, [&](double h) { return net.geometry(u + h * (0.5 - u), v + h * (0.5 - v)); });
     }
-  mesh.F.resize(2 * N * N, 3);
-  int f = 0;
-  for (int a = 0; a < N; ++a)
-    for (int b = 0; b < N; ++b) {
-      const int p00 = a * (N + 1) + b, p10 = (a + 1) * (N + 1) + b, p11 = p10 + 1, p01 = p00 + 1;
-      // counter-clockwise in the (u, v) plane: u along the first axis, v along the second
-      mesh.F.row(f++) << p00, p10, p11;
-      mesh.F.row(f++) << p00, p11, p01;
-    }
+  mesh.F = grid_triangles(N);
   return mesh;
 }
 

@@ -223,19 +223,9 @@ TriangleMesh sample_mesh(const TriangularNet& net, int N) {
     j.xuu = Xuu.row(k).transpose();
     j.xuv = Xuv.row(k).transpose();
     j.xvv = Xvv.row(k).transpose();
-    FundamentalForms f = fundamental_forms(j);
-    double H = f.regular ? f.H : 0.0;
-    if (!f.regular) {
-      for (double h : {1e-7, 1e-5, 1e-3, 1e-2}) {
-        const double u = uv(k, 0) + h * (1.0 / 3 - uv(k, 0)), v = uv(k, 1) + h * (1.0 / 3 - uv(k, 1));
-        f = net.geometry(u, v);
-        if (f.regular) {
-          H = f.H;
-          break;
-        }
-      }
-    }
-    mesh.H(k) = H;
+    const double u = uv(k, 0), v = uv(k, 1);
+    mesh.H(k) = mean_curvature_robust(
+        j, [&](double h) { return net.geometry(u + h * (1.0 / 3 - u), v + h * (1.0 / 3 - v)); });
   }
   auto vid = [N](int a, int b) { return a * (N + 1) - a * (a - 1) / 2 + b; };
   mesh.F.resize(N * N, 3);

@@ -1,0 +1,257 @@
+#include "io/job.h"
+
+#include <cmath>
+
+#include "core/errors.h"
+
+namespace bpde {
+
+std::string to_string(ProblemKind k) {
+  switch (k) {
+    case ProblemKind::Extremal: return "extremal";
+    case ProblemKind::Pde: return "pde";
+    case ProblemKind::Tetraharmonic: return "tetraharmonic";
+    case ProblemKind::BiharmonicLoad: return "biharmonic-load";
+    case ProblemKind::CmcH:
+    case ProblemKind::CmcV: return "cmc";
+  }
+  return "?";
+}
+std::string to_string(PdeMethod m) { return m == PdeMethod::Explicit ? "explicit" : "lu"; }
+std::string to_string(CmcSolverKind s) {
+  return s == CmcSolverKind::Newton ? "newton" : s == CmcSolverKind::Ceres ? "ceres" : "nlopt";
+}
+
+EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_operator) {
+  using namespace json_read;
+  require_object(j, path);
+  const std::string name = string(field(j, path, "name"), path + ".name");
+  auto coeffs = [&](int n) { return numbers(field(j, path, "coeffs"), path + ".coeffs", n); };
+  if (name == "dirichlet" || name == "biharmonic" || name == "laplacian-squared" || name == "coons") {
+    check_keys(j, path, {"name"});
+    if (name == "dirichlet") return EnergySpec::dirichlet();
+    if (name == "biharmonic") return EnergySpec::biharmonic();
+    if (name == "laplacian-squared") return EnergySpec::laplacian_squared();
+    return EnergySpec::coons();
+  }
+  if (name == "second-order") {
+    check_keys(j, path, {"name", "coeffs"});
+    const auto c = coeffs(3);
+    return EnergySpec::second_order(c[0], c[1], c[2]);
+  }
+  if (name == "modified-biharmonic") {
+    check_keys(j, path, {"name", "alpha"});
+    return EnergySpec::modified_biharmonic(number(field(j, path, "alpha"), path + ".alpha"));
+  }
+  if (name == "fourth-order" || name == "operator") {
+    if (name == "operator" && !allow_operator)
+      throw ParseError(path + ": energy \"operator\" is only for problems of kind \"pde\"");
+    check_keys(j, path, {"name", "coeffs"});
+    const auto c = coeffs(5);
+    const std::array<double, 5> a{c[0], c[1], c[2], c[3], c[4]};
+    if (std::abs(a[0]) + std::abs(a[1]) + std::abs(a[2]) + std::abs(a[3]) + std::abs(a[4]) == 0.0)
+      throw ParameterError(path + ".coeffs: all five coefficients are zero");
+    return name == "operator" ? EnergySpec::pde_operator(a) : EnergySpec::fourth_order(a);
+  }
+  if (name == "gnorm") {
+    if (j.contains("G")) {
+      check_keys(j, path, {"name", "G"});
+      const Json& G = field(j, path, "G");
+      if (!G.is_array() || G.size() != 2) throw SizeError(path + ".G: expected [[g11, g12], [g21, g22]]");
+      const auto r0 = numbers(G[0], path + ".G[0]", 2), r1 = numbers(G[1], path + ".G[1]", 2);
+      Eigen::Matrix2d M;
+      M << r0[0], r0[1], r1[0], r1[1];
+      try {
+        return EnergySpec::gnorm(M);
+      } catch (const ParameterError& e) {
+        throw ParameterError(path + ".G: " + e.what());
+      }
+    }
+    check_keys(j, path, {"name", "rho", "t"});
+    const double rho = number(field(j, path, "rho"), path + ".rho");
+    const double t = number(field(j, path, "t"), path + ".t");
+    try {
+      return EnergySpec::gnorm(rho, t);
+    } catch (const ParameterError& e) {
+      throw ParameterError(path + ": " + e.what());
+    }
+  }
+  throw ParseError(path + ".name: unknown energy \"" + name +
+                   "\" (expected dirichlet, second-order, biharmonic, laplacian-squared, coons, "
+                   "modified-biharmonic, fourth-order, gnorm" +
+                   std::string(allow_operator ? ", operator" : "") + ")");
+}
+
+EnergySpec energy_from_argument(const std::string& arg) {
+  if (!arg.empty() && arg.front() == '{') return energy_from_json(parse_json(arg, "--energy"), "--energy", false);
+  if (arg == "dirichlet") return EnergySpec::dirichlet();
+  if (arg == "biharmonic") return EnergySpec::biharmonic();
+  if (arg == "laplacian-squared") return EnergySpec::laplacian_squared();
+  if (arg == "coons") return EnergySpec::coons();
+  throw ParseError("--energy: unknown energy \"" + arg +
+                   "\" (a bare name is one of dirichlet, biharmonic, laplacian-squared, coons, cmc; "
+                   "others are given as a JSON object such as {\"name\": \"gnorm\", \"rho\": 2, \"t\": 1})");
+}
+
+namespace {
+
+FixedSet fixed_from_string(const std::string& s, const std::string& path) {
+  if (s == "boundary") return FixedSet::Boundary;
+  if (s == "boundary+adjacent") return FixedSet::BoundaryAdjacent;
+  if (s == "u-boundaries") return FixedSet::UBoundaries;
+  throw ParseError(path + ": unknown fixed set \"" + s + "\" (expected boundary, boundary+adjacent or u-boundaries)");
+}
+
+Problem problem_from_json(const Json& j, const std::string& path) {
+  using namespace json_read;
+  require_object(j, path);
+  const std::string kind = string(field(j, path, "kind"), path + ".kind");
+  Problem p;
+  auto method = [&]() {
+    if (!j.contains("method")) return PdeMethod::Lu;
+    const std::string m = string(j["method"], path + ".method");
+    if (m == "explicit") return PdeMethod::Explicit;
+    if (m == "lu") return PdeMethod::Lu;
+    throw ParseError(path + ".method: unknown method \"" + m + "\" (expected explicit or lu)");
+  };
+  if (kind == "extremal") {
+    check_keys(j, path, {"kind", "energy"});
+    p.kind = ProblemKind::Extremal;
+    p.energy = energy_from_json(field(j, path, "energy"), path + ".energy", false);
+  } else if (kind == "pde") {
+    check_keys(j, path, {"kind", "operator", "method"});
+    p.kind = ProblemKind::Pde;
+    p.energy = energy_from_json(field(j, path, "operator"), path + ".operator", true);
+    p.method = method();
+  } else if (kind == "tetraharmonic") {
+    check_keys(j, path, {"kind", "method"});
+    p.kind = ProblemKind::Tetraharmonic;
+    p.method = method();
+  } else if (kind == "biharmonic-load") {
+    check_keys(j, path, {"kind"});
+    p.kind = ProblemKind::BiharmonicLoad;
+  } else if (kind == "cmc") {
+    check_keys(j, path, {"kind", "H", "V", "solver"});
+    const bool hasH = j.contains("H"), hasV = j.contains("V");
+    if (hasH == hasV) throw ParseError(path + ": a cmc problem gives exactly one of \"H\" and \"V\"");
+    if (j.contains("solver")) {
+      const std::string s = string(j["solver"], path + ".solver");
+      if (s == "newton") p.solver = CmcSolverKind::Newton;
+      else if (s == "ceres") p.solver = CmcSolverKind::Ceres;
+      else if (s == "nlopt") p.solver = CmcSolverKind::Nlopt;
+      else throw ParseError(path + ".solver: unknown solver \"" + s + "\" (expected newton, ceres or nlopt)");
+    }
+    if (hasH) {
+      p.kind = ProblemKind::CmcH;
+      p.H = number(j["H"], path + ".H");
+    } else {
+      p.kind = ProblemKind::CmcV;
+      p.V = number(j["V"], path + ".V");
+      if (!j.contains("solver")) p.solver = CmcSolverKind::Nlopt;
+      if (p.solver != CmcSolverKind::Nlopt)
+        throw UnsupportedProblem(path + ": a cmc problem with \"V\" needs \"solver\": \"nlopt\"");
+    }
+  } else {
+    throw ParseError(path + ".kind: unknown problem kind \"" + kind +
+                     "\" (expected extremal, pde, tetraharmonic, biharmonic-load or cmc)");
+  }
+  return p;
+}
+
+void validate_combination(const Job& job, const std::string& src) {
+  const std::string kind = net_kind(job.net);
+  const ProblemKind pk = job.problem.kind;
+  const FixedSet fx = job.fixed;
+  const std::string what = "problem \"" + to_string(pk) + "\"";
+  auto fail = [&](const std::string& msg) { throw UnsupportedProblem(src + ": " + msg); };
+  auto degree_fail = [&](const std::string& msg) { throw DegreeError(src + ": " + msg); };
+
+  if (kind == "triangular" && fx == FixedSet::UBoundaries)
+    fail("fixed \"u-boundaries\" is only defined for tensor nets");
+
+  // Minimum degrees for surfaces from boundary data (FORMATS.md problem table).
+  auto min_degree_check = [&]() {
+    if (kind == "tensor" || kind == "bspline") {
+      int n, m;
+      if (kind == "tensor") {
+        n = std::get<TensorNet>(job.net).n();
+        m = std::get<TensorNet>(job.net).m();
+      } else {
+        n = std::get<BSplineNet>(job.net).p();
+        m = std::get<BSplineNet>(job.net).q();
+      }
+      const int need = fx == FixedSet::BoundaryAdjacent ? 4 : 2;
+      if (n < need || m < need)
+        degree_fail(what + " on a " + kind + " net with " + to_string(fx) + " data needs degrees >= " +
+                    std::to_string(need) + ", got [" + std::to_string(n) + ", " + std::to_string(m) + "]");
+    } else {
+      const int n = std::get<TriangularNet>(job.net).n();
+      const int need = fx == FixedSet::BoundaryAdjacent ? 6 : 3;
+      if (n < need)
+        degree_fail(what + " on a triangular net with " + to_string(fx) + " data needs degree >= " +
+                    std::to_string(need) + ", got " + std::to_string(n));
+    }
+  };
+
+  switch (pk) {
+    case ProblemKind::Extremal: min_degree_check(); break;
+    case ProblemKind::Pde: {
+      const EnergySpec& e = *job.problem.energy;
+      if (kind == "triangular") fail("problem \"pde\" needs a tensor or bspline net, not a triangular net");
+      if (kind == "bspline" && job.problem.method == PdeMethod::Explicit)
+        fail("problem \"pde\" on a bspline net has no explicit method; use \"method\": \"lu\"");
+      if (e.order() == 4 && fx != FixedSet::Boundary)
+        fail("a fourth-order pde (" + e.name() + ") takes \"fixed\": \"boundary\"");
+      if (e.order() == 2 && !(kind == "tensor" && fx == FixedSet::UBoundaries))
+        fail("a second-order pde (" + e.name() + ") takes a tensor net with \"fixed\": \"u-boundaries\"");
+      if (e.order() == 2 && job.problem.method == PdeMethod::Explicit)
+        fail("the second-order pde has no explicit method in seed 001; use \"method\": \"lu\"");
+      if (e.order() == 4 && job.problem.method == PdeMethod::Explicit && !e.has_explicit_solution())
+        fail("operator " + e.name() +
+             " has no explicit solution (seed 001 covers Coons, biharmonic, laplacian-squared, modified "
+             "biharmonic and G-norm operators); use \"method\": \"lu\"");
+      if (kind == "tensor") {
+        const auto& t = std::get<TensorNet>(job.net);
+        if (t.n() < 2 || t.m() < 2)
+          degree_fail("problem \"pde\" needs degrees >= 2, got [" + std::to_string(t.n()) + ", " + std::to_string(t.m()) + "]");
+      }
+      break;
+    }
+    case ProblemKind::Tetraharmonic:
+    case ProblemKind::BiharmonicLoad: {
+      if (kind != "tensor") fail(what + " needs a tensor net, not a " + kind + " net");
+      if (fx != FixedSet::BoundaryAdjacent) fail(what + " takes C1 data: \"fixed\": \"boundary+adjacent\"");
+      const auto& t = std::get<TensorNet>(job.net);
+      if (t.n() != t.m()) degree_fail(what + " needs n = m, got [" + std::to_string(t.n()) + ", " + std::to_string(t.m()) + "]");
+      if (t.n() < 4) degree_fail(what + " needs n = m >= 4, got " + std::to_string(t.n()));
+      break;
+    }
+    case ProblemKind::CmcH:
+    case ProblemKind::CmcV:
+      if (kind == "bspline") fail("problem \"cmc\" needs a triangular or tensor net, not a bspline net");
+      min_degree_check();
+      break;
+  }
+}
+
+}  // namespace
+
+Job job_from_json(const Json& j, const std::string& source) {
+  using namespace json_read;
+  check_keys(j, source, {"net", "fixed", "problem", "samples"});
+  Job job{net_from_json(field(j, source, "net"), source + ".net"), FixedSet::Boundary, {}, 50};
+  if (j.contains("fixed")) job.fixed = fixed_from_string(string(j["fixed"], source + ".fixed"), source + ".fixed");
+  job.problem = problem_from_json(field(j, source, "problem"), source + ".problem");
+  if (j.contains("samples")) {
+    job.samples = integer(j["samples"], source + ".samples");
+    if (job.samples < 1 || job.samples > kMaxSamples)
+      throw ParameterError(source + ".samples: must be in 1.." + std::to_string(kMaxSamples) + ", got " +
+                           std::to_string(job.samples));
+  }
+  validate_combination(job, source);
+  return job;
+}
+
+Job read_job_file(const std::string& path) { return job_from_json(read_json_file(path), path); }
+
+}  // namespace bpde

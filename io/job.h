@@ -1,0 +1,52 @@
+#pragma once
+// Jobs of `bpde solve` (FORMATS.md "Jobs"): parsed and validated completely before anything runs,
+// so that bad input (exit 2) never leaves files behind.
+#include <optional>
+#include <string>
+
+#include "core/fixed_set.h"
+#include "energies/energy_spec.h"
+#include "io/json_io.h"
+
+namespace bpde {
+
+enum class ProblemKind { Extremal, Pde, Tetraharmonic, BiharmonicLoad, CmcH, CmcV };
+enum class PdeMethod { Explicit, Lu };
+enum class CmcSolverKind { Newton, Ceres, Nlopt };
+
+std::string to_string(ProblemKind k);
+std::string to_string(PdeMethod m);
+std::string to_string(CmcSolverKind s);
+
+struct Problem {
+  ProblemKind kind = ProblemKind::Extremal;
+  /// extremal: the energy; pde: the operator (its Euler–Lagrange operator).
+  std::optional<EnergySpec> energy;
+  PdeMethod method = PdeMethod::Lu;                ///< pde, tetraharmonic (default lu)
+  CmcSolverKind solver = CmcSolverKind::Newton;    ///< cmc (default newton)
+  double H = 0.0;                                  ///< cmc with "H"
+  double V = 0.0;                                  ///< cmc with "V"
+};
+
+struct Job {
+  Net net;
+  FixedSet fixed = FixedSet::Boundary;
+  Problem problem;
+  int samples = 50;  ///< mesh resolution of the surface files, 1..kMaxSamples
+};
+
+/// Largest accepted `samples` (a 2000^2 grid is 4M vertices; more is almost surely a mistake).
+inline constexpr int kMaxSamples = 2000;
+
+/// An ENERGY object (FORMATS.md). `allow_operator`: the "operator" form is accepted (pde only).
+EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_operator);
+/// The `--energy` argument of `bpde energy`: a bare name or an ENERGY JSON object.
+EnergySpec energy_from_argument(const std::string& arg);
+
+/// Parse and validate a whole job: the net, the fixed set, the problem, and their combination
+/// (net kinds, fixed sets and minimum degrees of the FORMATS.md problem table). Throws
+/// InvalidInput subclasses naming the JSON path.
+Job job_from_json(const Json& j, const std::string& source = "job");
+Job read_job_file(const std::string& path);
+
+}  // namespace bpde

@@ -1,0 +1,59 @@
+#pragma once
+// JSON files of FORMATS.md: reading (strict) and writing of nets. The io/ folder is the only
+// place of the library that knows the file formats.
+//
+// Strictness: malformed JSON, duplicate keys, unknown fields, values of the wrong JSON type,
+// numbers that overflow (1e999), non-finite values, degrees out of 1..64 (checked before the
+// point count) and wrong point counts all throw InvalidInput subclasses whose message names the
+// JSON path, e.g. `net.points[3][1]: expected a number`.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <variant>
+
+#include "tensor/bspline_net.h"
+#include "tensor/tensor_net.h"
+#include "triangular/triangular_net.h"
+
+namespace bpde {
+
+using Json = nlohmann::json;
+/// Any net of FORMATS.md.
+using Net = std::variant<TensorNet, TriangularNet, BSplineNet>;
+
+/// Parse JSON text; `source` names it in errors (a file name). Throws ParseError.
+Json parse_json(const std::string& text, const std::string& source);
+/// Read and parse a file. Throws FileError (missing, unreadable) or ParseError.
+Json read_json_file(const std::string& path);
+/// Write `j` to a file (pretty-printed, full double precision). Throws FileError.
+void write_json_file(const std::string& path, const Json& j);
+
+/// Strict readers used by every parser of io/ (path is the JSON path for messages).
+namespace json_read {
+void require_object(const Json& j, const std::string& path);
+/// Throws ParseError naming the first key of `j` not in `allowed`.
+void check_keys(const Json& j, const std::string& path, std::initializer_list<const char*> allowed);
+const Json& field(const Json& j, const std::string& path, const char* key);  // required
+double number(const Json& j, const std::string& path);                       // finite number
+int integer(const Json& j, const std::string& path);                          // integral number
+std::string string(const Json& j, const std::string& path);
+bool boolean(const Json& j, const std::string& path);
+/// An array of `len` numbers (len < 0: any length).
+std::vector<double> numbers(const Json& j, const std::string& path, int len = -1);
+/// An array of [x, y, z] triples as a #points by 3 matrix.
+Eigen::MatrixX3d points(const Json& j, const std::string& path);
+}  // namespace json_read
+
+/// Net from its JSON object (FORMATS.md "Nets"); `path` prefixes error messages.
+Net net_from_json(const Json& j, const std::string& path = "net");
+/// Read a net file.
+Net read_net_file(const std::string& path);
+
+Json net_to_json(const TensorNet& net);
+Json net_to_json(const TriangularNet& net);
+Json net_to_json(const BSplineNet& net);
+Json net_to_json(const Net& net);
+
+/// "tensor", "triangular" or "bspline".
+std::string net_kind(const Net& net);
+
+}  // namespace bpde

@@ -1,0 +1,105 @@
+#include "io/mesh_io.h"
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "core/errors.h"
+
+namespace bpde {
+namespace {
+
+struct File {
+  std::FILE* f = nullptr;
+  std::string path;
+  explicit File(const std::string& p) : f(std::fopen(p.c_str(), "wb")), path(p) {
+    if (!f) throw FileError("cannot write file '" + p + "'");
+  }
+  ~File() {
+    if (f) std::fclose(f);
+  }
+  void close() {
+    const bool bad = std::ferror(f) != 0;
+    const int rc = std::fclose(f);
+    f = nullptr;
+    if (bad || rc != 0) throw FileError("error while writing '" + path + "'");
+  }
+};
+
+void write_vertices(std::FILE* f, const Eigen::MatrixX3d& V) {
+  for (Eigen::Index r = 0; r < V.rows(); ++r) std::fprintf(f, "v %.17g %.17g %.17g\n", V(r, 0), V(r, 1), V(r, 2));
+}
+
+}  // namespace
+
+void write_obj(const std::string& path, const TriangleMesh& mesh) {
+  File out(path);
+  std::fprintf(out.f, "# bezierpde surface: %ld vertices, %ld triangles\n", static_cast<long>(mesh.V.rows()),
+               static_cast<long>(mesh.F.rows()));
+  write_vertices(out.f, mesh.V);
+  for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
+    std::fprintf(out.f, "f %d %d %d\n", mesh.F(r, 0) + 1, mesh.F(r, 1) + 1, mesh.F(r, 2) + 1);
+  out.close();
+}
+
+void write_ply(const std::string& path, const TriangleMesh& mesh) {
+  File out(path);
+  std::fprintf(out.f,
+               "ply\nformat ascii 1.0\ncomment bezierpde surface; mean_curvature per FORMATS.md sign convention\n"
+               "element vertex %ld\nproperty double x\nproperty double y\nproperty double z\n"
+               "property double mean_curvature\nelement face %ld\nproperty list uchar int vertex_indices\nend_header\n",
+               static_cast<long>(mesh.V.rows()), static_cast<long>(mesh.F.rows()));
+  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r)
+    std::fprintf(out.f, "%.17g %.17g %.17g %.17g\n", mesh.V(r, 0), mesh.V(r, 1), mesh.V(r, 2),
+                 r < mesh.H.size() ? mesh.H(r) : 0.0);
+  for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
+    std::fprintf(out.f, "3 %d %d %d\n", mesh.F(r, 0), mesh.F(r, 1), mesh.F(r, 2));
+  out.close();
+}
+
+void write_net_obj(const std::string& path, const Net& net) {
+  File out(path);
+  std::fprintf(out.f, "# bezierpde control net (%s)\n", net_kind(net).c_str());
+  auto line = [&](int a, int b) { std::fprintf(out.f, "l %d %d\n", a + 1, b + 1); };
+  if (const auto* t = std::get_if<TensorNet>(&net)) {
+    write_vertices(out.f, t->points());
+    for (int i = 0; i <= t->n(); ++i)
+      for (int j = 0; j <= t->m(); ++j) {
+        if (i < t->n()) line(t->index(i, j), t->index(i + 1, j));
+        if (j < t->m()) line(t->index(i, j), t->index(i, j + 1));
+      }
+  } else if (const auto* b = std::get_if<BSplineNet>(&net)) {
+    write_vertices(out.f, b->points());
+    for (int i = 0; i < b->nu(); ++i)
+      for (int j = 0; j < b->nv(); ++j) {
+        if (i + 1 < b->nu()) line(b->index(i, j), b->index(i + 1, j));
+        if (j + 1 < b->nv()) line(b->index(i, j), b->index(i, j + 1));
+      }
+  } else {
+    const auto& tr = std::get<TriangularNet>(net);
+    write_vertices(out.f, tr.points());
+    const int n = tr.n();
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n - i; ++j) {
+        // neighbours of I = (i, j, k) towards I - e3 + e1, I - e3 + e2 and I - e1 + e2
+        if (n - i - j > 0) {
+          line(tr.index(i, j), tr.index(i + 1, j));
+          line(tr.index(i, j), tr.index(i, j + 1));
+        }
+        if (i > 0) line(tr.index(i, j), tr.index(i - 1, j + 1));
+      }
+  }
+  out.close();
+}
+
+TriangleMesh sample_net(const Net& net, int samples) {
+  return std::visit([samples](const auto& n) { return sample_mesh(n, samples); }, net);
+}
+
+void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh) {
+  write_obj(dir + "/surface.obj", mesh);
+  write_ply(dir + "/surface.ply", mesh);
+  write_net_obj(dir + "/net.obj", net);
+}
+
+}  // namespace bpde

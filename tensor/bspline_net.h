@@ -1,0 +1,64 @@
+#pragma once
+// Tensor-product B-spline surfaces (seed 002, Sun–Zhu), in the layout of FORMATS.md.
+//
+//   x(u,v) = sum_{i<nu} sum_{j<nv} N_{i,p}(u) N_{j,q}(v) P_ij,  P_ij at row i*nv + j,
+//   nu = len(U) - p - 1, nv = len(V) - q - 1; N_{i,p} has support [U_i, U_{i+p+1}] (standard
+//   indexing, NOTES.md). Domain [U_p, U_nu] x [V_q, V_nv].
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/differential_geometry.h"
+#include "core/fixed_set.h"
+#include "core/mesh.h"
+
+namespace bpde {
+
+class BSplineNet {
+ public:
+  /// Validates (typed exceptions of core/errors.h): degrees 1..kMaxDegree (DegreeError); finite,
+  /// non-decreasing knots with multiplicity <= degree + 1, at least degree + 1 control points per
+  /// direction and a non-empty domain (ParameterError / SizeError); point count nu*nv (SizeError);
+  /// finite coordinates (NonFiniteError).
+  BSplineNet(int p, int q, std::vector<double> U, std::vector<double> V, Eigen::MatrixX3d points);
+
+  int p() const { return p_; }
+  int q() const { return q_; }
+  int nu() const { return static_cast<int>(U_.size()) - p_ - 1; }
+  int nv() const { return static_cast<int>(V_.size()) - q_ - 1; }
+  int size() const { return nu() * nv(); }
+  int index(int i, int j) const { return i * nv() + j; }
+  const std::vector<double>& knots_u() const { return U_; }
+  const std::vector<double>& knots_v() const { return V_; }
+  const Eigen::MatrixX3d& points() const { return points_; }
+  Eigen::MatrixX3d& points() { return points_; }
+  double u_min() const { return U_[static_cast<size_t>(p_)]; }
+  double u_max() const { return U_[static_cast<size_t>(nu())]; }
+  double v_min() const { return V_[static_cast<size_t>(q_)]; }
+  double v_max() const { return V_[static_cast<size_t>(nv())]; }
+
+  /// Derivative of order (du, dv) at (u, v) in the knot domain (clamped to it).
+  Eigen::Vector3d derivative(double u, double v, int du, int dv) const;
+  Eigen::Vector3d evaluate(double u, double v) const { return derivative(u, v, 0, 0); }
+  SurfaceJet jet(double u, double v) const;
+  FundamentalForms geometry(double u, double v) const;
+
+  /// #t by n_basis table of the d-th derivatives of the basis functions (Piegl–Tiller A2.3) of
+  /// one direction: knots K, degree k.
+  static Eigen::MatrixXd basis_table(int k, const std::vector<double>& K, const Eigen::VectorXd& t, int d = 0);
+
+  /// Indices (i, j) with min(i, nu-1-i, j, nv-1-j) == r.
+  std::vector<int> ring_indices(int r) const;
+  std::vector<int> fixed_indices(FixedSet fixed) const;
+  std::vector<int> free_indices(FixedSet fixed) const;
+
+ private:
+  int p_, q_;
+  std::vector<double> U_, V_;
+  Eigen::MatrixX3d points_;
+};
+
+/// Sample on the (N+1)^2 grid mapped linearly onto the knot domain, in the tensor order
+/// a(N+1)+b, with mean curvature per vertex.
+TriangleMesh sample_mesh(const BSplineNet& net, int N);
+
+}  // namespace bpde

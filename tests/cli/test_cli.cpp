@@ -1,0 +1,104 @@
+// The bpde command's contract (FORMATS.md "Exit status and errors"), by running the binary.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CmdResult {
+  int status;
+  std::string out, err;
+};
+
+fs::path tmpdir() {
+  static const fs::path d = [] {
+    fs::path p = fs::temp_directory_path() / ("bpde_cli_" + std::to_string(::getpid()));
+    fs::create_directories(p);
+    return p;
+  }();
+  return d;
+}
+
+CmdResult run(const std::string& args) {
+  const fs::path o = tmpdir() / "stdout", e = tmpdir() / "stderr";
+  const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
+  const int rc = std::system(cmd.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  return {WEXITSTATUS(rc), slurp(o), slurp(e)};
+}
+
+fs::path write(const std::string& name, const std::string& text) {
+  const fs::path p = tmpdir() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const char* kTensor =
+    R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})";
+
+void expect_bad_input(const std::string& args, const std::string& needle) {
+  const CmdResult r = run(args);
+  EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << "message should mention '" << needle << "': " << r.err;
+}
+
+}  // namespace
+
+TEST(Cli, SampleWritesTheFilesInTheDocumentedOrder) {
+  const fs::path net = write("t.json", kTensor);
+  const fs::path out = tmpdir() / "nested" / "sample";
+  const CmdResult r = run("sample " + net.string() + " --out " + out.string() + " --samples 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream obj(out / "surface.obj");
+  std::string line;
+  std::vector<std::string> v;
+  while (std::getline(obj, line))
+    if (line.rfind("v ", 0) == 0) v.push_back(line);
+  ASSERT_EQ(v.size(), 9u);
+  EXPECT_EQ(v[1], "v 0 0.5 0");    // a = 0, b = 1: (u, v) = (0, 1/2)
+  EXPECT_EQ(v[5], "v 0.5 1 0.5");  // a = 1, b = 2
+  EXPECT_TRUE(fs::exists(out / "surface.ply"));
+  EXPECT_TRUE(fs::exists(out / "net.obj"));
+}
+
+TEST(Cli, BadInputExitsTwoWithOneLineAndWritesNothing) {
+  const fs::path out = tmpdir() / "never";
+  expect_bad_input("sample " + (tmpdir() / "missing.json").string() + " --out " + out.string(), "missing.json");
+  expect_bad_input("sample " + write("m.json", "{\"type\": \"tensor\", ").string() + " --out " + out.string(),
+                   "malformed JSON");
+  expect_bad_input("sample " + write("nan.json", R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1e999]]})").string() + " --out " + out.string(),
+                   "overflow");
+  expect_bad_input("sample " + write("cnt.json", R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0]]})").string() + " --out " + out.string(),
+                   "needs 4 points");
+  expect_bad_input("sample " + write("deg.json", R"({"type": "triangular", "degree": 0, "points": []})").string() + " --out " + out.string(),
+                   "degree");
+  expect_bad_input("sample " + write("deg2.json", R"({"type": "triangular", "degree": 99, "points": []})").string() + " --out " + out.string(),
+                   "1..64");
+  expect_bad_input("sample " + write("unk.json", R"({"type": "tensor", "degree": [1, 1], "weights": [], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})").string() + " --out " + out.string(),
+                   "unknown field");
+  expect_bad_input("solve " + write("job.json", std::string(R"({"net": )") + kTensor + R"(, "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}})").string() + " --out " + out.string(),
+                   "degrees >= 2");
+  expect_bad_input("solve " + write("job2.json", std::string(R"({"net": )") + kTensor + R"(, "problem": {"kind": "extremal", "energy": {"name": "gnorm", "G": [[1, 2], [2, 4]]}}})").string() + " --out " + out.string(),
+                   "singular");
+  expect_bad_input("sample", "required");
+  expect_bad_input("sample " + write("t2.json", kTensor).string() + " --out " + out.string() + " --samples 0", "samples");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").status, 0); }
