@@ -1,5 +1,6 @@
 #include "energies/volume.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 

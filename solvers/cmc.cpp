@@ -257,6 +257,12 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     if (accept) accept = st.pd == 1 || (st.pd == -1 && positive_definite(p, hn)) ||
                          (st.pd == 0 && positive_definite(p, hn));
     if (accept) {
+      // Stay on the branch: the corrector may move the predictor by at most half the step.
+      const Eigen::VectorXd yn = p.get();
+      const double dev = (yn - pred).norm(), move = (yn - y).norm();
+      accept = dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
+    }
+    if (accept) {
       polish += st.polish_steps;
       y_prev = y;
       h_prev = h;

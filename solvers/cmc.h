@@ -6,9 +6,11 @@
 //  - H mode (options.V unset): the critical point of D_H on the branch continued from the
 //    Dirichlet extremal (H = 0, a linear solve) to the requested H, before the branch's first fold.
 //    Continuation in H with step control: predictor (tangent at H = 0, then secant), corrector =
-//    the chosen solver; a step is accepted when the corrector meets the tolerance AND the Hessian
+//    the chosen solver; a step is accepted when the corrector meets the tolerance, the Hessian
 //    of D_H over the free points is positive definite (on the branch from H = 0 the critical point
-//    is a strict local minimum until the first fold, where the Hessian becomes singular).
+//    is a strict local minimum until the first fold, where the Hessian becomes singular), and the
+//    corrector moved the predicted point by at most half the step (so no jump to another branch).
+//    Accepted steps with few corrector iterations double the next step; rejected ones halve it.
 //    When the step collapses (fold: singular Hessian, no convergence), the result has
 //    converged = false, message "no critical point on the branch from H = 0 beyond H ≈ <h>", and
 //    holds the last point of the branch (at H = h, result.H = h).

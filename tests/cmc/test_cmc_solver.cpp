@@ -60,9 +60,9 @@ TEST(CmcSolver, PlanarBoundaryMirrorsUnderHToMinusH) {
   // Tensor: the unit square in z = 0, corners P_00 -> P_n0 -> P_nn -> P_0n counter-clockwise.
   const TensorNet td = testutil::tensor_boundary(
       5, [](double u, double v) { return Eigen::Vector3d(u + 0.05 * u * v, v, 0); });
-  const auto ta = solve_cmc(td, opts(-2.0));
-  const auto tb = solve_cmc(td, opts(2.0));
-  ASSERT_TRUE(ta.summary.converged && tb.summary.converged);
+  const auto ta = solve_cmc(td, opts(-1.0));
+  const auto tb = solve_cmc(td, opts(1.0));
+  ASSERT_TRUE(ta.summary.converged && tb.summary.converged) << ta.summary.message << " | " << tb.summary.message;
   Eigen::MatrixX3d tm = tb.net.points();
   tm.col(2) *= -1;
   EXPECT_LT(rel_points(ta.net.points(), tm), 1e-10);
