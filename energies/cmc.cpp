@@ -100,16 +100,25 @@ Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H,
   return Hs;
 }
 
+Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double H,
+                                              const std::vector<int>& idx) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  Eigen::MatrixX3d G(static_cast<Eigen::Index>(idx.size()), 3);
+  for (size_t a = 0; a < idx.size(); ++a) G.row(static_cast<Eigen::Index>(a)) = gram_.row(idx[a]) * P;
+  if (H != 0.0) G += 2.0 * H * volume_.gradient_rows(P, idx);
+  return G;
+}
+
 double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H,
                                const std::vector<int>& idx) const {
-  const Eigen::MatrixX3d F = gradient(P, H);
-  Eigen::MatrixX3d S = gram_.cwiseAbs() * P.cwiseAbs();
-  if (H != 0.0) S += 2.0 * std::abs(H) * volume_.gradient_scale(P);
-  double num = 0, den = 0;
-  for (int I : idx) {
-    num = std::max(num, F.row(I).cwiseAbs().maxCoeff());
-    den = std::max(den, S.row(I).maxCoeff());
-  }
+  const Eigen::MatrixX3d F = gradient_rows(P, H, idx);
+  const Eigen::MatrixX3d absP = P.cwiseAbs();
+  Eigen::MatrixX3d S(static_cast<Eigen::Index>(idx.size()), 3);
+  for (size_t a = 0; a < idx.size(); ++a)
+    S.row(static_cast<Eigen::Index>(a)) = gram_.row(idx[a]).cwiseAbs() * absP;
+  if (H != 0.0) S += 2.0 * std::abs(H) * volume_.gradient_scale_rows(P, idx);
+  const double num = idx.empty() ? 0.0 : F.cwiseAbs().maxCoeff();
+  const double den = idx.empty() ? 0.0 : S.maxCoeff();
   if (!std::isfinite(num)) return std::numeric_limits<double>::infinity();
   if (den == 0.0) return num == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
   return num / den;

@@ -52,11 +52,14 @@ class CmcFunctional {
   double value(const Eigen::MatrixX3d& P, double H) const;
   /// N x 3 gradient of D_H (rows F_I).
   Eigen::MatrixX3d gradient(const Eigen::MatrixX3d& P, double H) const;
+  /// k x 3 rows idx of the gradient (fast for interior points, VolumeForm::gradient_rows).
+  Eigen::MatrixX3d gradient_rows(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx) const;
   /// 3k x 3k Hessian of D_H over the points idx.
   Eigen::MatrixXd hessian(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx) const;
   /// Relative residual of eq. (11) over the points idx:
-  ///   max_{I in idx, c} |F_Ic| / max_{I in idx, c} (sum_J |C_IJ| |P_Jc| + 2|H| |dV/dP_I|_terms),
-  /// the denominator being the size of the terms of F (volume.h gradient_scale).
+  ///   max_{I in idx, c} |F_Ic| / max_{I in idx, c} (sum_J |C_IJ| |P_Jc| + 2|H| S_Ic),
+  /// the denominator being the size of the terms of F: S_I = ∫ B_I |x_u ∧ x_v| (componentwise) for
+  /// interior points (VolumeForm::gradient_scale_rows).
   double residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx) const;
 
  private:

@@ -38,6 +38,23 @@ VolumeForm VolumeForm::triangular(int n) {
   f.B_ = triangular_basis_table(n, rule.uv, 0, 0);
   f.Bu_ = triangular_basis_table(n, rule.uv, 1, 0);
   f.Bv_ = triangular_basis_table(n, rule.uv, 0, 1);
+  f.triangular_ = true;
+  f.n_ = f.m_ = n;
+  const auto I = triangular_multi_indices(n);
+  f.interior_.resize(I.size());
+  for (size_t r = 0; r < I.size(); ++r) f.interior_[r] = (I[r][0] > 0 && I[r][1] > 0 && I[r][2] > 0);
+  f.Du_ = triangular_derivative_operator(n, 1, 0);
+  f.Dv_ = triangular_derivative_operator(n, 0, 1);
+  f.Mt_ = triangular_product_integrals(2 * n - 1, n - 1);
+  auto mults = [](int d) {
+    const auto J = triangular_multi_indices(d);
+    Eigen::VectorXd v(static_cast<Eigen::Index>(J.size()));
+    for (size_t r = 0; r < J.size(); ++r) v(static_cast<Eigen::Index>(r)) = multinomial(d, J[r][0], J[r][1]);
+    return v;
+  };
+  f.mult_n_ = mults(n);
+  f.mult_n1_ = mults(n - 1);
+  f.mult_2n1_ = mults(2 * n - 1);
   return f;
 }
 
@@ -68,11 +85,26 @@ VolumeForm VolumeForm::tensor(int n, int m) {
           f.Bv_(s, c) = Tu[0](a, i) * Tv[1](b, j);
         }
     }
+  f.triangular_ = false;
+  f.n_ = n;
+  f.m_ = m;
+  f.interior_.resize(static_cast<size_t>(N));
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= m; ++j)
+      f.interior_[static_cast<size_t>(i * (m + 1) + j)] = (i > 0 && i < n && j > 0 && j < m);
+  f.Mu1_ = bernstein_product_integrals(2 * n, n - 1);
+  f.Mv1_ = bernstein_product_integrals(2 * m - 1, m);
+  f.Mu2_ = bernstein_product_integrals(2 * n - 1, n);
+  f.Mv2_ = bernstein_product_integrals(2 * m, m - 1);
   return f;
 }
 
 std::size_t VolumeForm::memory_bytes() const {
-  return sizeof(double) * static_cast<std::size_t>(w_.size() + B_.size() + Bu_.size() + Bv_.size());
+  return sizeof(double) * static_cast<std::size_t>(w_.size() + B_.size() + Bu_.size() + Bv_.size() +
+                                                   Du_.size() + Dv_.size() + Mt_.size() +
+                                                   mult_n_.size() + mult_n1_.size() + mult_2n1_.size() +
+                                                   Mu1_.size() + Mv1_.size() + Mu2_.size() + Mv2_.size()) +
+         interior_.size();
 }
 
 void VolumeForm::check(const Eigen::MatrixX3d& P) const {
@@ -115,7 +147,154 @@ Eigen::MatrixX3d VolumeForm::gradient_scale(const Eigen::MatrixX3d& P) const {
          3.0;
 }
 
+bool VolumeForm::all_interior(const std::vector<int>& idx) const {
+  for (int I : idx) {
+    if (I < 0 || I >= B_.cols()) throw SizeError("VolumeForm: point index out of range");
+    if (!interior_[static_cast<size_t>(I)]) return false;
+  }
+  return true;
+}
+
 Eigen::MatrixXd VolumeForm::hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+  check(P);
+  if (all_interior(idx))
+    return triangular_ ? hessian_interior_triangular(P, idx) : hessian_interior_tensor(P, idx);
+  return hessian_quadrature(P, idx);
+}
+
+namespace {
+
+// Writes the 3x3 block [a]_x of the pair (I, L) into Hs.
+inline void put_cross(Eigen::MatrixXd& Hs, Eigen::Index I, Eigen::Index L, const Eigen::Vector3d& a) {
+  Hs(3 * I + 0, 3 * L + 1) = -a(2);
+  Hs(3 * I + 0, 3 * L + 2) = a(1);
+  Hs(3 * I + 1, 3 * L + 0) = a(2);
+  Hs(3 * I + 1, 3 * L + 2) = -a(0);
+  Hs(3 * I + 2, 3 * L + 0) = -a(1);
+  Hs(3 * I + 2, 3 * L + 1) = a(0);
+}
+
+}  // namespace
+
+Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& P,
+                                                        const std::vector<int>& idx) const {
+  // a_IL = ∫ B_I (B_L)_v x_u - ∫ B_I (B_L)_u x_v, with
+  //   B_I^n (B_L^n)_v = n [beta(I, L-e2) B^{2n-1}_{I+L-e2} - beta(I, L-e3) B^{2n-1}_{I+L-e3}],
+  //   beta(I, J) = mult(n, I) mult(n-1, J) / mult(2n-1, I+J)   (B_I^n B_J^{n-1} = beta B_{I+J}^{2n-1}),
+  //   ∫ B^{2n-1}_S x_u = Wu(S) = (Mt * (Du P))(S), and likewise for (B_L)_u and x_v.
+  const int n = n_;
+  const Eigen::MatrixX3d Wu = Mt_ * (Du_ * P);
+  const Eigen::MatrixX3d Wv = Mt_ * (Dv_ * P);
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
+  std::vector<std::array<int, 3>> J(static_cast<size_t>(k));
+  {
+    const auto all = triangular_multi_indices(n);
+    for (Eigen::Index a = 0; a < k; ++a) J[static_cast<size_t>(a)] = all[static_cast<size_t>(idx[static_cast<size_t>(a)])];
+  }
+  auto tidx = [](int d, int i, int j) {
+    const int s = d - i;
+    return s * (s + 1) / 2 + (s - j);
+  };
+  // Contribution n * beta(I, L - e_r) * W(I + L - e_r) (zero if L_r = 0).
+  auto term = [&](const std::array<int, 3>& I, const std::array<int, 3>& L, int r,
+                  const Eigen::MatrixX3d& W) -> Eigen::Vector3d {
+    if (L[static_cast<size_t>(r)] == 0) return Eigen::Vector3d::Zero();
+    std::array<int, 3> Lr = L;
+    --Lr[static_cast<size_t>(r)];
+    const double beta = mult_n_(tidx(n, I[0], I[1])) * mult_n1_(tidx(n - 1, Lr[0], Lr[1])) /
+                        mult_2n1_(tidx(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1]));
+    return n * beta * W.row(tidx(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1])).transpose();
+  };
+  Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
+  for (Eigen::Index a = 0; a < k; ++a)
+    for (Eigen::Index b = a + 1; b < k; ++b) {
+      const auto& I = J[static_cast<size_t>(a)];
+      const auto& L = J[static_cast<size_t>(b)];
+      const Eigen::Vector3d v = term(I, L, 1, Wu) - term(I, L, 2, Wu) - term(I, L, 0, Wv) + term(I, L, 2, Wv);
+      put_cross(Hs, a, b, v);
+      put_cross(Hs, b, a, -v);
+    }
+  return Hs;
+}
+
+Eigen::MatrixXd VolumeForm::hessian_interior_tensor(const Eigen::MatrixX3d& P,
+                                                    const std::vector<int>& idx) const {
+  // I = (i,j), L = (k,l).  a_IL = ∫ B_I (B_L)_v x_u - ∫ B_I (B_L)_u x_v with
+  //   B_I (B_L)_v = g_n(i,k) B^{2n}_{i+k}(u) * m [h_m(j,l-1) B^{2m-1}_{j+l-1}(v) - h_m(j,l) B^{2m-1}_{j+l}(v)],
+  //   g_n(i,k) = C(n,i)C(n,k)/C(2n,i+k),  h_m(j,l) = C(m,j)C(m-1,l)/C(2m-1,j+l),
+  //   ∫ B^{2n}_a(u) B^{2m-1}_b(v) x_u = Wu(a,b) = (Mu1 Xu Mv1^T)(a,b), Xu = n (P_{i+1,j} - P_{ij}).
+  const int n = n_, m = m_;
+  std::array<Eigen::MatrixXd, 3> Wu, Wv;
+  for (int c = 0; c < 3; ++c) {
+    Eigen::MatrixXd Xu(n, m + 1), Xv(n + 1, m);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= m; ++j) {
+        if (i < n) Xu(i, j) = n * (P((i + 1) * (m + 1) + j, c) - P(i * (m + 1) + j, c));
+        if (j < m) Xv(i, j) = m * (P(i * (m + 1) + j + 1, c) - P(i * (m + 1) + j, c));
+      }
+    Wu[static_cast<size_t>(c)] = Mu1_ * Xu * Mv1_.transpose();  // (2n+1) x 2m
+    Wv[static_cast<size_t>(c)] = Mu2_ * Xv * Mv2_.transpose();  // 2n x (2m+1)
+  }
+  auto g = [](int d, int i, int k) { return binomial(d, i) * binomial(d, k) / binomial(2 * d, i + k); };
+  auto h = [](int d, int j, int l) {
+    if (l < 0 || l > d - 1) return 0.0;
+    return binomial(d, j) * binomial(d - 1, l) / binomial(2 * d - 1, j + l);
+  };
+  const Eigen::Index K = static_cast<Eigen::Index>(idx.size());
+  Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * K, 3 * K);
+  for (Eigen::Index a = 0; a < K; ++a)
+    for (Eigen::Index b = a + 1; b < K; ++b) {
+      const int IA = idx[static_cast<size_t>(a)], LB = idx[static_cast<size_t>(b)];
+      const int i = IA / (m + 1), j = IA % (m + 1), k = LB / (m + 1), l = LB % (m + 1);
+      Eigen::Vector3d v;
+      const double gu = g(n, i, k), gv = g(m, j, l);
+      const double h1 = h(m, j, l - 1), h2 = h(m, j, l), h3 = h(n, i, k - 1), h4 = h(n, i, k);
+      for (int c = 0; c < 3; ++c) {
+        const Eigen::MatrixXd& U = Wu[static_cast<size_t>(c)];
+        const Eigen::MatrixXd& W = Wv[static_cast<size_t>(c)];
+        double t1 = 0, t2 = 0;
+        if (h1 != 0) t1 += h1 * U(i + k, j + l - 1);
+        if (h2 != 0) t1 -= h2 * U(i + k, j + l);
+        if (h3 != 0) t2 += h3 * W(i + k - 1, j + l);
+        if (h4 != 0) t2 -= h4 * W(i + k, j + l);
+        v(c) = gu * m * t1 - gv * n * t2;
+      }
+      put_cross(Hs, a, b, v);
+      put_cross(Hs, b, a, -v);
+    }
+  return Hs;
+}
+
+Eigen::MatrixX3d VolumeForm::gradient_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+  check(P);
+  Eigen::MatrixX3d out(static_cast<Eigen::Index>(idx.size()), 3);
+  if (all_interior(idx)) {
+    const Eigen::MatrixX3d Nw = w_.asDiagonal() * cross_rows(Bu_ * P, Bv_ * P);
+    for (size_t a = 0; a < idx.size(); ++a)
+      out.row(static_cast<Eigen::Index>(a)) = B_.col(idx[a]).transpose() * Nw;
+    return out;
+  }
+  const Eigen::MatrixX3d G = gradient(P);
+  for (size_t a = 0; a < idx.size(); ++a) out.row(static_cast<Eigen::Index>(a)) = G.row(idx[a]);
+  return out;
+}
+
+Eigen::MatrixX3d VolumeForm::gradient_scale_rows(const Eigen::MatrixX3d& P,
+                                                 const std::vector<int>& idx) const {
+  check(P);
+  Eigen::MatrixX3d out(static_cast<Eigen::Index>(idx.size()), 3);
+  if (all_interior(idx)) {
+    const Eigen::MatrixX3d Nw = w_.asDiagonal() * cross_rows(Bu_ * P, Bv_ * P).cwiseAbs();
+    for (size_t a = 0; a < idx.size(); ++a)
+      out.row(static_cast<Eigen::Index>(a)) = B_.col(idx[a]).cwiseAbs().transpose() * Nw;
+    return out;
+  }
+  const Eigen::MatrixX3d G = gradient_scale(P);
+  for (size_t a = 0; a < idx.size(); ++a) out.row(static_cast<Eigen::Index>(a)) = G.row(idx[a]);
+  return out;
+}
+
+Eigen::MatrixXd VolumeForm::hessian_quadrature(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
   check(P);
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   const Eigen::Index q = w_.size();

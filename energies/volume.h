@@ -61,7 +61,21 @@ class VolumeForm {
   /// 1/3 ∫ |<x_u ∧ x_v, x>|: the size of the terms of V (relative volume tolerances).
   double value_scale(const Eigen::MatrixX3d& P) const;
   /// 3k x 3k Hessian restricted to the points idx (row 3a + c <-> (idx[a], c)). Symmetric.
+  /// When every point of idx is interior (its B_I vanishes on the boundary of the domain) the
+  /// Hessian is assembled in O(k^2) from exact Bernstein products (see volume.cpp): for interior
+  /// I, L, a_IL = ∫ B_I ((B_L)_v x_u - (B_L)_u x_v), and B_I (B_L)_v is a two-term Bernstein
+  /// polynomial of degree 2n-1. Otherwise by quadrature in O(k^2 #nodes).
   Eigen::MatrixXd hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+  /// The quadrature route of hessian() for any idx (kept for cross-checks).
+  Eigen::MatrixXd hessian_quadrature(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+  /// k x 3 rows idx of gradient() (for interior points: ∫ B_I x_u ∧ x_v).
+  Eigen::MatrixX3d gradient_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+  /// k x 3 size of the terms of gradient_rows: ∫ |B_I| |x_u ∧ x_v| (componentwise) for interior
+  /// points, the rows of gradient_scale() otherwise.
+  Eigen::MatrixX3d gradient_scale_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+  /// True when B_I vanishes on the boundary of the domain (triangular: every index >= 1;
+  /// tensor: 1 <= i <= n-1 and 1 <= j <= m-1).
+  bool interior(int I) const { return interior_[static_cast<std::size_t>(I)] != 0; }
 
   /// Quadrature nodes' data, for callers that evaluate other integrands on the same rule.
   const Eigen::VectorXd& weights() const { return w_; }
@@ -71,8 +85,20 @@ class VolumeForm {
 
  private:
   void check(const Eigen::MatrixX3d& P) const;
+  bool all_interior(const std::vector<int>& idx) const;
+  Eigen::MatrixXd hessian_interior_triangular(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+  Eigen::MatrixXd hessian_interior_tensor(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+  bool triangular_ = true;
+  int n_ = 1, m_ = 1;
   Eigen::VectorXd w_;
   Eigen::MatrixXd B_, Bu_, Bv_;  // #nodes x N: B_I, (B_I)_u, (B_I)_v at the nodes
+  std::vector<char> interior_;
+  // Fast interior Hessian data. Triangular: Du, Dv (count(n-1) x N) derivative nets and
+  // Mt = ∫ B^{2n-1} B^{n-1} (count(2n-1) x count(n-1)); multinomials of degree n, n-1, 2n-1.
+  // Tensor: Mu1 = ∫B^{2n}B^{n-1}, Mv1 = ∫B^{2m-1}B^m, Mu2 = ∫B^{2n-1}B^n, Mv2 = ∫B^{2m}B^{m-1}.
+  Eigen::MatrixXd Du_, Dv_, Mt_;
+  Eigen::VectorXd mult_n_, mult_n1_, mult_2n1_;
+  Eigen::MatrixXd Mu1_, Mv1_, Mu2_, Mv2_;
 };
 
 /// V = 1/3 ∫ <x_u ∧ x_v, x>, exact from the control net.

@@ -54,16 +54,16 @@ void CmcProblem::set(const Eigen::VectorXd& y) {
 }
 
 Eigen::VectorXd CmcProblem::gradient(double H) const {
-  const Eigen::MatrixX3d G = f->gradient(P, H);
+  const Eigen::MatrixX3d G = f->gradient_rows(P, H, free);
   Eigen::VectorXd g(3 * k());
-  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(free[static_cast<size_t>(a)]).transpose();
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(a).transpose();
   return g;
 }
 
 Eigen::VectorXd CmcProblem::volume_gradient() const {
-  const Eigen::MatrixX3d G = f->volume_form().gradient(P);
+  const Eigen::MatrixX3d G = f->volume_form().gradient_rows(P, free);
   Eigen::VectorXd g(3 * k());
-  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(free[static_cast<size_t>(a)]).transpose();
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(a).transpose();
   return g;
 }
 

@@ -231,6 +231,32 @@ TEST(Volume, GradientAndHessianAgainstFiniteDifferences) {
   }
 }
 
+TEST(Volume, FastInteriorHessianMatchesQuadrature) {
+  for (int n : {3, 4, 7, 12}) {
+    const VolumeForm f = VolumeForm::triangular(n);
+    const Eigen::MatrixX3d P = testutil::random_points(f.size(), 50 + n);
+    for (FixedSet fs : {FixedSet::Boundary, FixedSet::BoundaryAdjacent}) {
+      if (fs == FixedSet::BoundaryAdjacent && n < 6) continue;
+      const std::vector<int> idx = TriangularNet(n).free_indices(fs);
+      const Eigen::MatrixXd A = f.hessian(P, idx), B = f.hessian_quadrature(P, idx);
+      EXPECT_LE((A - B).cwiseAbs().maxCoeff(), 1e-13 * B.cwiseAbs().maxCoeff()) << n;
+      const Eigen::MatrixX3d G = f.gradient(P), Gr = f.gradient_rows(P, idx);
+      for (size_t a = 0; a < idx.size(); ++a)
+        EXPECT_LT((Gr.row(Eigen::Index(a)) - G.row(idx[a])).norm(), 1e-13 * G.cwiseAbs().maxCoeff());
+    }
+  }
+  for (auto [n, m] : {std::pair{2, 2}, {3, 5}, {6, 4}, {9, 9}}) {
+    const VolumeForm f = VolumeForm::tensor(n, m);
+    const Eigen::MatrixX3d P = testutil::random_points(f.size(), 60 + n + m);
+    const std::vector<int> idx = TensorNet(n, m).free_indices(FixedSet::Boundary);
+    const Eigen::MatrixXd A = f.hessian(P, idx), B = f.hessian_quadrature(P, idx);
+    EXPECT_LE((A - B).cwiseAbs().maxCoeff(), 1e-13 * B.cwiseAbs().maxCoeff()) << n << "," << m;
+    const Eigen::MatrixX3d G = f.gradient(P), Gr = f.gradient_rows(P, idx);
+    for (size_t a = 0; a < idx.size(); ++a)
+      EXPECT_LT((Gr.row(Eigen::Index(a)) - G.row(idx[a])).norm(), 1e-13 * G.cwiseAbs().maxCoeff());
+  }
+}
+
 TEST(Volume, InteriorGradientIsEq10WithoutTheSpuriousThird) {
   // For interior I: dV/dP_I = ∫ B_I x_u ∧ x_v = 1/2 sum_JK C_IJK P_J ∧ P_K (eqs. (7), (10)).
   const int n = 4;
