@@ -31,6 +31,7 @@ CmcFunctional CmcFunctional::triangular(int n) {
   CmcFunctional f;
   f.volume_ = VolumeForm::triangular(n);  // validates n
   f.gram_ = triangular_dirichlet_gram(n);
+  f.abs_gram_ = f.gram_.cwiseAbs();
   return f;
 }
 
@@ -42,6 +43,7 @@ CmcFunctional CmcFunctional::tensor(int n, int m) {
   const Eigen::MatrixXd Kv = bernstein_derivative_integrals(m, 1, 1);
   const Eigen::MatrixXd Mv = bernstein_product_integrals(m, m);
   f.gram_ = kron(Ku, Mv) + kron(Mu, Kv);
+  f.abs_gram_ = f.gram_.cwiseAbs();
   return f;
 }
 
@@ -100,25 +102,43 @@ Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H,
   return Hs;
 }
 
+namespace {
+Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
+  Eigen::MatrixX3d out(A.rows(), 3);
+  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A * P.col(c);
+  return out;
+}
+}  // namespace
+
 Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double H,
                                               const std::vector<int>& idx) const {
   if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  const Eigen::MatrixX3d CP = times(gram_, P);
   Eigen::MatrixX3d G(static_cast<Eigen::Index>(idx.size()), 3);
-  for (size_t a = 0; a < idx.size(); ++a) G.row(static_cast<Eigen::Index>(a)) = gram_.row(idx[a]) * P;
+  for (size_t a = 0; a < idx.size(); ++a) G.row(static_cast<Eigen::Index>(a)) = CP.row(idx[a]);
   if (H != 0.0) G += 2.0 * H * volume_.gradient_rows(P, idx);
   return G;
 }
 
-double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H,
-                               const std::vector<int>& idx) const {
-  const Eigen::MatrixX3d F = gradient_rows(P, H, idx);
-  const Eigen::MatrixX3d absP = P.cwiseAbs();
-  Eigen::MatrixX3d S(static_cast<Eigen::Index>(idx.size()), 3);
-  for (size_t a = 0; a < idx.size(); ++a)
-    S.row(static_cast<Eigen::Index>(a)) = gram_.row(idx[a]).cwiseAbs() * absP;
-  if (H != 0.0) S += 2.0 * std::abs(H) * volume_.gradient_scale_rows(P, idx);
-  const double num = idx.empty() ? 0.0 : F.cwiseAbs().maxCoeff();
-  const double den = idx.empty() ? 0.0 : S.maxCoeff();
+double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx,
+                               Eigen::MatrixX3d* Fout) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
+  const Eigen::MatrixX3d CP = times(gram_, P), CS = times(abs_gram_, P.cwiseAbs());
+  Eigen::MatrixX3d F(k, 3), S(k, 3);
+  for (Eigen::Index a = 0; a < k; ++a) {
+    F.row(a) = CP.row(idx[static_cast<size_t>(a)]);
+    S.row(a) = CS.row(idx[static_cast<size_t>(a)]);
+  }
+  if (H != 0.0) {
+    Eigen::MatrixX3d GV, SV;
+    volume_.gradient_rows_and_scale(P, idx, &GV, &SV);
+    F += 2.0 * H * GV;
+    S += 2.0 * std::abs(H) * SV;
+  }
+  if (Fout) *Fout = F;
+  const double num = k == 0 ? 0.0 : F.cwiseAbs().maxCoeff();
+  const double den = k == 0 ? 0.0 : S.maxCoeff();
   if (!std::isfinite(num)) return std::numeric_limits<double>::infinity();
   if (den == 0.0) return num == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
   return num / den;

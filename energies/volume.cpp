@@ -25,6 +25,20 @@ Eigen::MatrixX3d cross_rows(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b
 
 double multinomial(int n, int i, int j) { return binomial(n, i) * binomial(n - i, j); }
 
+// A * P for a 3-column P as three matrix-vector products (no GEMM packing of the large A).
+Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
+  Eigen::MatrixX3d out(A.rows(), 3);
+  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A * P.col(c);
+  return out;
+}
+
+// A^T * W for a 3-column W.
+Eigen::MatrixX3d times_t(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& W) {
+  Eigen::MatrixX3d out(A.cols(), 3);
+  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A.transpose() * W.col(c);
+  return out;
+}
+
 }  // namespace
 
 VolumeForm VolumeForm::triangular(int n) {
@@ -115,30 +129,30 @@ void VolumeForm::check(const Eigen::MatrixX3d& P) const {
 
 double VolumeForm::value(const Eigen::MatrixX3d& P) const {
   check(P);
-  const Eigen::MatrixX3d X = B_ * P, Xu = Bu_ * P, Xv = Bv_ * P;
+  const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d N = cross_rows(Xu, Xv);
   return w_.dot(N.cwiseProduct(X).rowwise().sum()) / 3.0;
 }
 
 double VolumeForm::value_scale(const Eigen::MatrixX3d& P) const {
   check(P);
-  const Eigen::MatrixX3d X = B_ * P, Xu = Bu_ * P, Xv = Bv_ * P;
+  const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d N = cross_rows(Xu, Xv);
   return w_.dot(N.cwiseProduct(X).rowwise().sum().cwiseAbs()) / 3.0;
 }
 
 Eigen::MatrixX3d VolumeForm::gradient(const Eigen::MatrixX3d& P) const {
   check(P);
-  const Eigen::MatrixX3d X = B_ * P, Xu = Bu_ * P, Xv = Bv_ * P;
+  const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d a = w_.asDiagonal() * cross_rows(Xv, X);
   const Eigen::MatrixX3d b = w_.asDiagonal() * cross_rows(X, Xu);
   const Eigen::MatrixX3d c = w_.asDiagonal() * cross_rows(Xu, Xv);
-  return (Bu_.transpose() * a + Bv_.transpose() * b + B_.transpose() * c) / 3.0;
+  return (times_t(Bu_, a) + times_t(Bv_, b) + times_t(B_, c)) / 3.0;
 }
 
 Eigen::MatrixX3d VolumeForm::gradient_scale(const Eigen::MatrixX3d& P) const {
   check(P);
-  const Eigen::MatrixX3d X = B_ * P, Xu = Bu_ * P, Xv = Bv_ * P;
+  const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d a = w_.asDiagonal() * cross_rows(Xv, X).cwiseAbs();
   const Eigen::MatrixX3d b = w_.asDiagonal() * cross_rows(X, Xu).cwiseAbs();
   const Eigen::MatrixX3d c = w_.asDiagonal() * cross_rows(Xu, Xv).cwiseAbs();
@@ -183,8 +197,8 @@ Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& 
   //   beta(I, J) = mult(n, I) mult(n-1, J) / mult(2n-1, I+J)   (B_I^n B_J^{n-1} = beta B_{I+J}^{2n-1}),
   //   ∫ B^{2n-1}_S x_u = Wu(S) = (Mt * (Du P))(S), and likewise for (B_L)_u and x_v.
   const int n = n_;
-  const Eigen::MatrixX3d Wu = Mt_ * (Du_ * P);
-  const Eigen::MatrixX3d Wv = Mt_ * (Dv_ * P);
+  const Eigen::MatrixX3d Wu = times(Mt_, times(Du_, P));
+  const Eigen::MatrixX3d Wv = times(Mt_, times(Dv_, P));
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   std::vector<std::array<int, 3>> J(static_cast<size_t>(k));
   {
@@ -265,33 +279,41 @@ Eigen::MatrixXd VolumeForm::hessian_interior_tensor(const Eigen::MatrixX3d& P,
   return Hs;
 }
 
-Eigen::MatrixX3d VolumeForm::gradient_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+void VolumeForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx,
+                                         Eigen::MatrixX3d* G, Eigen::MatrixX3d* S) const {
   check(P);
-  Eigen::MatrixX3d out(static_cast<Eigen::Index>(idx.size()), 3);
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   if (all_interior(idx)) {
-    const Eigen::MatrixX3d Nw = w_.asDiagonal() * cross_rows(Bu_ * P, Bv_ * P);
-    for (size_t a = 0; a < idx.size(); ++a)
-      out.row(static_cast<Eigen::Index>(a)) = B_.col(idx[a]).transpose() * Nw;
-    return out;
+    const Eigen::MatrixX3d N = cross_rows(times(Bu_, P), times(Bv_, P));
+    Eigen::MatrixXd Bs(B_.rows(), k);
+    for (Eigen::Index a = 0; a < k; ++a) Bs.col(a) = B_.col(idx[static_cast<size_t>(a)]);
+    if (G) *G = times_t(Bs, w_.asDiagonal() * N);  // Bernstein values are >= 0 on the domain
+    if (S) *S = times_t(Bs, w_.asDiagonal() * N.cwiseAbs());
+    return;
   }
-  const Eigen::MatrixX3d G = gradient(P);
-  for (size_t a = 0; a < idx.size(); ++a) out.row(static_cast<Eigen::Index>(a)) = G.row(idx[a]);
-  return out;
+  if (G) {
+    const Eigen::MatrixX3d F = gradient(P);
+    G->resize(k, 3);
+    for (Eigen::Index a = 0; a < k; ++a) G->row(a) = F.row(idx[static_cast<size_t>(a)]);
+  }
+  if (S) {
+    const Eigen::MatrixX3d F = gradient_scale(P);
+    S->resize(k, 3);
+    for (Eigen::Index a = 0; a < k; ++a) S->row(a) = F.row(idx[static_cast<size_t>(a)]);
+  }
+}
+
+Eigen::MatrixX3d VolumeForm::gradient_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+  Eigen::MatrixX3d G;
+  gradient_rows_and_scale(P, idx, &G, nullptr);
+  return G;
 }
 
 Eigen::MatrixX3d VolumeForm::gradient_scale_rows(const Eigen::MatrixX3d& P,
                                                  const std::vector<int>& idx) const {
-  check(P);
-  Eigen::MatrixX3d out(static_cast<Eigen::Index>(idx.size()), 3);
-  if (all_interior(idx)) {
-    const Eigen::MatrixX3d Nw = w_.asDiagonal() * cross_rows(Bu_ * P, Bv_ * P).cwiseAbs();
-    for (size_t a = 0; a < idx.size(); ++a)
-      out.row(static_cast<Eigen::Index>(a)) = B_.col(idx[a]).cwiseAbs().transpose() * Nw;
-    return out;
-  }
-  const Eigen::MatrixX3d G = gradient_scale(P);
-  for (size_t a = 0; a < idx.size(); ++a) out.row(static_cast<Eigen::Index>(a)) = G.row(idx[a]);
-  return out;
+  Eigen::MatrixX3d S;
+  gradient_rows_and_scale(P, idx, nullptr, &S);
+  return S;
 }
 
 Eigen::MatrixXd VolumeForm::hessian_quadrature(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
@@ -306,7 +328,7 @@ Eigen::MatrixXd VolumeForm::hessian_quadrature(const Eigen::MatrixX3d& P, const 
     Bus.col(a) = Bu_.col(c);
     Bvs.col(a) = Bv_.col(c);
   }
-  const Eigen::MatrixX3d X = B_ * P, Xu = Bu_ * P, Xv = Bv_ * P;
+  const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
   Eigen::MatrixXd tmp(q, k);
   for (int c = 0; c < 3; ++c) {

@@ -73,6 +73,9 @@ class VolumeForm {
   /// k x 3 size of the terms of gradient_rows: ∫ |B_I| |x_u ∧ x_v| (componentwise) for interior
   /// points, the rows of gradient_scale() otherwise.
   Eigen::MatrixX3d gradient_scale_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+  /// gradient_rows and gradient_scale_rows in one pass (either pointer may be null).
+  void gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx,
+                               Eigen::MatrixX3d* G, Eigen::MatrixX3d* S) const;
   /// True when B_I vanishes on the boundary of the domain (triangular: every index >= 1;
   /// tensor: 1 <= i <= n-1 and 1 <= j <= m-1).
   bool interior(int I) const { return interior_[static_cast<std::size_t>(I)] != 0; }

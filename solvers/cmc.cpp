@@ -67,6 +67,14 @@ Eigen::VectorXd CmcProblem::volume_gradient() const {
   return g;
 }
 
+double CmcProblem::evaluate(double H, Eigen::VectorXd& g) const {
+  Eigen::MatrixX3d F;
+  const double r = f->residual(P, H, free, &F);
+  g.resize(3 * k());
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = F.row(a).transpose();
+  return r;
+}
+
 double multiplier(const CmcProblem& p) {
   const Eigen::VectorXd gD = p.gradient(0.0);
   const Eigen::VectorXd gV = p.volume_gradient();
@@ -78,8 +86,9 @@ double multiplier(const CmcProblem& p) {
 CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations) {
   CorrectorStats st;
   double prev = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd g;
   for (int it = 0;; ++it) {
-    st.residual = p.residual(H);
+    st.residual = p.evaluate(H, g);
     if (!std::isfinite(st.residual)) return st;
     if (st.residual <= o.tolerance) {
       st.ok = true;
@@ -87,7 +96,6 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
     }
     if (it >= max_iterations) return st;
     const Eigen::MatrixXd J = p.hessian(H);
-    const Eigen::VectorXd g = p.gradient(H);
     Eigen::VectorXd dx;
     Eigen::LLT<Eigen::MatrixXd> llt(J);
     if (llt.info() == Eigen::Success) {

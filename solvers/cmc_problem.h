@@ -26,6 +26,8 @@ struct CmcProblem {
   Eigen::VectorXd volume_gradient() const;
   Eigen::MatrixXd hessian(double H) const { return f->hessian(P, H, free); }
   double residual(double H) const { return f->residual(P, H, free); }
+  /// Residual, and the free gradient into g.
+  double evaluate(double H, Eigen::VectorXd& g) const;
   double value(double H) const { return f->value(P, H); }
 };
 
