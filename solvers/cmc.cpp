@@ -116,11 +116,6 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
 
 namespace {
 
-bool positive_definite(const CmcProblem& p, double H) {
-  Eigen::LLT<Eigen::MatrixXd> llt(p.hessian(H));
-  return llt.info() == Eigen::Success;
-}
-
 std::string fold_message(double h) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
@@ -237,11 +232,9 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     for (int a = 0; a < p.k(); ++a) tangent.segment<3>(3 * a) = -2.0 * T.row(a).transpose();
   }
 
-  double h = 0.0, h_prev = 0.0;
-  Eigen::VectorXd y = p.get(), y_prev;
-  bool have_prev = false;
+  double h = 0.0;
+  Eigen::VectorXd y = p.get();
   double step = Ht;
-  const double min_step = o.min_step * std::max(1.0, std::abs(Ht));
   int attempts = 0, polish = 0;
   while (h != Ht) {
     if (++attempts > o.max_continuation_steps) {
@@ -251,8 +244,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     double s = step;
     if (std::abs(Ht - h) <= std::abs(s) * (1 + 1e-12)) s = Ht - h;
     const double hn = (Ht - h == s) ? Ht : h + s;
-    const Eigen::VectorXd pred =
-        have_prev ? Eigen::VectorXd(y + (y - y_prev) * (s / (h - h_prev))) : Eigen::VectorXd(y + tangent * s);
+    const Eigen::VectorXd pred = y + tangent * s;  // tangent predictor
     p.set(pred);
     CorrectorStats st;
     switch (o.solver) {
@@ -262,28 +254,34 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     }
     res.summary.iterations += st.iterations + st.polish_steps;
     bool accept = st.ok;
-    if (accept) accept = st.pd == 1 || (st.pd == -1 && positive_definite(p, hn)) ||
-                         (st.pd == 0 && positive_definite(p, hn));
     if (accept) {
-      // Stay on the branch: the corrector may move the predictor by at most half the step.
+      // Stay on the branch: the corrector may move the predicted point by at most half the step
+      // (the tangent predictor is second-order accurate, so small steps always pass on the branch).
       const Eigen::VectorXd yn = p.get();
       const double dev = (yn - pred).norm(), move = (yn - y).norm();
       accept = dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
     }
+    Eigen::VectorXd next_tangent;
+    if (accept) {
+      // Positive definite Hessian (strict local minimum: still before the first fold). When the
+      // continuation goes on, its Cholesky factor also gives the tangent dY/dH = -J^{-1} 2 dV/dY.
+      if (hn != Ht || st.pd != 1) {
+        Eigen::LLT<Eigen::MatrixXd> llt(p.hessian(hn));
+        accept = llt.info() == Eigen::Success;
+        if (accept && hn != Ht) next_tangent = -2.0 * llt.solve(p.volume_gradient());
+      }
+    }
     if (accept) {
       polish += st.polish_steps;
-      y_prev = y;
-      h_prev = h;
-      have_prev = true;
       y = p.get();
       h = hn;
+      if (hn != Ht) tangent = next_tangent;
       ++res.continuation_steps;
-      if (st.iterations <= 4) step = 2 * s;
-      else step = s;
+      step = st.iterations <= 4 ? 2 * s : s;
     } else {
       p.set(y);
       step = s / 2;
-      if (std::abs(step) < min_step) return finish(h, false, fold_message(h));
+      if (std::abs(step) < o.min_step * std::max(1.0, std::abs(h))) return finish(h, false, fold_message(h));
     }
   }
   std::string msg = "reached H = " + std::to_string(Ht) + " in " +

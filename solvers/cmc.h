@@ -59,7 +59,7 @@ struct CmcOptions {
   double tolerance = 1e-11;           ///< relative eq. (11) residual; default 1e-11, in (0, 1e-3]
   int max_corrector_iterations = 30;  ///< per continuation step; default 30, >= 1
   int max_continuation_steps = 400;   ///< default 400, >= 1
-  double min_step = 1e-5;             ///< smallest H step, relative to max(1, |H|); default 1e-5
+  double min_step = 1e-5;             ///< smallest H step, relative to max(1, |H reached|); default 1e-5
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range),
   /// UnsupportedProblem (V mode with a solver other than nlopt).
   void validate() const;

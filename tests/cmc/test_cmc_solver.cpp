@@ -152,6 +152,46 @@ TEST(CmcSolver, ConvergesToTheSphereWithConformalData) {
   EXPECT_LT(prev_h, 1e-4);
 }
 
+TEST(CmcSolver, TensorConvergesToTheSphereWithConformalData) {
+  double prev_dist = 1e9, prev_h = 1e9;
+  for (int n : {4, 6, 8, 10}) {
+    const TensorNet data = testutil::tensor_boundary(n, testutil::sphere_square);
+    const auto r = solve_cmc(data, opts(1.0));
+    ASSERT_TRUE(r.summary.converged) << n << ": " << r.summary.message;
+    double dist = 0;
+    const int N = 30;
+    for (int a = 0; a <= N; ++a)
+      for (int b = 0; b <= N; ++b)
+        dist = std::max(dist, std::abs(r.net.evaluate(double(a) / N, double(b) / N).norm() - 1.0));
+    const double herr = std::abs(mean_curvature_stats(r.net, 30, 0.1).mean - 1.0);
+    EXPECT_LT(dist, prev_dist);
+    EXPECT_LT(herr, prev_h);
+    prev_dist = dist;
+    prev_h = herr;
+  }
+  EXPECT_LT(prev_dist, 1e-6);
+  EXPECT_LT(prev_h, 1e-4);
+}
+
+TEST(CmcSolver, FoldIsAsymmetricForANonPlanarBoundary) {
+  // NOTES.md: the reachable H range is not symmetric for a non-planar boundary, but it is for a
+  // planar one (H -> -H mirrors the surface).
+  auto fold = [](const TriangularNet& d, double H) {
+    const auto r = solve_cmc(d, opts(H));
+    EXPECT_FALSE(r.summary.converged);
+    return r.H;
+  };
+  const TriangularNet sphere = testutil::triangular_boundary(6, testutil::sphere_triangle);
+  const double fp = fold(sphere, 50), fm = fold(sphere, -50);
+  EXPECT_GT(fp, 1.0);
+  EXPECT_LT(fm, -1.0);
+  EXPECT_GT(std::abs(std::abs(fm) - fp), 0.05);
+  const TriangularNet circle = testutil::circle_three_arcs(6);
+  const double cp = fold(circle, 50), cm = fold(circle, -50);
+  EXPECT_NEAR(cp, -cm, 1e-3 * cp);
+  EXPECT_NEAR(cp, 1.142, 2e-3);
+}
+
 TEST(CmcSolver, C1ProblemKeepsTheAdjacentRing) {
   const TriangularNet data = testutil::triangular_boundary(7, testutil::sphere_triangle);
   const TriangularNet full = solve_cmc(data, opts(1.0)).net;  // a net with a sensible second ring
