@@ -86,6 +86,7 @@ double multiplier(const CmcProblem& p) {
 CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations) {
   CorrectorStats st;
   double prev = std::numeric_limits<double>::infinity();
+  double prev_r = std::numeric_limits<double>::infinity();
   Eigen::VectorXd g;
   for (int it = 0;; ++it) {
     st.residual = p.evaluate(H, g);
@@ -95,20 +96,18 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
       return st;
     }
     if (it >= max_iterations) return st;
+    // Divergence: the residual grows (from the third iterate on).
+    if (it >= 2 && st.residual > prev_r) return st;
+    prev_r = st.residual;
     const Eigen::MatrixXd J = p.hessian(H);
-    Eigen::VectorXd dx;
-    Eigen::LLT<Eigen::MatrixXd> llt(J);
-    if (llt.info() == Eigen::Success) {
-      st.pd = 1;
-      dx = -llt.solve(g);
-    } else {
-      st.pd = 0;
-      dx = -J.partialPivLu().solve(g);
-    }
+    const SymFactor fac(J);
+    st.pd = fac.pd ? 1 : 0;
+    Eigen::VectorXd dx = -fac.solve(g);
     if (!dx.allFinite()) return st;
     const double nrm = dx.norm();
-    if (it >= 2 && nrm > prev) return st;  // not contracting: off the basin
-    prev = nrm;
+    // Not contracting (off the basin), unless the residual is already near the rounding floor.
+    if (it >= 2 && nrm > prev && st.residual > 1e3 * o.tolerance) return st;
+    prev = std::min(prev, nrm);
     p.set(p.get() + dx);
     ++st.iterations;
   }
@@ -116,9 +115,14 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
 
 namespace {
 
-std::string fold_message(double h) {
+std::string fold_message(double h, bool gram_singular) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
+  if (gram_singular)
+    return std::string("continuation stopped at H ≈ ") + buf +
+           ": the Dirichlet Gram over the free points is numerically singular at this degree "
+           "(Bernstein conditioning grows like 4^n), so eq. (11) cannot be resolved to the "
+           "tolerance; use a lower degree";
   return std::string("no critical point on the branch from H = 0 beyond H ≈ ") + buf;
 }
 
@@ -146,8 +150,15 @@ std::shared_ptr<const CmcFunctional> functional_for(const TensorNet& net) {
   return CmcFunctional::cached_tensor(net.n(), net.m());
 }
 
-// Dirichlet extremal into p.P; returns the Cholesky factor of the free Gram (k x k).
-Eigen::MatrixXd dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
+// Dirichlet extremal into p.P (Cholesky, or pivoted LDL^T when rounding makes the Bernstein Gram
+// indefinite). Returns the factor used for the tangent at H = 0 and a Cholesky factor L of the
+// (if needed slightly shifted) free Gram for the NLopt preconditioner.
+struct DirichletFactor {
+  std::unique_ptr<SymFactor> gram;
+  Eigen::MatrixXd L;
+};
+
+DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
   const Eigen::MatrixXd& C = p.f->gram();
   const int k = p.k();
   const int nf = static_cast<int>(fixed_idx.size());
@@ -158,12 +169,24 @@ Eigen::MatrixXd dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx
     for (int b = 0; b < nf; ++b) Cfx(a, b) = C(p.free[static_cast<size_t>(a)], fixed_idx[static_cast<size_t>(b)]);
   }
   for (int b = 0; b < nf; ++b) Px.row(b) = p.P.row(fixed_idx[static_cast<size_t>(b)]);
-  Eigen::LLT<Eigen::MatrixXd> llt(Cff);
-  if (llt.info() != Eigen::Success)
-    throw UnsupportedProblem("cmc: the Dirichlet Gram over the free points is singular");
-  const Eigen::MatrixX3d Y = -llt.solve(Cfx * Px);
+  DirichletFactor f;
+  f.gram = std::make_unique<SymFactor>(Cff);
+  const Eigen::MatrixX3d Y = -f.gram->solve(Cfx * Px);
   for (int a = 0; a < k; ++a) p.P.row(p.free[static_cast<size_t>(a)]) = Y.row(a);
-  return llt.matrixL();
+  if (f.gram->use_llt) {
+    f.L = f.gram->llt.matrixL();
+  } else {
+    const double d = k ? Cff.diagonal().cwiseAbs().maxCoeff() : 1.0;
+    for (double shift = 1e-14; shift < 1e-2; shift *= 10) {
+      Eigen::LLT<Eigen::MatrixXd> llt(Cff + shift * d * Eigen::MatrixXd::Identity(k, k));
+      if (llt.info() == Eigen::Success) {
+        f.L = llt.matrixL();
+        break;
+      }
+    }
+    if (f.L.size() == 0) f.L = Eigen::MatrixXd::Identity(k, k);
+  }
+  return f;
 }
 
 template <class Net>
@@ -188,7 +211,8 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     if (!p.P.row(r).allFinite())
       throw NonFiniteError("cmc: prescribed control point " + std::to_string(r) + " is not finite");
   for (int r : p.free) p.P.row(r).setZero();
-  const Eigen::MatrixXd L = dirichlet_solve(p, fixed_idx);
+  const DirichletFactor dir = dirichlet_solve(p, fixed_idx);
+  const Eigen::MatrixXd& L = dir.L;
 
   CmcResult<Net> res;
   auto finish = [&](double H, bool converged, std::string message) {
@@ -227,8 +251,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     const Eigen::VectorXd gV = p.volume_gradient();
     Eigen::MatrixX3d G(p.k(), 3);
     for (int a = 0; a < p.k(); ++a) G.row(a) = gV.segment<3>(3 * a).transpose();
-    Eigen::MatrixX3d T = L.triangularView<Eigen::Lower>().solve(G);
-    T = L.transpose().triangularView<Eigen::Upper>().solve(T);
+    const Eigen::MatrixXd T = dir.gram->solve(G);
     for (int a = 0; a < p.k(); ++a) tangent.segment<3>(3 * a) = -2.0 * T.row(a).transpose();
   }
 
@@ -239,7 +262,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
   while (h != Ht) {
     if (++attempts > o.max_continuation_steps) {
       p.set(y);
-      return finish(h, false, fold_message(h));
+      return finish(h, false, fold_message(h, !dir.gram->use_llt));
     }
     double s = step;
     if (std::abs(Ht - h) <= std::abs(s) * (1 + 1e-12)) s = Ht - h;
@@ -266,9 +289,9 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
       // Positive definite Hessian (strict local minimum: still before the first fold). When the
       // continuation goes on, its Cholesky factor also gives the tangent dY/dH = -J^{-1} 2 dV/dY.
       if (hn != Ht || st.pd != 1) {
-        Eigen::LLT<Eigen::MatrixXd> llt(p.hessian(hn));
-        accept = llt.info() == Eigen::Success;
-        if (accept && hn != Ht) next_tangent = -2.0 * llt.solve(p.volume_gradient());
+        const SymFactor fac(p.hessian(hn));
+        accept = fac.pd;
+        if (accept && hn != Ht) next_tangent = -2.0 * fac.solve(p.volume_gradient());
       }
     }
     if (accept) {
@@ -281,7 +304,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     } else {
       p.set(y);
       step = s / 2;
-      if (std::abs(step) < o.min_step * std::max(1.0, std::abs(h))) return finish(h, false, fold_message(h));
+      if (std::abs(step) < o.min_step * std::max(1.0, std::abs(h))) return finish(h, false, fold_message(h, !dir.gram->use_llt));
     }
   }
   std::string msg = "reached H = " + std::to_string(Ht) + " in " +

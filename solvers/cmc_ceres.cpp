@@ -109,6 +109,9 @@ CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
   so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = o.max_corrector_iterations;
+  // J is square and non-singular on the branch: start as Gauss–Newton (= Newton on eq. (11)).
+  so.initial_trust_region_radius = 1e12;
+  so.max_trust_region_radius = 1e16;
   so.function_tolerance = 1e-30;
   so.gradient_tolerance = 1e-30;
   so.parameter_tolerance = 1e-30;
