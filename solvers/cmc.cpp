@@ -221,8 +221,14 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     res.V = p.f->volume(p.P);
     res.DH = res.D + 2.0 * H * res.V;
     res.net = make_net(data, p.P);
-    res.summary.converged = converged;
     res.summary.residual = p.residual(H);
+    // Never report a net as converged unless eq. (11) holds to the tolerance here.
+    if (converged && !(res.summary.residual <= o.tolerance)) {
+      converged = false;
+      message = "the final net misses eq. (11) by " + std::to_string(res.summary.residual) +
+                " (relative) after: " + message;
+    }
+    res.summary.converged = converged;
     res.summary.message = std::move(message);
     res.summary.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
