@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "core/errors.h"
@@ -263,7 +264,18 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
 
   double h = 0.0;
   Eigen::VectorXd y = p.get();
+  // First step: the whole way, but not beyond |H| = 16 / (size of the data), the scale where a
+  // fold can occur (steps double after easy corrector runs, so large |H| are reached quickly).
   double step = Ht;
+  {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int r : fixed_idx) {
+      lo = lo.cwiseMin(p.P.row(r).transpose());
+      hi = hi.cwiseMax(p.P.row(r).transpose());
+    }
+    const double diam = (hi - lo).norm();
+    if (std::isfinite(diam) && diam > 0 && std::abs(step) > 16.0 / diam) step = std::copysign(16.0 / diam, Ht);
+  }
   int attempts = 0, polish = 0;
   while (h != Ht) {
     if (++attempts > o.max_continuation_steps) {
