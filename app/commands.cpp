@@ -8,7 +8,9 @@
 
 #include "checks/mesh_checks.h"
 #include "core/errors.h"
+#include "io/blend_config.h"
 #include "io/mesh_io.h"
+#include "solvers/smoothing_spline.h"
 
 namespace bpde::app {
 namespace {
@@ -66,16 +68,27 @@ SolveOutcome run_job(const Job& job) {
                            " net: this solver is not available in this build yet");
 }
 
-int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {
-  const TriangleMesh mesh = sample_net(out.net, job.samples);
-  Json report = out.report;
-  if (!report.contains("mean_curvature")) report["mean_curvature"] = mean_curvature_stats(out.net, mesh, job.samples);
-  Json result = {{"net", net_to_json(out.net)}, {"report", report}};
-  for (auto it = out.extra.begin(); it != out.extra.end(); ++it) result[it.key()] = it.value();
+namespace {
+
+// result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
+// statistics and the CGAL figures unless the solver already set them.
+int write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
+                 const Json& extra, bool converged) {
+  if (!report.contains("mean_curvature")) report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
+  if (!report.contains("check")) report["check"] = check_json(mesh);
+  Json result = {{"net", net_to_json(net)}, {"report", report}};
+  for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
   make_dir(dir);
   write_json_file(dir + "/result.json", result);
-  write_surface_files(dir, out.net, mesh);
-  return out.converged ? 0 : 1;
+  write_surface_files(dir, net, mesh);
+  return converged ? 0 : 1;
+}
+
+}  // namespace
+
+int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {
+  const TriangleMesh mesh = sample_net(out.net, job.samples);
+  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.converged);
 }
 
 int cmd_solve(const std::string& job_path, const std::string& out_dir) {
@@ -122,9 +135,20 @@ int cmd_plate(double aspect, int degree, const std::string& method) {
   throw UnsupportedProblem("bpde plate is not available in this build yet");
 }
 
-int cmd_blend(const std::string& config_path, const std::string&) {
-  (void)read_json_file(config_path);
-  throw UnsupportedProblem("bpde blend is not available in this build yet");
+int cmd_blend(const std::string& config_path, const std::string& out_dir) {
+  const BlendConfig cfg = read_blend_config(config_path);
+  const SmoothingSplineResult r = solve_smoothing_spline(cfg.problem);
+  const BSplineNet net = r.spline.to_bspline_net();
+  const TriangleMesh mesh = r.spline.sample(cfg.samples);
+  Json report = {{"problem", "blend"},
+                 {"energy", r.functional},
+                 {"data_misfit", r.data_misfit},
+                 {"L_energy", r.energy},
+                 {"max_data_error", r.max_data_error},
+                 {"converged", r.summary.converged},
+                 {"seconds", r.summary.seconds}};
+  if (!r.summary.message.empty()) report["message"] = r.summary.message;
+  return write_result(out_dir, Net(net), mesh, cfg.samples, report, Json::object(), r.summary.converged);
 }
 
 int cmd_demo(const std::string& out_dir) {
