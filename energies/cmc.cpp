@@ -121,7 +121,7 @@ Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double 
 }
 
 double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx,
-                               Eigen::MatrixX3d* Fout) const {
+                               Eigen::MatrixX3d* Fout, double* scale) const {
   if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   const Eigen::MatrixX3d CP = times(gram_, P), CS = times(abs_gram_, P.cwiseAbs());
@@ -139,6 +139,7 @@ double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::v
   if (Fout) *Fout = F;
   const double num = k == 0 ? 0.0 : F.cwiseAbs().maxCoeff();
   const double den = k == 0 ? 0.0 : S.maxCoeff();
+  if (scale) *scale = den;
   if (!std::isfinite(num)) return std::numeric_limits<double>::infinity();
   if (den == 0.0) return num == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
   return num / den;

@@ -60,9 +60,9 @@ class CmcFunctional {
   ///   max_{I in idx, c} |F_Ic| / max_{I in idx, c} (sum_J |C_IJ| |P_Jc| + 2|H| S_Ic),
   /// the denominator being the size of the terms of F: S_I = ∫ B_I |x_u ∧ x_v| (componentwise) for
   /// interior points (VolumeForm::gradient_scale_rows).
-  /// When F is given it receives gradient_rows(P, H, idx).
+  /// When F is given it receives gradient_rows(P, H, idx); when scale is given, the denominator.
   double residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx,
-                  Eigen::MatrixX3d* F = nullptr) const;
+                  Eigen::MatrixX3d* F = nullptr, double* scale = nullptr) const;
 
  private:
   Eigen::MatrixXd gram_, abs_gram_;

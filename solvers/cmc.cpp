@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "core/errors.h"
@@ -68,9 +69,21 @@ Eigen::VectorXd CmcProblem::volume_gradient() const {
   return g;
 }
 
-double CmcProblem::evaluate(double H, Eigen::VectorXd& g) const {
+double CmcProblem::evaluate(double H, Eigen::VectorXd& g, double tolerance, double scale_hint,
+                            double* scale) const {
   Eigen::MatrixX3d F;
-  const double r = f->residual(P, H, free, &F);
+  double r = 0.0;
+  bool done = false;
+  if (scale_hint > 0.0) {
+    F = f->gradient_rows(P, H, free);
+    const double num = F.size() ? F.cwiseAbs().maxCoeff() : 0.0;
+    if (!std::isfinite(num) || num > 1e3 * tolerance * scale_hint) {
+      r = std::isfinite(num) ? num / scale_hint : std::numeric_limits<double>::infinity();
+      if (scale) *scale = scale_hint;
+      done = true;
+    }
+  }
+  if (!done) r = f->residual(P, H, free, &F, scale);
   g.resize(3 * k());
   for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = F.row(a).transpose();
   return r;
@@ -85,30 +98,35 @@ double multiplier(const CmcProblem& p) {
 }
 
 CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations) {
+  // Newton with the exact Hessian, reusing its factorisation while the residual falls fast
+  // (ratio <= 1/100 per step); refactorised otherwise. Fails when a step with a fresh factorisation
+  // does not reduce the residual (from the third iterate on), or when it is not finite.
   CorrectorStats st;
-  double prev = std::numeric_limits<double>::infinity();
   double prev_r = std::numeric_limits<double>::infinity();
   Eigen::VectorXd g;
+  double scale = 0.0;
+  std::unique_ptr<SymFactor> fac;
+  bool fresh = false;
   for (int it = 0;; ++it) {
-    st.residual = p.evaluate(H, g);
+    st.residual = p.evaluate(H, g, o.tolerance, scale, &scale);
     if (!std::isfinite(st.residual)) return st;
     if (st.residual <= o.tolerance) {
       st.ok = true;
       return st;
     }
     if (it >= max_iterations) return st;
-    // Divergence: the residual grows (from the third iterate on).
-    if (it >= 2 && st.residual > prev_r) return st;
+    const bool slow = st.residual > prev_r / 100;
+    if (slow && fresh && it >= 2 && st.residual > prev_r) return st;  // Newton itself diverges
+    if (!fac || slow) {
+      fac = std::make_unique<SymFactor>(p.hessian(H));
+      st.pd = fac->pd ? 1 : 0;
+      fresh = true;
+    } else {
+      fresh = false;
+    }
     prev_r = st.residual;
-    const Eigen::MatrixXd J = p.hessian(H);
-    const SymFactor fac(J);
-    st.pd = fac.pd ? 1 : 0;
-    Eigen::VectorXd dx = -fac.solve(g);
+    const Eigen::VectorXd dx = -fac->solve(g);
     if (!dx.allFinite()) return st;
-    const double nrm = dx.norm();
-    // Not contracting (off the basin), unless the residual is already near the rounding floor.
-    if (it >= 2 && nrm > prev && st.residual > 1e3 * o.tolerance) return st;
-    prev = std::min(prev, nrm);
     p.set(p.get() + dx);
     ++st.iterations;
   }

@@ -26,8 +26,11 @@ struct CmcProblem {
   Eigen::VectorXd volume_gradient() const;
   Eigen::MatrixXd hessian(double H) const { return f->hessian(P, H, free); }
   double residual(double H) const { return f->residual(P, H, free); }
-  /// Residual, and the free gradient into g.
-  double evaluate(double H, Eigen::VectorXd& g) const;
+  /// Residual, and the free gradient into g. With scale_hint > 0 (the residual's denominator at
+  /// a nearby point) the exact denominator is computed only when the residual may be within
+  /// 1e3 x tolerance; otherwise |F|/scale_hint is returned. scale receives the denominator used.
+  double evaluate(double H, Eigen::VectorXd& g, double tolerance = 0.0, double scale_hint = 0.0,
+                  double* scale = nullptr) const;
   double value(double H) const { return f->value(P, H); }
 };
 
