@@ -145,6 +145,26 @@ double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::v
   return num / den;
 }
 
+CmcEnergies cmc_energies(const TriangularNet& net, double H) {
+  if (!std::isfinite(H)) throw NonFiniteError("cmc energy: H must be a finite number");
+  const auto f = CmcFunctional::cached_triangular(net.n());
+  CmcEnergies e;
+  e.D = f->dirichlet(net.points());
+  e.V = f->volume(net.points());
+  e.DH = e.D + 2.0 * H * e.V;
+  return e;
+}
+
+CmcEnergies cmc_energies(const TensorNet& net, double H) {
+  if (!std::isfinite(H)) throw NonFiniteError("cmc energy: H must be a finite number");
+  const auto f = CmcFunctional::cached_tensor(net.n(), net.m());
+  CmcEnergies e;
+  e.D = f->dirichlet(net.points());
+  e.V = f->volume(net.points());
+  e.DH = e.D + 2.0 * H * e.V;
+  return e;
+}
+
 namespace {
 
 void check_sampling(int N, double margin) {

@@ -69,6 +69,13 @@ class CmcFunctional {
   VolumeForm volume_;
 };
 
+/// D, V and D_H = D + 2HV of a net (FORMATS.md `bpde energy NET --energy cmc --H h`), exact.
+struct CmcEnergies {
+  double D = 0, V = 0, DH = 0;
+};
+CmcEnergies cmc_energies(const TriangularNet& net, double H);
+CmcEnergies cmc_energies(const TensorNet& net, double H);
+
 /// {min, max, mean} of the mean curvature (FORMATS.md sign) over a sample grid, away from the
 /// corners. Triangular: the points u = a/N, v = b/N (a + b <= N) whose three barycentric
 /// coordinates are all <= 1 - corner_margin. Tensor: the (N+1)^2 grid without the points within

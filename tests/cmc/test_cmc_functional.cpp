@@ -79,6 +79,29 @@ TEST(CmcFunctional, TensorGramIsDirichlet) {
   EXPECT_NEAR(f.dirichlet(net.points()), D, 1e-13 * D);
 }
 
+TEST(CmcFunctional, EnergiesOfANet) {
+  // x = (u, v, 1) on the triangle: D = 1/2 (1 + 1) area = 1/2; x_u ^ x_v = e3, <e3, x> = 1, so
+  // V = 1/3 area = 1/6. On the square with z = 2: D = 1, V = 2/3.
+  TriangularNet t(3);
+  for (int r = 0; r < t.size(); ++r) {
+    const auto I = triangular_multi_indices(3)[static_cast<size_t>(r)];
+    t.points().row(r) << I[0] / 3.0, I[1] / 3.0, 1.0;
+  }
+  const CmcEnergies e = cmc_energies(t, -2.0);
+  EXPECT_NEAR(e.D, 0.5, 1e-14);
+  EXPECT_NEAR(e.V, 1.0 / 6.0, 1e-15);
+  EXPECT_NEAR(e.DH, 0.5 - 4.0 / 6.0, 1e-14);
+  EXPECT_THROW(cmc_energies(t, std::nan("")), NonFiniteError);
+  TensorNet q(1, 1);
+  q.set_point(0, 0, {0, 0, 2});
+  q.set_point(1, 0, {1, 0, 2});
+  q.set_point(0, 1, {0, 1, 2});
+  q.set_point(1, 1, {1, 1, 2});
+  const CmcEnergies eq = cmc_energies(q, 1.0);
+  EXPECT_NEAR(eq.D, 1.0, 1e-14);
+  EXPECT_NEAR(eq.V, 2.0 / 3.0, 1e-15);
+}
+
 TEST(CmcFunctional, MeanCurvatureStatsOfAParaboloid) {
   // z = u^2 + v^2 over the unit square: H(0,0) = 2 (FORMATS.md); check the range is sensible.
   TensorNet net(2, 2);

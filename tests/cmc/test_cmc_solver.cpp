@@ -203,6 +203,18 @@ TEST(CmcSolver, C1ProblemKeepsTheAdjacentRing) {
   EXPECT_LT(rel_points(r.net.points(), full.points()), 1e-10);
 }
 
+TEST(CmcSolver, TensorUBoundariesUsesTheGeneralHessian) {
+  // Free points on the v-boundaries are not interior: the quadrature Hessian route.
+  const TensorNet data = testutil::tensor_boundary(4, testutil::sphere_square);
+  const auto n = solve_cmc(data, opts(0.5, CmcSolver::Newton, FixedSet::UBoundaries));
+  const auto c = solve_cmc(data, opts(0.5, CmcSolver::Ceres, FixedSet::UBoundaries));
+  ASSERT_TRUE(n.summary.converged) << n.summary.message;
+  ASSERT_TRUE(c.summary.converged) << c.summary.message;
+  EXPECT_LT(rel_points(c.net.points(), n.net.points()), 1e-10);
+  for (int i : data.fixed_indices(FixedSet::UBoundaries))
+    EXPECT_EQ((n.net.points().row(i) - data.points().row(i)).norm(), 0.0);
+}
+
 TEST(CmcSolver, BadInput) {
   const TriangularNet t6 = testutil::triangular_boundary(6, testutil::sphere_triangle);
   EXPECT_THROW(solve_cmc(t6, opts(std::nan(""))), NonFiniteError);
