@@ -158,6 +158,43 @@ TEST(Volume, PrintedSignOfD13IsWrong) {
   EXPECT_GT(std::abs(Vwrong - V), 1e-3 * VolumeForm::triangular(n).value_scale(P));
 }
 
+TEST(Volume, CoordinateFormNeedsTheCyclicAverage) {
+  // Prop. 3 writes V = sum S_IJK x^1_I x^2_J x^3_K. With S the cyclic average of C it is exact and
+  // S has Lemma 1's symmetries; with S = C it is off by a boundary-dependent constant, which
+  // vanishes when the boundary lies in z = 0 (NOTES.md).
+  const int n = 3;
+  const auto I = triangular_multi_indices(n);
+  const size_t N = I.size();
+  auto C = [&](size_t a, size_t b, size_t c) { return volume_coefficient(n, I[a], I[b], I[c]); };
+  auto S = [&](size_t a, size_t b, size_t c) { return (C(a, b, c) + C(b, c, a) + C(c, a, b)) / 3; };
+  double asym = 0, cyc = 0;
+  for (size_t a = 0; a < N; ++a)
+    for (size_t b = 0; b < N; ++b)
+      for (size_t c = 0; c < N; ++c) {
+        asym = std::max(asym, std::abs(S(a, b, c) + S(b, a, c)));
+        cyc = std::max(cyc, std::abs(S(a, b, c) - S(b, c, a)));
+      }
+  EXPECT_LT(asym, 1e-15);
+  EXPECT_LT(cyc, 1e-15);
+  auto coord_form = [&](const Eigen::MatrixX3d& P, bool average) {
+    double V = 0;
+    for (size_t a = 0; a < N; ++a)
+      for (size_t b = 0; b < N; ++b)
+        for (size_t c = 0; c < N; ++c)
+          V += (average ? S(a, b, c) : C(a, b, c)) * P(Eigen::Index(a), 0) * P(Eigen::Index(b), 1) *
+               P(Eigen::Index(c), 2);
+    return V;
+  };
+  const Eigen::MatrixX3d P = testutil::random_points(int(N), 17);
+  const double V = VolumeForm::triangular(n).value(P);
+  EXPECT_NEAR(coord_form(P, true), V, 1e-14);
+  EXPECT_GT(std::abs(coord_form(P, false) - V), 1e-4);
+  Eigen::MatrixX3d Q = P;  // boundary in z = 0: C alone is exact too
+  const TriangularNet net(n);
+  for (int r : net.boundary_indices()) Q(r, 2) = 0;
+  EXPECT_NEAR(coord_form(Q, false), VolumeForm::triangular(n).value(Q), 1e-14);
+}
+
 TEST(Volume, GraphOverTriangleAndSquare) {
   // Graph x = (u, v, f) with f = 0 on the boundary: V = ∫ f. f = uvw: 1/120.
   const int n = 3;
