@@ -186,6 +186,10 @@ CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
     H += dx(k3);
     ++st.polish_steps;
   }
+  // Report the multiplier exactly as FORMATS.md defines it (equal to the Newton H at convergence).
+  H = multiplier(p);
+  st.residual = p.residual(H);
+  st.ok = st.ok && std::isfinite(st.residual) && st.residual <= o.tolerance && vres() <= o.tolerance;
   note = st.ok ? "min D subject to V = V0 by NLopt SLSQP (" + std::to_string(d.evals) +
                      " evaluations, NLopt code " + std::to_string(static_cast<int>(code)) + ") + " +
                      std::to_string(st.polish_steps) + " bordered Newton polish step(s)"
