@@ -126,6 +126,23 @@ TEST(CmcSolver, FoldIsDetectedAndReported) {
   }
 }
 
+TEST(CmcSolver, FoldOnTensorNetsAndWithC1Data) {
+  const std::string prefix = "no critical point on the branch from H = 0 beyond H ≈ ";
+  const TensorNet sq = testutil::tensor_boundary(
+      5, [](double u, double v) { return Eigen::Vector3d(u, v + 0.1 * u * (1 - u), 0); });
+  const auto t = solve_cmc(sq, opts(40.0));
+  EXPECT_FALSE(t.summary.converged);
+  EXPECT_EQ(t.summary.message.rfind(prefix, 0), 0u) << t.summary.message;
+  EXPECT_GT(t.H, 1.0);
+  EXPECT_TRUE(solve_cmc(sq, opts(0.99 * t.H)).summary.converged);
+  EXPECT_FALSE(solve_cmc(sq, opts(1.01 * t.H)).summary.converged);
+  const TriangularNet tri = solve_cmc(testutil::triangular_boundary(7, testutil::planar_triangle), opts(-1.0)).net;
+  const auto c = solve_cmc(tri, opts(-80.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent));
+  EXPECT_FALSE(c.summary.converged);
+  EXPECT_EQ(c.summary.message.rfind(prefix, 0), 0u) << c.summary.message;
+  EXPECT_TRUE(solve_cmc(tri, opts(0.99 * c.H, CmcSolver::Newton, FixedSet::BoundaryAdjacent)).summary.converged);
+}
+
 TEST(CmcSolver, ConvergesToTheSphereWithConformalData) {
   // Boundary from the inverse stereographic projection (conformal): the critical points with
   // H = +1 approach the unit sphere as the degree grows.
