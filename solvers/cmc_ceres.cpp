@@ -17,7 +17,7 @@ struct SharedEvaluation {
   double H = 0.0;
   Eigen::VectorXd y, F;
   Eigen::MatrixXd J;
-  bool has_F = false, has_J = false;
+  bool has_F = false, has_J = false, F_ok = false, J_ok = false;
 
   bool ensure(double const* const* params, bool need_J) {
     const int k = p->k();
@@ -29,15 +29,17 @@ struct SharedEvaluation {
       y = yn;
       p->set(y);
       F = p->gradient(H);
+      F_ok = F.allFinite();
       has_F = true;
       has_J = false;
     }
     if (need_J && !has_J) {
       p->set(y);
       J = p->hessian(H);
+      J_ok = J.allFinite();
       has_J = true;
     }
-    return F.allFinite() && (!need_J || J.allFinite());
+    return F_ok && (!need_J || J_ok);
   }
 };
 
@@ -107,7 +109,7 @@ CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
   so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  so.linear_solver_type = ceres::DENSE_QR;
+  so.linear_solver_type = ceres::DENSE_QR;  // J^T J would square the Bernstein conditioning
   so.max_num_iterations = o.max_corrector_iterations;
   // J is square and non-singular on the branch: start as Gauss–Newton (= Newton on eq. (11)).
   so.initial_trust_region_radius = 1e12;
