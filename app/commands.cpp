@@ -10,86 +10,14 @@
 #include "core/errors.h"
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
+#include "io/run_job.h"
+#include "energies/cmc.h"
+#include "energies/quadratic_energy.h"
+#include "energies/triangular_gram.h"
+#include "solvers/reference_boundaries.h"
 #include "solvers/smoothing_spline.h"
 
 namespace bpde::app {
-namespace {
-
-void make_dir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw FileError("cannot create output directory '" + dir + "'");
-}
-
-Json check_json(const TriangleMesh& mesh) {
-  std::vector<double> V(static_cast<size_t>(mesh.V.rows()) * 3);
-  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r)
-    for (int c = 0; c < 3; ++c) V[static_cast<size_t>(3 * r + c)] = mesh.V(r, c);
-  std::vector<int> F(static_cast<size_t>(mesh.F.rows()) * 3);
-  for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
-    for (int c = 0; c < 3; ++c) F[static_cast<size_t>(3 * r + c)] = mesh.F(r, c);
-  const MeshCheckReport rep = check_mesh(V, F);
-  Json j = {{"self_intersections", rep.self_intersections}, {"closed", rep.closed}, {"cone_volume", rep.cone_volume}};
-  j["volume"] = rep.volume ? Json(*rep.volume) : Json(nullptr);
-  return j;
-}
-
-// {min, max, mean} of H over the sample grid, leaving out samples within parameter distance
-// 0.1 (relative to the domain) of a corner, where a circle split into arcs is nearly singular.
-Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int N) {
-  std::vector<double> vals;
-  auto add = [&](double du, double dv, Eigen::Index k, const std::vector<std::pair<double, double>>& corners) {
-    for (auto [cu, cv] : corners)
-      if (std::hypot(du - cu, dv - cv) < 0.1) return;
-    vals.push_back(mesh.H(k));
-  };
-  if (std::holds_alternative<TriangularNet>(net)) {
-    const Eigen::MatrixX2d uv = triangular_sample_parameters(N);
-    for (Eigen::Index k = 0; k < uv.rows(); ++k) add(uv(k, 0), uv(k, 1), k, {{0, 0}, {1, 0}, {0, 1}});
-  } else {
-    for (int a = 0; a <= N; ++a)
-      for (int b = 0; b <= N; ++b)
-        add(static_cast<double>(a) / N, static_cast<double>(b) / N, a * (N + 1) + b, {{0, 0}, {1, 0}, {0, 1}, {1, 1}});
-  }
-  if (vals.empty()) return nullptr;
-  double mn = vals[0], mx = vals[0], sum = 0;
-  for (double v : vals) {
-    mn = std::min(mn, v);
-    mx = std::max(mx, v);
-    sum += v;
-  }
-  return {{"min", mn}, {"max", mx}, {"mean", sum / static_cast<double>(vals.size())}};
-}
-
-}  // namespace
-
-SolveOutcome run_job(const Job& job) {
-  throw UnsupportedProblem("problem \"" + to_string(job.problem.kind) + "\" on a " + net_kind(job.net) +
-                           " net: this solver is not available in this build yet");
-}
-
-namespace {
-
-// result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
-// statistics and the CGAL figures unless the solver already set them.
-int write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                 const Json& extra, bool converged) {
-  if (!report.contains("mean_curvature")) report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
-  if (!report.contains("check")) report["check"] = check_json(mesh);
-  Json result = {{"net", net_to_json(net)}, {"report", report}};
-  for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
-  make_dir(dir);
-  write_json_file(dir + "/result.json", result);
-  write_surface_files(dir, net, mesh);
-  return converged ? 0 : 1;
-}
-
-}  // namespace
-
-int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {
-  const TriangleMesh mesh = sample_net(out.net, job.samples);
-  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.converged);
-}
 
 int cmd_solve(const std::string& job_path, const std::string& out_dir) {
   const Job job = read_job_file(job_path);
@@ -102,7 +30,7 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
     throw ParameterError("--samples must be in 1.." + std::to_string(kMaxSamples) + ", got " + std::to_string(samples));
   const Net net = read_net_file(net_path);
   const TriangleMesh mesh = sample_net(net, samples);
-  make_dir(out_dir);
+  make_output_dir(out_dir);
   write_surface_files(out_dir, net, mesh);
   return 0;
 }
@@ -112,10 +40,27 @@ int cmd_energy(const std::string& net_path, const std::string& energy, std::opti
   if (H && !std::isfinite(*H)) throw NonFiniteError("--H is not finite");
   if (energy == "cmc") {
     if (!H) throw ParseError("--energy cmc needs --H");
-    throw UnsupportedProblem("energy cmc is not available in this build yet");
+    CmcEnergies e;
+    if (const auto* t = std::get_if<TensorNet>(&net))
+      e = cmc_energies(*t, *H);
+    else if (const auto* tr = std::get_if<TriangularNet>(&net))
+      e = cmc_energies(*tr, *H);
+    else
+      throw UnsupportedProblem("energy cmc needs a triangular or tensor net, not a " + net_kind(net) + " net");
+    std::cout << Json{{"D", e.D}, {"V", e.V}, {"DH", e.DH}}.dump() << "\n";
+    return 0;
   }
   const EnergySpec spec = energy_from_argument(energy);
-  (void)spec;
+  if (const auto* t = std::get_if<TensorNet>(&net)) {
+    std::cout << Json{{"energy", energy_value(*t, spec)}}.dump() << "\n";
+    return 0;
+  }
+  if (const auto* t = std::get_if<TriangularNet>(&net)) {
+    const Eigen::MatrixXd Q = triangular_gram(t->n(), spec);
+    const Eigen::MatrixX3d& P = t->points();
+    std::cout << Json{{"energy", 0.5 * (P.transpose() * Q * P).trace()}}.dump() << "\n";
+    return 0;
+  }
   throw UnsupportedProblem("energy " + spec.name() + " on a " + net_kind(net) + " net is not available in this build yet");
 }
 
@@ -123,7 +68,7 @@ int cmd_check(const std::string& net_path, int samples) {
   if (samples < 1 || samples > kMaxSamples)
     throw ParameterError("--samples must be in 1.." + std::to_string(kMaxSamples) + ", got " + std::to_string(samples));
   const Net net = read_net_file(net_path);
-  std::cout << check_json(sample_net(net, samples)).dump() << "\n";
+  std::cout << check_report(sample_net(net, samples)).dump() << "\n";
   return 0;
 }
 
@@ -152,20 +97,31 @@ int cmd_blend(const std::string& config_path, const std::string& out_dir) {
 }
 
 int cmd_demo(const std::string& out_dir) {
-  // Until the CMC solver lands: sample a built-in triangular net over a circle boundary.
-  const int n = 6;
-  TriangularNet net(n);
-  for (int r = 0; r < net.size(); ++r) {
-    const MultiIndex I = TriangularNet::multi_index(n, r);
-    const double u = static_cast<double>(I[0]) / n, v = static_cast<double>(I[1]) / n;
-    net.points().row(r) << u - 0.5 * v, 0.8660254037844386 * v, 0.5 * u * v;
-  }
-  const TriangleMesh mesh = sample_mesh(net, 50);
-  make_dir(out_dir);
-  write_surface_files(out_dir, net, mesh);
-  write_json_file(out_dir + "/net.json", net_to_json(net));
-  std::printf("bpde demo: sampled a built-in degree-%d triangular net into %s\n", n, out_dir.c_str());
-  return 0;
+  // The main job: seed 004's Fig. 1 set-up. A unit circle split into three arcs bounds a
+  // degree-6 triangular net; the CMC critical point of D + 2HV at H = -1 on the branch from
+  // the Dirichlet extremal (Newton with the exact Hessian), checked with CGAL.
+  Job job{circle_three_arcs(6), FixedSet::Boundary, {}, 50};
+  job.problem.kind = ProblemKind::CmcH;
+  job.problem.H = -1.0;
+  job.problem.solver = CmcSolver::Newton;
+  const SolveOutcome out = run_job(job);
+  const int status = write_outcome(out_dir, job, out);
+  const Json result = read_json_file(out_dir + "/result.json");
+  const Json& r = result["report"];
+  std::printf("bpde demo: CMC approximation (seed 004 Fig. 1): circle in three arcs, triangular degree 6, H = -1\n");
+  std::printf("  converged           %s (%d Newton iterations, %d continuation steps)\n",
+              r["converged"].get<bool>() ? "yes" : "no", r.value("iterations", 0), r.value("continuation_steps", 0));
+  if (r.contains("message")) std::printf("  message             %s\n", r["message"].get<std::string>().c_str());
+  std::printf("  energy D + 2HV      %.12g\n", r["energy"].is_number() ? r["energy"].get<double>() : NAN);
+  std::printf("  Dirichlet energy D  %.12g\n", r["D"].is_number() ? r["D"].get<double>() : NAN);
+  std::printf("  volume V            %.12g\n", r["volume"].is_number() ? r["volume"].get<double>() : NAN);
+  if (r["mean_curvature"].is_object())
+    std::printf("  mean curvature      min %.6g, max %.6g, mean %.6g (away from the corners)\n",
+                r["mean_curvature"]["min"].get<double>(), r["mean_curvature"]["max"].get<double>(),
+                r["mean_curvature"]["mean"].get<double>());
+  std::printf("  self-intersections  %d\n", r["check"]["self_intersections"].get<int>());
+  std::printf("  files               %s/{result.json, surface.obj, surface.ply, net.obj}\n", out_dir.c_str());
+  return status;
 }
 
 }  // namespace bpde::app
