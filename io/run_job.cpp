@@ -16,7 +16,9 @@
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
+#include "solvers/biharmonic_load.h"
 #include "solvers/cmc.h"
+#include "solvers/tetraharmonic.h"
 #include "solvers/extremal.h"
 #include "solvers/harmonic_pde.h"
 #include "solvers/pde_explicit.h"
@@ -141,6 +143,31 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   return out;
 }
 
+// Δ⁴ = (∂²u + ∂²v)⁴ as PDE terms {du, dv, coefficient} for the residual report.
+std::vector<PdeTerm> tetraharmonic_terms() {
+  return {{8, 0, 1.0}, {6, 2, 4.0}, {4, 4, 6.0}, {2, 6, 4.0}, {0, 8, 1.0}};
+}
+
+SolveOutcome tetraharmonic(const Job& job, const TensorNet& net) {
+  TetraharmonicOptions o;
+  o.method = job.problem.method == PdeMethod::Explicit ? TetraharmonicOptions::Method::Explicit
+                                                        : TetraharmonicOptions::Method::LU;
+  const TetraharmonicResult r = solve_tetraharmonic(net, o);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["method"] = to_string(job.problem.method);
+  out.report["energy"] = nullptr;
+  out.report["pde_residual"] = finite_or_null(pde_residual(r.net, tetraharmonic_terms(), job.samples));
+  return out;
+}
+
+SolveOutcome biharmonic_load(const Job& job, const TensorNet& net) {
+  const BiharmonicLoadResult r = solve_biharmonic_load(net);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["energy"] = nullptr;
+  out.extra["load"] = net_to_json(r.load);
+  return out;
+}
+
 }  // namespace
 
 SolveOutcome run_job(const Job& job) {
@@ -150,6 +177,8 @@ SolveOutcome run_job(const Job& job) {
     if (k == ProblemKind::Extremal) return tensor_extremal(job, *t);
     if (k == ProblemKind::Pde) return tensor_pde(job, *t);
     if (is_cmc) return cmc(job, *t);
+    if (k == ProblemKind::Tetraharmonic) return tetraharmonic(job, *t);
+    if (k == ProblemKind::BiharmonicLoad) return biharmonic_load(job, *t);
   }
   if (const auto* t = std::get_if<TriangularNet>(&job.net)) {
     if (k == ProblemKind::Extremal) return triangular_extremal(job, *t);

@@ -176,3 +176,33 @@ TEST(Cli, CmcPastTheFoldExitsOneWithTheDocumentedMessage) {
   EXPECT_NE(fold.find("no critical point on the branch from H = 0 beyond H"), std::string::npos) << fold.substr(0, 400);
   EXPECT_NE(fold.find("\"converged\": false"), std::string::npos);
 }
+
+TEST(Cli, PlateReproducesThePaperAndTetraharmonicJobsRun) {
+  CmdResult r = run("plate --aspect 1 --degree 11 --method admissible-load");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double w = std::stod(r.out.substr(r.out.find("\"center_deflection\":") + 20));
+  EXPECT_NEAR(w, 0.00126654, 5e-9);  // seed 000, n = 11, square: every printed digit
+  expect_bad_input("plate --aspect 1 --degree 3 --method ritz", "degree");
+  expect_bad_input("plate --aspect 1 --degree 8 --method fem", "method");
+  // C1 data from z = u^2 v^2 (degree 4, tetraharmonic and biharmonic-load jobs)
+  std::ostringstream pts;
+  pts.precision(17);
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      // Bernstein coefficients of u^2 at degree 4: i(i-1)/12
+      const double z = (i * (i - 1) / 12.0) * (j * (j - 1) / 12.0);
+      pts << (i + j == 0 ? "" : ",") << "[" << i / 4.0 << "," << j / 4.0 << "," << z << "]";
+    }
+  const std::string net = R"({"type": "tensor", "degree": [4, 4], "points": [)" + pts.str() + "]}";
+  for (const char* kind : {"tetraharmonic", "biharmonic-load"}) {
+    const std::string job = "{\"net\": " + net + ", \"fixed\": \"boundary+adjacent\", \"problem\": {\"kind\": \"" + kind + "\"}}";
+    const fs::path out = tmpdir() / kind;
+    r = run("solve " + write(std::string(kind) + ".json", job).string() + " --out " + out.string());
+    EXPECT_EQ(r.status, 0) << kind << r.err;
+    const std::string res = slurp_file(out / "result.json");
+    EXPECT_NE(res.find("\"energy\": null"), std::string::npos) << kind;
+    if (std::string(kind) == "biharmonic-load") {
+      EXPECT_NE(res.find("\"load\""), std::string::npos);
+    }
+  }
+}
