@@ -112,6 +112,12 @@ BSplineExtremalSolver::BSplineExtremalSolver(int p, int q, const std::vector<dou
   m.Qfc = detail::sparse_submatrix(m.Q, m.free, m.fixed);
   m.llt.compute(m.Qff);
   m.llt_ok = m.llt.info() == Eigen::Success;
+  if (m.llt_ok) {
+    // A semi-definite Q_ff can factor in rounding with tiny pivots: treat pivot ratios below
+    // 1e-13 as singular (the dense fallback then returns the minimum-norm minimiser).
+    const Eigen::VectorXd d = Eigen::SparseMatrix<double>(m.llt.matrixL()).diagonal().cwiseAbs2();
+    m.llt_ok = d.size() > 0 && d.minCoeff() > 1e-13 * d.maxCoeff();
+  }
 }
 
 BSplineExtremalSolver::~BSplineExtremalSolver() = default;
