@@ -166,10 +166,9 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
   options.validate();
   const auto t0 = std::chrono::steady_clock::now();
   const int N = data.size();
+  const Eigen::MatrixXd A = bspline_pde_equations(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
   const std::vector<int> free = detail::complement_indices(N, fixed, "bspline pde");
   if (free.empty()) throw SizeError("bspline pde: every control point is fixed; nothing to solve");
-
-  const Eigen::MatrixXd A = bspline_pde_equations(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
   const Eigen::MatrixXd Af = detail::gather_cols(A, free), Ac = detail::gather_cols(A, fixed);
   const Eigen::MatrixXd Xc = detail::gather_rows(data.points(), fixed);
   const Eigen::MatrixXd B = -(Ac * Xc);
