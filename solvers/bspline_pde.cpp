@@ -169,33 +169,48 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
   const Eigen::MatrixXd A = bspline_pde_equations(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
   const std::vector<int> free = detail::complement_indices(N, fixed, "bspline pde");
   if (free.empty()) throw SizeError("bspline pde: every control point is fixed; nothing to solve");
-  const Eigen::MatrixXd Af = detail::gather_cols(A, free), Ac = detail::gather_cols(A, fixed);
   const Eigen::MatrixXd Xc = detail::gather_rows(data.points(), fixed);
-  const Eigen::MatrixXd B = -(Ac * Xc);
-
   BSplinePdeResult out{data, {}, static_cast<int>(A.rows()), 0, 0, 0, 0, false, 0.0};
 
-  // Rank over all control points (the paper's count).
-  {
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd_all(A);
-    const Eigen::VectorXd s = svd_all.singularValues();
-    const double smax = s.size() ? s(0) : 0.0;
-    for (Eigen::Index k = 0; k < s.size(); ++k)
-      if (s(k) > options.rank_tolerance * smax) ++out.rank;
+  // Compress the tall system: A = Q R (Householder, backward stable) has the singular values of
+  // R, and min |A_f X_f + A_c X_c| = min |R_f X_f + R_c X_c|, so the SVDs below act on N rows.
+  Eigen::MatrixXd Rm;
+  if (A.rows() > A.cols()) {
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
+    Rm = qr.matrixQR().topRows(N).triangularView<Eigen::Upper>();
+  } else {
+    Rm = A;
   }
-  // Rank-revealing least squares over the free points.
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Af, Eigen::ComputeThinU | Eigen::ComputeFullV);
-  const Eigen::VectorXd s = svd.singularValues();
-  const double smax = s.size() ? s(0) : 0.0;
-  int r = 0;
-  for (Eigen::Index k = 0; k < s.size(); ++k)
-    if (s(k) > options.rank_tolerance * smax) ++r;
+  const Eigen::MatrixXd Rf = detail::gather_cols(Rm, free);
+  const Eigen::MatrixXd B = -(detail::gather_cols(Rm, fixed) * Xc);
+  auto count_rank = [&](const Eigen::VectorXd& sv) {
+    int k = 0;
+    const double top = sv.size() ? sv(0) : 0.0;
+    for (Eigen::Index i = 0; i < sv.size(); ++i)
+      if (sv(i) > options.rank_tolerance * top) ++k;
+    return k;
+  };
+  // Rank over all control points (the paper's count).
+  out.rank = count_rank(Eigen::BDCSVD<Eigen::MatrixXd>(Rm).singularValues());
+  // Rank-revealing least squares over the free points (V must be square: nf x nf).
   const int nf = static_cast<int>(free.size());
+  Eigen::VectorXd s;
+  Eigen::MatrixXd Uthin, Vfull;
+  if (Rf.rows() >= Rf.cols()) {
+    const Eigen::BDCSVD<Eigen::MatrixXd> svd(Rf, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    s = svd.singularValues();
+    Uthin = svd.matrixU();
+    Vfull = svd.matrixV();
+  } else {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Rf, Eigen::ComputeThinU | Eigen::ComputeFullV);
+    s = svd.singularValues();
+    Uthin = svd.matrixU();
+    Vfull = svd.matrixV();
+  }
+  const int r = count_rank(s);
   out.rank_free = r;
   out.free_parameters = nf - r;
   out.compatibility_conditions = out.rank - r;
-  const Eigen::MatrixXd& Uthin = svd.matrixU();
-  const Eigen::MatrixXd& Vfull = svd.matrixV();
   Eigen::MatrixXd Xf = Vfull.leftCols(r) * (s.head(r).cwiseInverse().asDiagonal() * (Uthin.leftCols(r).transpose() * B));
 
   auto residual_of = [&](const Eigen::MatrixXd& X) {
