@@ -1,12 +1,405 @@
-// Placeholder: the CGAL implementation replaces this file.
+// CGAL checks of a sampled surface (the one translation unit of bezierpde that includes CGAL).
+//
+// Pipeline (see checks/mesh_checks.h for the contract):
+//  1. validate the arrays (sizes, index range, finite coordinates);
+//  2. merge coincident vertices: points closer than 1e-10 x (bounding-box diagonal) are one
+//     vertex (seams of sampled closed surfaces, degenerate corners of sampled patches);
+//  3. drop degenerate triangles: repeated vertex after merging, or three collinear points
+//     (exact predicate of the Epick kernel);
+//  4. self-intersections: CGAL::box_self_intersection_d over the triangles' bounding boxes, then
+//     the exact tests of CGAL::Polygon_mesh_processing::self_intersections (same rules: a pair
+//     sharing an edge intersects only when the two triangles are coplanar and overlap; a pair
+//     sharing a vertex intersects when an opposite edge meets the other triangle), applied to the
+//     merged triangle soup so that no halfedge structure (and no manifoldness) is needed;
+//  5. closed: every undirected edge has exactly two triangles, traversed in opposite directions,
+//     and the triangles around every vertex form one cycle;
+//  6. volume: divergence formula (1/6) sum det(a - o, b - o, c - o) over the triangles (o the
+//     bounding-box centre, to limit cancellation). For an open surface, every boundary loop must
+//     be planar (max distance to its least-squares plane <= 1e-8 x the loop's diameter) and the
+//     surface must be closed up to those loops; each loop is capped by a fan from its centroid,
+//     whose contribution is -(1/3) <c - o, A> with A the loop's area vector.
+//  7. cone volume: (1/6) sum det(a, b, c) over the input triangles, in input coordinates.
 #include "checks/mesh_checks.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+#include <utility>
 
 #include "core/errors.h"
 
 namespace bpde {
+namespace {
 
-MeshCheckReport check_mesh(const std::vector<double>&, const std::vector<int>&) {
-  throw UnsupportedProblem("mesh checks are not available in this build yet");
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Segment = Kernel::Segment_3;
+using Triangle = Kernel::Triangle_3;
+using Tri = std::array<int, 3>;
+
+// ------------------------------------------------------------------ merging
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+/// Union of the points closer than tol (spatial hash). Only points inside the box [lo, hi]
+/// (the referenced vertices' bounding box) take part; the others stay alone. Returns for each
+/// input vertex the index of its representative (the smallest index of its cluster).
+std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double tol,
+                                  const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  const int n = static_cast<int>(p.size());
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  if (n == 0) return parent;
+  if (!(tol > 0)) {
+    // All points coincide exactly or the mesh is a single point: merge exact duplicates only.
+    tol = 0;
+  }
+  // Cells of size 2 tol: a point within tol of x lies in x's cell or, along each axis, in the
+  // neighbour on the side of the nearer cell face, so 8 cells are searched.
+  const double cell = 2 * tol;
+  struct CellHash {
+    std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
+      std::size_t h = static_cast<std::size_t>(c[0]) * 73856093u;
+      h ^= static_cast<std::size_t>(c[1]) * 19349663u;
+      h ^= static_cast<std::size_t>(c[2]) * 83492791u;
+      return h;
+    }
+  };
+  // cell -> last point inserted in it; next_in_cell chains the others
+  std::unordered_map<std::array<std::int64_t, 3>, int, CellHash> grid;
+  grid.reserve(static_cast<std::size_t>(n) * 2);
+  std::vector<int> next_in_cell(n, -1);
+  const double tol2 = tol * tol;
+  for (int i = 0; i < n; ++i) {
+    if ((p[i].array() < lo.array()).any() || (p[i].array() > hi.array()).any()) continue;
+    std::array<std::int64_t, 3> c{0, 0, 0}, side{0, 0, 0};
+    if (cell > 0)
+      for (int a = 0; a < 3; ++a) {
+        // (p - lo) / cell <= diagonal / (2e-10 diagonal): no overflow of the cell index
+        const double q = (p[i][a] - lo[a]) / cell, f = std::floor(q);
+        c[a] = static_cast<std::int64_t>(f);
+        side[a] = q - f < 0.5 ? -1 : 1;
+      }
+    for (int mask = 0; mask < 8; ++mask) {
+      if (cell == 0 && mask) break;
+      const std::array<std::int64_t, 3> key{c[0] + ((mask & 1) ? side[0] : 0),
+                                            c[1] + ((mask & 2) ? side[1] : 0),
+                                            c[2] + ((mask & 4) ? side[2] : 0)};
+      auto it = grid.find(key);
+      if (it == grid.end()) continue;
+      for (int j = it->second; j >= 0; j = next_in_cell[j]) {
+        if ((p[i] - p[j]).squaredNorm() <= tol2) {
+          const int ri = find_root(parent, i), rj = find_root(parent, j);
+          if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
+        }
+      }
+    }
+    auto [it, inserted] = grid.try_emplace(c, i);
+    if (!inserted) {
+      next_in_cell[i] = it->second;
+      it->second = i;
+    }
+  }
+  std::vector<int> rep(n);
+  for (int i = 0; i < n; ++i) rep[i] = find_root(parent, i);
+  return rep;
+}
+
+// ------------------------------------------------------------------ self-intersections
+/// Exact test of CGAL::Polygon_mesh_processing::internal::do_faces_intersect, on a soup.
+bool faces_intersect(const Tri& h, const Tri& g, const std::vector<Point>& P) {
+  int shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (h[i] == g[j]) ++shared;
+  if (shared == 3) return true;  // the same triangle twice: they overlap
+  if (shared == 2) {
+    // shared edge (p, q); r and s the third vertices
+    int r = -1, s = -1;
+    for (int i = 0; i < 3; ++i)
+      if (h[i] != g[0] && h[i] != g[1] && h[i] != g[2]) r = h[i];
+    for (int j = 0; j < 3; ++j)
+      if (g[j] != h[0] && g[j] != h[1] && g[j] != h[2]) s = g[j];
+    int pq[2], k = 0;
+    for (int i = 0; i < 3; ++i)
+      if (h[i] != r) pq[k++] = h[i];
+    const Point &p = P[pq[0]], &q = P[pq[1]], &pr = P[r], &ps = P[s];
+    return CGAL::coplanar(p, q, pr, ps) && CGAL::coplanar_orientation(p, q, pr, ps) == CGAL::POSITIVE;
+  }
+  const Triangle th(P[h[0]], P[h[1]], P[h[2]]);
+  const Triangle tg(P[g[0]], P[g[1]], P[g[2]]);
+  if (shared == 1) {
+    int i = 0, j = 0;
+    for (i = 0; i < 3; ++i) {
+      bool found = false;
+      for (j = 0; j < 3; ++j)
+        if (h[i] == g[j]) {
+          found = true;
+          break;
+        }
+      if (found) break;
+    }
+    const Segment sh(P[h[(i + 1) % 3]], P[h[(i + 2) % 3]]);
+    const Segment sg(P[g[(j + 1) % 3]], P[g[(j + 2) % 3]]);
+    return CGAL::do_intersect(th, sg) || CGAL::do_intersect(tg, sh);
+  }
+  return CGAL::do_intersect(th, tg);
+}
+
+int count_self_intersections(const std::vector<Tri>& tris, const std::vector<Point>& P) {
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int,
+                                                        CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+  std::vector<Box> boxes;
+  boxes.reserve(tris.size());
+  for (std::size_t f = 0; f < tris.size(); ++f) {
+    const auto& t = tris[f];
+    boxes.emplace_back(P[t[0]].bbox() + P[t[1]].bbox() + P[t[2]].bbox(), static_cast<int>(f));
+  }
+  std::vector<const Box*> ptr;
+  ptr.reserve(boxes.size());
+  for (const Box& b : boxes) ptr.push_back(&b);
+  long long count = 0;
+  auto callback = [&](const Box* a, const Box* b) {
+    if (faces_intersect(tris[a->info()], tris[b->info()], P)) ++count;
+  };
+  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(ptr.begin(), ptr.end(), callback);
+  return static_cast<int>(std::min<long long>(count, std::numeric_limits<int>::max()));
+}
+
+// ------------------------------------------------------------------ topology
+using Edge = std::pair<int, int>;
+
+/// Directed-edge multiplicities of the soup, keyed by (a << 32) | b.
+struct EdgeMap {
+  std::unordered_map<std::uint64_t, int> count;
+  static std::uint64_t key(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+           static_cast<std::uint32_t>(b);
+  }
+  int find(int a, int b) const {
+    auto it = count.find(key(a, b));
+    return it == count.end() ? 0 : it->second;
+  }
+  template <class F>
+  void for_each(F f) const {
+    for (const auto& [k, m] : count) f(static_cast<int>(k >> 32), static_cast<int>(k & 0xffffffffu), m);
+  }
+};
+
+EdgeMap directed_edges(const std::vector<Tri>& tris) {
+  EdgeMap e;
+  e.count.reserve(tris.size() * 4);
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) ++e.count[EdgeMap::key(t[k], t[(k + 1) % 3])];
+  return e;
+}
+
+/// Every undirected edge has exactly two triangles, in opposite directions, and every vertex's
+/// link is one cycle.
+bool is_closed_manifold(const std::vector<Tri>& tris, const EdgeMap& de, int num_vertices) {
+  if (tris.empty()) return false;
+  bool ok = true;
+  de.for_each([&](int a, int b, int m) {
+    if (m != 1 || de.find(b, a) != 1) ok = false;
+  });
+  if (!ok) return false;
+  // vertex links: at vertex a of triangle (a, b, c), the link edge b -> c (CSR by vertex).
+  std::vector<int> start(num_vertices + 1, 0);
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) ++start[t[k] + 1];
+  for (int v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
+  std::vector<Edge> link(start.back());
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) link[fill[t[k]]++] = {t[(k + 1) % 3], t[(k + 2) % 3]};
+  for (int v = 0; v < num_vertices; ++v) {
+    const int lo = start[v], hi = start[v + 1];
+    if (lo == hi) continue;  // unreferenced vertex
+    std::sort(link.begin() + lo, link.begin() + hi);
+    for (int e = lo + 1; e < hi; ++e)
+      if (link[e].first == link[e - 1].first) return false;  // two link edges leave b
+    auto next = [&](int b) {
+      auto it = std::lower_bound(link.begin() + lo, link.begin() + hi, Edge{b, -1});
+      return (it != link.begin() + hi && it->first == b) ? it->second : -1;
+    };
+    const int first = link[lo].first;
+    int cur = first, steps = 0;
+    do {
+      cur = next(cur);
+      if (cur < 0) return false;
+      ++steps;
+    } while (cur != first && steps <= hi - lo);
+    if (cur != first || steps != hi - lo) return false;  // one cycle through every link edge
+  }
+  return true;
+}
+
+double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return a.dot(b.cross(c));
+}
+
+/// Volume of the soup closed by planar caps over its boundary loops, or empty when the boundary
+/// is not a set of disjoint planar loops or the soup is not closed up to them.
+std::optional<double> capped_volume(const std::vector<Tri>& tris, const EdgeMap& de,
+                                    const std::vector<Eigen::Vector3d>& X, const Eigen::Vector3d& o,
+                                    bool closed) {
+  if (tris.empty()) return std::nullopt;
+  double vol = 0;
+  for (const auto& t : tris) vol += det3(X[t[0]] - o, X[t[1]] - o, X[t[2]] - o);
+  vol /= 6.0;
+  if (closed) return vol;
+
+  // Boundary: directed edges a -> b whose reverse is missing. Interior edges must pair up.
+  std::unordered_map<int, int> out;  // boundary successor
+  bool ok = true;
+  de.for_each([&](int a, int b, int m) {
+    const int rev = de.find(b, a);
+    if (m == 1 && rev == 0) {
+      if (!out.emplace(a, b).second) ok = false;  // pinched boundary vertex
+    } else if (m != 1 || rev != 1) {
+      ok = false;  // non-manifold or inconsistently oriented edge
+    }
+  });
+  if (!ok || out.empty()) return std::nullopt;  // (empty: closed as a chain, not a manifold)
+  // deterministic loop order (the sum does not depend on it beyond rounding)
+  std::vector<int> starts;
+  starts.reserve(out.size());
+  for (const auto& [a, b] : out) starts.push_back(a);
+  std::sort(starts.begin(), starts.end());
+  std::unordered_map<int, bool> used;
+  for (int start : starts) {
+    if (used[start]) continue;
+    std::vector<int> loop;
+    int cur = start;
+    do {
+      if (used[cur]) return std::nullopt;
+      used[cur] = true;
+      loop.push_back(cur);
+      auto it = out.find(cur);
+      if (it == out.end()) return std::nullopt;
+      cur = it->second;
+    } while (cur != start && loop.size() <= out.size());
+    if (cur != start) return std::nullopt;
+    // least-squares plane of the loop
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int v : loop) c += X[v] - o;
+    c /= static_cast<double>(loop.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    double diam = 0;
+    for (int v : loop) {
+      const Eigen::Vector3d d = X[v] - o - c;
+      cov += d * d.transpose();
+      diam = std::max(diam, 2 * d.norm());
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    const Eigen::Vector3d n = es.eigenvectors().col(0);
+    double dev = 0;
+    for (int v : loop) dev = std::max(dev, std::abs((X[v] - o - c).dot(n)));
+    if (dev > 1e-8 * diam) return std::nullopt;
+    // area vector of the loop (the surface runs loop[i] -> loop[i+1]; the cap runs backwards)
+    Eigen::Vector3d A = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      A += (X[loop[i]] - o - c).cross(X[loop[(i + 1) % loop.size()]] - o - c);
+    A *= 0.5;
+    vol -= c.dot(A) / 3.0;
+  }
+  return vol;
+}
+
+}  // namespace
+
+MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vector<int>& triangles) {
+  if (vertices.size() % 3 != 0)
+    throw SizeError("mesh check: vertices has " + std::to_string(vertices.size()) +
+                    " numbers, not a multiple of 3");
+  if (triangles.size() % 3 != 0)
+    throw SizeError("mesh check: triangles has " + std::to_string(triangles.size()) +
+                    " indices, not a multiple of 3");
+  const int nv = static_cast<int>(vertices.size() / 3);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    if (!std::isfinite(vertices[i]))
+      throw NonFiniteError("mesh check: vertex " + std::to_string(i / 3) + " coordinate " +
+                           std::to_string(i % 3) + " is not finite");
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    if (triangles[i] < 0 || triangles[i] >= nv)
+      throw SizeError("mesh check: triangle " + std::to_string(i / 3) + " index " +
+                      std::to_string(triangles[i]) + " is out of range [0, " + std::to_string(nv) +
+                      ")");
+
+  MeshCheckReport report;
+  const std::size_t nf = triangles.size() / 3;
+  std::vector<Eigen::Vector3d> X(nv);
+  for (int i = 0; i < nv; ++i) X[i] = {vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]};
+
+  // cone volume on the input
+  long double cone = 0;
+  for (std::size_t f = 0; f < nf; ++f)
+    cone += det3(X[triangles[3 * f]], X[triangles[3 * f + 1]], X[triangles[3 * f + 2]]);
+  report.cone_volume = static_cast<double>(cone / 6.0L);
+  if (!std::isfinite(report.cone_volume))
+    throw NonFiniteError("mesh check: the cone volume overflows (coordinates too large)");
+  report.merged_vertices = nv;
+  if (nf == 0) return report;
+
+  // bounding box of the referenced vertices
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (int idx : triangles) {
+    lo = lo.cwiseMin(X[idx]);
+    hi = hi.cwiseMax(X[idx]);
+  }
+  const Eigen::Vector3d o = 0.5 * (lo + hi);
+  const double diag = (hi - lo).norm();
+  if (!std::isfinite(diag))
+    throw NonFiniteError("mesh check: the vertex coordinates overflow (bounding box not finite)");
+
+  const std::vector<int> rep = merge_coincident(X, 1e-10 * diag, lo, hi);
+  // compact the representatives
+  std::vector<int> newid(nv, -1);
+  int nm = 0;
+  std::vector<Point> P;
+  std::vector<Eigen::Vector3d> Y;
+  for (int i = 0; i < nv; ++i)
+    if (rep[i] == i) {
+      newid[i] = nm++;
+      P.emplace_back(X[i][0], X[i][1], X[i][2]);
+      Y.push_back(X[i]);
+    }
+  report.merged_vertices = nm;
+
+  std::vector<Tri> tris;
+  tris.reserve(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    Tri t{newid[rep[triangles[3 * f]]], newid[rep[triangles[3 * f + 1]]],
+          newid[rep[triangles[3 * f + 2]]]};
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || CGAL::collinear(P[t[0]], P[t[1]], P[t[2]])) {
+      ++report.degenerate_triangles;
+      continue;
+    }
+    tris.push_back(t);
+  }
+
+  report.self_intersections = count_self_intersections(tris, P);
+  const auto de = directed_edges(tris);
+  report.closed = is_closed_manifold(tris, de, nm);
+  report.volume = capped_volume(tris, de, Y, o, report.closed);
+  if (report.volume && !std::isfinite(*report.volume))
+    throw NonFiniteError("mesh check: the enclosed volume overflows (coordinates too large)");
+  return report;
 }
 
 }  // namespace bpde

@@ -24,10 +24,17 @@ struct MeshCheckReport {
   /// Algebraic volume of the cone from the origin over the surface: (1/6) sum det(a, b, c) over
   /// the triangles. For a patch this is the mesh analogue of V = 1/3 int <x_u ^ x_v, x>.
   double cone_volume = 0.0;
+  /// Diagnostics: vertices left after merging coincident ones (distance <= 1e-10 x bounding-box
+  /// diagonal), and triangles dropped as degenerate (repeated vertex after merging, or collinear).
+  int merged_vertices = 0;
+  int degenerate_triangles = 0;
 };
 
 /// Run the checks. Throws SizeError (from core/errors.h) for arrays whose length is not a
-/// multiple of 3, indices out of range, or non-finite coordinates (NonFiniteError).
+/// multiple of 3 or indices out of range, and NonFiniteError for non-finite coordinates.
+/// An empty triangle list is valid (no intersections, not closed, no volume, cone volume 0).
+/// The capped volume needs every boundary loop to be planar within 1e-8 x its diameter and the
+/// rest of the surface to be a consistently oriented manifold; each loop is capped by a fan.
 MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vector<int>& triangles);
 
 }  // namespace bpde

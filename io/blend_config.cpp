@@ -1,0 +1,198 @@
+#include "io/blend_config.h"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/errors.h"
+
+namespace bpde {
+
+namespace {
+
+using json = nlohmann::json;
+
+std::string type_name(const json& j) { return j.type_name(); }
+
+void check_fields(const json& j, const std::string& where, const std::set<std::string>& allowed,
+                  const std::set<std::string>& required) {
+  if (!j.is_object())
+    throw ParseError((where.empty() ? std::string("the blend config") : where) +
+                     " must be a JSON object, not " + type_name(j));
+  for (const auto& [key, value] : j.items()) {
+    (void)value;
+    if (!allowed.count(key))
+      throw ParseError("unknown field `" + (where.empty() ? key : where + "." + key) + "`");
+  }
+  for (const auto& key : required)
+    if (!j.contains(key))
+      throw ParseError("missing field `" + (where.empty() ? key : where + "." + key) + "`");
+}
+
+double number(const json& j, const std::string& where) {
+  if (!j.is_number()) throw ParseError(where + " must be a number, not " + type_name(j));
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) throw NonFiniteError(where + " is not finite");
+  return v;
+}
+
+int integer(const json& j, const std::string& where) {
+  if (j.is_number_integer()) {
+    const auto v = j.get<long long>();
+    if (v < -1000000000LL || v > 1000000000LL) throw ParameterError(where + " is out of range");
+    return static_cast<int>(v);
+  }
+  if (j.is_number_float()) {
+    const double v = j.get<double>();
+    if (std::isfinite(v) && v == std::floor(v) && std::abs(v) <= 1e9) return static_cast<int>(v);
+    throw ParseError(where + " must be an integer");
+  }
+  throw ParseError(where + " must be an integer, not " + type_name(j));
+}
+
+/// An array of rows of `width` numbers.
+Eigen::MatrixXd rows(const json& j, int width, const std::string& where) {
+  if (!j.is_array()) throw ParseError(where + " must be an array, not " + type_name(j));
+  Eigen::MatrixXd M(j.size(), width);
+  for (std::size_t r = 0; r < j.size(); ++r) {
+    const std::string w = where + "[" + std::to_string(r) + "]";
+    const json& row = j[r];
+    if (!row.is_array()) throw ParseError(w + " must be an array of " + std::to_string(width) +
+                                          " numbers, not " + type_name(row));
+    if (row.size() != static_cast<std::size_t>(width))
+      throw SizeError(w + " has " + std::to_string(row.size()) + " numbers, expected " +
+                      std::to_string(width));
+    for (int c = 0; c < width; ++c)
+      M(static_cast<Eigen::Index>(r), c) = number(row[c], w + "[" + std::to_string(c) + "]");
+  }
+  return M;
+}
+
+Eigen::MatrixX3d edge_array(const json& j, int k, const std::string& where) {
+  Eigen::MatrixX3d M = rows(j, 3, where);
+  if (M.rows() != k + 1)
+    throw SizeError(where + " has " + std::to_string(M.rows()) + " points, expected k+1 = " +
+                    std::to_string(k + 1) + " (one per node x_i = i/k)");
+  return M;
+}
+
+}  // namespace
+
+BlendConfig blend_config_from_json(const json& j) {
+  if (!j.is_object()) throw ParseError("the blend config must be a JSON object, not " + type_name(j));
+  if (j.contains("kind")) {
+    if (!j["kind"].is_string())
+      throw ParseError("kind must be the string \"blend\", not " + type_name(j["kind"]));
+    if (j["kind"].get<std::string>() != "blend")
+      throw ParseError("kind must be \"blend\", not \"" + j["kind"].get<std::string>() + "\"");
+  }
+  check_fields(j, "", {"kind", "partition", "a", "epsilon", "edges", "points", "data", "samples"},
+               {"kind", "partition", "a", "epsilon", "edges"});
+  BlendConfig cfg;
+  SmoothingSplineProblem& p = cfg.problem;
+
+  const json& part = j["partition"];
+  if (!part.is_array()) throw ParseError("partition must be an array [k, l], not " + type_name(part));
+  if (part.size() != 2)
+    throw SizeError("partition has " + std::to_string(part.size()) + " entries, expected [k, l]");
+  p.k = integer(part[0], "partition[0]");
+  p.l = integer(part[1], "partition[1]");
+  if (p.k < 1 || p.k > BfsSpace::kMaxPartition)
+    throw ParameterError("partition[0] (k) must be in 1.." + std::to_string(BfsSpace::kMaxPartition));
+  if (p.l < 1 || p.l > BfsSpace::kMaxPartition)
+    throw ParameterError("partition[1] (l) must be in 1.." + std::to_string(BfsSpace::kMaxPartition));
+
+  p.a = number(j["a"], "a");
+  if (!(p.a > 0)) throw ParameterError("a must be > 0 (got " + std::to_string(p.a) + ")");
+  if (p.a < 1e-6 || p.a > 1e6)
+    throw ParameterError("a must be in [1e-6, 1e6] (got " + std::to_string(p.a) +
+                         "): beyond, the discrete problem is numerically singular");
+  p.epsilon = number(j["epsilon"], "epsilon");
+  if (!(p.epsilon > 0))
+    throw ParameterError("epsilon must be > 0 (got " + std::to_string(p.epsilon) + ")");
+
+  const json& edges = j["edges"];
+  check_fields(edges, "edges", {"y0", "y1"}, {"y0", "y1"});
+  for (const char* e : {"y0", "y1"}) {
+    const std::string w = std::string("edges.") + e;
+    check_fields(edges[e], w, {"value", "dy"}, {"value", "dy"});
+    Eigen::MatrixX3d value = edge_array(edges[e]["value"], p.k, w + ".value");
+    Eigen::MatrixX3d dy = edge_array(edges[e]["dy"], p.k, w + ".dy");
+    if (e[1] == '0') {
+      p.y0_value = std::move(value);
+      p.y0_dy = std::move(dy);
+    } else {
+      p.y1_value = std::move(value);
+      p.y1_dy = std::move(dy);
+    }
+  }
+
+  p.points = j.contains("points") ? Eigen::MatrixX2d(rows(j["points"], 2, "points"))
+                                  : Eigen::MatrixX2d(0, 2);
+  p.data = j.contains("data") ? Eigen::MatrixX3d(rows(j["data"], 3, "data")) : Eigen::MatrixX3d(0, 3);
+  if (p.points.rows() != p.data.rows())
+    throw SizeError("points has " + std::to_string(p.points.rows()) + " entries but data has " +
+                    std::to_string(p.data.rows()));
+  for (Eigen::Index i = 0; i < p.points.rows(); ++i)
+    for (int c = 0; c < 2; ++c)
+      if (p.points(i, c) < 0 || p.points(i, c) > 1)
+        throw ParameterError("points[" + std::to_string(i) + "] = [" +
+                             std::to_string(p.points(i, 0)) + ", " + std::to_string(p.points(i, 1)) +
+                             "] is outside the domain [0,1]^2");
+
+  if (j.contains("samples")) {
+    cfg.samples = integer(j["samples"], "samples");
+    if (cfg.samples < 1 || cfg.samples > 4096) throw ParameterError("samples must be in 1..4096");
+  }
+  p.validate();  // the solver's own checks (nothing left to fail here, kept as a safety net)
+  return cfg;
+}
+
+BlendConfig parse_blend_config(const std::string& text) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::out_of_range& e) {
+    throw NonFiniteError(std::string("blend config: a number overflows: ") + e.what());
+  } catch (const json::exception& e) {
+    throw ParseError(std::string("blend config: malformed JSON: ") + e.what());
+  }
+  return blend_config_from_json(j);
+}
+
+BlendConfig read_blend_config(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError("cannot read the blend config `" + path + "`");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw FileError("cannot read the blend config `" + path + "`");
+  return parse_blend_config(ss.str());
+}
+
+json blend_config_to_json(const BlendConfig& cfg) {
+  const SmoothingSplineProblem& p = cfg.problem;
+  auto arr = [](const Eigen::MatrixXd& M) {
+    json a = json::array();
+    for (Eigen::Index r = 0; r < M.rows(); ++r) {
+      json row = json::array();
+      for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
+      a.push_back(row);
+    }
+    return a;
+  };
+  json j;
+  j["kind"] = "blend";
+  j["partition"] = {p.k, p.l};
+  j["a"] = p.a;
+  j["epsilon"] = p.epsilon;
+  j["edges"] = {{"y0", {{"value", arr(p.y0_value)}, {"dy", arr(p.y0_dy)}}},
+                {"y1", {{"value", arr(p.y1_value)}, {"dy", arr(p.y1_dy)}}}};
+  j["points"] = arr(p.points);
+  j["data"] = arr(p.data);
+  j["samples"] = cfg.samples;
+  return j;
+}
+
+}  // namespace bpde

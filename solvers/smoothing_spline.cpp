@@ -1,0 +1,402 @@
+#include "solvers/smoothing_spline.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <limits>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+
+namespace bpde {
+
+namespace {
+
+void require_finite(const Eigen::MatrixXd& M, const std::string& name) {
+  for (Eigen::Index r = 0; r < M.rows(); ++r)
+    for (Eigen::Index c = 0; c < M.cols(); ++c)
+      if (!std::isfinite(M(r, c)))
+        throw NonFiniteError(name + "[" + std::to_string(r) + "][" + std::to_string(c) +
+                             "] is not finite");
+}
+
+void require_edge(const Eigen::MatrixX3d& M, int k, const std::string& name) {
+  if (M.rows() != k + 1)
+    throw SizeError(name + ": " + std::to_string(M.rows()) + " points, expected k+1 = " +
+                    std::to_string(k + 1) + " (one per node x_i = i/k)");
+  require_finite(M, name);
+}
+
+std::string sci(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", v);
+  return buf;
+}
+
+}  // namespace
+
+void SmoothingSplineProblem::validate() const {
+  if (k < 1 || l < 1 || k > BfsSpace::kMaxPartition || l > BfsSpace::kMaxPartition)
+    throw ParameterError("partition: k and l must be integers in 1.." +
+                         std::to_string(BfsSpace::kMaxPartition) + " (got [" + std::to_string(k) +
+                         ", " + std::to_string(l) + "])");
+  if (!std::isfinite(a)) throw NonFiniteError("a is not finite");
+  if (!(a > 0)) throw ParameterError("a must be > 0 (the operator must be strongly elliptic)");
+  if (a < 1e-6 || a > 1e6)
+    throw ParameterError("a must be in [1e-6, 1e6]: beyond, the terms of (u,v)_L differ by more "
+                         "than 1e12 and the discrete problem is numerically singular");
+  if (!std::isfinite(epsilon)) throw NonFiniteError("epsilon is not finite");
+  if (!(epsilon > 0)) throw ParameterError("epsilon must be > 0");
+  require_edge(y0_value, k, "edges.y0.value");
+  require_edge(y0_dy, k, "edges.y0.dy");
+  require_edge(y1_value, k, "edges.y1.value");
+  require_edge(y1_dy, k, "edges.y1.dy");
+  if (points.rows() != data.rows())
+    throw SizeError("points has " + std::to_string(points.rows()) + " entries but data has " +
+                    std::to_string(data.rows()));
+  require_finite(points, "points");
+  require_finite(data, "data");
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    if (points(i, 0) < 0 || points(i, 0) > 1 || points(i, 1) < 0 || points(i, 1) > 1)
+      throw ParameterError("points[" + std::to_string(i) + "] = (" + std::to_string(points(i, 0)) +
+                           ", " + std::to_string(points(i, 1)) + ") is outside [0,1]^2");
+}
+
+void SmoothingSplineOptions::validate() const {
+  if (load_quadrature < 1 || load_quadrature > 50)
+    throw ParameterError("SmoothingSplineOptions.load_quadrature must be in 1..50");
+  if (method != Method::kKktLu && method != Method::kElimination)
+    throw ParameterError("SmoothingSplineOptions.method is not a known method");
+}
+
+// ------------------------------------------------------------------ SmoothingSpline
+SmoothingSpline::SmoothingSpline(BfsSpace space, Eigen::MatrixX3d coefficients)
+    : space_(space), coef_(std::move(coefficients)) {
+  if (coef_.rows() != space_.num_dofs())
+    throw SizeError("SmoothingSpline: " + std::to_string(coef_.rows()) +
+                    " coefficient rows, expected " + std::to_string(space_.num_dofs()));
+  require_finite(coef_, "SmoothingSpline coefficients");
+}
+
+Eigen::Vector3d SmoothingSpline::evaluate(double x, double y, int dx, int dy) const {
+  return space_.evaluate(coef_, x, y, dx, dy);
+}
+
+SurfaceJet SmoothingSpline::jet(double x, double y) const {
+  std::array<int, 16> idx;
+  std::array<double, 16> v[6];
+  const int orders[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+  for (int o = 0; o < 6; ++o) space_.basis_at(x, y, orders[o][0], orders[o][1], idx, v[o]);
+  Eigen::Vector3d r[6];
+  for (int o = 0; o < 6; ++o) {
+    r[o].setZero();
+    for (int c = 0; c < 16; ++c) r[o] += v[o][c] * coef_.row(idx[c]).transpose();
+  }
+  SurfaceJet j;
+  j.x = r[0];
+  j.xu = r[1];
+  j.xv = r[2];
+  j.xuu = r[3];
+  j.xuv = r[4];
+  j.xvv = r[5];
+  return j;
+}
+
+BSplineNet SmoothingSpline::to_bspline_net() const {
+  BfsSpace::BSplineForm b = to_bspline();
+  return BSplineNet(3, 3, std::move(b.knots_x), std::move(b.knots_y), std::move(b.points));
+}
+
+TriangleMesh SmoothingSpline::sample(int N) const {
+  if (N < 1 || N > 4096) throw ParameterError("samples must be in 1..4096");
+  TriangleMesh mesh;
+  const int nv = (N + 1) * (N + 1);
+  mesh.V.resize(nv, 3);
+  mesh.H.resize(nv);
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N; ++b) {
+      const double x = static_cast<double>(a) / N, y = static_cast<double>(b) / N;
+      const SurfaceJet j = jet(x, y);
+      const int id = a * (N + 1) + b;
+      mesh.V.row(id) = j.x.transpose();
+      FundamentalForms f = fundamental_forms(j);
+      double H = f.regular ? f.H : 0.0;
+      if (!f.regular)
+        for (double h : {1e-7, 1e-5, 1e-3, 1e-2}) {
+          f = fundamental_forms(jet(x + h * (0.5 - x), y + h * (0.5 - y)));
+          if (f.regular) {
+            H = f.H;
+            break;
+          }
+        }
+      mesh.H(id) = std::isfinite(H) ? H : 0.0;
+    }
+  mesh.F.resize(2 * N * N, 3);
+  int f = 0;
+  for (int a = 0; a < N; ++a)
+    for (int b = 0; b < N; ++b) {
+      const int p00 = a * (N + 1) + b, p10 = (a + 1) * (N + 1) + b, p11 = p10 + 1, p01 = p00 + 1;
+      mesh.F.row(f++) << p00, p10, p11;
+      mesh.F.row(f++) << p00, p11, p01;
+    }
+  return mesh;
+}
+
+// ------------------------------------------------------------------ solver
+struct SmoothingSplineSolver::Impl {
+  SmoothingSplineProblem key;  // k, l, a, epsilon, points
+  SmoothingSplineOptions options;
+  BfsSpace space{1, 1};
+  Eigen::SparseMatrix<double> R, A, C, Cabs;
+  std::vector<int> constrained, free_dofs;
+  std::vector<int> position;  // dof -> index in free_dofs, or -1
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  Eigen::SparseMatrix<double> Cff, Cfc;
+  double kkt_scale = 1.0;
+  bool factored = false;
+  std::string factor_message;
+};
+
+SmoothingSplineSolver::~SmoothingSplineSolver() = default;
+
+SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& problem,
+                                             const SmoothingSplineOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  problem.validate();
+  options.validate();
+  Impl& m = *impl_;
+  m.key.k = problem.k;
+  m.key.l = problem.l;
+  m.key.a = problem.a;
+  m.key.epsilon = problem.epsilon;
+  m.key.points = problem.points;
+  m.options = options;
+  m.space = BfsSpace(problem.k, problem.l);
+  const BfsSpace& V = m.space;
+  const int n = V.num_dofs();
+
+  m.R = V.assemble_form(SecondOrderForm::from_a(problem.a));
+  // A = (ω_j(a_i)): m by n
+  std::vector<Eigen::Triplet<double>> trip;
+  for (Eigen::Index i = 0; i < problem.points.rows(); ++i) {
+    std::array<int, 16> idx;
+    std::array<double, 16> val;
+    V.basis_at(problem.points(i, 0), problem.points(i, 1), 0, 0, idx, val);
+    for (int c = 0; c < 16; ++c)
+      if (val[c] != 0) trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
+  }
+  m.A.resize(problem.points.rows(), n);
+  m.A.setFromTriplets(trip.begin(), trip.end());
+  m.C = Eigen::SparseMatrix<double>(m.A.transpose() * m.A) + problem.epsilon * m.R;
+  m.C.makeCompressed();
+  m.Cabs = m.C.cwiseAbs();
+
+  for (int i = 0; i <= V.k(); ++i)
+    for (int j : {0, V.l()})
+      for (int d : {0, 2}) m.constrained.push_back(V.dof(i, j, d));
+  m.position.assign(n, -1);
+  {
+    std::vector<bool> is_c(n, false);
+    for (int c : m.constrained) is_c[c] = true;
+    for (int r = 0; r < n; ++r)
+      if (!is_c[r]) {
+        m.position[r] = static_cast<int>(m.free_dofs.size());
+        m.free_dofs.push_back(r);
+      }
+  }
+  const int nc = static_cast<int>(m.constrained.size());
+
+  if (options.method == SmoothingSplineOptions::Method::kKktLu) {
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(m.C.nonZeros() + 2 * nc);
+    for (int col = 0; col < m.C.outerSize(); ++col)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(m.C, col); it; ++it)
+        t.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+    // Equilibrate: D is scaled by s = max |C_ij| so that the LU pivots see blocks of one size
+    // (the constraint rows then read s·α_c = s·y).
+    m.kkt_scale = std::max(m.C.coeffs().cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
+    for (int c = 0; c < nc; ++c) {
+      t.emplace_back(m.constrained[c], n + c, m.kkt_scale);
+      t.emplace_back(n + c, m.constrained[c], m.kkt_scale);
+    }
+    Eigen::SparseMatrix<double> K(n + nc, n + nc);
+    K.setFromTriplets(t.begin(), t.end());
+    K.makeCompressed();
+    m.lu.analyzePattern(K);
+    m.lu.factorize(K);
+    m.factored = m.lu.info() == Eigen::Success;
+    if (!m.factored) m.factor_message = "the KKT matrix of eq. (8) is singular: " + m.lu.lastErrorMessage();
+  } else {
+    const int nf = static_cast<int>(m.free_dofs.size());
+    std::vector<Eigen::Triplet<double>> tf, tc;
+    std::vector<int> cpos(n, -1);
+    for (int c = 0; c < nc; ++c) cpos[m.constrained[c]] = c;
+    for (int col = 0; col < m.C.outerSize(); ++col)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(m.C, col); it; ++it) {
+        const int r = m.position[it.row()];
+        if (r < 0) continue;
+        if (m.position[col] >= 0)
+          tf.emplace_back(r, m.position[col], it.value());
+        else
+          tc.emplace_back(r, cpos[col], it.value());
+      }
+    m.Cff.resize(nf, nf);
+    m.Cff.setFromTriplets(tf.begin(), tf.end());
+    m.Cfc.resize(nf, nc);
+    m.Cfc.setFromTriplets(tc.begin(), tc.end());
+    m.ldlt.compute(m.Cff);
+    m.factored = m.ldlt.info() == Eigen::Success && (m.ldlt.vectorD().array() > 0).all();
+    if (!m.factored)
+      m.factor_message =
+          "the reduced system is numerically singular (epsilon or a too small for the data "
+          "term?)";
+  }
+}
+
+const BfsSpace& SmoothingSplineSolver::space() const { return impl_->space; }
+const Eigen::SparseMatrix<double>& SmoothingSplineSolver::form_matrix() const { return impl_->R; }
+const Eigen::SparseMatrix<double>& SmoothingSplineSolver::system_matrix() const { return impl_->C; }
+const std::vector<int>& SmoothingSplineSolver::constrained_dofs() const {
+  return impl_->constrained;
+}
+
+SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem& problem) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  problem.validate();
+  const Impl& m = *impl_;
+  if (problem.k != m.key.k || problem.l != m.key.l || problem.a != m.key.a ||
+      problem.epsilon != m.key.epsilon || problem.points.rows() != m.key.points.rows() ||
+      problem.points != m.key.points)
+    throw ParameterError(
+        "SmoothingSplineSolver::solve: the problem's partition, a, epsilon or points differ from "
+        "the factored ones");
+  const BfsSpace& V = m.space;
+  const int n = V.num_dofs();
+  const int nc = static_cast<int>(m.constrained.size());
+
+  // right-hand sides
+  Eigen::MatrixX3d Fload = Eigen::MatrixX3d::Zero(n, 3);
+  if (problem.load) Fload = V.assemble_load(problem.load, m.options.load_quadrature);
+  const Eigen::MatrixX3d F = Eigen::MatrixX3d(m.A.transpose() * problem.data) + problem.epsilon * Fload;
+  Eigen::MatrixX3d y(nc, 3);
+  for (int i = 0, c = 0; i <= V.k(); ++i) {
+    y.row(c++) = problem.y0_value.row(i);
+    y.row(c++) = problem.y0_dy.row(i);
+    y.row(c++) = problem.y1_value.row(i);
+    y.row(c++) = problem.y1_dy.row(i);
+  }
+
+  Eigen::MatrixX3d alpha = Eigen::MatrixX3d::Zero(n, 3);
+  Summary summary;
+  if (!m.factored) {
+    summary.converged = false;
+    summary.message = m.factor_message;
+  } else if (m.options.method == SmoothingSplineOptions::Method::kKktLu) {
+    Eigen::MatrixXd rhs(n + nc, 3);
+    rhs.topRows(n) = F;
+    rhs.bottomRows(nc) = m.kkt_scale * y;
+    const Eigen::MatrixXd z = m.lu.solve(rhs);
+    alpha = z.topRows(n);
+  } else {
+    const int nf = static_cast<int>(m.free_dofs.size());
+    Eigen::MatrixXd Ff(nf, 3);
+    for (int r = 0; r < nf; ++r) Ff.row(r) = F.row(m.free_dofs[r]);
+    const Eigen::MatrixXd af = m.ldlt.solve(Ff - m.Cfc * y);
+    for (int r = 0; r < nf; ++r) alpha.row(m.free_dofs[r]) = af.row(r);
+    for (int c = 0; c < nc; ++c) alpha.row(m.constrained[c]) = y.row(c);
+  }
+
+  // optimality and constraint residuals
+  const Eigen::MatrixX3d g = m.C * alpha - F;
+  const Eigen::MatrixX3d scale = m.Cabs * alpha.cwiseAbs() + F.cwiseAbs();
+  double gmax = 0, smax = 0;
+  for (int r : m.free_dofs) {
+    gmax = std::max(gmax, g.row(r).cwiseAbs().maxCoeff());
+    smax = std::max(smax, scale.row(r).maxCoeff());
+  }
+  const double stationarity = smax > 0 ? gmax / smax : gmax;
+  double cmax = 0;
+  for (int c = 0; c < nc; ++c)
+    cmax = std::max(cmax, (alpha.row(m.constrained[c]) - y.row(c)).cwiseAbs().maxCoeff());
+  const double cscale = std::max(y.cwiseAbs().maxCoeff(), alpha.cwiseAbs().maxCoeff());
+  const double constraint = cscale > 0 ? cmax / cscale : cmax;
+  SmoothingSplineResult result{SmoothingSpline(V, Eigen::MatrixX3d::Zero(n, 3)), 0, 0, 0, 0, {}, {}};
+  // J of eq. (6) for a field
+  Eigen::MatrixX3d Fl = Fload;
+  auto functional = [&](const Eigen::MatrixX3d& c, double& misfit, double& maxerr, double& energy) {
+    const Eigen::MatrixX3d r = m.A * c - problem.data;
+    misfit = r.squaredNorm();
+    maxerr = r.rows() ? r.rowwise().norm().maxCoeff() : 0.0;
+    energy = (c.transpose() * (m.R * c)).trace();
+    return misfit + problem.epsilon * (energy - 2 * (Fl.transpose() * c).trace());
+  };
+  // The feasible field with the free dofs at 0: σ must do at least as well.
+  Eigen::MatrixX3d v0 = Eigen::MatrixX3d::Zero(n, 3);
+  for (int c = 0; c < nc; ++c) v0.row(m.constrained[c]) = y.row(c);
+  double mis0, err0, en0;
+  const double J0 = functional(v0, mis0, err0, en0);
+  if (!std::isfinite(J0))
+    throw NonFiniteError(
+        "the boundary data, data, load or epsilon are too large: the functional of eq. (6) overflows");
+  double mis = 0, err = 0, en = 0, J = 0;
+  if (alpha.allFinite()) J = functional(alpha, mis, err, en);
+  if (m.factored) {
+    if (!alpha.allFinite() || !std::isfinite(J)) {
+      summary.converged = false;
+      summary.message =
+          "the linear solve produced non-finite values (ill-conditioned: epsilon or a too small "
+          "or too large?)";
+      alpha.setZero();
+      J = functional(alpha, mis, err, en);
+    } else if (const double en_abs =
+                   (alpha.cwiseAbs().transpose() * (m.R.cwiseAbs() * alpha.cwiseAbs())).trace();
+               J > J0 + 1e-9 * (std::abs(J0) + std::abs(J)) || en < -1e-10 * en_abs ||
+               (!problem.load && J < -1e-9 * J0)) {  // without load 0 <= J(sigma) <= J0
+      summary.converged = false;
+      summary.residual = stationarity;
+      summary.message =
+          "the linear solve is inaccurate: J(sigma) exceeds J of a feasible field, or J < 0 "
+          "(ill-conditioned: epsilon or a too small or too large?)";
+    } else {
+      summary.residual = stationarity;
+      summary.converged = stationarity <= 1e-11 && constraint <= 1e-11;
+      if (!summary.converged)
+        summary.message = "the linear solve is inaccurate: stationarity residual " +
+                          sci(stationarity) + ", constraint residual " + sci(constraint) +
+                          " (ill-conditioned: epsilon or a too small or too large?)";
+      else
+        summary.message = m.options.method == SmoothingSplineOptions::Method::kKktLu
+                              ? "solved the KKT system of eq. (8) by sparse LU"
+                              : "solved the reduced SPD system by sparse LDLT";
+    }
+  }
+  result.spline = SmoothingSpline(V, alpha);
+  result.multipliers.resize(nc, 3);
+  for (int c = 0; c < nc; ++c) result.multipliers.row(c) = -g.row(m.constrained[c]);
+  if (!result.multipliers.allFinite()) result.multipliers.setZero();
+  if (!std::isfinite(summary.residual)) summary.residual = 0.0;
+  result.data_misfit = mis;
+  result.max_data_error = err;
+  result.energy = en;
+  result.functional = J;
+  summary.iterations = 0;
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.summary = summary;
+  return result;
+}
+
+SmoothingSplineResult solve_smoothing_spline(const SmoothingSplineProblem& problem,
+                                             const SmoothingSplineOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SmoothingSplineSolver solver(problem, options);
+  SmoothingSplineResult r = solver.solve(problem);
+  r.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace bpde

@@ -1,0 +1,296 @@
+// Tests of checks/mesh_checks.cpp (CGAL self-intersections, closedness, volumes).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "checks/mesh_checks.h"
+#include "core/errors.h"
+
+namespace bpde {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Soup {
+  std::vector<double> v;
+  std::vector<int> t;
+  int add_vertex(double x, double y, double z) {
+    v.insert(v.end(), {x, y, z});
+    return static_cast<int>(v.size() / 3 - 1);
+  }
+};
+
+/// Sample x(u, v) on the (n+1) x (m+1) grid of [u0,u1] x [v0,v1], vertex index i(m+1)+j, two
+/// triangles per cell, counter-clockwise in the (u, v) plane. Appends to `s` (no sharing with
+/// what is already there: seams are left to the merging).
+void add_grid(Soup& s, int n, int m, double u0, double u1, double v0, double v1,
+              const std::function<std::array<double, 3>(double, double)>& x) {
+  const int base = static_cast<int>(s.v.size() / 3);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= m; ++j) {
+      const auto p = x(u0 + (u1 - u0) * i / n, v0 + (v1 - v0) * j / m);
+      s.add_vertex(p[0], p[1], p[2]);
+    }
+  auto id = [&](int i, int j) { return base + i * (m + 1) + j; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      s.t.insert(s.t.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.t.insert(s.t.end(), {id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+}
+
+std::array<double, 3> sphere(double theta, double phi) {
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+TEST(MeshChecks, UnitCubeFromSixSampledFacesIsClosedWithVolumeOne) {
+  // Six 4x4 grids, outward orientation, seams shared only geometrically.
+  Soup s;
+  using A = std::array<double, 3>;
+  add_grid(s, 4, 4, 0, 1, 0, 1, [](double u, double v) { return A{v, u, 0}; });  // z=0, normal -z
+  add_grid(s, 4, 4, 0, 1, 0, 1, [](double u, double v) { return A{u, v, 1}; });  // z=1, +z
+  add_grid(s, 4, 4, 0, 1, 0, 1, [](double u, double v) { return A{u, 0, v}; });  // y=0, -y
+  add_grid(s, 4, 4, 0, 1, 0, 1, [](double u, double v) { return A{v, 1, u}; });  // y=1, +y
+  add_grid(s, 4, 4, 0, 1, 0, 1, [](double u, double v) { return A{0, v, u}; });  // x=0, -x
+  add_grid(s, 4, 4, 0, 1, 0, 1, [](double u, double v) { return A{1, u, v}; });  // x=1, +x
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_TRUE(r.closed);
+  ASSERT_TRUE(r.volume.has_value());
+  EXPECT_NEAR(*r.volume, 1.0, 1e-13);
+  EXPECT_EQ(r.self_intersections, 0);
+  EXPECT_EQ(r.merged_vertices, 6 * 25 - 12 * 5 + 8);  // 98 = 6*9 + 12*3 + 8
+  EXPECT_EQ(r.degenerate_triangles, 0);
+  // closed surface: the cone volume is the enclosed volume too
+  EXPECT_NEAR(r.cone_volume, 1.0, 1e-13);
+}
+
+TEST(MeshChecks, SmallCubeFarFromTheOriginWithAnUnreferencedFarVertex) {
+  Soup s;
+  using A = std::array<double, 3>;
+  const double o = 1e6, h = 1e-3;
+  auto f = [&](double x, double y, double z) { return A{o + h * x, o + h * y, o + h * z}; };
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(v, u, 0); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(u, v, 1); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(u, 0, v); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(v, 1, u); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(0, v, u); });
+  add_grid(s, 3, 3, 0, 1, 0, 1, [&](double u, double v) { return f(1, u, v); });
+  s.add_vertex(1e300, -1e300, 0);  // not used by any triangle
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_TRUE(r.closed);
+  EXPECT_EQ(r.self_intersections, 0);
+  ASSERT_TRUE(r.volume.has_value());
+  EXPECT_NEAR(*r.volume, h * h * h, 1e-6 * h * h * h);
+}
+
+TEST(MeshChecks, ReversedCubeHasNegativeVolume) {
+  Soup s;
+  using A = std::array<double, 3>;
+  add_grid(s, 2, 2, 0, 1, 0, 1, [](double u, double v) { return A{u, v, 0}; });
+  add_grid(s, 2, 2, 0, 1, 0, 1, [](double u, double v) { return A{v, u, 1}; });
+  add_grid(s, 2, 2, 0, 1, 0, 1, [](double u, double v) { return A{v, 0, u}; });
+  add_grid(s, 2, 2, 0, 1, 0, 1, [](double u, double v) { return A{u, 1, v}; });
+  add_grid(s, 2, 2, 0, 1, 0, 1, [](double u, double v) { return A{0, u, v}; });
+  add_grid(s, 2, 2, 0, 1, 0, 1, [](double u, double v) { return A{1, v, u}; });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_TRUE(r.closed);
+  ASSERT_TRUE(r.volume.has_value());
+  EXPECT_NEAR(*r.volume, -1.0, 1e-13);
+}
+
+double sphere_volume(int n) {
+  Soup s;
+  add_grid(s, n, 2 * n, 0, kPi, 0, 2 * kPi, sphere);
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_TRUE(r.closed) << n;
+  EXPECT_EQ(r.self_intersections, 0) << n;
+  // poles: one degenerate triangle per cell of the first and last rows
+  EXPECT_EQ(r.degenerate_triangles, 2 * 2 * n) << n;
+  EXPECT_EQ(r.merged_vertices, (n - 1) * 2 * n + 2) << n;
+  EXPECT_TRUE(r.volume.has_value());
+  return r.volume.value_or(0);
+}
+
+TEST(MeshChecks, SampledSphereIsClosedAndConvergesToTheBallVolume) {
+  const double exact = 4 * kPi / 3;
+  const double v32 = sphere_volume(32), v64 = sphere_volume(64);
+  EXPECT_NEAR(v32, exact, 0.01 * exact);
+  EXPECT_LT(v32, exact);  // inscribed polyhedron
+  EXPECT_LT(v64, exact);
+  // second-order convergence: error ratio ~ 4
+  const double ratio = (exact - v32) / (exact - v64);
+  EXPECT_NEAR(ratio, 4.0, 0.1);
+}
+
+TEST(MeshChecks, SampledTorusWithTwoSeamsIsClosed) {
+  const double R = 2, rr = 0.5;
+  Soup s;
+  // (u, v) -> torus, oriented outwards: x_u ^ x_v points away from the tube's core circle
+  add_grid(s, 96, 48, 0, 2 * kPi, 0, 2 * kPi, [&](double u, double v) {
+    return std::array<double, 3>{(R + rr * std::cos(v)) * std::cos(u),
+                                 (R + rr * std::cos(v)) * std::sin(u), rr * std::sin(v)};
+  });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_TRUE(r.closed);
+  EXPECT_EQ(r.self_intersections, 0);
+  ASSERT_TRUE(r.volume.has_value());
+  const double exact = 2 * kPi * kPi * R * rr * rr;
+  EXPECT_NEAR(std::abs(*r.volume), exact, 5e-3 * exact);  // inscribed: -0.36 %
+}
+
+TEST(MeshChecks, HemisphereCappedByItsPlanarBoundary) {
+  const int n = 32;
+  Soup h;
+  add_grid(h, n, 4 * n, 0, kPi / 2, 0, 2 * kPi, sphere);
+  const auto r = check_mesh(h.v, h.t);
+  EXPECT_FALSE(r.closed);
+  EXPECT_EQ(r.self_intersections, 0);
+  ASSERT_TRUE(r.volume.has_value());
+  // Independent truth 1: the full sphere sampled on the same rows is symmetric about z = 0, so
+  // its volume is twice the capped hemisphere's.
+  Soup s;
+  add_grid(s, 2 * n, 4 * n, 0, kPi, 0, 2 * kPi, sphere);
+  const auto full = check_mesh(s.v, s.t);
+  ASSERT_TRUE(full.volume.has_value());
+  EXPECT_NEAR(*r.volume, 0.5 * *full.volume, 1e-12);
+  // Independent truth 2: the half ball.
+  EXPECT_NEAR(*r.volume, 2 * kPi / 3, 0.005 * 2 * kPi / 3);
+}
+
+TEST(MeshChecks, ShiftedCapIsTranslationInvariant) {
+  // A hemisphere of radius 1 centred at (3, -2, 5), boundary in the plane z = 5.
+  const int n = 16;
+  Soup h;
+  add_grid(h, n, 4 * n, 0, kPi / 2, 0, 2 * kPi, [](double t, double p) {
+    const auto q = sphere(t, p);
+    return std::array<double, 3>{q[0] + 3, q[1] - 2, q[2] + 5};
+  });
+  Soup h0;
+  add_grid(h0, n, 4 * n, 0, kPi / 2, 0, 2 * kPi, sphere);
+  const auto r = check_mesh(h.v, h.t), r0 = check_mesh(h0.v, h0.t);
+  ASSERT_TRUE(r.volume && r0.volume);
+  EXPECT_NEAR(*r.volume, *r0.volume, 1e-12);
+  // the cone volume is not translation invariant: it gains (1/3) <c, area vector of the cap>
+  // = (1/3) * 5 * pi-ish; only check it differs
+  EXPECT_GT(std::abs(r.cone_volume - r0.cone_volume), 1.0);
+}
+
+TEST(MeshChecks, TiltedOpenCylinderCappedAtBothEnds) {
+  // Cylinder of radius 1 and height 2 about the axis d = (1,1,1)/sqrt3, both ends planar.
+  const Eigen::Vector3d d = Eigen::Vector3d(1, 1, 1).normalized();
+  const Eigen::Vector3d e1 = Eigen::Vector3d(1, -1, 0).normalized(), e2 = d.cross(e1);
+  Soup s;
+  add_grid(s, 64, 4, 0, 2 * kPi, 0, 2, [&](double u, double v) {
+    const Eigen::Vector3d p = std::cos(u) * e1 + std::sin(u) * e2 + v * d;
+    return std::array<double, 3>{p[0], p[1], p[2]};
+  });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_FALSE(r.closed);
+  ASSERT_TRUE(r.volume.has_value());
+  // the inscribed 64-gon prism
+  const double exact = 2 * 0.5 * 64 * std::sin(2 * kPi / 64);
+  EXPECT_NEAR(std::abs(*r.volume), exact, 1e-12);
+}
+
+TEST(MeshChecks, NonPlanarBoundaryHasNoVolume) {
+  Soup s;
+  add_grid(s, 8, 8, -1, 1, -1, 1, [](double u, double v) { return std::array<double, 3>{u, v, u * v}; });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_FALSE(r.closed);
+  EXPECT_FALSE(r.volume.has_value());
+  EXPECT_EQ(r.self_intersections, 0);
+}
+
+TEST(MeshChecks, ConeVolumeOfFlatSquareAtHeightOne) {
+  Soup s;
+  add_grid(s, 5, 7, 0, 2, 0, 3, [](double u, double v) { return std::array<double, 3>{u, v, 1}; });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_NEAR(r.cone_volume, 6.0 / 3.0, 1e-13);  // (1/3) * area * height
+  EXPECT_EQ(r.self_intersections, 0);             // coplanar neighbours are not intersections
+  ASSERT_TRUE(r.volume.has_value());               // planar boundary: capped volume 0
+  EXPECT_NEAR(*r.volume, 0.0, 1e-13);
+}
+
+TEST(MeshChecks, TwoCrossingTrianglesIntersectOnce) {
+  Soup s;
+  s.add_vertex(0, 0, 0);
+  s.add_vertex(2, 0, 0);
+  s.add_vertex(0, 2, 0);
+  s.add_vertex(0.5, 0.5, -1);
+  s.add_vertex(0.5, 0.5, 1);
+  s.add_vertex(3, 3, 0.2);
+  s.t = {0, 1, 2, 3, 4, 5};
+  EXPECT_EQ(check_mesh(s.v, s.t).self_intersections, 1);
+  // moved apart: no intersection
+  for (int k : {3, 4, 5}) s.v[3 * k] += 10;
+  EXPECT_EQ(check_mesh(s.v, s.t).self_intersections, 0);
+}
+
+TEST(MeshChecks, FoldedStripIntersectsItself) {
+  // A ribbon over the figure-eight curve (sin 2t, sin t): it crosses itself at t = 0 and t = pi.
+  // 81 samples so that t = pi is not a grid line (there the two sheets would share merged
+  // vertices and cross only along a shared edge, which is not an intersection).
+  Soup s;
+  add_grid(s, 81, 3, 0, 2 * kPi, 0, 1, [](double t, double z) {
+    return std::array<double, 3>{std::sin(2 * t), std::sin(t), z};
+  });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_GT(r.self_intersections, 0);
+  // The same ribbon over a circle is clean.
+  Soup c;
+  add_grid(c, 80, 3, 0, 2 * kPi, 0, 1, [](double t, double z) {
+    return std::array<double, 3>{std::cos(t), std::sin(t), z};
+  });
+  EXPECT_EQ(check_mesh(c.v, c.t).self_intersections, 0);
+}
+
+TEST(MeshChecks, TrianglesFoldedOntoEachOtherAcrossAnEdgeIntersect) {
+  Soup s;
+  s.add_vertex(0, 0, 0);
+  s.add_vertex(1, 0, 0);
+  s.add_vertex(0, 1, 0);
+  s.add_vertex(0.3, 0.8, 0);  // same side of edge (0,1) as vertex 2, coplanar
+  s.t = {0, 1, 2, 1, 0, 3};
+  EXPECT_EQ(check_mesh(s.v, s.t).self_intersections, 1);
+  s.v[3 * 3 + 1] = -0.8;  // other side: a clean flat pair
+  EXPECT_EQ(check_mesh(s.v, s.t).self_intersections, 0);
+}
+
+TEST(MeshChecks, EmptyMeshIsValid) {
+  const auto r = check_mesh({}, {});
+  EXPECT_EQ(r.self_intersections, 0);
+  EXPECT_FALSE(r.closed);
+  EXPECT_FALSE(r.volume.has_value());
+  EXPECT_EQ(r.cone_volume, 0.0);
+}
+
+TEST(MeshChecks, BadInputThrowsTypedErrors) {
+  const std::vector<double> v = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  EXPECT_THROW(check_mesh({0, 0, 0, 1}, {0, 0, 0}), SizeError);
+  EXPECT_THROW(check_mesh(v, {0, 1}), SizeError);
+  EXPECT_THROW(check_mesh(v, {0, 1, 3}), SizeError);
+  EXPECT_THROW(check_mesh(v, {0, -1, 2}), SizeError);
+  auto bad = v;
+  bad[4] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(check_mesh(bad, {0, 1, 2}), NonFiniteError);
+  bad[4] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(check_mesh(bad, {0, 1, 2}), NonFiniteError);
+  bad[4] = 1.7e308;
+  bad[1] = -1.7e308;
+  EXPECT_THROW(check_mesh(bad, {0, 1, 2}), NonFiniteError);  // bounding box overflows
+  try {
+    check_mesh(v, {0, 1, 7});
+    FAIL();
+  } catch (const SizeError& e) {
+    EXPECT_NE(std::string(e.what()).find("out of range"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace bpde
