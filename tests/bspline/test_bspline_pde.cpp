@@ -253,6 +253,18 @@ TEST(BSplinePde, CoonsOperatorGivesTheCoonsPatchOnMultiSpanNets) {
     }
 }
 
+TEST(BSplinePde, CoonsSolutionIsTheCoonsExtremal) {
+  // Integration by parts: with clamped knots the free basis functions vanish on the boundary, so a
+  // net with x_uuvv = 0 on every span (p, q >= 3) is stationary for 1/2 |x_uv|^2 - the PDE solution
+  // and the extremal (solvers/bspline_extremal) must coincide.
+  const BSplineNet data = random_net(4, 3, clamped(4, {0.3, 0.6}), clamped(3, {0.45}), 45);
+  const BSplinePdeResult r = solve_bspline_pde(data, EnergySpec::coons());
+  const BSplineExtremalResult e = solve_bspline_extremal(data, EnergySpec::coons());
+  ASSERT_TRUE(r.summary.converged && e.summary.converged);
+  EXPECT_LT((r.net.points() - e.net.points()).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_NEAR(r.energy, e.energy, 1e-12 * e.energy);
+}
+
 TEST(BSplinePde, DegenerateOperatorReturnsTheMinimumEnergyMember) {
   // x_uuuu = 0 on a biquintic 2 x 2-span net: x is a cubic in u with spline coefficients in v, so
   // the boundary ring leaves free parameters. Data: such a net (compatible).
