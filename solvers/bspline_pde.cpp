@@ -166,6 +166,26 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
   options.validate();
   const auto t0 = std::chrono::steady_clock::now();
   const int N = data.size();
+  {
+    // The equations are solved densely (QR + SVD). Refuse sizes that would take minutes or
+    // gigabytes instead of hanging; the extremal (sparse) has no such limit.
+    int spans = 1;
+    for (const auto* K : {&data.knots_u(), &data.knots_v()}) {
+      int s = 0;
+      const int k = K == &data.knots_u() ? data.p() : data.q();
+      const int n = static_cast<int>(K->size()) - k - 1;
+      for (int i = k; i < n; ++i) s += (*K)[static_cast<size_t>(i)] < (*K)[static_cast<size_t>(i) + 1];
+      spans *= s;
+    }
+    const double rows = static_cast<double>(spans) * (data.p() + 1) * (data.q() + 1);
+    if (N > kMaxDensePdeUnknowns || rows * N > kMaxDensePdeEntries)
+      throw UnsupportedProblem("bspline pde: a net with " + std::to_string(N) + " control points and " +
+                               std::to_string(spans) + " spans exceeds the dense solver's limits (" +
+                               std::to_string(kMaxDensePdeUnknowns) + " points, " +
+                               std::to_string(static_cast<long long>(kMaxDensePdeEntries)) +
+                               " matrix entries); use the extremal, or fewer spans (on several spans an elliptic "
+                               "fourth-order solution is one polynomial anyway)");
+  }
   const Eigen::MatrixXd A = bspline_pde_equations(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
   const std::vector<int> free = detail::complement_indices(N, fixed, "bspline pde");
   if (free.empty()) throw SizeError("bspline pde: every control point is fixed; nothing to solve");

@@ -329,4 +329,9 @@ TEST(BSplinePde, BadInputThrowsTypedErrors) {
   EXPECT_THROW(solve_bspline_pde(cubic, EnergySpec::dirichlet(), std::vector<int>{5, 5}), ParameterError);
   EXPECT_THROW(bspline_pde_equations(3, 3, {0, 0, 0, 0, 1, 0.5, 1, 1, 1}, K3, EnergySpec::dirichlet()), ParameterError);
   EXPECT_THROW(bspline_pde_equations(3, 3, {0, 0, 0, 1, 1, 1}, K3, EnergySpec::dirichlet()), SizeError);
+  // Too large for the dense solve: refused at once, not run for minutes.
+  std::vector<double> interior;
+  for (int s = 1; s < 60; ++s) interior.push_back(s / 60.0);
+  const BSplineNet big(5, 5, clamped(5, interior), clamped(5, interior), Eigen::MatrixX3d::Zero(65 * 65, 3));
+  EXPECT_THROW(solve_bspline_pde(big, EnergySpec::biharmonic()), UnsupportedProblem);
 }
