@@ -92,6 +92,21 @@ TEST(BSplineOps, ContinuityAcrossKnotsIsDegreeMinusMultiplicity) {
   }
 }
 
+TEST(BSplineOps, ExtractionHandlesAnInteriorKnotOfFullMultiplicity) {
+  // Cubic with the knot 0.5 of multiplicity 4 (a C^-1 join): the two Bézier pieces are exactly
+  // the two halves of the control polygon.
+  const std::vector<double> U = clamped(3, {0.5, 0.5, 0.5, 0.5});
+  const BezierExtraction ex = bezier_extraction(3, U);
+  ASSERT_EQ(ex.spans(), 2);
+  EXPECT_EQ(ex.first[0], 0);
+  EXPECT_EQ(ex.first[1], 4);
+  Eigen::MatrixXd left = Eigen::MatrixXd::Zero(4, 8), right = Eigen::MatrixXd::Zero(4, 8);
+  left.leftCols(4).setIdentity();
+  right.rightCols(4).setIdentity();
+  EXPECT_LT((ex.C[0] - left).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_LT((ex.C[1] - right).cwiseAbs().maxCoeff(), 1e-15);
+}
+
 TEST(BSplineOps, SingleSpanClampedExtractionIsTheIdentity) {
   const BSplineNet net = random_net(4, 2, clamped(4, {}, 0, 1), clamped(2, {}, 0, 1), 3);
   const std::vector<BezierPatch> P = bezier_patches(net);

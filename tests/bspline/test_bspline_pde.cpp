@@ -310,6 +310,18 @@ TEST(BSplinePde, DegenerateOperatorReturnsTheMinimumEnergyMember) {
   EXPECT_LT(err, 1e-8 * (1 + P.cwiseAbs().maxCoeff()));
 }
 
+TEST(BSplinePde, PdeResidualFollowsTheFormatsDefinition) {
+  // x = (u^2, v^2, 0) under Laplace: |Lx| = |(2,2,0)| = 2 sqrt 2 and sum_k |c_k||d^k x| = 2 + 2,
+  // at every point: ratio sqrt(2)/2. With weights (1,0,3): |(2,6,0)| / (2 + 6).
+  const std::vector<double> U = clamped(3, {0.4}, -1, 1), V = clamped(2, {0.3, 0.6});
+  const BSplineNet net = spline_of([](double u, double v) { return Eigen::Vector3d(u * u, v * v, 0); }, 3, 2, U, V);
+  EXPECT_NEAR(bspline_pde_residual(net, EnergySpec::dirichlet(), 7), std::sqrt(2.0) / 2, 1e-12);
+  EXPECT_NEAR(bspline_pde_residual(net, EnergySpec::second_order(1, 0, 3), 7), std::sqrt(40.0) / 8, 1e-12);
+  const BSplineNet harmonic =
+      spline_of([](double u, double v) { return Eigen::Vector3d(u * u - v * v, 2 * u * v, u); }, 3, 2, U, V);
+  EXPECT_NEAR(bspline_pde_residual(harmonic, EnergySpec::dirichlet(), 7), 0.0, 1e-12);
+}
+
 TEST(BSplinePde, BadInputThrowsTypedErrors) {
   const std::vector<double> K3 = clamped(3, {0.5});
   const BSplineNet cubic = random_net(3, 3, K3, K3, 1);
