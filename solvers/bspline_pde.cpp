@@ -267,8 +267,10 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
     const Eigen::MatrixXd g = Z.transpose() * (Qff * Xf + Qfc * Xc);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
     const Eigen::VectorXd lam = es.eigenvalues();
-    const double lmax = lam.cwiseAbs().maxCoeff();
-    const double cut = 1e-12 * std::max(lmax, 1e-300);
+    // Zero eigenvalues are judged against the energy's scale on all free points (|Q_ff|), not
+    // against H alone: an energy that vanishes on the whole solution set gives H ~ rounding.
+    const double qscale = Qff.cwiseAbs().maxCoeff();
+    const double cut = 1e-11 * std::max(qscale, 1e-300);
     Eigen::VectorXd inv = Eigen::VectorXd::Zero(lam.size());
     int zero = 0, negative = 0;
     for (Eigen::Index k = 0; k < lam.size(); ++k) {
