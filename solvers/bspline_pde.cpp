@@ -18,13 +18,6 @@
 namespace bpde {
 namespace {
 
-double term_size_ratio(const Eigen::MatrixXd& A, const Eigen::MatrixXd& X, const Eigen::MatrixXd& R) {
-  // max |R| / max (|A| |X|), over rows and coordinates.
-  const Eigen::MatrixXd S = A.cwiseAbs() * X.cwiseAbs();
-  const double smax = S.size() ? S.maxCoeff() : 0.0;
-  const double rmax = R.size() ? R.cwiseAbs().maxCoeff() : 0.0;
-  return smax > 0 ? rmax / smax : rmax;
-}
 
 std::string fmt(double x) {
   std::ostringstream s;
@@ -58,73 +51,162 @@ std::vector<OperatorTerm> euler_lagrange_terms(const EnergySpec& op) {
   return out;
 }
 
-Eigen::MatrixXd bspline_pde_equations(int p, int q, const std::vector<double>& U, const std::vector<double>& V,
-                                      const EnergySpec& op) {
-  BSplineNet::validate_knots(p, U, "u");
-  BSplineNet::validate_knots(q, V, "v");
-  const std::vector<OperatorTerm> terms = euler_lagrange_terms(op);
-  if (terms.empty()) throw ParameterError("bspline pde: the operator " + op.name() + " has all coefficients zero");
-  int du = 0, dv = 0;
-  for (const auto& t : terms) {
-    if (t.ku > p || t.kv > q)
-      throw DegreeError("bspline pde: the operator term d^" + std::to_string(t.ku) + "/du^" + std::to_string(t.ku) +
-                        " d^" + std::to_string(t.kv) + "/dv^" + std::to_string(t.kv) + " of " + op.name() +
-                        " vanishes identically at degree [" + std::to_string(p) + ", " + std::to_string(q) +
-                        "]; the degree must be at least the order of differentiation in each direction");
-    du = std::max(du, p - t.ku);
-    dv = std::max(dv, q - t.kv);
+namespace {
+
+// The span equations, one span at a time: block(su, sv) is the (per x (p+1)(q+1)) matrix of the
+// scaled Bernstein coefficients of Lx on that span in terms of its live control points
+// (local column a*(q+1) + b  <->  point (first_u + a, first_v + b)).
+class SpanSystem {
+ public:
+  SpanSystem(int p, int q, const std::vector<double>& U, const std::vector<double>& V, const EnergySpec& op)
+      : p_(p), q_(q) {
+    BSplineNet::validate_knots(p, U, "u");
+    BSplineNet::validate_knots(q, V, "v");
+    terms_ = euler_lagrange_terms(op);
+    if (terms_.empty()) throw ParameterError("bspline pde: the operator " + op.name() + " has all coefficients zero");
+    for (const auto& t : terms_) {
+      if (t.ku > p || t.kv > q)
+        throw DegreeError("bspline pde: the operator term d^" + std::to_string(t.ku) + "/du^" + std::to_string(t.ku) +
+                          " d^" + std::to_string(t.kv) + "/dv^" + std::to_string(t.kv) + " of " + op.name() +
+                          " vanishes identically at degree [" + std::to_string(p) + ", " + std::to_string(q) +
+                          "]; the degree must be at least the order of differentiation in each direction");
+      du_ = std::max(du_, p - t.ku);
+      dv_ = std::max(dv_, q - t.kv);
+    }
+    eu_ = bezier_extraction(p, U);
+    ev_ = bezier_extraction(q, V);
+    nv_ = static_cast<int>(V.size()) - q - 1;
+    N_ = (static_cast<int>(U.size()) - p - 1) * nv_;
+    Ru_ = ops(p, du_, eu_, op.order(), true);
+    Rv_ = ops(q, dv_, ev_, op.order(), false);
   }
-  const BezierExtraction eu = bezier_extraction(p, U), ev = bezier_extraction(q, V);
-  const int nu = static_cast<int>(U.size()) - p - 1, nv = static_cast<int>(V.size()) - q - 1;
-  // 1-D operators per span and derivative order: (d+1) x n,  E D_k C[s] / h^k.
-  auto ops = [&terms](int k, int d, const BezierExtraction& ex, int order, bool along_u) {
+  int per() const { return (du_ + 1) * (dv_ + 1); }
+  int spans_u() const { return eu_.spans(); }
+  int spans_v() const { return ev_.spans(); }
+  int first_u(int su) const { return eu_.first[static_cast<size_t>(su)]; }
+  int first_v(int sv) const { return ev_.first[static_cast<size_t>(sv)]; }
+  int nv() const { return nv_; }
+  int N() const { return N_; }
+  int equations() const { return per() * spans_u() * spans_v(); }
+  int global(int su, int sv, int a, int b) const { return (first_u(su) + a) * nv_ + first_v(sv) + b; }
+
+  Eigen::MatrixXd block(int su, int sv) const {
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(per(), (p_ + 1) * (q_ + 1));
+    const int iu0 = first_u(su), iv0 = first_v(sv);
+    for (const auto& t : terms_) {
+      const Eigen::MatrixXd& Mu = Ru_[static_cast<size_t>(su)][static_cast<size_t>(t.ku)];
+      const Eigen::MatrixXd& Mv = Rv_[static_cast<size_t>(sv)][static_cast<size_t>(t.kv)];
+      for (int a = 0; a <= du_; ++a)
+        for (int i = 0; i <= p_; ++i) {
+          const double x = t.c * Mu(a, iu0 + i);
+          if (x == 0.0) continue;
+          for (int b = 0; b <= dv_; ++b)
+            for (int j = 0; j <= q_; ++j) B(a * (dv_ + 1) + b, i * (q_ + 1) + j) += x * Mv(b, iv0 + j);
+        }
+    }
+    const double mx = B.cwiseAbs().maxCoeff();
+    if (mx > 0) B /= mx;
+    return B;
+  }
+
+  /// max |A Y| / max (|A| |Y|) over all span equations (Y: N x 3, all control points).
+  double residual(const Eigen::MatrixXd& Y) const {
+    double rmax = 0, smax = 0;
+    Eigen::MatrixXd y((p_ + 1) * (q_ + 1), Y.cols());
+    for (int su = 0; su < spans_u(); ++su)
+      for (int sv = 0; sv < spans_v(); ++sv) {
+        const Eigen::MatrixXd B = block(su, sv);
+        for (int a = 0; a <= p_; ++a)
+          for (int b = 0; b <= q_; ++b) y.row(a * (q_ + 1) + b) = Y.row(global(su, sv, a, b));
+        rmax = std::max(rmax, (B * y).cwiseAbs().maxCoeff());
+        smax = std::max(smax, (B.cwiseAbs() * y.cwiseAbs()).maxCoeff());
+      }
+    return smax > 0 ? rmax / smax : rmax;
+  }
+
+  /// An N x N upper-triangular R with R^T R = A^T A, by Householder QR strip by strip (the rows of
+  /// one u-span touch the columns of p+1 consecutive i only), so A is never formed.
+  Eigen::MatrixXd compressed() const {
+    const int W = (p_ + 1) * nv_;
+    Eigen::MatrixXd R = Eigen::MatrixXd::Zero(N_, N_);
+    Eigen::MatrixXd carry(0, W);
+    int i0 = first_u(0);
+    auto emit = [&](int count) {  // move the first `count` carry rows into R
+      const int k = std::min<int>(count, static_cast<int>(carry.rows()));
+      for (int r = 0; r < k; ++r) R.row(i0 * nv_ + r).segment(i0 * nv_, W) = carry.row(r);
+      return k;
+    };
+    for (int su = 0; su < spans_u(); ++su) {
+      const int fu = first_u(su);
+      if (fu > i0) {
+        const int sc = (fu - i0) * nv_;
+        const int k = emit(sc);
+        Eigen::MatrixXd rest = Eigen::MatrixXd::Zero(carry.rows() - k, W);
+        if (rest.rows() > 0) rest.leftCols(W - sc) = carry.bottomRows(rest.rows()).rightCols(W - sc);
+        carry = std::move(rest);
+        i0 = fu;
+      }
+      Eigen::MatrixXd stacked = Eigen::MatrixXd::Zero(carry.rows() + static_cast<Eigen::Index>(per()) * spans_v(), W);
+      stacked.topRows(carry.rows()) = carry;
+      for (int sv = 0; sv < spans_v(); ++sv) {
+        const Eigen::MatrixXd B = block(su, sv);
+        const int r0 = static_cast<int>(carry.rows()) + sv * per();
+        for (int a = 0; a <= p_; ++a)
+          for (int b = 0; b <= q_; ++b)
+            stacked.block(r0, a * nv_ + first_v(sv) + b, per(), 1) = B.col(a * (q_ + 1) + b);
+      }
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qr(stacked);
+      const int rows = static_cast<int>(std::min<Eigen::Index>(stacked.rows(), W));
+      carry = qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
+    }
+    emit(static_cast<int>(carry.rows()));
+    return R;
+  }
+
+ private:
+  std::vector<std::vector<Eigen::MatrixXd>> ops(int k, int d, const BezierExtraction& ex, int order, bool along_u) const {
+    // 1-D operators per span and derivative order: (d+1) x n,  E D_k C[s] / h^k.
     std::vector<std::vector<Eigen::MatrixXd>> R(static_cast<size_t>(ex.spans()));
     std::vector<bool> used(static_cast<size_t>(order) + 1, false);
-    for (const auto& t : terms) used[static_cast<size_t>(along_u ? t.ku : t.kv)] = true;
+    for (const auto& t : terms_) used[static_cast<size_t>(along_u ? t.ku : t.kv)] = true;
     for (int s = 0; s < ex.spans(); ++s)
       for (int o = 0; o <= order; ++o) {
         if (!used[static_cast<size_t>(o)]) {
           R[static_cast<size_t>(s)].emplace_back();
           continue;
         }
-        const Eigen::MatrixXd M = bernstein_elevation_operator(k - o, d - (k - o)) *
-                                  bernstein_derivative_operator(k, o) * ex.C[static_cast<size_t>(s)] /
-                                  std::pow(ex.width(s), o);
-        R[static_cast<size_t>(s)].push_back(M);
+        R[static_cast<size_t>(s)].push_back(bernstein_elevation_operator(k - o, d - (k - o)) *
+                                            bernstein_derivative_operator(k, o) * ex.C[static_cast<size_t>(s)] /
+                                            std::pow(ex.width(s), o));
       }
     return R;
-  };
-  const int order = op.order();
-  const auto Ru = ops(p, du, eu, order, true), Rv = ops(q, dv, ev, order, false);
-  const int per = (du + 1) * (dv + 1), S = eu.spans() * ev.spans();
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(per) * S, nu * nv);
-  for (int su = 0; su < eu.spans(); ++su)
-    for (int sv = 0; sv < ev.spans(); ++sv) {
-      const int r0 = (su * ev.spans() + sv) * per;
-      auto block = A.middleRows(r0, per);
-      // Only columns of the live basis functions can be non-zero.
-      const int iu0 = eu.first[static_cast<size_t>(su)], iv0 = ev.first[static_cast<size_t>(sv)];
-      for (const auto& t : terms) {
-        const Eigen::MatrixXd& Mu = Ru[static_cast<size_t>(su)][static_cast<size_t>(t.ku)];
-        const Eigen::MatrixXd& Mv = Rv[static_cast<size_t>(sv)][static_cast<size_t>(t.kv)];
-        for (int a = 0; a <= du; ++a)
-          for (int i = iu0; i <= iu0 + p; ++i) {
-            const double x = t.c * Mu(a, i);
-            if (x == 0.0) continue;
-            for (int b = 0; b <= dv; ++b)
-              for (int j = iv0; j <= iv0 + q; ++j) block(a * (dv + 1) + b, i * nv + j) += x * Mv(b, j);
-          }
-      }
-      const double mx = block.cwiseAbs().maxCoeff();
-      if (mx > 0) block /= mx;
+  }
+
+  int p_, q_, du_ = 0, dv_ = 0, nv_ = 0, N_ = 0;
+  std::vector<OperatorTerm> terms_;
+  BezierExtraction eu_, ev_;
+  std::vector<std::vector<Eigen::MatrixXd>> Ru_, Rv_;
+};
+
+}  // namespace
+
+Eigen::MatrixXd bspline_pde_equations(int p, int q, const std::vector<double>& U, const std::vector<double>& V,
+                                      const EnergySpec& op) {
+  const SpanSystem sys(p, q, U, V, op);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(sys.equations(), sys.N());
+  for (int su = 0; su < sys.spans_u(); ++su)
+    for (int sv = 0; sv < sys.spans_v(); ++sv) {
+      const Eigen::MatrixXd B = sys.block(su, sv);
+      const int r0 = (su * sys.spans_v() + sv) * sys.per();
+      for (int a = 0; a <= p; ++a)
+        for (int b = 0; b <= q; ++b) A.block(r0, sys.global(su, sv, a, b), sys.per(), 1) = B.col(a * (q + 1) + b);
     }
   return A;
 }
 
 double bspline_pde_equation_residual(const BSplineNet& net, const EnergySpec& op) {
-  const Eigen::MatrixXd A = bspline_pde_equations(net.p(), net.q(), net.knots_u(), net.knots_v(), op);
-  const Eigen::MatrixXd P = net.points();
-  return term_size_ratio(A, P, A * P);
+  const SpanSystem sys(net.p(), net.q(), net.knots_u(), net.knots_v(), op);
+  return sys.residual(net.points());
 }
 
 double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int samples) {
@@ -166,41 +248,20 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
   options.validate();
   const auto t0 = std::chrono::steady_clock::now();
   const int N = data.size();
-  {
-    // The equations are solved densely (QR + SVD). Refuse sizes that would take minutes or
-    // gigabytes instead of hanging; the extremal (sparse) has no such limit.
-    int spans = 1;
-    for (const auto* K : {&data.knots_u(), &data.knots_v()}) {
-      int s = 0;
-      const int k = K == &data.knots_u() ? data.p() : data.q();
-      const int n = static_cast<int>(K->size()) - k - 1;
-      for (int i = k; i < n; ++i) s += (*K)[static_cast<size_t>(i)] < (*K)[static_cast<size_t>(i) + 1];
-      spans *= s;
-    }
-    const double rows = static_cast<double>(spans) * (data.p() + 1) * (data.q() + 1);
-    if (N > kMaxDensePdeUnknowns || rows * N > kMaxDensePdeEntries)
-      throw UnsupportedProblem("bspline pde: a net with " + std::to_string(N) + " control points and " +
-                               std::to_string(spans) + " spans exceeds the dense solver's limits (" +
-                               std::to_string(kMaxDensePdeUnknowns) + " points, " +
-                               std::to_string(static_cast<long long>(kMaxDensePdeEntries)) +
-                               " matrix entries); use the extremal, or fewer spans (on several spans an elliptic "
-                               "fourth-order solution is one polynomial anyway)");
-  }
-  const Eigen::MatrixXd A = bspline_pde_equations(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
+  if (N > kMaxDensePdeUnknowns)
+    throw UnsupportedProblem("bspline pde: a net with " + std::to_string(N) + " control points exceeds the dense "
+                             "solver's limit of " + std::to_string(kMaxDensePdeUnknowns) +
+                             " points; use the extremal, or fewer spans (on several spans an elliptic fourth-order "
+                             "solution is one polynomial anyway)");
+  const SpanSystem sys(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
   const std::vector<int> free = detail::complement_indices(N, fixed, "bspline pde");
   if (free.empty()) throw SizeError("bspline pde: every control point is fixed; nothing to solve");
   const Eigen::MatrixXd Xc = detail::gather_rows(data.points(), fixed);
-  BSplinePdeResult out{data, {}, static_cast<int>(A.rows()), 0, 0, 0, 0, false, 0.0};
+  BSplinePdeResult out{data, {}, sys.equations(), 0, 0, 0, 0, false, 0.0};
 
-  // Compress the tall system: A = Q R (Householder, backward stable) has the singular values of
-  // R, and min |A_f X_f + A_c X_c| = min |R_f X_f + R_c X_c|, so the SVDs below act on N rows.
-  Eigen::MatrixXd Rm;
-  if (A.rows() > A.cols()) {
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
-    Rm = qr.matrixQR().topRows(N).triangularView<Eigen::Upper>();
-  } else {
-    Rm = A;
-  }
+  // Compress the tall system strip by strip: R^T R = A^T A, so R has the singular values of A and
+  // |A_f X_f + A_c X_c| = |R_f X_f + R_c X_c|; the SVDs below act on N rows and A is never formed.
+  const Eigen::MatrixXd Rm = sys.compressed();
   const Eigen::MatrixXd Rf = detail::gather_cols(Rm, free);
   const Eigen::MatrixXd B = -(detail::gather_cols(Rm, fixed) * Xc);
   auto count_rank = [&](const Eigen::VectorXd& sv) {
@@ -237,7 +298,7 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
     Eigen::MatrixXd full(N, 3);
     for (int k = 0; k < nf; ++k) full.row(free[static_cast<size_t>(k)]) = X.row(k);
     for (size_t k = 0; k < fixed.size(); ++k) full.row(fixed[k]) = Xc.row(static_cast<Eigen::Index>(k));
-    return term_size_ratio(A, full, A * full);
+    return sys.residual(full);
   };
   double res = residual_of(Xf);
   out.summary.residual = res;

@@ -85,12 +85,10 @@ struct OperatorTerm {
 };
 std::vector<OperatorTerm> euler_lagrange_terms(const EnergySpec& op);
 
-/// Size limits of the dense solve: at most kMaxDensePdeUnknowns control points and
-/// (#spans * (p+1)(q+1)) * #points <= kMaxDensePdeEntries (0.24 GB, ~6 s); larger requests throw
-/// UnsupportedProblem instead of running for minutes. A biquintic net stays within them up to
-/// about 30 x 30 control points (25 x 25 spans).
+/// Size limit of the solve: the equations are compressed strip by strip (one u-span at a time) to
+/// an N x N triangle, whose SVD is dense, so at most kMaxDensePdeUnknowns control points; larger
+/// requests throw UnsupportedProblem instead of running for minutes.
 inline constexpr int kMaxDensePdeUnknowns = 1500;
-inline constexpr double kMaxDensePdeEntries = 3e7;
 
 /// Solve with the fixed set of the options (first overload) or an explicit strictly increasing
 /// list of fixed point indices i*nv + j (second overload; e.g. the paper's Example 1 fixes the
