@@ -5,23 +5,9 @@
 #include <optional>
 #include <string>
 
-#include "io/job.h"
+#include "io/run_job.h"
 
 namespace bpde::app {
-
-/// What a solve produced: the net, the report object, and extra top-level result fields.
-struct SolveOutcome {
-  Net net;
-  Json report = Json::object();
-  Json extra = Json::object();  ///< e.g. {"load": NET} for biharmonic-load
-  bool converged = true;
-};
-
-/// Run a validated job (no files written). Throws InvalidInput for problems the library rejects.
-SolveOutcome run_job(const Job& job);
-
-/// Write DIR/result.json and the surface files; returns the exit status (0 or 1).
-int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out);
 
 int cmd_solve(const std::string& job_path, const std::string& out_dir);
 int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples);

@@ -102,3 +102,36 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndWritesNothing) {
 }
 
 TEST(Cli, HelpExitsZero) { EXPECT_EQ(run("--help").status, 0); }
+
+namespace {
+std::string slurp_file(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
+
+TEST(Cli, SolvePdeAndExtremalWriteReports) {
+  const fs::path ex = fs::path(BPDE_SOURCE_DIR) / "examples" / "001-pde-figures" / "fig1-biharmonic.json";
+  const fs::path out = tmpdir() / "pde";
+  const CmdResult r = run("solve " + ex.string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string res = slurp_file(out / "result.json");
+  for (const char* key : {"\"pde_residual\"", "\"converged\": true", "\"energy\"", "\"self_intersections\"", "\"mean_curvature\""})
+    EXPECT_NE(res.find(key), std::string::npos) << key;
+  EXPECT_TRUE(fs::exists(out / "surface.ply"));
+}
+
+TEST(Cli, HarmonicEvenDegreeIncompatibleDataExitsOne) {
+  // degree 2, u-boundaries: rows i = 0 and i = 2 given; a harmonic bidegree-(2,2) patch has
+  // 2n+1 = 5 dimensions against 6 data values, so generic data are incompatible (NOTES.md).
+  const std::string job = R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,1],[0,1,0],[0.5,0,0],[0.5,0.5,0],[0.5,1,0],[1,0,0],[1,0.5,0.3],[1,1,2]]},
+    "fixed": "u-boundaries", "problem": {"kind": "pde", "operator": {"name": "dirichlet"}}})";
+  const fs::path out = tmpdir() / "harm";
+  const CmdResult r = run("solve " + write("harm.json", job).string() + " --out " + out.string());
+  EXPECT_EQ(r.status, 1) << r.err;
+  const std::string res = slurp_file(out / "result.json");
+  EXPECT_NE(res.find("\"converged\": false"), std::string::npos);
+  EXPECT_NE(res.find("\"message\""), std::string::npos);
+}

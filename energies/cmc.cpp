@@ -1,0 +1,221 @@
+#include "energies/cmc.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include "core/bernstein.h"
+#include "core/errors.h"
+#include "energies/triangular_gram.h"
+#include "tensor/tensor_net.h"
+#include "triangular/triangular_net.h"
+
+namespace bpde {
+namespace {
+
+// kron(A, B) for the tensor index i*(m+1) + j.
+Eigen::MatrixXd kron(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+  Eigen::MatrixXd K(A.rows() * B.rows(), A.cols() * B.cols());
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    for (Eigen::Index k = 0; k < A.cols(); ++k)
+      K.block(i * B.rows(), k * B.cols(), B.rows(), B.cols()) = A(i, k) * B;
+  return K;
+}
+
+}  // namespace
+
+CmcFunctional CmcFunctional::triangular(int n) {
+  CmcFunctional f;
+  f.volume_ = VolumeForm::triangular(n);  // validates n
+  f.gram_ = triangular_dirichlet_gram(n);
+  f.abs_gram_ = f.gram_.cwiseAbs();
+  return f;
+}
+
+CmcFunctional CmcFunctional::tensor(int n, int m) {
+  CmcFunctional f;
+  f.volume_ = VolumeForm::tensor(n, m);  // validates n, m
+  const Eigen::MatrixXd Ku = bernstein_derivative_integrals(n, 1, 1);
+  const Eigen::MatrixXd Mu = bernstein_product_integrals(n, n);
+  const Eigen::MatrixXd Kv = bernstein_derivative_integrals(m, 1, 1);
+  const Eigen::MatrixXd Mv = bernstein_product_integrals(m, m);
+  f.gram_ = kron(Ku, Mv) + kron(Mu, Kv);
+  f.abs_gram_ = f.gram_.cwiseAbs();
+  return f;
+}
+
+std::shared_ptr<const CmcFunctional> CmcFunctional::cached_triangular(int n) {
+  static std::mutex mu;
+  static std::map<int, std::shared_ptr<const CmcFunctional>> cache;
+  std::lock_guard<std::mutex> lock(mu);
+  auto it = cache.find(n);
+  if (it != cache.end()) return it->second;
+  auto p = std::make_shared<const CmcFunctional>(triangular(n));
+  cache.emplace(n, p);
+  return p;
+}
+
+std::shared_ptr<const CmcFunctional> CmcFunctional::cached_tensor(int n, int m) {
+  static std::mutex mu;
+  static std::map<std::pair<int, int>, std::shared_ptr<const CmcFunctional>> cache;
+  std::lock_guard<std::mutex> lock(mu);
+  auto it = cache.find({n, m});
+  if (it != cache.end()) return it->second;
+  auto p = std::make_shared<const CmcFunctional>(tensor(n, m));
+  cache.emplace(std::make_pair(n, m), p);
+  return p;
+}
+
+std::size_t CmcFunctional::memory_bytes() const {
+  return volume_.memory_bytes() + sizeof(double) * static_cast<std::size_t>(gram_.size());
+}
+
+double CmcFunctional::dirichlet(const Eigen::MatrixX3d& P) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  return 0.5 * (P.transpose() * gram_ * P).trace();
+}
+
+double CmcFunctional::value(const Eigen::MatrixX3d& P, double H) const {
+  return dirichlet(P) + 2.0 * H * volume_.value(P);
+}
+
+Eigen::MatrixX3d CmcFunctional::gradient(const Eigen::MatrixX3d& P, double H) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  Eigen::MatrixX3d G = gram_ * P;
+  if (H != 0.0) G += 2.0 * H * volume_.gradient(P);
+  return G;
+}
+
+Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H,
+                                       const std::vector<int>& idx) const {
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
+  Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
+  if (H != 0.0) Hs = 2.0 * H * volume_.hessian(P, idx);
+  for (Eigen::Index a = 0; a < k; ++a)
+    for (Eigen::Index b = 0; b < k; ++b) {
+      const double c = gram_(idx[static_cast<size_t>(a)], idx[static_cast<size_t>(b)]);
+      for (int r = 0; r < 3; ++r) Hs(3 * a + r, 3 * b + r) += c;
+    }
+  return Hs;
+}
+
+namespace {
+Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
+  Eigen::MatrixX3d out(A.rows(), 3);
+  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A * P.col(c);
+  return out;
+}
+}  // namespace
+
+Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double H,
+                                              const std::vector<int>& idx) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  const Eigen::MatrixX3d CP = times(gram_, P);
+  Eigen::MatrixX3d G(static_cast<Eigen::Index>(idx.size()), 3);
+  for (size_t a = 0; a < idx.size(); ++a) G.row(static_cast<Eigen::Index>(a)) = CP.row(idx[a]);
+  if (H != 0.0) G += 2.0 * H * volume_.gradient_rows(P, idx);
+  return G;
+}
+
+double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx,
+                               Eigen::MatrixX3d* Fout, double* scale) const {
+  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
+  const Eigen::MatrixX3d CP = times(gram_, P), CS = times(abs_gram_, P.cwiseAbs());
+  Eigen::MatrixX3d F(k, 3), S(k, 3);
+  for (Eigen::Index a = 0; a < k; ++a) {
+    F.row(a) = CP.row(idx[static_cast<size_t>(a)]);
+    S.row(a) = CS.row(idx[static_cast<size_t>(a)]);
+  }
+  if (H != 0.0) {
+    Eigen::MatrixX3d GV, SV;
+    volume_.gradient_rows_and_scale(P, idx, &GV, &SV);
+    F += 2.0 * H * GV;
+    S += 2.0 * std::abs(H) * SV;
+  }
+  if (Fout) *Fout = F;
+  const double num = k == 0 ? 0.0 : F.cwiseAbs().maxCoeff();
+  const double den = k == 0 ? 0.0 : S.maxCoeff();
+  if (scale) *scale = den;
+  if (!std::isfinite(num)) return std::numeric_limits<double>::infinity();
+  if (den == 0.0) return num == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  return num / den;
+}
+
+CmcEnergies cmc_energies(const TriangularNet& net, double H) {
+  if (!std::isfinite(H)) throw NonFiniteError("cmc energy: H must be a finite number");
+  const auto f = CmcFunctional::cached_triangular(net.n());
+  CmcEnergies e;
+  e.D = f->dirichlet(net.points());
+  e.V = f->volume(net.points());
+  e.DH = e.D + 2.0 * H * e.V;
+  return e;
+}
+
+CmcEnergies cmc_energies(const TensorNet& net, double H) {
+  if (!std::isfinite(H)) throw NonFiniteError("cmc energy: H must be a finite number");
+  const auto f = CmcFunctional::cached_tensor(net.n(), net.m());
+  CmcEnergies e;
+  e.D = f->dirichlet(net.points());
+  e.V = f->volume(net.points());
+  e.DH = e.D + 2.0 * H * e.V;
+  return e;
+}
+
+namespace {
+
+void check_sampling(int N, double margin) {
+  if (N < 1) throw ParameterError("mean_curvature_stats: samples must be >= 1");
+  if (!(margin >= 0.0 && margin < 0.5))
+    throw ParameterError("mean_curvature_stats: corner_margin must be in [0, 0.5)");
+}
+
+void accumulate(MeanCurvatureStats& s, const FundamentalForms& g, double& sum) {
+  if (!g.regular || !std::isfinite(g.H)) return;
+  if (s.count == 0) {
+    s.min = s.max = g.H;
+  } else {
+    s.min = std::min(s.min, g.H);
+    s.max = std::max(s.max, g.H);
+  }
+  sum += g.H;
+  ++s.count;
+}
+
+}  // namespace
+
+MeanCurvatureStats mean_curvature_stats(const TriangularNet& net, int N, double corner_margin) {
+  check_sampling(N, corner_margin);
+  MeanCurvatureStats s;
+  double sum = 0;
+  const double lim = 1.0 - corner_margin + 1e-12;
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N - a; ++b) {
+      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+      const double w = 1.0 - u - v;
+      if (u > lim || v > lim || w > lim) continue;
+      accumulate(s, net.geometry(u, v), sum);
+    }
+  if (s.count > 0) s.mean = sum / s.count;
+  return s;
+}
+
+MeanCurvatureStats mean_curvature_stats(const TensorNet& net, int N, double corner_margin) {
+  check_sampling(N, corner_margin);
+  MeanCurvatureStats s;
+  double sum = 0;
+  const double lim = corner_margin - 1e-12;
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N; ++b) {
+      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+      if (std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim) continue;
+      accumulate(s, net.geometry(u, v), sum);
+    }
+  if (s.count > 0) s.mean = sum / s.count;
+  return s;
+}
+
+}  // namespace bpde

@@ -1,0 +1,144 @@
+// Dispatch of a validated job to the library's solvers (FORMATS.md problem table), and the
+// report each one writes. The combination of net, fixed set and problem was already checked by
+// io/job.cpp; the solvers check their own preconditions again and throw InvalidInput.
+#include <chrono>
+
+#include "io/run_job.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "checks/mesh_checks.h"
+#include "io/mesh_io.h"
+#include "core/errors.h"
+#include "energies/quadratic_energy.h"
+#include "solvers/extremal.h"
+#include "solvers/harmonic_pde.h"
+#include "solvers/pde_explicit.h"
+#include "solvers/pde_lu.h"
+#include "solvers/pde_residual.h"
+
+namespace bpde {
+namespace {
+
+
+Json check_report_impl(const TriangleMesh& mesh) {
+  std::vector<double> V(static_cast<size_t>(mesh.V.rows()) * 3);
+  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r)
+    for (int c = 0; c < 3; ++c) V[static_cast<size_t>(3 * r + c)] = mesh.V(r, c);
+  std::vector<int> F(static_cast<size_t>(mesh.F.rows()) * 3);
+  for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
+    for (int c = 0; c < 3; ++c) F[static_cast<size_t>(3 * r + c)] = mesh.F(r, c);
+  const MeshCheckReport rep = check_mesh(V, F);
+  Json j = {{"self_intersections", rep.self_intersections}, {"closed", rep.closed}, {"cone_volume", rep.cone_volume}};
+  j["volume"] = rep.volume ? Json(*rep.volume) : Json(nullptr);
+  return j;
+}
+
+// (see io/run_job.h)
+// {min, max, mean} of H over the sample grid, leaving out samples within parameter distance
+// 0.1 (relative to the domain) of a corner, where a circle split into arcs is nearly singular.
+Json mean_curvature_stats_impl(const Net& net, const TriangleMesh& mesh, int N) {
+  std::vector<double> vals;
+  auto add = [&](double du, double dv, Eigen::Index k, const std::vector<std::pair<double, double>>& corners) {
+    for (auto [cu, cv] : corners)
+      if (std::hypot(du - cu, dv - cv) < 0.1) return;
+    vals.push_back(mesh.H(k));
+  };
+  if (std::holds_alternative<TriangularNet>(net)) {
+    const Eigen::MatrixX2d uv = triangular_sample_parameters(N);
+    for (Eigen::Index k = 0; k < uv.rows(); ++k) add(uv(k, 0), uv(k, 1), k, {{0, 0}, {1, 0}, {0, 1}});
+  } else {
+    for (int a = 0; a <= N; ++a)
+      for (int b = 0; b <= N; ++b)
+        add(static_cast<double>(a) / N, static_cast<double>(b) / N, a * (N + 1) + b, {{0, 0}, {1, 0}, {0, 1}, {1, 1}});
+  }
+  if (vals.empty()) return nullptr;
+  double mn = vals[0], mx = vals[0], sum = 0;
+  for (double v : vals) {
+    mn = std::min(mn, v);
+    mx = std::max(mx, v);
+    sum += v;
+  }
+  return {{"min", mn}, {"max", mx}, {"mean", sum / static_cast<double>(vals.size())}};
+}
+
+Json base_report(const Job& job, const Summary& s) {
+  Json r = {{"problem", to_string(job.problem.kind)}, {"converged", s.converged}, {"seconds", s.seconds}};
+  if (!s.message.empty()) r["message"] = s.message;
+  if (s.iterations > 0) r["iterations"] = s.iterations;
+  return r;
+}
+
+// Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+SolveOutcome tensor_extremal(const Job& job, const TensorNet& net) {
+  const EnergySpec& e = *job.problem.energy;
+  const ExtremalResult r = solve_extremal(net, e, job.fixed);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["energy"] = finite_or_null(r.energy);
+  out.report["energy_name"] = e.name();
+  if (e.order() == 4 || e.order() == 2) out.report["pde_residual"] = finite_or_null(pde_residual(r.net, e, job.samples));
+  return out;
+}
+
+SolveOutcome tensor_pde(const Job& job, const TensorNet& net) {
+  const EnergySpec& e = *job.problem.energy;
+  PdeSolution sol = [&]() {
+    if (job.fixed == FixedSet::UBoundaries) return solve_harmonic_pde(net, e);
+    if (job.problem.method == PdeMethod::Explicit) return solve_pde_explicit(net, e);
+    return solve_pde_lu(net, e);
+  }();
+  SolveOutcome out{sol.net, base_report(job, sol.summary), Json::object(), sol.summary.converged};
+  out.report["method"] = to_string(job.problem.method);
+  out.report["energy"] = finite_or_null(energy_value(sol.net, e));
+  out.report["energy_name"] = e.name();
+  out.report["pde_residual"] = finite_or_null(pde_residual(sol.net, e, job.samples));
+  return out;
+}
+
+}  // namespace
+
+SolveOutcome run_job(const Job& job) {
+  const ProblemKind k = job.problem.kind;
+  if (const auto* t = std::get_if<TensorNet>(&job.net)) {
+    if (k == ProblemKind::Extremal) return tensor_extremal(job, *t);
+    if (k == ProblemKind::Pde) return tensor_pde(job, *t);
+  }
+  throw UnsupportedProblem("problem \"" + to_string(k) + "\" on a " + net_kind(job.net) +
+                           " net: this solver is not available in this build yet");
+}
+
+void make_output_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) throw FileError("cannot create output directory '" + dir + "'");
+}
+
+Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
+  return mean_curvature_stats_impl(net, mesh, samples);
+}
+
+Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }
+
+// result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
+// statistics and the CGAL figures unless the solver already set them.
+int write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
+                 const Json& extra, bool converged) {
+  if (!report.contains("mean_curvature")) report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
+  if (!report.contains("check")) report["check"] = check_report(mesh);
+  Json result = {{"net", net_to_json(net)}, {"report", report}};
+  for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
+  make_output_dir(dir);
+  write_json_file(dir + "/result.json", result);
+  write_surface_files(dir, net, mesh);
+  return converged ? 0 : 1;
+}
+
+int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {
+  const TriangleMesh mesh = sample_net(out.net, job.samples);
+  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.converged);
+}
+
+}  // namespace bpde

@@ -1,0 +1,378 @@
+#include "solvers/cmc.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "core/errors.h"
+#include "energies/cmc.h"
+#include "solvers/cmc_problem.h"
+
+namespace bpde {
+
+CmcSolver parse_cmc_solver(const std::string& name) {
+  if (name == "newton") return CmcSolver::Newton;
+  if (name == "ceres") return CmcSolver::Ceres;
+  if (name == "nlopt") return CmcSolver::NLopt;
+  throw ParameterError("unknown cmc solver \"" + name + "\" (expected newton, ceres or nlopt)");
+}
+
+std::string to_string(CmcSolver s) {
+  switch (s) {
+    case CmcSolver::Newton: return "newton";
+    case CmcSolver::Ceres: return "ceres";
+    case CmcSolver::NLopt: return "nlopt";
+  }
+  return "?";
+}
+
+void CmcOptions::validate() const {
+  if (!std::isfinite(H)) throw NonFiniteError("cmc: H must be a finite number");
+  if (V && !std::isfinite(*V)) throw NonFiniteError("cmc: V must be a finite number");
+  if (V && solver != CmcSolver::NLopt)
+    throw UnsupportedProblem("cmc: the volume-constrained problem (V) is solved by the nlopt solver only");
+  if (!(tolerance > 0.0 && tolerance <= 1e-3))
+    throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
+  if (max_corrector_iterations < 1) throw ParameterError("cmc: max_corrector_iterations must be >= 1");
+  if (max_continuation_steps < 1) throw ParameterError("cmc: max_continuation_steps must be >= 1");
+  if (!(min_step > 0.0 && min_step < 1.0)) throw ParameterError("cmc: min_step must be in (0, 1)");
+}
+
+namespace cmc_detail {
+
+Eigen::VectorXd CmcProblem::get() const {
+  Eigen::VectorXd y(3 * k());
+  for (int a = 0; a < k(); ++a) y.segment<3>(3 * a) = P.row(free[static_cast<size_t>(a)]).transpose();
+  return y;
+}
+
+void CmcProblem::set(const Eigen::VectorXd& y) {
+  for (int a = 0; a < k(); ++a) P.row(free[static_cast<size_t>(a)]) = y.segment<3>(3 * a).transpose();
+}
+
+Eigen::VectorXd CmcProblem::gradient(double H) const {
+  const Eigen::MatrixX3d G = f->gradient_rows(P, H, free);
+  Eigen::VectorXd g(3 * k());
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(a).transpose();
+  return g;
+}
+
+Eigen::VectorXd CmcProblem::volume_gradient() const {
+  const Eigen::MatrixX3d G = f->volume_form().gradient_rows(P, free);
+  Eigen::VectorXd g(3 * k());
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = G.row(a).transpose();
+  return g;
+}
+
+double CmcProblem::evaluate(double H, Eigen::VectorXd& g, double tolerance, double scale_hint,
+                            double* scale) const {
+  Eigen::MatrixX3d F;
+  double r = 0.0;
+  bool done = false;
+  if (scale_hint > 0.0) {
+    F = f->gradient_rows(P, H, free);
+    const double num = F.size() ? F.cwiseAbs().maxCoeff() : 0.0;
+    if (!std::isfinite(num) || num > 1e3 * tolerance * scale_hint) {
+      r = std::isfinite(num) ? num / scale_hint : std::numeric_limits<double>::infinity();
+      if (scale) *scale = scale_hint;
+      done = true;
+    }
+  }
+  if (!done) r = f->residual(P, H, free, &F, scale);
+  g.resize(3 * k());
+  for (int a = 0; a < k(); ++a) g.segment<3>(3 * a) = F.row(a).transpose();
+  return r;
+}
+
+double multiplier(const CmcProblem& p) {
+  const Eigen::VectorXd gD = p.gradient(0.0);
+  const Eigen::VectorXd gV = p.volume_gradient();
+  const double nv = gV.squaredNorm();
+  if (nv == 0.0) return 0.0;
+  return -gD.dot(gV) / (2.0 * nv);
+}
+
+CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations) {
+  // Newton with the exact Hessian, reusing its factorisation while the residual falls fast
+  // (ratio <= 1/100 per step); refactorised otherwise. Fails when a step with a fresh factorisation
+  // does not reduce the residual (from the third iterate on), or when it is not finite.
+  CorrectorStats st;
+  double prev_r = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd g;
+  double scale = 0.0;
+  std::unique_ptr<SymFactor> fac;
+  bool fresh = false;
+  for (int it = 0;; ++it) {
+    st.residual = p.evaluate(H, g, o.tolerance, scale, &scale);
+    if (!std::isfinite(st.residual)) return st;
+    if (st.residual <= o.tolerance) {
+      st.ok = true;
+      return st;
+    }
+    if (it >= max_iterations) return st;
+    const bool slow = st.residual > prev_r / 100;
+    if (slow && fresh && it >= 2 && st.residual > prev_r) return st;  // Newton itself diverges
+    if (!fac || slow) {
+      fac = std::make_unique<SymFactor>(p.hessian(H));
+      st.pd = fac->pd ? 1 : 0;
+      fresh = true;
+    } else {
+      fresh = false;
+    }
+    prev_r = st.residual;
+    const Eigen::VectorXd dx = -fac->solve(g);
+    if (!dx.allFinite()) return st;
+    p.set(p.get() + dx);
+    ++st.iterations;
+  }
+}
+
+namespace {
+
+std::string fold_message(double h, bool gram_singular) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
+  if (gram_singular)
+    return std::string("continuation stopped at H ≈ ") + buf +
+           ": the Dirichlet Gram over the free points is numerically singular at this degree "
+           "(Bernstein conditioning grows like 4^n), so eq. (11) cannot be resolved to the "
+           "tolerance; use a lower degree";
+  return std::string("no critical point on the branch from H = 0 beyond H ≈ ") + buf;
+}
+
+void check_degree(const TriangularNet& net, FixedSet fixed) {
+  const int need = fixed == FixedSet::BoundaryAdjacent ? 6 : 3;
+  if (fixed == FixedSet::UBoundaries)
+    throw UnsupportedProblem("cmc: fixed \"u-boundaries\" is defined for tensor nets only");
+  if (net.n() < need)
+    throw DegreeError("cmc: a triangular net with " + to_string(fixed) + " data needs degree >= " +
+                      std::to_string(need) + " (got " + std::to_string(net.n()) + ")");
+}
+
+void check_degree(const TensorNet& net, FixedSet fixed) {
+  const int need = fixed == FixedSet::BoundaryAdjacent ? 4 : 2;
+  if (net.n() < need || (fixed != FixedSet::UBoundaries && net.m() < need))
+    throw DegreeError("cmc: a tensor net with " + to_string(fixed) + " data needs degree >= " +
+                      std::to_string(need) + " in each direction (got " + std::to_string(net.n()) +
+                      ", " + std::to_string(net.m()) + ")");
+}
+
+std::shared_ptr<const CmcFunctional> functional_for(const TriangularNet& net) {
+  return CmcFunctional::cached_triangular(net.n());
+}
+std::shared_ptr<const CmcFunctional> functional_for(const TensorNet& net) {
+  return CmcFunctional::cached_tensor(net.n(), net.m());
+}
+
+// Dirichlet extremal into p.P (Cholesky, or pivoted LDL^T when rounding makes the Bernstein Gram
+// indefinite). Returns the factor used for the tangent at H = 0 and a Cholesky factor L of the
+// (if needed slightly shifted) free Gram for the NLopt preconditioner.
+struct DirichletFactor {
+  std::unique_ptr<SymFactor> gram;
+  Eigen::MatrixXd L;
+};
+
+DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
+  const Eigen::MatrixXd& C = p.f->gram();
+  const int k = p.k();
+  const int nf = static_cast<int>(fixed_idx.size());
+  Eigen::MatrixXd Cff(k, k), Cfx(k, nf);
+  Eigen::MatrixX3d Px(nf, 3);
+  for (int a = 0; a < k; ++a) {
+    for (int b = 0; b < k; ++b) Cff(a, b) = C(p.free[static_cast<size_t>(a)], p.free[static_cast<size_t>(b)]);
+    for (int b = 0; b < nf; ++b) Cfx(a, b) = C(p.free[static_cast<size_t>(a)], fixed_idx[static_cast<size_t>(b)]);
+  }
+  for (int b = 0; b < nf; ++b) Px.row(b) = p.P.row(fixed_idx[static_cast<size_t>(b)]);
+  DirichletFactor f;
+  f.gram = std::make_unique<SymFactor>(Cff);
+  const Eigen::MatrixX3d Y = -f.gram->solve(Cfx * Px);
+  for (int a = 0; a < k; ++a) p.P.row(p.free[static_cast<size_t>(a)]) = Y.row(a);
+  if (f.gram->use_llt) {
+    f.L = f.gram->llt.matrixL();
+  } else {
+    const double d = k ? Cff.diagonal().cwiseAbs().maxCoeff() : 1.0;
+    for (double shift = 1e-14; shift < 1e-2; shift *= 10) {
+      Eigen::LLT<Eigen::MatrixXd> llt(Cff + shift * d * Eigen::MatrixXd::Identity(k, k));
+      if (llt.info() == Eigen::Success) {
+        f.L = llt.matrixL();
+        break;
+      }
+    }
+    if (f.L.size() == 0) f.L = Eigen::MatrixXd::Identity(k, k);
+  }
+  return f;
+}
+
+template <class Net>
+Net make_net(const Net& data, const Eigen::MatrixX3d& P);
+template <>
+TriangularNet make_net(const TriangularNet& data, const Eigen::MatrixX3d& P) {
+  return TriangularNet(data.n(), P);
+}
+template <>
+TensorNet make_net(const TensorNet& data, const Eigen::MatrixX3d& P) {
+  return TensorNet(data.n(), data.m(), P);
+}
+
+template <class Net>
+CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  o.validate();
+  check_degree(data, o.fixed);
+  const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
+  CmcProblem p{functional_for(data), data.free_indices(o.fixed), data.points()};
+  for (int r : fixed_idx)
+    if (!p.P.row(r).allFinite())
+      throw NonFiniteError("cmc: prescribed control point " + std::to_string(r) + " is not finite");
+  for (int r : p.free) p.P.row(r).setZero();
+  const DirichletFactor dir = dirichlet_solve(p, fixed_idx);
+  const Eigen::MatrixXd& L = dir.L;
+
+  CmcResult<Net> res;
+  auto finish = [&](double H, bool converged, std::string message) {
+    res.H = H;
+    res.D = p.f->dirichlet(p.P);
+    res.V = p.f->volume(p.P);
+    res.DH = res.D + 2.0 * H * res.V;
+    res.net = make_net(data, p.P);
+    res.summary.residual = p.residual(H);
+    // Never report a net as converged unless eq. (11) holds to the tolerance here.
+    if (converged && !(res.summary.residual <= o.tolerance)) {
+      converged = false;
+      message = "the final net misses eq. (11) by " + std::to_string(res.summary.residual) +
+                " (relative) after: " + message;
+    }
+    res.summary.converged = converged;
+    res.summary.message = std::move(message);
+    res.summary.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return res;
+  };
+
+  if (o.V) {
+    double H = 0.0;
+    std::string note;
+    const CorrectorStats st = nlopt_volume_solve(p, *o.V, o, L, H, note);
+    res.summary.iterations = st.iterations + st.polish_steps;
+    return finish(H, st.ok, note);
+  }
+
+  const double Ht = o.H;
+  if (Ht == 0.0) {
+    const double r = p.residual(0.0);
+    return finish(0.0, r <= o.tolerance,
+                  r <= o.tolerance ? "Dirichlet extremal (linear solve)"
+                                   : "Dirichlet extremal: the linear solve is not accurate to the tolerance");
+  }
+
+  // Tangent of the branch at H = 0: C_ff dY/dH = -2 dV/dP (free rows).
+  Eigen::VectorXd tangent(3 * p.k());
+  {
+    const Eigen::VectorXd gV = p.volume_gradient();
+    Eigen::MatrixX3d G(p.k(), 3);
+    for (int a = 0; a < p.k(); ++a) G.row(a) = gV.segment<3>(3 * a).transpose();
+    const Eigen::MatrixXd T = dir.gram->solve(G);
+    for (int a = 0; a < p.k(); ++a) tangent.segment<3>(3 * a) = -2.0 * T.row(a).transpose();
+  }
+
+  double h = 0.0;
+  Eigen::VectorXd y = p.get();
+  // First step: the whole way, but not beyond |H| = 16 / (size of the data), the scale where a
+  // fold can occur (steps double after easy corrector runs, so large |H| are reached quickly).
+  double step = Ht;
+  {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int r : fixed_idx) {
+      lo = lo.cwiseMin(p.P.row(r).transpose());
+      hi = hi.cwiseMax(p.P.row(r).transpose());
+    }
+    const double diam = (hi - lo).norm();
+    if (std::isfinite(diam) && diam > 0 && std::abs(step) > 16.0 / diam) step = std::copysign(16.0 / diam, Ht);
+  }
+  int attempts = 0, polish = 0;
+  while (h != Ht) {
+    if (++attempts > o.max_continuation_steps) {
+      p.set(y);
+      return finish(h, false, fold_message(h, !dir.gram->use_llt));
+    }
+    double s = step;
+    if (std::abs(Ht - h) <= std::abs(s) * (1 + 1e-12)) s = Ht - h;
+    const double hn = (Ht - h == s) ? Ht : h + s;
+    const Eigen::VectorXd pred = y + tangent * s;  // tangent predictor
+    p.set(pred);
+    CorrectorStats st;
+    switch (o.solver) {
+      case CmcSolver::Newton: st = newton_correct(p, hn, o, o.max_corrector_iterations); break;
+      case CmcSolver::Ceres: st = ceres_correct(p, hn, o); break;
+      case CmcSolver::NLopt: st = nlopt_correct(p, hn, o, L); break;
+    }
+    res.summary.iterations += st.iterations + st.polish_steps;
+    bool accept = st.ok;
+    if (accept) {
+      // Stay on the branch: the corrector may move the predicted point by at most half the step
+      // (the tangent predictor is second-order accurate, so small steps always pass on the branch).
+      const Eigen::VectorXd yn = p.get();
+      const double dev = (yn - pred).norm(), move = (yn - y).norm();
+      accept = dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
+    }
+    Eigen::VectorXd next_tangent;
+    if (accept) {
+      // Positive definite Hessian (strict local minimum: still before the first fold). When the
+      // continuation goes on, its Cholesky factor also gives the tangent dY/dH = -J^{-1} 2 dV/dY.
+      if (hn != Ht || st.pd != 1) {
+        const SymFactor fac(p.hessian(hn));
+        accept = fac.pd;
+        if (accept && hn != Ht) next_tangent = -2.0 * fac.solve(p.volume_gradient());
+      }
+    }
+    if (accept) {
+      polish += st.polish_steps;
+      y = p.get();
+      h = hn;
+      if (hn != Ht) tangent = next_tangent;
+      ++res.continuation_steps;
+      step = st.iterations <= 4 ? 2 * s : s;
+    } else {
+      p.set(y);
+      step = s / 2;
+      if (std::abs(step) < o.min_step * std::max(1.0, std::abs(h))) return finish(h, false, fold_message(h, !dir.gram->use_llt));
+    }
+  }
+  std::string msg = "reached H = " + std::to_string(Ht) + " in " +
+                    std::to_string(res.continuation_steps) + " continuation step(s) with " +
+                    to_string(o.solver);
+  if (polish > 0) msg += " (+" + std::to_string(polish) + " Newton polish step(s))";
+  return finish(Ht, true, msg);
+}
+
+template <class Net>
+Net dirichlet_impl(const Net& data, FixedSet fixed) {
+  check_degree(data, fixed);
+  const std::vector<int> fixed_idx = data.fixed_indices(fixed);
+  CmcProblem p{functional_for(data), data.free_indices(fixed), data.points()};
+  dirichlet_solve(p, fixed_idx);
+  return make_net(data, p.P);
+}
+
+}  // namespace
+}  // namespace cmc_detail
+
+CmcResult<TriangularNet> solve_cmc(const TriangularNet& data, const CmcOptions& options) {
+  return cmc_detail::solve_impl(data, options);
+}
+CmcResult<TensorNet> solve_cmc(const TensorNet& data, const CmcOptions& options) {
+  return cmc_detail::solve_impl(data, options);
+}
+TriangularNet dirichlet_extremal(const TriangularNet& data, FixedSet fixed) {
+  return cmc_detail::dirichlet_impl(data, fixed);
+}
+TensorNet dirichlet_extremal(const TensorNet& data, FixedSet fixed) {
+  return cmc_detail::dirichlet_impl(data, fixed);
+}
+
+}  // namespace bpde

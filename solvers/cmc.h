@@ -1,0 +1,87 @@
+#pragma once
+// Critical points of the CMC functional D_H = D + 2HV (seed 004, Arnal–Lluch–Monterde, eq. (11);
+// energies/cmc.h) over the free control points of a triangular or tensor net.
+//
+// What is solved (FORMATS.md, problem "cmc"):
+//  - H mode (options.V unset): the critical point of D_H on the branch continued from the
+//    Dirichlet extremal (H = 0, a linear solve) to the requested H, before the branch's first fold.
+//    Continuation in H with step control: predictor (tangent at H = 0, then secant), corrector =
+//    the chosen solver; a step is accepted when the corrector meets the tolerance, the Hessian
+//    of D_H over the free points is positive definite (on the branch from H = 0 the critical point
+//    is a strict local minimum until the first fold, where the Hessian becomes singular), and the
+//    corrector moved the predicted point by at most half the step (so no jump to another branch).
+//    Accepted steps with few corrector iterations double the next step; rejected ones halve it.
+//    When the step collapses (fold: singular Hessian, no convergence), the result has
+//    converged = false, message "no critical point on the branch from H = 0 beyond H ≈ <h>", and
+//    holds the last point of the branch (at H = h, result.H = h).
+//  - V mode (options.V set, solver nlopt only): minimise D subject to V = V0 (NLopt SLSQP, then a
+//    bordered Newton polish); the multiplier is reported as H = -<∇D,∇V>/(2 |∇V|^2) over the free
+//    points, so that ∇D + 2H∇V = 0.
+//
+// Solvers (one interface, options.solver):
+//  - newton: Newton's method with the exact symmetric Hessian (Cholesky).
+//  - ceres:  Ceres Levenberg–Marquardt on the residuals F_I of eq. (11), one residual block per
+//            free control point with its analytic Jacobian (the rows of the Hessian).
+//  - nlopt:  NLopt LD_LBFGS on D_H in Cholesky-preconditioned variables (D_H has a local minimum
+//            on the branch); L-BFGS stalls at ~1e-9 relative (finite precision of D_H), so at most
+//            3 Newton steps polish the result to the tolerance (reported in the message).
+//
+// converged = true means eq. (11) over the free points holds to options.tolerance (1e-11) relative
+// to the size of its terms (CmcFunctional::residual), and in V mode also |V - V0| <= tolerance *
+// (1/3 ∫ |<x_u ∧ x_v, x>|).
+//
+// Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
+// V with a solver other than nlopt (UnsupportedProblem), degree too low for the fixed set
+// (DegreeError: triangular n >= 3 with C0 data, n >= 6 with C1 data; tensor n, m >= 2 with C0 data
+// and >= 4 with C1 data), u-boundaries on a triangular net (UnsupportedProblem), non-finite data
+// points (NonFiniteError).
+#include <optional>
+#include <string>
+
+#include "core/fixed_set.h"
+#include "solvers/summary.h"
+#include "tensor/tensor_net.h"
+#include "triangular/triangular_net.h"
+
+namespace bpde {
+
+enum class CmcSolver { Newton, Ceres, NLopt };
+
+/// "newton" | "ceres" | "nlopt" (ParameterError otherwise).
+CmcSolver parse_cmc_solver(const std::string& name);
+std::string to_string(CmcSolver s);
+
+struct CmcOptions {
+  double H = 0.0;                     ///< target mean curvature (H mode); default 0
+  std::optional<double> V;            ///< target volume (V mode); default unset
+  CmcSolver solver = CmcSolver::Newton;  ///< default newton
+  FixedSet fixed = FixedSet::Boundary;   ///< default boundary (C0 data)
+  double tolerance = 1e-11;           ///< relative eq. (11) residual; default 1e-11, in (0, 1e-3]
+  int max_corrector_iterations = 30;  ///< per continuation step; default 30, >= 1
+  int max_continuation_steps = 400;   ///< default 400, >= 1
+  double min_step = 1e-5;             ///< smallest H step, relative to max(1, |H reached|); default 1e-5
+  /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range),
+  /// UnsupportedProblem (V mode with a solver other than nlopt).
+  void validate() const;
+};
+
+template <class Net>
+struct CmcResult {
+  Net net;            ///< the critical point (or the last point of the branch if not converged)
+  double H = 0.0;     ///< H of `net`: the requested H, the last H reached, or the V-mode multiplier
+  double D = 0.0;     ///< Dirichlet energy
+  double V = 0.0;     ///< volume 1/3 ∫ <x_u ∧ x_v, x>
+  double DH = 0.0;    ///< D + 2HV
+  int continuation_steps = 0;  ///< accepted continuation steps (H mode)
+  Summary summary;    ///< converged, iterations (corrector iterations in all), residual, message
+};
+
+/// Solve with the data (prescribed points) of `data`; its free points are ignored.
+CmcResult<TriangularNet> solve_cmc(const TriangularNet& data, const CmcOptions& options);
+CmcResult<TensorNet> solve_cmc(const TensorNet& data, const CmcOptions& options);
+
+/// The Dirichlet extremal (H = 0, the linear solve): the baseline of the benchmarks.
+TriangularNet dirichlet_extremal(const TriangularNet& data, FixedSet fixed);
+TensorNet dirichlet_extremal(const TensorNet& data, FixedSet fixed);
+
+}  // namespace bpde

@@ -1,0 +1,87 @@
+#pragma once
+// Internal to solvers/cmc*.cpp: the CMC problem over the free control points, and the correctors.
+// The free unknowns form a vector y of length 3k, y(3a + c) = P(free[a], c).
+#include <Eigen/Core>
+#include <Eigen/Cholesky>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "energies/cmc.h"
+#include "solvers/cmc.h"
+
+namespace bpde::cmc_detail {
+
+struct CmcProblem {
+  std::shared_ptr<const CmcFunctional> f;
+  std::vector<int> free;
+  Eigen::MatrixX3d P;  // all points; rows not in `free` hold the data
+
+  int k() const { return static_cast<int>(free.size()); }
+  Eigen::VectorXd get() const;
+  void set(const Eigen::VectorXd& y);
+  /// Free rows of ∇D_H as a 3k vector.
+  Eigen::VectorXd gradient(double H) const;
+  /// Free rows of ∇V as a 3k vector.
+  Eigen::VectorXd volume_gradient() const;
+  Eigen::MatrixXd hessian(double H) const { return f->hessian(P, H, free); }
+  double residual(double H) const { return f->residual(P, H, free); }
+  /// Residual, and the free gradient into g. With scale_hint > 0 (the residual's denominator at
+  /// a nearby point) the exact denominator is computed only when the residual may be within
+  /// 1e3 x tolerance; otherwise |F|/scale_hint is returned. scale receives the denominator used.
+  double evaluate(double H, Eigen::VectorXd& g, double tolerance = 0.0, double scale_hint = 0.0,
+                  double* scale = nullptr) const;
+  double value(double H) const { return f->value(P, H); }
+};
+
+/// Symmetric factorisation that decides positive definiteness robustly against rounding: Cholesky
+/// when it succeeds, otherwise pivoted LDL^T with every pivot >= -1e-10 max|pivot| counted as
+/// positive (the Bernstein Gram's smallest eigenvalues reach rounding level from degree ~18 on
+/// tensor nets, ~26 on triangular nets; the pivots are then rounding noise).
+struct SymFactor {
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt;
+  bool use_llt = false, pd = false;
+  explicit SymFactor(const Eigen::MatrixXd& J) : llt(J) {
+    use_llt = llt.info() == Eigen::Success;
+    if (use_llt) {
+      pd = true;
+      return;
+    }
+    ldlt.compute(J);
+    const Eigen::VectorXd d = ldlt.vectorD();
+    const double mx = d.size() ? d.cwiseAbs().maxCoeff() : 0.0;
+    pd = ldlt.info() == Eigen::Success && mx > 0 && d.minCoeff() >= -1e-10 * mx;
+  }
+  template <class M>
+  Eigen::MatrixXd solve(const M& b) const {
+    return use_llt ? Eigen::MatrixXd(llt.solve(b)) : Eigen::MatrixXd(ldlt.solve(b));
+  }
+};
+
+/// Outcome of one corrector run at fixed H, starting from problem.P.
+struct CorrectorStats {
+  bool ok = false;        ///< residual <= tolerance
+  int iterations = 0;
+  double residual = 0.0;
+  int pd = -1;            ///< 1/0: Hessian at the solution (positive definite / not); -1 unknown
+  int polish_steps = 0;   ///< Newton steps added after NLopt
+};
+
+/// Newton with the exact Hessian.
+CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations);
+/// Ceres LM on the residual blocks of eq. (11).
+CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o);
+/// NLopt LD_LBFGS on D_H (preconditioned by the Cholesky factor L of the free Gram), then polish.
+CorrectorStats nlopt_correct(CmcProblem& p, double H, const CmcOptions& o,
+                             const Eigen::MatrixXd& L);
+
+/// V mode: minimise D subject to V = V0 from problem.P (the Dirichlet extremal) with SLSQP, then a
+/// bordered Newton polish. On return H holds the multiplier.
+CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
+                                  const Eigen::MatrixXd& L, double& H, std::string& note);
+
+/// H = -<∇D,∇V>/(2|∇V|^2) over the free points (0 if ∇V = 0).
+double multiplier(const CmcProblem& p);
+
+}  // namespace bpde::cmc_detail

@@ -1,0 +1,451 @@
+#include "solvers/extremal.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <list>
+#include <mutex>
+#include <sstream>
+#include <utility>
+
+#include "core/bernstein.h"
+#include "core/errors.h"
+#include "core/quadrature.h"
+#include "energies/tensor_gram.h"
+
+namespace bpde {
+
+struct ExtremalSolver::Factor {
+  Eigen::LLT<Eigen::MatrixXd> llt;  // blocked Cholesky of the unit-diagonal reduced matrix
+};
+
+namespace {
+
+using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using LVector = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
+
+long double lbinomial(int n, int k) {
+  if (k < 0 || k > n) return 0.0L;
+  long double r = 1.0L;
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// A well-conditioned basis of the 1-D free space {polynomials of degree <= n vanishing to order s
+// at t = 0 and t = 1} = span{B_s^n, ..., B_{n-s}^n}:
+//     φ_k(t) = (t(1-t))^s C_k^(λ)(2t-1),  λ = 2s + 1/2,  k = 0..n-2s,
+// i.e. the Jacobi polynomials P_k^(2s,2s) times the weight root, orthogonal in L2 up to the factor
+// (t(1-t))^s. Each φ_k is normalised to unit L2 norm.
+struct Basis1D {
+  int n = 0, s = 0, K = 0;
+  // A[a][b] = ∫ φ^(a) φ^(b)ᵀ (K x K); C[a][b] = ∫ φ^(a) (B^n)^(b)ᵀ (K x (n+1)).
+  std::vector<std::vector<Eigen::MatrixXd>> A, C;
+  Eigen::MatrixXd T;  // (K x K): Bernstein coefficients (indices s..n-s) of φ_k in column k
+};
+
+// Gegenbauer C_0..C_{K-1} with parameter lam at x.
+void gegenbauer_values(int K, double lam, double x, double* out) {
+  if (K <= 0) return;
+  out[0] = 1.0;
+  if (K > 1) out[1] = 2.0 * lam * x;
+  for (int k = 2; k < K; ++k) out[k] = (2.0 * x * (k + lam - 1) * out[k - 1] - (k + 2 * lam - 2) * out[k - 2]) / k;
+}
+
+// Bernstein coefficients (degree d+1) of x f(t), x = 2t - 1, f of degree d.
+LVector times_x(const LVector& f) {
+  const int d = static_cast<int>(f.size()) - 1;
+  LVector g = LVector::Zero(d + 2);
+  for (int i = 0; i <= d + 1; ++i) {
+    const long double tf = (i >= 1) ? i * f(i - 1) : 0.0L;               // (d+1) t f
+    const long double sf = (i <= d) ? (d + 1 - i) * f(i) : 0.0L;         // (d+1) (1-t) f
+    g(i) = (tf - sf) / (d + 1);
+  }
+  return g;
+}
+
+// Degree elevation by r: c'_j = Σ_i C(d,i) C(r,j-i) / C(d+r,j) c_i.
+LVector elevate(const LVector& f, int r) {
+  if (r == 0) return f;
+  const int d = static_cast<int>(f.size()) - 1;
+  LVector g = LVector::Zero(d + r + 1);
+  for (int j = 0; j <= d + r; ++j) {
+    const long double den = lbinomial(d + r, j);
+    for (int i = std::max(0, j - r); i <= std::min(d, j); ++i) g(j) += lbinomial(d, i) * lbinomial(r, j - i) / den * f(i);
+  }
+  return g;
+}
+
+Basis1D make_basis(int n, int s, int dmax) {
+  Basis1D b;
+  b.n = n;
+  b.s = s;
+  b.K = n + 1 - 2 * s;
+  const int K = b.K;
+  const double lam = 2.0 * s + 0.5;
+  const QuadratureRule1D rule = gauss_legendre01(n + 2);  // exact for degree <= 2n + 3
+  const int q = static_cast<int>(rule.x.size());
+
+  // Power-basis coefficients of g(t) = (t - t^2)^s, for its derivatives.
+  std::vector<double> g(static_cast<size_t>(2 * s + 1), 0.0);
+  for (int r = 0; r <= s; ++r) g[static_cast<size_t>(s + r)] = binomial(s, r) * ((r % 2) ? -1.0 : 1.0);
+  auto g_derivative = [&](int d, double t) {
+    double v = 0.0;
+    for (int e = d; e <= 2 * s; ++e) {
+      double c = g[static_cast<size_t>(e)];
+      for (int z = 0; z < d; ++z) c *= (e - z);
+      v += c * std::pow(t, e - d);
+    }
+    return v;
+  };
+
+  // Phi[d](g, k) = φ_k^(d)(x_g) (unnormalised), by Leibniz and d^e/dt^e C_k^λ(2t-1) =
+  // 2^e * 2^e λ(λ+1)..(λ+e-1) C_{k-e}^(λ+e)(2t-1).
+  std::vector<Eigen::MatrixXd> Phi(static_cast<size_t>(dmax + 1), Eigen::MatrixXd::Zero(q, K));
+  std::vector<double> vals(static_cast<size_t>(K + 1));
+  for (int gi = 0; gi < q; ++gi) {
+    const double t = rule.x(gi), x = 2 * t - 1;
+    // P[e][k] = e-th t-derivative of C_k^λ(2t-1)
+    std::vector<std::vector<double>> P(static_cast<size_t>(dmax + 1), std::vector<double>(static_cast<size_t>(K), 0.0));
+    for (int e = 0; e <= dmax; ++e) {
+      gegenbauer_values(K, lam + e, x, vals.data());
+      double f = 1.0;
+      for (int z = 0; z < e; ++z) f *= 4.0 * (lam + z);
+      for (int k = e; k < K; ++k) P[static_cast<size_t>(e)][static_cast<size_t>(k)] = f * vals[static_cast<size_t>(k - e)];
+    }
+    for (int d = 0; d <= dmax; ++d)
+      for (int r = 0; r <= d; ++r) {
+        const double gd = binomial(d, r) * g_derivative(r, t);
+        if (gd == 0.0) continue;
+        for (int k = 0; k < K; ++k) Phi[static_cast<size_t>(d)](gi, k) += gd * P[static_cast<size_t>(d - r)][static_cast<size_t>(k)];
+      }
+  }
+  // Normalise to unit L2 norm.
+  Eigen::VectorXd norm(K);
+  for (int k = 0; k < K; ++k) norm(k) = 1.0 / std::sqrt((rule.w.array() * Phi[0].col(k).array().square()).sum());
+  for (auto& P : Phi) P = P * norm.asDiagonal();
+
+  // 1-D integrals.
+  std::vector<Eigen::MatrixXd> Bern;
+  for (int d = 0; d <= dmax; ++d) Bern.push_back(bernstein_table(n, rule.x, d));
+  b.A.assign(static_cast<size_t>(dmax + 1), std::vector<Eigen::MatrixXd>(static_cast<size_t>(dmax + 1)));
+  b.C = b.A;
+  for (int a = 0; a <= dmax; ++a)
+    for (int c = 0; c <= dmax; ++c) {
+      b.A[static_cast<size_t>(a)][static_cast<size_t>(c)] = Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Phi[static_cast<size_t>(c)];
+      b.C[static_cast<size_t>(a)][static_cast<size_t>(c)] = Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Bern[static_cast<size_t>(c)];
+    }
+
+  // Bernstein coefficients of φ_k: C_k by the same recurrence in Bernstein form, times g, elevated.
+  b.T.resize(K, K);
+  std::vector<LVector> Ck;
+  const long double llam = 2.0L * s + 0.5L;
+  for (int k = 0; k < K; ++k) {
+    LVector c;
+    if (k == 0) {
+      c = LVector::Ones(1);
+    } else if (k == 1) {
+      c = 2.0L * llam * times_x(Ck[0]);
+    } else {
+      c = (2.0L * (k + llam - 1) * times_x(Ck[static_cast<size_t>(k - 1)]) -
+           (k + 2 * llam - 2) * elevate(Ck[static_cast<size_t>(k - 2)], 2)) / static_cast<long double>(k);
+    }
+    Ck.push_back(c);
+    // times (t(1-t))^s: h_i = c_{i-s} C(k, i-s) / C(k+2s, i).
+    LVector h = LVector::Zero(k + 2 * s + 1);
+    for (int i = s; i <= k + s; ++i) h(i) = c(i - s) * lbinomial(k, i - s) / lbinomial(k + 2 * s, i);
+    const LVector full = elevate(h, n - k - 2 * s);
+    b.T.col(k) = (static_cast<long double>(norm(k)) * full.segment(s, K)).cast<double>();
+  }
+  return b;
+}
+
+// Kronecker accumulation: out += c * kron(A, B) (out is (A.rows*B.rows) x (A.cols*B.cols)).
+void add_kron(Eigen::MatrixXd& out, double c, const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+  const Eigen::Index br = B.rows(), bc = B.cols();
+  for (Eigen::Index k = 0; k < A.cols(); ++k)
+    for (Eigen::Index i = 0; i < A.rows(); ++i) {
+      const double a = c * A(i, k);
+      if (a != 0.0) out.block(i * br, k * bc, br, bc).noalias() += a * B;
+    }
+}
+
+Eigen::MatrixXd submatrix(const Eigen::MatrixXd& Q, const std::vector<int>& rows, const std::vector<int>& cols) {
+  Eigen::MatrixXd S(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
+  for (size_t c = 0; c < cols.size(); ++c)
+    for (size_t r = 0; r < rows.size(); ++r)
+      S(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = Q(rows[r], cols[c]);
+  return S;
+}
+
+void check_min_degree(int n, int m, FixedSet fixed) {
+  std::ostringstream s;
+  switch (fixed) {
+    case FixedSet::Boundary:
+      if (n >= 2 && m >= 2) return;
+      s << "extremal: tensor degree (" << n << ", " << m << ") is too low for boundary (C0) data: needs n, m >= 2";
+      break;
+    case FixedSet::BoundaryAdjacent:
+      if (n >= 4 && m >= 4) return;
+      s << "extremal: tensor degree (" << n << ", " << m
+        << ") is too low for boundary+adjacent (C1) data: needs n, m >= 4";
+      break;
+    case FixedSet::UBoundaries:
+      if (n >= 2 && m >= 1) return;
+      s << "extremal: tensor degree (" << n << ", " << m << ") is too low for u-boundaries data: needs n >= 2";
+      break;
+  }
+  throw DegreeError(s.str());
+}
+
+}  // namespace
+
+void ExtremalOptions::validate() const {
+  if (!(singular_tolerance >= 0.0 && singular_tolerance < 1.0))
+    throw ParameterError("ExtremalOptions.singular_tolerance must be in [0, 1)");
+}
+
+ExtremalSolver::ExtremalSolver(const Eigen::MatrixXd& Q, std::vector<int> fixed, const ExtremalOptions& options)
+    : N_(static_cast<int>(Q.rows())), Q_(Q), fixed_(std::move(fixed)) {
+  options.validate();
+  if (Q.rows() != Q.cols())
+    throw SizeError("extremal: Gram matrix is " + std::to_string(Q.rows()) + " x " + std::to_string(Q.cols()) +
+                    ", not square");
+  if (!Q.allFinite()) throw NonFiniteError("extremal: Gram matrix has a non-finite entry");
+  std::vector<char> is_fixed(static_cast<size_t>(N_), 0);
+  for (int I : fixed_) {
+    if (I < 0 || I >= N_)
+      throw SizeError("extremal: fixed index " + std::to_string(I) + " outside 0.." + std::to_string(N_ - 1));
+    if (is_fixed[static_cast<size_t>(I)]) throw SizeError("extremal: fixed index " + std::to_string(I) + " repeated");
+    is_fixed[static_cast<size_t>(I)] = 1;
+  }
+  for (int I = 0; I < N_; ++I)
+    if (!is_fixed[static_cast<size_t>(I)]) free_.push_back(I);
+  if (free_.empty()) throw ParameterError("extremal: no free control point");
+  factor(submatrix(Q, free_, free_), submatrix(Q, free_, fixed_), options, "extremal");
+}
+
+ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet fixed, const ExtremalOptions& options) {
+  options.validate();
+  const TensorNet shape(n, m);  // DegreeError outside 1..kMaxDegree
+  check_min_degree(n, m, fixed);
+  const std::vector<QuadraticTerm> terms = energy.terms();
+  Q_ = tensor_gram(n, m, terms);
+  N_ = static_cast<int>(Q_.rows());
+  fixed_ = shape.fixed_indices(fixed);
+  free_ = shape.free_indices(fixed);
+  const std::string what = "extremal (" + energy.name() + ", degree (" + std::to_string(n) + ", " +
+                           std::to_string(m) + "), " + to_string(fixed) + ")";
+  int dmax = 0;
+  for (const auto& t : terms) dmax = std::max({dmax, t.au, t.av, t.bu, t.bv});
+  if (!options.conditioned_basis || terms.empty()) {
+    factor(submatrix(Q_, free_, free_), submatrix(Q_, free_, fixed_), options, what);
+    return;
+  }
+  // Free set = {su..n-su} x {sv..m-sv}.
+  const int su = (fixed == FixedSet::BoundaryAdjacent) ? 2 : 1;
+  const int sv = (fixed == FixedSet::BoundaryAdjacent) ? 2 : (fixed == FixedSet::UBoundaries ? 0 : 1);
+  const Basis1D bu = make_basis(n, su, dmax), bv = make_basis(m, sv, dmax);
+  const Eigen::Index nf = static_cast<Eigen::Index>(bu.K) * bv.K;
+  if (nf != static_cast<Eigen::Index>(free_.size())) throw Error("extremal: internal error (free set is not a tensor product)");
+  Eigen::MatrixXd Aff = Eigen::MatrixXd::Zero(nf, nf);
+  Eigen::MatrixXd Afb = Eigen::MatrixXd::Zero(nf, static_cast<Eigen::Index>(fixed_.size()));
+  for (const auto& t : terms) {
+    const double h = 0.5 * t.w;
+    const auto au = static_cast<size_t>(t.au), av = static_cast<size_t>(t.av), cu = static_cast<size_t>(t.bu),
+               cv = static_cast<size_t>(t.bv);
+    add_kron(Aff, h, bu.A[au][cu], bv.A[av][cv]);
+    add_kron(Aff, h, bu.A[cu][au], bv.A[cv][av]);
+    // column J = (i, j) of the fixed set: h (Cu(a,b)[:, i] ⊗ Cv(a,b)[:, j] + Cu(b,a)[:, i] ⊗ Cv(b,a)[:, j])
+    const Eigen::MatrixXd &C1u = bu.C[au][cu], &C1v = bv.C[av][cv], &C2u = bu.C[cu][au], &C2v = bv.C[cv][av];
+    for (size_t c = 0; c < fixed_.size(); ++c) {
+      const int i = fixed_[c] / (m + 1), j = fixed_[c] % (m + 1);
+      Eigen::Map<RowMajorMatrix> col(Afb.col(static_cast<Eigen::Index>(c)).data(), bu.K, bv.K);
+      col.noalias() += h * (C1u.col(i) * C1v.col(j).transpose() + C2u.col(i) * C2v.col(j).transpose());
+    }
+  }
+  Tu_ = bu.T;
+  Tv_ = bv.T;
+  factor(Aff, Afb, options, what);
+}
+
+void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& Afb, const ExtremalOptions& options,
+                            const std::string& what) {
+  const Eigen::Index nf = Aff.rows();
+  Eigen::VectorXd d = Aff.diagonal();
+  for (Eigen::Index a = 0; a < nf; ++a)
+    if (!(d(a) > 0.0)) {
+      std::ostringstream s;
+      s << what << ": the reduced system is " << (d(a) < 0 ? "indefinite" : "singular")
+        << " (a free direction has " << (d(a) < 0 ? "negative" : "zero")
+        << " energy); the energy does not determine the free control points for this fixed set";
+      throw ParameterError(s.str());
+    }
+  scale_ = d.cwiseSqrt().cwiseInverse();
+  A_ff_ = scale_.asDiagonal() * Aff * scale_.asDiagonal();
+  A_fb_ = scale_.asDiagonal() * Afb;
+  auto f = std::make_shared<Factor>();
+  // Cholesky (blocked, fast). Failure means indefinite or singular (a pivoted LDLT says which);
+  // success with a reciprocal condition estimate below the tolerance means numerically singular.
+  f->llt.compute(A_ff_);
+  double dmin = 0.0, rcond = 0.0;
+  bool ok = f->llt.info() == Eigen::Success && f->llt.matrixLLT().diagonal().allFinite();
+  if (ok) {
+    rcond = f->llt.rcond();
+    ok = rcond > options.singular_tolerance;
+    dmin = rcond;
+  } else {
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(A_ff_);
+    dmin = ldlt.vectorD().minCoeff();
+  }
+  if (!ok) {
+    std::ostringstream s;
+    s << what << ": the reduced system Q_ff is "
+      << (dmin < -options.singular_tolerance ? "indefinite (the energy is not convex over the free points: is "
+                                               "the operator elliptic?)"
+                                             : "singular (the energy does not determine the free control points)")
+      << (rcond > 0 ? "; reciprocal condition number " : "; smallest scaled pivot ") << dmin;
+    if (Tu_.size() == 0) s << " (generic Bernstein path: high degrees are ill-conditioned)";
+    throw ParameterError(s.str());
+  }
+  factor_ = f;
+  mould_ = apply_basis(f->llt.solve(-A_fb_));
+}
+
+Eigen::MatrixXd ExtremalSolver::apply_basis(const Eigen::MatrixXd& Y) const {
+  Eigen::MatrixXd Z = scale_.asDiagonal() * Y;
+  if (Tu_.size() == 0) return Z;
+  const Eigen::Index ku = Tu_.rows(), kv = Tv_.rows();
+  Eigen::MatrixXd X(Z.rows(), Z.cols());
+  RowMajorMatrix tmp(ku, kv), tmp2(ku, kv);
+  for (Eigen::Index c = 0; c < Z.cols(); ++c) {
+    Eigen::Map<const RowMajorMatrix> Ym(Z.col(c).data(), ku, kv);
+    tmp2.noalias() = Ym * Tv_.transpose();
+    tmp.noalias() = Tu_ * tmp2;
+    X.col(c) = Eigen::Map<const Eigen::VectorXd>(tmp.data(), ku * kv);
+  }
+  return X;
+}
+
+void ExtremalSolver::check_rows(Eigen::Index rows) const {
+  if (rows != N_)
+    throw SizeError("extremal: " + std::to_string(rows) + " points given, the solver is for " + std::to_string(N_));
+}
+
+Eigen::MatrixX3d ExtremalSolver::solve(const Eigen::MatrixX3d& points) const {
+  check_rows(points.rows());
+  Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
+  for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
+  const Eigen::MatrixX3d Xf = mould_ * Xb;
+  Eigen::MatrixX3d out = points;
+  for (size_t a = 0; a < free_.size(); ++a) out.row(free_[a]) = Xf.row(static_cast<Eigen::Index>(a));
+  return out;
+}
+
+Eigen::MatrixX3d ExtremalSolver::solve_factored(const Eigen::MatrixX3d& points) const {
+  check_rows(points.rows());
+  Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
+  for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
+  const Eigen::MatrixXd Xf = apply_basis(factor_->llt.solve(-(A_fb_ * Xb)));
+  Eigen::MatrixX3d out = points;
+  for (size_t a = 0; a < free_.size(); ++a) out.row(free_[a]) = Xf.row(static_cast<Eigen::Index>(a));
+  return out;
+}
+
+TensorNet ExtremalSolver::solve(const TensorNet& net) const {
+  check_rows(net.size());
+  return TensorNet(net.n(), net.m(), solve(net.points()));
+}
+
+double ExtremalSolver::optimality_residual(const Eigen::MatrixX3d& points) const {
+  check_rows(points.rows());
+  double r = 0.0;
+  const Eigen::MatrixXd absP = points.cwiseAbs();
+  for (int I : free_) {
+    const Eigen::RowVector3d g = Q_.row(I) * points;
+    const Eigen::RowVector3d scale = Q_.row(I).cwiseAbs() * absP;
+    for (int c = 0; c < 3; ++c)
+      if (scale(c) > 0.0) r = std::max(r, std::abs(g(c)) / scale(c));
+  }
+  return r;
+}
+
+double ExtremalSolver::reduced_residual(const Eigen::MatrixX3d& points) const {
+  check_rows(points.rows());
+  Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
+  for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
+  const Eigen::MatrixXd rhs = A_fb_ * Xb;
+  const Eigen::MatrixXd Y = factor_->llt.solve(-rhs);
+  const Eigen::MatrixXd r = A_ff_ * Y + rhs;
+  const Eigen::MatrixXd size = A_ff_.cwiseAbs() * Y.cwiseAbs() + A_fb_.cwiseAbs() * Xb.cwiseAbs();
+  double out = 0.0;
+  for (Eigen::Index i = 0; i < r.rows(); ++i)
+    for (Eigen::Index c = 0; c < r.cols(); ++c)
+      if (size(i, c) > 0.0) out = std::max(out, std::abs(r(i, c)) / size(i, c));
+  return out;
+}
+
+double ExtremalSolver::extremal_energy(const Eigen::MatrixX3d& points) const {
+  check_rows(points.rows());
+  const Eigen::Index nb = static_cast<Eigen::Index>(fixed_.size());
+  Eigen::MatrixX3d Xb(nb, 3);
+  for (Eigen::Index c = 0; c < nb; ++c) Xb.row(c) = points.row(fixed_[static_cast<size_t>(c)]);
+  const Eigen::MatrixXd Qbb = submatrix(Q_, fixed_, fixed_);
+  const Eigen::MatrixXd rhs = A_fb_ * Xb;
+  const Eigen::MatrixXd Y = factor_->llt.solve(-rhs);
+  return 0.5 * (Y.cwiseProduct(A_ff_ * Y).sum() + 2.0 * Y.cwiseProduct(rhs).sum() + Xb.cwiseProduct(Qbb * Xb).sum());
+}
+
+double ExtremalSolver::energy(const Eigen::MatrixX3d& points) const {
+  check_rows(points.rows());
+  return 0.5 * points.cwiseProduct(Q_ * points).sum();
+}
+
+std::shared_ptr<const ExtremalSolver> ExtremalSolver::cached(const EnergySpec& energy, int n, int m, FixedSet fixed,
+                                                             const ExtremalOptions& options) {
+  std::ostringstream key;
+  key << n << ' ' << m << ' ' << static_cast<int>(fixed) << ' ' << std::hexfloat << options.singular_tolerance << ' '
+      << options.conditioned_basis;
+  for (const auto& t : energy.terms()) key << " (" << t.au << t.av << t.bu << t.bv << ' ' << t.w << ')';
+  static std::mutex mutex;
+  static std::list<std::pair<std::string, std::shared_ptr<const ExtremalSolver>>> cache;  // most recent first
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = cache.begin(); it != cache.end(); ++it)
+      if (it->first == key.str()) {
+        cache.splice(cache.begin(), cache, it);
+        return cache.front().second;
+      }
+  }
+  auto solver = std::make_shared<const ExtremalSolver>(energy, n, m, fixed, options);
+  std::lock_guard<std::mutex> lock(mutex);
+  cache.emplace_front(key.str(), solver);
+  if (cache.size() > 32) cache.pop_back();
+  return solver;
+}
+
+ExtremalResult solve_extremal(const TensorNet& net, const EnergySpec& energy, FixedSet fixed,
+                              const ExtremalOptions& options) {
+  options.validate();
+  const auto t0 = std::chrono::steady_clock::now();
+  std::shared_ptr<const ExtremalSolver> solver =
+      options.use_cache ? ExtremalSolver::cached(energy, net.n(), net.m(), fixed, options)
+                        : std::make_shared<const ExtremalSolver>(energy, net.n(), net.m(), fixed, options);
+  ExtremalResult r{solver->solve(net), 0.0, {}};
+  r.energy = solver->extremal_energy(r.net.points());
+  r.summary.iterations = 0;
+  r.summary.residual = solver->reduced_residual(r.net.points());
+  r.summary.converged = r.summary.residual <= 1e-11 && std::isfinite(r.energy) && r.net.points().allFinite();
+  std::ostringstream s;
+  if (!r.summary.converged)
+    s << "extremal: optimality residual " << r.summary.residual << " above 1e-11";
+  else
+    s << "direct solve";
+  s << " (Bernstein-coordinate residual " << solver->optimality_residual(r.net.points()) << ")";
+  r.summary.message = s.str();
+  r.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace bpde

@@ -1,0 +1,31 @@
+#pragma once
+// Harmonic (and general second-order) tensor Bézier patches from the two u-boundaries
+// (FORMATS.md `"fixed": "u-boundaries"`; seed 001 §1 via Monterde–Ugail 2004, NOTES.md):
+//
+//   a x_uu + b x_uv + c x_vv = 0   ([a, b, c] = EnergySpec::second_order_coeffs(); dirichlet: Δx = 0)
+//
+// on a net of degree (n, m) whose rows i = 0 and i = n (the curves x(0, v) and x(1, v)) are given.
+//
+// Existence and uniqueness (monomial anti-diagonal analysis, solvers/pde_lu.h): for Δ and n = m
+// the harmonic polynomials of bidegree (n, n) have dimension 2n+2 (odd n) or 2n+1 (even n) against
+// 2n+2 data values, so the solution is unique for odd n, and for even n the two rows must satisfy
+// one linear condition (for Δ: equal n-th differences, i.e. x(1,v) - x(0,v) has degree < n in v).
+// For n > m the solution is unique; for n < m several conditions apply. Data that violate a
+// condition (relative tolerance PdeLuOptions::compatibility_tolerance) give Summary converged =
+// false with a message (the command exits 1); the net is then the least-squares net.
+//
+// The solve is the Bernstein least-squares system of solvers/pde_lu.h (PdeMould with
+// FixedSet::UBoundaries); use a PdeMould directly to solve many data sets of one degree.
+#include "energies/energy_spec.h"
+#include "solvers/pde_lu.h"
+#include "tensor/tensor_net.h"
+
+namespace bpde {
+
+/// Solve a x_uu + b x_uv + c x_vv = 0 from rows i = 0 and i = n of `data` (its other points are
+/// ignored). `op` must be second order (dirichlet or second-order; else UnsupportedProblem) with
+/// a != 0 (ParameterError: the rows u = 0, 1 cannot determine a solution without an x_uu term).
+PdeSolution solve_harmonic_pde(const TensorNet& data, const EnergySpec& op = EnergySpec::dirichlet(),
+                               const PdeLuOptions& options = {});
+
+}  // namespace bpde

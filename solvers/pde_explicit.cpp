@@ -1,0 +1,352 @@
+#include "solvers/pde_explicit.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "core/bernstein.h"
+#include "core/errors.h"
+#include "tensor/power_basis.h"
+
+namespace bpde {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// sin(n pi/2) and cos(n pi/2), exactly.
+double sin_half_pi(int n) {
+  static const double t[4] = {0, 1, 0, -1};
+  return t[((n % 4) + 4) % 4];
+}
+double cos_half_pi(int n) {
+  static const double t[4] = {1, 0, -1, 0};
+  return t[((n % 4) + 4) % 4];
+}
+
+[[noreturn]] void unsupported(const EnergySpec& op) {
+  std::ostringstream s;
+  s << "pde: method \"explicit\" has no closed form for the operator of \"" << op.name() << "\" [";
+  const auto& c = op.operator_coeffs();
+  for (int k = 0; k < 5; ++k) s << (k ? ", " : "") << c[static_cast<size_t>(k)];
+  s << "] (seed 001 covers Coons, biharmonic, laplacian-squared, modified biharmonic and G-norm operators); "
+       "use method \"lu\"";
+  throw UnsupportedProblem(s.str());
+}
+
+// 1 - q^K for 0 < q <= 1, accurate when q is close to 1.
+double one_minus_pow(double q, int K) { return -std::expm1(K * std::log(q)); }
+
+// Weights (w_col, w_row) of Prop. 4 for the orthogonal family (E = 1): roots x0 >= x1 > 0 of
+// x^2 - C x + A.
+struct OrthWeights {
+  double x0, q;      // q = x1 / x0 in (0, 1]
+  bool double_root;  // q == 1 to rounding: §5.2.2 / §5.2.3
+};
+
+OrthWeights orth_roots(double A, double C) {
+  const double disc = std::max(0.0, C * C - 4 * A);
+  const double sq = std::sqrt(disc);
+  const double x0 = 0.5 * (C + sq);
+  const double x1 = A / x0;  // product of the roots is A (E = 1); no cancellation
+  OrthWeights w{x0, x1 / x0, false};
+  if (w.q >= 1.0 - 1e-15) w.double_root = true;
+  return w;
+}
+
+void orth_weight(const OrthWeights& w, double A, int K, int L, double& wcol, double& wrow) {
+  // G_{n} = x0^n (1 - q^{n+1}) / (1 - q);  w_col = G_{K-1} (-A)^L / G_{K+L-1},
+  // w_row = G_{L-1} (-E)^K / G_{K+L-1}  (E = 1), with G_{-1} = 0, G_0 = 1 (NOTES.md).
+  const double a = std::pow(-A / w.x0, L), e = std::pow(-1.0 / w.x0, K);
+  if (w.double_root) {
+    wcol = a * K / double(K + L);
+    wrow = e * L / double(K + L);
+  } else {
+    const double den = one_minus_pow(w.q, K + L);
+    wcol = a * one_minus_pow(w.q, K) / den;
+    wrow = e * one_minus_pow(w.q, L) / den;
+  }
+}
+
+ExplicitOperator transposed(const ExplicitOperator& op) {
+  ExplicitOperator t = op;
+  t.rho = 1.0 / op.rho;
+  t.A = t.rho * t.rho;
+  t.B = t.D = 2 * t.rho * std::cos(op.t);
+  t.C = 1 + t.A;
+  t.E = 1;
+  return t;
+}
+
+TensorNet transpose(const TensorNet& net) {
+  TensorNet out(net.m(), net.n());
+  for (int i = 0; i <= net.n(); ++i)
+    for (int j = 0; j <= net.m(); ++j) out.set_point(j, i, net.point(i, j));
+  return out;
+}
+
+}  // namespace
+
+void PdeExplicitOptions::validate() const {
+  auto ok = [](double x) { return std::isfinite(x) && x > 0 && x < 1; };
+  if (!ok(singular_tolerance)) throw ParameterError("PdeExplicitOptions: singular_tolerance must be in (0, 1)");
+  if (!ok(rank_tolerance)) throw ParameterError("PdeExplicitOptions: rank_tolerance must be in (0, 1)");
+}
+
+ExplicitOperator classify_explicit_operator(const EnergySpec& op) {
+  if (op.order() != 4)
+    throw UnsupportedProblem("pde: method \"explicit\" is for the fourth-order operators of seed 001; \"" + op.name() +
+                             "\" is second order (use fixed \"u-boundaries\" for the harmonic PDE, or method \"lu\")");
+  if (op.kind() == EnergyKind::ModifiedBiharmonic && op.alpha() == 0.0)
+    throw ParameterError(
+        "pde: modified-biharmonic with alpha = 0 is x_uuuu = 0, which is not elliptic: the boundary does not "
+        "determine the patch");
+  const auto& c = op.operator_coeffs();
+  double scale = 0;
+  for (double x : c) scale += std::abs(x);
+  if (!(scale > 0)) unsupported(op);
+  const double tol = 1e-12 * scale;
+  ExplicitOperator e;
+  // Coons: only C.
+  if (std::abs(c[0]) <= tol && std::abs(c[1]) <= tol && std::abs(c[3]) <= tol && std::abs(c[4]) <= tol) {
+    e.family = ExplicitOperator::Family::Coons;
+    e.A = e.B = e.D = e.E = 0;
+    e.C = 1;
+    return e;
+  }
+  if (!(std::abs(c[4]) > tol)) unsupported(op);
+  const double A = c[0] / c[4], B = c[1] / c[4], C = c[2] / c[4], D = c[3] / c[4];
+  const double rtol = 1e-12 * (std::abs(A) + std::abs(B) + std::abs(C) + std::abs(D) + 1);
+  const bool orthogonal = std::abs(B) <= rtol && std::abs(D) <= rtol;
+  const bool modified = orthogonal && A > 0 && C > 0 && std::abs(C * C - 4 * A) <= 1e-12 * (C * C + 4 * A);
+  if (!(op.has_explicit_solution() || modified)) unsupported(op);
+  if (!(A > 0)) unsupported(op);
+  e.A = A;
+  e.B = orthogonal ? 0 : B;
+  e.C = C;
+  e.D = orthogonal ? 0 : D;
+  e.E = 1;
+  e.rho = std::sqrt(A);
+  e.t = std::acos(std::clamp(0.5 * (B + D) / (2 * e.rho) * 1.0, -1.0, 1.0));
+  if (orthogonal) {
+    e.family = ExplicitOperator::Family::Orthogonal;
+    e.t = std::acos(0.0);
+  } else {
+    e.family = ExplicitOperator::Family::GNorm;
+    e.C = 1 + A;  // G-norm: C = A + E exactly
+  }
+  return e;
+}
+
+Eigen::MatrixXd lemma1_sequences(double rho, double t, int N, bool closed_form) {
+  if (!(rho > 0) || !std::isfinite(rho) || !std::isfinite(t)) throw ParameterError("lemma1_sequences: need rho > 0 and finite t");
+  if (N < 3) N = 3;
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(4, N + 1);
+  const double ct = std::cos(t), st = std::sin(t);
+  if (!closed_form) {
+    const double a = rho * rho, b = 2 * rho * ct, c = 1 + rho * rho;
+    for (int r = 0; r < 4; ++r) {
+      F(r, r) = 1.0;
+      for (int l = 0; l + 4 <= N; ++l)
+        F(r, l + 4) = -(a * F(r, l) + b * F(r, l + 1) + c * F(r, l + 2) + b * F(r, l + 3));
+    }
+    return F;
+  }
+  // 1 + rho^4 + 2 rho^2 cos 2t = (1 - rho^2)^2 + 4 rho^2 cos^2 t  (no cancellation)
+  const double den = (1 - rho * rho) * (1 - rho * rho) + 4 * rho * rho * ct * ct;
+  if (!(std::abs(st) > 0) || !(den > 0))
+    throw ParameterError("lemma1_sequences: eq. (12) needs sin t != 0 and (rho, t) != (1, pi/2)");
+  auto Dn = [&](int n) {
+    return ((rho * rho - 1) * sin_half_pi(n) - 2 * rho * ct * cos_half_pi(n) +
+            std::pow(-rho, n - 1) * (rho * rho * std::sin((n - 2) * t) + std::sin(n * t)) / st) /
+           den;
+  };
+  double Dprev = Dn(-1);
+  for (int n = 0; n <= N; ++n) {
+    const double Dcur = Dn(n);
+    F(0, n) = -rho * rho * Dprev;
+    F(1, n) = sin_half_pi(n) + Dcur;
+    F(2, n) = -cos_half_pi(n) - rho * rho * Dprev;
+    F(3, n) = Dcur;
+    Dprev = Dcur;
+  }
+  return F;
+}
+
+Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const ExplicitOperator& op,
+                                           const PdeExplicitOptions& options, Summary& summary) {
+  const int n = data.n();
+  if (data.m() != n) {
+    std::ostringstream s;
+    s << "pde: method \"explicit\" needs a net of degree [n, n] (seed 001), got [" << data.n() << ", " << data.m()
+      << "]; use method \"lu\"";
+    throw DegreeError(s.str());
+  }
+  summary.converged = true;
+  const int W = n + 2;  // padded: indices 0..n+1, zero outside the box
+  const Eigen::MatrixXd Mp = bernstein_to_power_matrix(n);
+  Eigen::VectorXd fact(n + 2);
+  for (int k = 0; k <= n + 1; ++k) fact(k) = factorial(k);
+
+  // Fundamental sequences for the G-norm family.
+  Eigen::MatrixXd F;
+  if (op.family == ExplicitOperator::Family::GNorm) {
+    const double st = std::abs(std::sin(op.t));
+    const double den = (1 - op.rho * op.rho) * (1 - op.rho * op.rho) + 4 * op.rho * op.rho * std::cos(op.t) * std::cos(op.t);
+    const bool closed = st > 1e-3 && den > 1e-3 * (1 + std::pow(op.rho, 4));
+    F = lemma1_sequences(op.rho, op.t, n + 1, closed);
+  }
+  OrthWeights ow{1, 1, true};
+  if (op.family == ExplicitOperator::Family::Orthogonal) ow = orth_roots(op.A, op.C);
+
+  Eigen::MatrixX3d out = Eigen::MatrixX3d::Zero((n + 1) * (n + 1), 3);
+  for (int c = 0; c < 3; ++c) {
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(W, W);
+    Eigen::VectorXd r0(n + 1), c0(n + 1), r1(n + 1), c1(n + 1);
+    for (int j = 0; j <= n; ++j) {
+      r0(j) = data.points()(data.index(0, j), c);
+      r1(j) = data.points()(data.index(n, j), c);
+      c0(j) = data.points()(data.index(j, 0), c);
+      c1(j) = data.points()(data.index(j, n), c);
+    }
+    // Monomial coefficients of the four edges: x(0,v), x(1,v) (= P_{n l}), x(u,0), x(u,1) (= P_{l n}).
+    const Eigen::VectorXd e0v = Mp * r0, e1v = Mp * r1, e0u = Mp * c0, e1u = Mp * c1;
+    for (int j = 0; j <= n; ++j) {
+      a(0, j) = fact(j) * e0v(j);  // eq. (5)
+      a(j, 0) = fact(j) * e0u(j);  // eq. (6)
+    }
+    for (int s = n + 1; s >= 2; --s) {
+      // eq. (7): a_{1,s-1} from x(1, v), a_{s-1,1} from x(u, 1).
+      {
+        const int j = s - 1;
+        double sum = 0;
+        for (int i = 2; i <= n; ++i) sum += a(i, j) / fact(i);
+        a(1, j) = fact(j) * e1v(j) - a(0, j) - sum;
+      }
+      if (s - 1 != 1) {
+        const int i = s - 1;
+        double sum = 0;
+        for (int j = 2; j <= n; ++j) sum += a(i, j) / fact(j);
+        a(i, 1) = fact(i) * e1u(i) - a(i, 0) - sum;
+      }
+      if (s < 4) continue;
+      // Interior of the anti-diagonal: k, l >= 2, k + l = s.
+      switch (op.family) {
+        case ExplicitOperator::Family::Coons: break;  // a_kl = 0 (§5.2.1)
+        case ExplicitOperator::Family::Orthogonal:
+          for (int l = 2; l <= s - 2; ++l) {
+            const int k = s - l, K = k / 2, L = l / 2;
+            double wc, wr;
+            orth_weight(ow, op.A, K, L, wc, wr);
+            a(k, l) = wc * a(k + 2 * L, l % 2) + wr * a(k % 2, 2 * K + l);  // eq. (21)
+          }
+          break;
+        case ExplicitOperator::Family::GNorm: {
+          const double Cs = F(2, s), Ds = F(3, s), Cp = F(2, s - 1), Dp = F(3, s - 1);
+          const double M = Cs * Dp - Ds * Cp;  // M_s(C, D)
+          // Scale of M_s: the squared size of the sequences so far (they do not grow exponentially
+          // for rho <= 1, which the transposition ensures); C_s, D_s themselves can all vanish.
+          const double fmax = F.leftCols(s + 1).cwiseAbs().maxCoeff();
+          const double Mscale = fmax * fmax;
+          const double y0 = a(s, 0), y1 = a(s - 1, 1), ysm = a(1, s - 1), ys = a(0, s);
+          if (std::abs(M) > options.singular_tolerance * Mscale) {
+            const double As = F(0, s), Bs = F(1, s), Ap = F(0, s - 1), Bp = F(1, s - 1);
+            const double MAD = As * Dp - Ds * Ap, MAC = As * Cp - Cs * Ap;
+            const double MBD = Bs * Dp - Ds * Bp, MBC = Bs * Cp - Cs * Bp;
+            for (int l = 2; l <= s - 2; ++l) {  // Prop. 2, eq. (13)
+              const double Al = F(0, l), Bl = F(1, l), Cl = F(2, l), Dl = F(3, l);
+              const double bA = (Al * M - Cl * MAD + Dl * MAC) / M;
+              const double bB = (Bl * M - Cl * MBD + Dl * MBC) / M;
+              const double bC = (-Cl * Ds + Dl * Cs) / M;
+              const double bD = (Cl * Dp - Dl * Cp) / M;
+              a(s - l, l) = bA * y0 + bB * y1 + bC * ysm + bD * ys;
+            }
+          } else {
+            // System (9) on this anti-diagonal: unknowns y_2..y_{s-2}, equations l0 = 0..s-4.
+            const int u = s - 3;
+            const double co[5] = {op.A, op.B, op.C, op.D, op.E};
+            Eigen::MatrixXd Mx = Eigen::MatrixXd::Zero(u, u);
+            Eigen::VectorXd rhs = Eigen::VectorXd::Zero(u);
+            const double yknown[4] = {y0, y1, ysm, ys};
+            for (int l0 = 0; l0 < u; ++l0)
+              for (int j = 0; j <= 4; ++j) {
+                const int l = l0 + j;
+                if (l >= 2 && l <= s - 2) Mx(l0, l - 2) += co[j];
+                else rhs(l0) -= co[j] * (l == 0 ? yknown[0] : l == 1 ? yknown[1] : l == s - 1 ? yknown[2] : yknown[3]);
+              }
+            Eigen::JacobiSVD<Eigen::MatrixXd> svd(Mx, Eigen::ComputeFullU | Eigen::ComputeFullV);
+            const auto& sv = svd.singularValues();
+            if (!(sv(u - 1) > options.rank_tolerance * std::max(1.0, sv(0)))) {
+              std::ostringstream m;
+              m << "the polynomial solution is not unique: on the anti-diagonal k + l = " << s
+                << " the operator has a nonzero polynomial solution with zero boundary data (system (9) is singular)";
+              summary.converged = false;
+              summary.message = m.str();
+              return out;
+            }
+            const Eigen::VectorXd y = svd.solve(rhs);
+            for (int l = 2; l <= s - 2; ++l) a(s - l, l) = y(l - 2);
+          }
+          break;
+        }
+      }
+    }
+    for (int k = 0; k <= n; ++k)
+      for (int l = 0; l <= n; ++l) out(k * (n + 1) + l, c) = a(k, l);
+  }
+  return out;
+}
+
+PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
+  const auto t0 = Clock::now();
+  options.validate();
+  ExplicitOperator e = classify_explicit_operator(op);
+  if (data.m() != data.n()) {
+    std::ostringstream s;
+    s << "pde: method \"explicit\" needs a net of degree [n, n] (seed 001), got [" << data.n() << ", " << data.m()
+      << "]; use method \"lu\"";
+    throw DegreeError(s.str());
+  }
+  const int n = data.n();
+  const bool flip = e.family == ExplicitOperator::Family::GNorm && e.rho > 1;
+  const TensorNet work = flip ? transpose(data) : data;
+  if (flip) e = transposed(e);
+  PdeSolution out{data, Summary{}};
+  if (e.family == ExplicitOperator::Family::GNorm && std::abs(e.rho - 1) < 1e-6) {
+    // rho = 1 and t != pi/2: all characteristic roots lie on the unit circle and M_s can vanish,
+    // also on the anti-diagonals s > n+1 that the closed form sets to 0. Check them all (the
+    // small monomial blocks; ~1 ms at n = 20, only in this degenerate case).
+    const PdeStructure st =
+        analyse_pde_structure({e.A, e.B, e.C, e.D, e.E}, n, n, FixedSet::Boundary, options.rank_tolerance);
+    if (!st.unique) {
+      out.summary.converged = false;
+      out.summary.message = st.diagnosis + "; the data are returned unchanged";
+      out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      return out;
+    }
+  }
+  const Eigen::MatrixX3d a = explicit_pde_coefficients(work, e, options, out.summary);
+  if (out.summary.converged && !a.allFinite()) {
+    out.summary.converged = false;
+    out.summary.message = "the explicit coefficients overflowed double precision; the data are returned unchanged";
+  } else if (out.summary.converged) {
+    TensorNet sol = from_factorial_power(n, n, a);
+    if (flip) sol = transpose(sol);
+    // The prescribed ring is data: copy it exactly (the power-basis round trip rounds it).
+    for (int idx : data.boundary_indices()) sol.points().row(idx) = data.points().row(idx);
+    if (!sol.points().allFinite()) {
+      out.summary.converged = false;
+      out.summary.message = "the explicit solution overflowed double precision";
+    } else {
+      out.net = std::move(sol);
+    }
+  } else {
+    out.summary.message += "; the data are returned unchanged";
+  }
+  out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace bpde

@@ -1,0 +1,87 @@
+#pragma once
+// Explicit (closed-form) polynomial solutions of the fourth-order PDEs of seed 001
+// (Arnal, Monterde, Ugail, "Explicit polynomial solutions of fourth order linear elliptic PDEs for
+// boundary based smooth surface generation"), corrected as in NOTES.md.
+//
+//   A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv + E x_vvvv = 0   (eq. (2); B, D on x_uuuv, x_uvvv)
+//
+// on a tensor net of degree (n, n) with the outer ring of control points prescribed. Route:
+//   1. boundary -> a_{i0}, a_{0j} (eq. (5)-(6)), with x = sum a_kl/(k! l!) u^k v^l (eq. (4));
+//   2. anti-diagonals s = k + l from n+1 down to 2 (a_kl = 0 for k + l > n+1): first a_{1,s-1},
+//      a_{s-1,1} from the edges u = 1 and v = 1 (eq. (7); the a_{i1} formula uses P_{ln}), then the
+//      interior a_kl (k, l >= 2) of the anti-diagonal in closed form:
+//      - Coons [0,0,C,0,0] (x_uuvv = 0, §5.2.1): a_kl = 0;
+//      - orthogonal (B = D = 0, C^2 >= 4AE > 0): Prop. 4 eq. (21) with G_{-1} = 0, G_0 = 1;
+//        double root (biharmonic §5.2.3, modified biharmonic §5.2.2 with the exponent ⌊k/2⌋):
+//          a_kl = K/(K+L) (-A/x0)^L a_{k+2L, l mod 2} + L/(K+L) (-E/x0)^K a_{k mod 2, 2K+l},
+//        K = ⌊k/2⌋, L = ⌊l/2⌋, x0 = C/2; simple roots x0 > x1 (the rho case §5.2.4), q = x1/x0:
+//          a_kl = (-A/x0)^L (1-q^K)/(1-q^{K+L}) a_{k+2L, l mod 2}
+//               + (-E/x0)^K (1-q^L)/(1-q^{K+L}) a_{k mod 2, 2K+l},
+//        evaluated with expm1 so that rho -> 1 (q -> 1) tends to the biharmonic formula without
+//        dividing by zero;
+//      - G-norm [rho^2, 2 rho cos t, 1 + rho^2, 2 rho cos t, 1] with cos t != 0: Lemma 1 (eq. (11)-(12))
+//        gives the fundamental sequences A_l, B_l, C_l, D_l; Prop. 2 (eq. (13)) the interior.
+//        Where eq. (12) is inaccurate (|sin t| or 1 + rho^4 + 2 rho^2 cos 2t below 1e-3) the
+//        sequences come from their defining recurrence instead. For rho > 1 the problem is solved
+//        transposed (u <-> v turns rho into 1/rho) so that no sequence grows. When M_s (Prop. 2) is
+//        below singular_tolerance relative to its terms, that anti-diagonal's linear system (9)
+//        (corrected: D a_{m-3,3}) is solved numerically; if it is singular the solution is not
+//        unique (e.g. rho = 1, t = 0: kernel u^2 v^2 (u - v)) and the Summary says so.
+//   3. back to Bernstein form (§6), via tensor/power_basis.h; the prescribed ring is copied exactly.
+//
+// Accepted operators: those with EnergySpec::has_explicit_solution(), and also any [A..E]
+// proportional to the Coons operator [0,0,1,0,0] or to a modified biharmonic one [1,0,2a²,0,a⁴]
+// (a != 0). Anything else throws UnsupportedProblem suggesting method "lu" (solvers/pde_lu.h).
+//
+// Accuracy: the monomial coefficients a_kl are badly conditioned at high degree; measured errors
+// against exact solutions are in docs/pde_accuracy.md.
+#include <Eigen/Core>
+#include <string>
+
+#include "energies/energy_spec.h"
+#include "solvers/pde_lu.h"  // PdeSolution
+#include "solvers/summary.h"
+#include "tensor/tensor_net.h"
+
+namespace bpde {
+
+struct PdeExplicitOptions {
+  /// An anti-diagonal's closed-form denominator M_s smaller than this, relative to the size of its
+  /// terms, sends that anti-diagonal to the numerical solve of system (9). Default 1e-8.
+  double singular_tolerance = 1e-8;
+  /// Relative threshold below which that numerical solve calls the system singular. Default 1e-10.
+  double rank_tolerance = 1e-10;
+  /// Throws ParameterError unless both are finite and in (0, 1).
+  void validate() const;
+};
+
+/// Which closed form applies, and its normalised parameters.
+struct ExplicitOperator {
+  enum class Family { Coons, Orthogonal, GNorm } family = Family::Coons;
+  /// Normalised coefficients (E = 1 for Orthogonal and GNorm; C = 1 for Coons).
+  double A = 0, B = 0, C = 1, D = 0, E = 0;
+  /// G-norm parameters (GNorm and, when C = A + E, Orthogonal): rho > 0, t in [0, pi].
+  double rho = 1, t = 0;
+};
+
+/// Classify the operator of `op` (order 4). Throws UnsupportedProblem (message suggests "lu") for
+/// operators without a closed form, and for second-order energies.
+ExplicitOperator classify_explicit_operator(const EnergySpec& op);
+
+/// Lemma 1 (seed 001 eq. (12)): the fundamental sequences of
+///   rho^2 x_l + 2 rho cos t x_{l+1} + (1+rho^2) x_{l+2} + 2 rho cos t x_{l+3} + x_{l+4} = 0
+/// with initial values the unit vectors: row 0 = A_l, 1 = B_l, 2 = C_l, 3 = D_l, l = 0..N.
+/// closed_form = true uses eq. (12) (requires sin t != 0 and 1 + rho^4 + 2 rho^2 cos 2t != 0, else
+/// ParameterError); false runs the recurrence.
+Eigen::MatrixXd lemma1_sequences(double rho, double t, int N, bool closed_form);
+
+/// The factorial-scaled monomial coefficients a_kl (seed 001 eq. (4)) of the explicit solution,
+/// (n+1)^2 x 3, row k*(n+1)+l. `summary` receives converged / message (not unique).
+Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const ExplicitOperator& op,
+                                           const PdeExplicitOptions& options, Summary& summary);
+
+/// Solve by the explicit route. data: a degree (n, n) net, n >= 1 (DegreeError if n != m), whose
+/// outer ring is prescribed. converged = false with a message if the solution is not unique.
+PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options = {});
+
+}  // namespace bpde

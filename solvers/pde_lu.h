@@ -1,0 +1,126 @@
+#pragma once
+// Polynomial solutions of linear homogeneous PDEs with prescribed boundary control points, by one
+// linear solve in the Bernstein basis (the "lu" method of seed 001, Arnal–Monterde–Ugail §3 and
+// §7 Table 1; also the engine of the harmonic PDE from u-boundaries, solvers/harmonic_pde.h).
+//
+// Problem. x(u,v) = sum_{i<=n, j<=m} B_i^n(u) B_j^m(v) P_ij (FORMATS.md layout, row i*(m+1)+j).
+// Given the prescribed points (FixedSet::Boundary: the outer ring; FixedSet::UBoundaries: rows
+// i = 0 and i = n), find the free points such that L x = 0 with
+//   order 4: L = A d4u + B d3u dv + C d2u d2v + D du d3v + E d4v   (seed 001 eq. (2), NOTES.md)
+//   order 2: L = a d2u + b du dv + c d2v                           (harmonic: [1,0,1])
+//
+// Formulation. The unknowns are the free control points (not the monomial coefficients a_kl of
+// seed 001 eq. (4), whose system fails from n ~ 12 in double, NOTES.md). The equations are the
+// Bernstein coefficients of L x at bidegree (n, m): each term d^{du,dv} x is a Bernstein net of
+// bidegree (n-du, m-dv), elevated exactly to (n, m). L x = 0 iff all (n+1)(m+1) coefficients
+// vanish, so the system K_FF x_F = -K_FB x_B is consistent and overdetermined; it is solved in
+// the least-squares sense by column-pivoted Householder QR of the column-equilibrated K_FF.
+// K is built and factored in long double: its condition number reaches ~1e16 at n = 20, so a
+// double solve loses every digit there, while the long double solve stays near the floor set by
+// rounding the data to double (docs/pde_accuracy.md).
+//
+// Uniqueness and compatibility are decided structurally, not from the (ill-conditioned) Bernstein
+// matrix: in the monomial basis the system is block triangular along the anti-diagonals k + l = s
+// (seed 001 eq. (8)–(9)); each block is a small matrix of the coefficients [A..E] (entries O(1)),
+// whose rank is reliable. A rank-deficient block means the solution is not unique (for example
+// the G-norm operator with rho = 1, t = 0 has the kernel u^2 v^2 (u - v)); a block with more
+// equations than its rank whose left null space meets the data gives one linear compatibility
+// condition on the data (for example the harmonic PDE from u-boundaries at even n, NOTES.md).
+// The conditions are then taken, as functionals of the prescribed points, from the left null space
+// of the Bernstein matrix, and the data are accepted when each holds to a relative tolerance.
+//
+// Conditioning (NOTES.md): the solution amplifies boundary data by up to ~1e13 at n = 20 for
+// generic boundaries; errors are meaningful relative to the solution's own size.
+// docs/pde_accuracy.md has the measured errors against exact solutions.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/fixed_set.h"
+#include "energies/energy_spec.h"
+#include "solvers/pde_residual.h"
+#include "solvers/summary.h"
+#include "tensor/tensor_net.h"
+
+namespace bpde {
+
+struct PdeLuOptions {
+  /// A compatibility condition c . x_B = 0 on the prescribed points holds when
+  /// |c . x_B| <= compatibility_tolerance * sum_j |c_j| |x_Bj| (per coordinate). Default 1e-8.
+  double compatibility_tolerance = 1e-8;
+  /// Relative singular-value threshold for the rank of the small monomial blocks. Default 1e-10.
+  double rank_tolerance = 1e-10;
+  /// Throws ParameterError unless both tolerances are finite and in (0, 1).
+  void validate() const;
+};
+
+/// A net and how it was obtained.
+struct PdeSolution {
+  TensorNet net;
+  Summary summary;
+};
+
+/// Structure of the problem (operator, degrees, fixed set), from the monomial block analysis.
+struct PdeStructure {
+  bool unique = true;        ///< every anti-diagonal block has full column rank
+  int conditions = 0;        ///< number of linear compatibility conditions on the data
+  std::string diagnosis;     ///< human-readable reason when !unique or conditions > 0
+};
+
+/// Monomial anti-diagonal analysis (see the header comment). `coeffs` are the operator's
+/// coefficients c_j of d^{p-j}_u d^j_v, j = 0..p (p = 2 or 4).
+PdeStructure analyse_pde_structure(const std::vector<double>& coeffs, int n, int m, FixedSet fixed,
+                                   double rank_tolerance = 1e-10);
+
+/// (n+1)(m+1) x (n+1)(m+1) matrix K with (K P) = the Bernstein coefficients, at bidegree (n, m),
+/// of L x for the net P (one coordinate), L = sum of the terms.
+Eigen::MatrixXd pde_bernstein_matrix(const std::vector<PdeTerm>& terms, int n, int m);
+
+/// The "mould" of Table 1: for one (operator, n, m, fixed set) it factors the Bernstein system
+/// once and stores the matrix S with  x_free = S x_fixed  (#free x #fixed) and the compatibility
+/// functionals. Each solve is then one matrix product (plus one small product for the checks).
+class PdeMould {
+ public:
+  /// Fourth-order operators need FixedSet::Boundary, second-order ones FixedSet::UBoundaries
+  /// (else UnsupportedProblem). Degrees 1..kMaxDegree (DegreeError). Options are validated.
+  PdeMould(const EnergySpec& op, int n, int m, FixedSet fixed = FixedSet::Boundary, const PdeLuOptions& options = {});
+
+  int n() const { return n_; }
+  int m() const { return m_; }
+  FixedSet fixed() const { return fixed_; }
+  const PdeStructure& structure() const { return structure_; }
+  const std::vector<int>& fixed_indices() const { return fixed_idx_; }
+  const std::vector<int>& free_indices() const { return free_idx_; }
+  /// x_free = S x_fixed (rows follow free_indices(), columns fixed_indices()). Empty if not unique.
+  const Eigen::MatrixXd& interior_from_boundary() const { return S_; }
+  /// Compatibility functionals (structure().conditions rows, #fixed columns, unit rows).
+  const Eigen::MatrixXd& conditions() const { return W_; }
+
+  /// Solve for the data's prescribed points (its other points are ignored). The data's degree
+  /// must be (n, m) (DegreeError). converged = false with a message when the solution is not unique
+  /// (the data are returned unchanged) or the data violate a compatibility condition (the
+  /// least-squares net is returned). summary.residual = compatibility_violation(data).
+  PdeSolution solve(const TensorNet& data) const;
+
+  /// The product only: out's free points = S * data's fixed points, out's fixed points = data's.
+  /// Both nets must have degree (n, m) (DegreeError); UnsupportedProblem if the solution is not
+  /// unique. No compatibility check (see compatibility_violation).
+  void apply(const TensorNet& data, TensorNet& out) const;
+
+  /// Largest relative violation of the compatibility conditions by the data (0 if none).
+  double compatibility_violation(const TensorNet& data) const;
+
+ private:
+  int n_, m_;
+  FixedSet fixed_;
+  PdeLuOptions options_;
+  PdeStructure structure_;
+  std::vector<int> fixed_idx_, free_idx_;
+  Eigen::MatrixXd S_, W_;
+};
+
+/// One-shot solve (builds and factors the system, solves for this data only): the "lu" method.
+/// Fourth-order operators with FixedSet::Boundary. Same outcomes as PdeMould::solve.
+PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options = {});
+
+}  // namespace bpde
