@@ -36,21 +36,6 @@ void BSplinePdeOptions::validate() const {
                          std::to_string(consistency_tolerance));
 }
 
-std::vector<OperatorTerm> euler_lagrange_terms(const EnergySpec& op) {
-  std::vector<OperatorTerm> t;
-  if (op.order() == 2) {
-    const auto& c = op.second_order_coeffs();
-    t = {{2, 0, c[0]}, {1, 1, c[1]}, {0, 2, c[2]}};
-  } else {
-    const auto& c = op.operator_coeffs();
-    t = {{4, 0, c[0]}, {3, 1, c[1]}, {2, 2, c[2]}, {1, 3, c[3]}, {0, 4, c[4]}};
-  }
-  std::vector<OperatorTerm> out;
-  for (const auto& x : t)
-    if (x.c != 0.0) out.push_back(x);
-  return out;
-}
-
 namespace {
 
 // The span equations, one span at a time: block(su, sv) is the (per x (p+1)(q+1)) matrix of the
@@ -62,16 +47,16 @@ class SpanSystem {
       : p_(p), q_(q) {
     BSplineNet::validate_knots(p, U, "u");
     BSplineNet::validate_knots(q, V, "v");
-    terms_ = euler_lagrange_terms(op);
+    terms_ = pde_operator_terms(op);
     if (terms_.empty()) throw ParameterError("bspline pde: the operator " + op.name() + " has all coefficients zero");
     for (const auto& t : terms_) {
-      if (t.ku > p || t.kv > q)
-        throw DegreeError("bspline pde: the operator term d^" + std::to_string(t.ku) + "/du^" + std::to_string(t.ku) +
-                          " d^" + std::to_string(t.kv) + "/dv^" + std::to_string(t.kv) + " of " + op.name() +
+      if (t.du > p || t.dv > q)
+        throw DegreeError("bspline pde: the operator term d^" + std::to_string(t.du) + "/du^" + std::to_string(t.du) +
+                          " d^" + std::to_string(t.dv) + "/dv^" + std::to_string(t.dv) + " of " + op.name() +
                           " vanishes identically at degree [" + std::to_string(p) + ", " + std::to_string(q) +
                           "]; the degree must be at least the order of differentiation in each direction");
-      du_ = std::max(du_, p - t.ku);
-      dv_ = std::max(dv_, q - t.kv);
+      du_ = std::max(du_, p - t.du);
+      dv_ = std::max(dv_, q - t.dv);
     }
     eu_ = bezier_extraction(p, U);
     ev_ = bezier_extraction(q, V);
@@ -94,8 +79,8 @@ class SpanSystem {
     Eigen::MatrixXd B = Eigen::MatrixXd::Zero(per(), (p_ + 1) * (q_ + 1));
     const int iu0 = first_u(su), iv0 = first_v(sv);
     for (const auto& t : terms_) {
-      const Eigen::MatrixXd& Mu = Ru_[static_cast<size_t>(su)][static_cast<size_t>(t.ku)];
-      const Eigen::MatrixXd& Mv = Rv_[static_cast<size_t>(sv)][static_cast<size_t>(t.kv)];
+      const Eigen::MatrixXd& Mu = Ru_[static_cast<size_t>(su)][static_cast<size_t>(t.du)];
+      const Eigen::MatrixXd& Mv = Rv_[static_cast<size_t>(sv)][static_cast<size_t>(t.dv)];
       for (int a = 0; a <= du_; ++a)
         for (int i = 0; i <= p_; ++i) {
           const double x = t.c * Mu(a, iu0 + i);
@@ -168,7 +153,7 @@ class SpanSystem {
     // 1-D operators per span and derivative order: (d+1) x n,  E D_k C[s] / h^k.
     std::vector<std::vector<Eigen::MatrixXd>> R(static_cast<size_t>(ex.spans()));
     std::vector<bool> used(static_cast<size_t>(order) + 1, false);
-    for (const auto& t : terms_) used[static_cast<size_t>(along_u ? t.ku : t.kv)] = true;
+    for (const auto& t : terms_) used[static_cast<size_t>(along_u ? t.du : t.dv)] = true;
     for (int s = 0; s < ex.spans(); ++s)
       for (int o = 0; o <= order; ++o) {
         if (!used[static_cast<size_t>(o)]) {
@@ -183,7 +168,7 @@ class SpanSystem {
   }
 
   int p_, q_, du_ = 0, dv_ = 0, nv_ = 0, N_ = 0;
-  std::vector<OperatorTerm> terms_;
+  std::vector<PdeTerm> terms_;
   BezierExtraction eu_, ev_;
   std::vector<std::vector<Eigen::MatrixXd>> Ru_, Rv_;
 };
@@ -211,7 +196,7 @@ double bspline_pde_equation_residual(const BSplineNet& net, const EnergySpec& op
 
 double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int samples) {
   if (samples < 1) throw ParameterError("bspline_pde_residual: samples must be >= 1");
-  const std::vector<OperatorTerm> terms = euler_lagrange_terms(op);
+  const std::vector<PdeTerm> terms = pde_operator_terms(op);
   const int N = samples;
   Eigen::VectorXd tu(N + 1), tv(N + 1);
   for (int a = 0; a <= N; ++a) {
@@ -227,8 +212,8 @@ double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int sam
   Eigen::MatrixXd L = Eigen::MatrixXd::Zero(G, 3);
   Eigen::VectorXd size = Eigen::VectorXd::Zero(G);
   for (const auto& t : terms) {
-    const Eigen::MatrixXd Bu = BSplineNet::basis_table(net.p(), net.knots_u(), tu, t.ku);
-    const Eigen::MatrixXd Bv = BSplineNet::basis_table(net.q(), net.knots_v(), tv, t.kv);
+    const Eigen::MatrixXd Bu = BSplineNet::basis_table(net.p(), net.knots_u(), tu, t.du);
+    const Eigen::MatrixXd Bv = BSplineNet::basis_table(net.q(), net.knots_v(), tv, t.dv);
     Eigen::MatrixXd D(G, 3);
     for (int c = 0; c < 3; ++c) {
       const RowMat g = Bu * Pc[static_cast<size_t>(c)] * Bv.transpose();
@@ -238,7 +223,23 @@ double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int sam
     L += t.c * D;
     size += std::abs(t.c) * D.rowwise().norm();
   }
-  const double smax = size.maxCoeff();
+  // Floor (see the header): the size a derivative of this net can have, times 1e-8.
+  auto min_width = [](int k, const std::vector<double>& K) {
+    double h = K.back() - K.front();
+    const int n = static_cast<int>(K.size()) - k - 1;
+    for (int i = k; i < n; ++i)
+      if (K[static_cast<size_t>(i) + 1] > K[static_cast<size_t>(i)])
+        h = std::min(h, K[static_cast<size_t>(i) + 1] - K[static_cast<size_t>(i)]);
+    return h;
+  };
+  const double hu = min_width(net.p(), net.knots_u()), hv = min_width(net.q(), net.knots_v());
+  double floor = 0;
+  for (const auto& t : terms)
+    if (t.du <= net.p() && t.dv <= net.q())
+      floor += std::abs(t.c) * factorial(net.p()) / factorial(net.p() - t.du) * factorial(net.q()) /
+             factorial(net.q() - t.dv) / (std::pow(hu, t.du) * std::pow(hv, t.dv));
+  floor *= 1e-8 * net.points().cwiseAbs().maxCoeff();
+  const double smax = std::max(size.maxCoeff(), floor);
   const double lmax = L.rowwise().norm().maxCoeff();
   return smax > 0 ? lmax / smax : 0.0;
 }

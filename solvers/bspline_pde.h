@@ -37,6 +37,7 @@
 
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
+#include "solvers/pde_residual.h"
 #include "solvers/summary.h"
 #include "tensor/bspline_net.h"
 
@@ -78,13 +79,6 @@ struct BSplinePdeResult {
 Eigen::MatrixXd bspline_pde_equations(int p, int q, const std::vector<double>& U, const std::vector<double>& V,
                                       const EnergySpec& op);
 
-/// The operator's terms (k_u, k_v, coefficient) with non-zero coefficients.
-struct OperatorTerm {
-  int ku = 0, kv = 0;
-  double c = 0.0;
-};
-std::vector<OperatorTerm> euler_lagrange_terms(const EnergySpec& op);
-
 /// Size limit of the solve: the equations are compressed strip by strip (one u-span at a time) to
 /// an N x N triangle, whose SVD is dense, so at most kMaxDensePdeUnknowns control points; larger
 /// requests throw UnsupportedProblem instead of running for minutes.
@@ -98,7 +92,10 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
                                    const BSplinePdeOptions& options = {});
 
 /// FORMATS.md `pde_residual`: max over the (N+1)^2 sample grid of |Lx| divided by the max over the
-/// grid of Σ_k |c_k| |∂^k x| (0 if that is 0). The grid is mapped onto the knot domain.
+/// grid of Σ_k |c_k| |∂^k x|, the grid mapped onto the knot domain. As in solvers/pde_residual.h,
+/// the denominator is floored at 1e-8 Σ_k |c_k| p!/(p-k_u)! q!/(q-k_v)! h_u^-k_u h_v^-k_v max|P_ij|
+/// (h = the shortest span), so that an exact solution whose terms all vanish does not read
+/// rounding / rounding = O(1); 0 when everything vanishes.
 double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int samples = 50);
 
 /// max |A P| / max (|A| |P|) of the equations above for a given net (its relative equation

@@ -247,6 +247,8 @@ TEST(BSplinePde, CoonsOperatorGivesTheCoonsPatchOnMultiSpanNets) {
   const BSplinePdeResult r = solve_bspline_pde(data, EnergySpec::coons());
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
   EXPECT_EQ(r.free_parameters, 0);
+  EXPECT_LT(bspline_pde_residual(r.net, EnergySpec::coons()), 1e-6);  // rounding/rounding, floored
+  EXPECT_GT(bspline_pde_residual(data, EnergySpec::coons()), 0.5);      // a generic net: ratio ~1
   for (double u : {0.1, 0.35, 0.8})
     for (double v : {0.05, 0.5, 0.9}) {
       const Eigen::Vector3d coons = (1 - u) * data.evaluate(0, v) + u * data.evaluate(1, v) + (1 - v) * data.evaluate(u, 0) +
