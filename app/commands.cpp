@@ -11,7 +11,10 @@
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
 #include "io/run_job.h"
+#include "energies/cmc.h"
 #include "energies/quadratic_energy.h"
+#include "energies/triangular_gram.h"
+#include "solvers/reference_boundaries.h"
 #include "solvers/smoothing_spline.h"
 
 namespace bpde::app {
@@ -37,11 +40,25 @@ int cmd_energy(const std::string& net_path, const std::string& energy, std::opti
   if (H && !std::isfinite(*H)) throw NonFiniteError("--H is not finite");
   if (energy == "cmc") {
     if (!H) throw ParseError("--energy cmc needs --H");
-    throw UnsupportedProblem("energy cmc is not available in this build yet");
+    CmcEnergies e;
+    if (const auto* t = std::get_if<TensorNet>(&net))
+      e = cmc_energies(*t, *H);
+    else if (const auto* tr = std::get_if<TriangularNet>(&net))
+      e = cmc_energies(*tr, *H);
+    else
+      throw UnsupportedProblem("energy cmc needs a triangular or tensor net, not a " + net_kind(net) + " net");
+    std::cout << Json{{"D", e.D}, {"V", e.V}, {"DH", e.DH}}.dump() << "\n";
+    return 0;
   }
   const EnergySpec spec = energy_from_argument(energy);
   if (const auto* t = std::get_if<TensorNet>(&net)) {
     std::cout << Json{{"energy", energy_value(*t, spec)}}.dump() << "\n";
+    return 0;
+  }
+  if (const auto* t = std::get_if<TriangularNet>(&net)) {
+    const Eigen::MatrixXd Q = triangular_gram(t->n(), spec);
+    const Eigen::MatrixX3d& P = t->points();
+    std::cout << Json{{"energy", 0.5 * (P.transpose() * Q * P).trace()}}.dump() << "\n";
     return 0;
   }
   throw UnsupportedProblem("energy " + spec.name() + " on a " + net_kind(net) + " net is not available in this build yet");
@@ -80,20 +97,31 @@ int cmd_blend(const std::string& config_path, const std::string& out_dir) {
 }
 
 int cmd_demo(const std::string& out_dir) {
-  // Until the CMC solver lands: sample a built-in triangular net over a circle boundary.
-  const int n = 6;
-  TriangularNet net(n);
-  for (int r = 0; r < net.size(); ++r) {
-    const MultiIndex I = TriangularNet::multi_index(n, r);
-    const double u = static_cast<double>(I[0]) / n, v = static_cast<double>(I[1]) / n;
-    net.points().row(r) << u - 0.5 * v, 0.8660254037844386 * v, 0.5 * u * v;
-  }
-  const TriangleMesh mesh = sample_mesh(net, 50);
-  make_output_dir(out_dir);
-  write_surface_files(out_dir, net, mesh);
-  write_json_file(out_dir + "/net.json", net_to_json(net));
-  std::printf("bpde demo: sampled a built-in degree-%d triangular net into %s\n", n, out_dir.c_str());
-  return 0;
+  // The main job: seed 004's Fig. 1 set-up. A unit circle split into three arcs bounds a
+  // degree-6 triangular net; the CMC critical point of D + 2HV at H = -1 on the branch from
+  // the Dirichlet extremal (Newton with the exact Hessian), checked with CGAL.
+  Job job{circle_three_arcs(6), FixedSet::Boundary, {}, 50};
+  job.problem.kind = ProblemKind::CmcH;
+  job.problem.H = -1.0;
+  job.problem.solver = CmcSolver::Newton;
+  const SolveOutcome out = run_job(job);
+  const int status = write_outcome(out_dir, job, out);
+  const Json result = read_json_file(out_dir + "/result.json");
+  const Json& r = result["report"];
+  std::printf("bpde demo: CMC approximation (seed 004 Fig. 1): circle in three arcs, triangular degree 6, H = -1\n");
+  std::printf("  converged           %s (%d Newton iterations, %d continuation steps)\n",
+              r["converged"].get<bool>() ? "yes" : "no", r.value("iterations", 0), r.value("continuation_steps", 0));
+  if (r.contains("message")) std::printf("  message             %s\n", r["message"].get<std::string>().c_str());
+  std::printf("  energy D + 2HV      %.12g\n", r["energy"].is_number() ? r["energy"].get<double>() : NAN);
+  std::printf("  Dirichlet energy D  %.12g\n", r["D"].is_number() ? r["D"].get<double>() : NAN);
+  std::printf("  volume V            %.12g\n", r["volume"].is_number() ? r["volume"].get<double>() : NAN);
+  if (r["mean_curvature"].is_object())
+    std::printf("  mean curvature      min %.6g, max %.6g, mean %.6g (away from the corners)\n",
+                r["mean_curvature"]["min"].get<double>(), r["mean_curvature"]["max"].get<double>(),
+                r["mean_curvature"]["mean"].get<double>());
+  std::printf("  self-intersections  %d\n", r["check"]["self_intersections"].get<int>());
+  std::printf("  files               %s/{result.json, surface.obj, surface.ply, net.obj}\n", out_dir.c_str());
+  return status;
 }
 
 }  // namespace bpde::app

@@ -18,9 +18,6 @@ std::string to_string(ProblemKind k) {
   return "?";
 }
 std::string to_string(PdeMethod m) { return m == PdeMethod::Explicit ? "explicit" : "lu"; }
-std::string to_string(CmcSolverKind s) {
-  return s == CmcSolverKind::Newton ? "newton" : s == CmcSolverKind::Ceres ? "ceres" : "nlopt";
-}
 
 EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_operator) {
   using namespace json_read;
@@ -136,10 +133,9 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     if (hasH == hasV) throw ParseError(path + ": a cmc problem gives exactly one of \"H\" and \"V\"");
     if (j.contains("solver")) {
       const std::string s = string(j["solver"], path + ".solver");
-      if (s == "newton") p.solver = CmcSolverKind::Newton;
-      else if (s == "ceres") p.solver = CmcSolverKind::Ceres;
-      else if (s == "nlopt") p.solver = CmcSolverKind::Nlopt;
-      else throw ParseError(path + ".solver: unknown solver \"" + s + "\" (expected newton, ceres or nlopt)");
+      if (s != "newton" && s != "ceres" && s != "nlopt")
+        throw ParseError(path + ".solver: unknown solver \"" + s + "\" (expected newton, ceres or nlopt)");
+      p.solver = parse_cmc_solver(s);
     }
     if (hasH) {
       p.kind = ProblemKind::CmcH;
@@ -147,8 +143,8 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     } else {
       p.kind = ProblemKind::CmcV;
       p.V = number(j["V"], path + ".V");
-      if (!j.contains("solver")) p.solver = CmcSolverKind::Nlopt;
-      if (p.solver != CmcSolverKind::Nlopt)
+      if (!j.contains("solver")) p.solver = CmcSolver::NLopt;
+      if (p.solver != CmcSolver::NLopt)
         throw UnsupportedProblem(path + ": a cmc problem with \"V\" needs \"solver\": \"nlopt\"");
     }
   } else {

@@ -7,23 +7,22 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "io/json_io.h"
+#include "solvers/cmc.h"
 
 namespace bpde {
 
 enum class ProblemKind { Extremal, Pde, Tetraharmonic, BiharmonicLoad, CmcH, CmcV };
 enum class PdeMethod { Explicit, Lu };
-enum class CmcSolverKind { Newton, Ceres, Nlopt };
 
 std::string to_string(ProblemKind k);
 std::string to_string(PdeMethod m);
-std::string to_string(CmcSolverKind s);
 
 struct Problem {
   ProblemKind kind = ProblemKind::Extremal;
   /// extremal: the energy; pde: the operator (its Euler–Lagrange operator).
   std::optional<EnergySpec> energy;
   PdeMethod method = PdeMethod::Lu;                ///< pde, tetraharmonic (default lu)
-  CmcSolverKind solver = CmcSolverKind::Newton;    ///< cmc (default newton)
+  CmcSolver solver = CmcSolver::Newton;            ///< cmc (default newton)
   double H = 0.0;                                  ///< cmc with "H"
   double V = 0.0;                                  ///< cmc with "V"
 };

@@ -2,6 +2,7 @@
 // report each one writes. The combination of net, fixed set and problem was already checked by
 // io/job.cpp; the solvers check their own preconditions again and throw InvalidInput.
 #include <chrono>
+#include <string>
 
 #include "io/run_job.h"
 
@@ -11,7 +12,11 @@
 #include "checks/mesh_checks.h"
 #include "io/mesh_io.h"
 #include "core/errors.h"
+#include "energies/cmc.h"
 #include "energies/quadratic_energy.h"
+#include "energies/triangular_gram.h"
+#include "energies/volume.h"
+#include "solvers/cmc.h"
 #include "solvers/extremal.h"
 #include "solvers/harmonic_pde.h"
 #include "solvers/pde_explicit.h"
@@ -98,13 +103,57 @@ SolveOutcome tensor_pde(const Job& job, const TensorNet& net) {
   return out;
 }
 
+SolveOutcome triangular_extremal(const Job& job, const TriangularNet& net) {
+  const EnergySpec& e = *job.problem.energy;
+  const auto t0 = std::chrono::steady_clock::now();
+  const ExtremalSolver solver(triangular_gram(net.n(), e), net.fixed_indices(job.fixed));
+  Summary s;
+  const TriangularNet x(net.n(), solver.solve(net.points()));
+  s.residual = solver.reduced_residual(net.points());
+  s.converged = s.residual <= 1e-11;
+  if (!s.converged) s.message = "optimality residual " + std::to_string(s.residual) + " above 1e-11";
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  SolveOutcome out{x, base_report(job, s), Json::object(), s.converged};
+  out.report["energy"] = finite_or_null(solver.extremal_energy(net.points()));
+  out.report["energy_name"] = e.name();
+  return out;
+}
+
+template <class NetT>
+SolveOutcome cmc(const Job& job, const NetT& net) {
+  CmcOptions o;
+  o.fixed = job.fixed;
+  o.solver = job.problem.solver;
+  if (job.problem.kind == ProblemKind::CmcV)
+    o.V = job.problem.V;
+  else
+    o.H = job.problem.H;
+  const CmcResult<NetT> r = solve_cmc(net, o);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["solver"] = to_string(o.solver);
+  out.report["energy"] = finite_or_null(r.DH);
+  out.report["D"] = finite_or_null(r.D);
+  out.report["volume"] = finite_or_null(r.V);
+  out.report["H"] = finite_or_null(r.H);
+  out.report["continuation_steps"] = r.continuation_steps;
+  out.report["iterations"] = r.summary.iterations;
+  out.report["residual"] = finite_or_null(r.summary.residual);
+  return out;
+}
+
 }  // namespace
 
 SolveOutcome run_job(const Job& job) {
   const ProblemKind k = job.problem.kind;
+  const bool is_cmc = k == ProblemKind::CmcH || k == ProblemKind::CmcV;
   if (const auto* t = std::get_if<TensorNet>(&job.net)) {
     if (k == ProblemKind::Extremal) return tensor_extremal(job, *t);
     if (k == ProblemKind::Pde) return tensor_pde(job, *t);
+    if (is_cmc) return cmc(job, *t);
+  }
+  if (const auto* t = std::get_if<TriangularNet>(&job.net)) {
+    if (k == ProblemKind::Extremal) return triangular_extremal(job, *t);
+    if (is_cmc) return cmc(job, *t);
   }
   throw UnsupportedProblem("problem \"" + to_string(k) + "\" on a " + net_kind(job.net) +
                            " net: this solver is not available in this build yet");

@@ -127,7 +127,7 @@ TEST(JsonIo, JobsValidateTheProblemTable) {
   EXPECT_THROW(job_from_json(job(tri(4), {{"kind", "cmc"}, {"V", 1}, {"solver", "newton"}})), UnsupportedProblem);
   EXPECT_THROW(job_from_json(job(tri(4), {{"kind", "cmc"}, {"H", "big"}})), ParseError);
   const Job v = job_from_json(job(tri(4), {{"kind", "cmc"}, {"V", 0.25}}));
-  EXPECT_EQ(v.problem.solver, CmcSolverKind::Nlopt);
+  EXPECT_EQ(v.problem.solver, CmcSolver::NLopt);
 }
 
 TEST(JsonIo, EnergiesAndSingularG) {
