@@ -21,6 +21,7 @@
 // computed (NOTES.md: Example 1 has rank 9, not 12; Example 2 rank 16, not 26).
 //
 // With the prescribed control points X_c moved to the right-hand side, A_f X_f = -A_c X_c is
+// compressed by Householder QR one u-span strip at a time (A itself is never formed) and
 // solved by an SVD (rank-revealing; singular values below rank_tolerance·σ_max count as zero):
 //   - inconsistent data (relative residual of the least-squares solution above
 //     consistency_tolerance): NO solution. The result is converged = false with a message, and
