@@ -14,6 +14,7 @@
 #include "energies/cmc.h"
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
+#include "solvers/bspline_extremal.h"
 #include "solvers/clamped_plate.h"
 #include "solvers/reference_boundaries.h"
 #include "solvers/smoothing_spline.h"
@@ -60,6 +61,10 @@ int cmd_energy(const std::string& net_path, const std::string& energy, std::opti
     const Eigen::MatrixXd Q = triangular_gram(t->n(), spec);
     const Eigen::MatrixX3d& P = t->points();
     std::cout << Json{{"energy", 0.5 * (P.transpose() * Q * P).trace()}}.dump() << "\n";
+    return 0;
+  }
+  if (const auto* b = std::get_if<BSplineNet>(&net)) {
+    std::cout << Json{{"energy", bspline_energy(*b, spec)}}.dump() << "\n";
     return 0;
   }
   throw UnsupportedProblem("energy " + spec.name() + " on a " + net_kind(net) + " net is not available in this build yet");

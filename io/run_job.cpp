@@ -17,6 +17,8 @@
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
 #include "solvers/biharmonic_load.h"
+#include "solvers/bspline_extremal.h"
+#include "solvers/bspline_pde.h"
 #include "solvers/cmc.h"
 #include "solvers/tetraharmonic.h"
 #include "solvers/extremal.h"
@@ -165,6 +167,36 @@ SolveOutcome biharmonic_load(const Job& job, const TensorNet& net) {
   return out;
 }
 
+SolveOutcome bspline_extremal(const Job& job, const BSplineNet& net) {
+  const EnergySpec& e = *job.problem.energy;
+  BSplineExtremalOptions o;
+  o.fixed = job.fixed;
+  const BSplineExtremalResult r = solve_bspline_extremal(net, e, o);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["energy"] = finite_or_null(r.energy);
+  out.report["energy_name"] = e.name();
+  out.report["pde_residual"] = finite_or_null(bspline_pde_residual(r.net, e, job.samples));
+  return out;
+}
+
+SolveOutcome bspline_pde(const Job& job, const BSplineNet& net) {
+  const EnergySpec& e = *job.problem.energy;
+  BSplinePdeOptions o;
+  o.fixed = job.fixed;
+  const BSplinePdeResult r = solve_bspline_pde(net, e, o);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["method"] = "lu";
+  out.report["energy"] = finite_or_null(r.energy);
+  out.report["energy_name"] = e.name();
+  out.report["rank"] = r.rank;
+  out.report["equations"] = r.equations;
+  out.report["free_parameters"] = r.free_parameters;
+  out.report["compatibility_conditions"] = r.compatibility_conditions;
+  out.report["minimum_energy_member"] = r.minimum_energy_member;
+  if (r.summary.converged) out.report["pde_residual"] = finite_or_null(bspline_pde_residual(r.net, e, job.samples));
+  return out;
+}
+
 }  // namespace
 
 SolveOutcome run_job(const Job& job) {
@@ -180,6 +212,10 @@ SolveOutcome run_job(const Job& job) {
   if (const auto* t = std::get_if<TriangularNet>(&job.net)) {
     if (k == ProblemKind::Extremal) return triangular_extremal(job, *t);
     if (is_cmc) return cmc(job, *t);
+  }
+  if (const auto* b = std::get_if<BSplineNet>(&job.net)) {
+    if (k == ProblemKind::Extremal) return bspline_extremal(job, *b);
+    if (k == ProblemKind::Pde) return bspline_pde(job, *b);
   }
   throw UnsupportedProblem("problem \"" + to_string(k) + "\" on a " + net_kind(job.net) +
                            " net: this solver is not available in this build yet");
