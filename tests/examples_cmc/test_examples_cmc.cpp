@@ -163,4 +163,8 @@ TEST(ExamplesCmc, SphereJobsAtDegree8) {
   EXPECT_LT(dq, 2e-5);  // 9.5e-6
   EXPECT_NEAR(mean_H(t), 1.0, 2e-3);
   EXPECT_NEAR(mean_H(q), 1.0, 1e-3);
+  // A conformal unit-sphere patch with inward normal has D = area = −3V, so D_H = D + 2V = −V.
+  EXPECT_LT(num(t.out, "volume"), 0.0);
+  EXPECT_NEAR(num(t.out, "energy"), -num(t.out, "volume"), 1e-5);
+  EXPECT_NEAR(num(q.out, "energy"), -num(q.out, "volume"), 1e-5);
 }
