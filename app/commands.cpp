@@ -14,6 +14,7 @@
 #include "energies/cmc.h"
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
+#include "solvers/clamped_plate.h"
 #include "solvers/reference_boundaries.h"
 #include "solvers/smoothing_spline.h"
 
@@ -76,8 +77,21 @@ int cmd_plate(double aspect, int degree, const std::string& method) {
   if (!std::isfinite(aspect) || !(aspect > 0)) throw ParameterError("--aspect must be a finite number > 0");
   if (method != "admissible-load" && method != "ritz")
     throw ParseError("--method must be admissible-load or ritz, got \"" + method + "\"");
-  (void)degree;
-  throw UnsupportedProblem("bpde plate is not available in this build yet");
+  ClampedPlateOptions o;
+  o.aspect = aspect;
+  o.degree = degree;
+  o.method = parse_plate_method(method);
+  const ClampedPlateResult r = solve_clamped_plate(o);
+  Json j = {{"center_deflection", r.center_deflection},
+            {"energy", r.energy},
+            {"aspect", aspect},
+            {"degree", degree},
+            {"method", method},
+            {"converged", r.summary.converged},
+            {"seconds", r.summary.seconds}};
+  if (!r.summary.message.empty()) j["message"] = r.summary.message;
+  std::cout << j.dump() << "\n";
+  return r.summary.converged ? 0 : 1;
 }
 
 int cmd_blend(const std::string& config_path, const std::string& out_dir) {

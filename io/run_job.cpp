@@ -16,7 +16,9 @@
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
+#include "solvers/biharmonic_load.h"
 #include "solvers/cmc.h"
+#include "solvers/tetraharmonic.h"
 #include "solvers/extremal.h"
 #include "solvers/harmonic_pde.h"
 #include "solvers/pde_explicit.h"
@@ -41,31 +43,28 @@ Json check_report_impl(const TriangleMesh& mesh) {
 }
 
 // (see io/run_job.h)
-// {min, max, mean} of H over the sample grid, leaving out samples within parameter distance
-// 0.1 (relative to the domain) of a corner, where a circle split into arcs is nearly singular.
-Json mean_curvature_stats_impl(const Net& net, const TriangleMesh& mesh, int N) {
-  std::vector<double> vals;
-  auto add = [&](double du, double dv, Eigen::Index k, const std::vector<std::pair<double, double>>& corners) {
-    for (auto [cu, cv] : corners)
-      if (std::hypot(du - cu, dv - cv) < 0.1) return;
-    vals.push_back(mesh.H(k));
-  };
-  if (std::holds_alternative<TriangularNet>(net)) {
-    const Eigen::MatrixX2d uv = triangular_sample_parameters(N);
-    for (Eigen::Index k = 0; k < uv.rows(); ++k) add(uv(k, 0), uv(k, 1), k, {{0, 0}, {1, 0}, {0, 1}});
-  } else {
-    for (int a = 0; a <= N; ++a)
-      for (int b = 0; b <= N; ++b)
-        add(static_cast<double>(a) / N, static_cast<double>(b) / N, a * (N + 1) + b, {{0, 0}, {1, 0}, {0, 1}, {1, 1}});
-  }
-  if (vals.empty()) return nullptr;
-  double mn = vals[0], mx = vals[0], sum = 0;
-  for (double v : vals) {
-    mn = std::min(mn, v);
-    mx = std::max(mx, v);
-    sum += v;
-  }
-  return {{"min", mn}, {"max", mx}, {"mean", sum / static_cast<double>(vals.size())}};
+Json stats_json(const MeanCurvatureStats& st) {
+  if (st.count == 0) return nullptr;
+  return {{"min", st.min}, {"max", st.max}, {"mean", st.mean}, {"count", st.count}};
+}
+
+// B-spline surfaces (blends): the tensor rule of energies/cmc.h (leave out samples with both
+// parameters within 0.1 of the domain's ends) applied to the already sampled mesh.
+Json bspline_stats(const TriangleMesh& mesh, int N) {
+  MeanCurvatureStats st;
+  double sum = 0;
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N; ++b) {
+      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+      if (std::min(u, 1 - u) < 0.1 - 1e-12 && std::min(v, 1 - v) < 0.1 - 1e-12) continue;
+      const double h = mesh.H(a * (N + 1) + b);
+      st.min = st.count ? std::min(st.min, h) : h;
+      st.max = st.count ? std::max(st.max, h) : h;
+      sum += h;
+      ++st.count;
+    }
+  if (st.count) st.mean = sum / st.count;
+  return stats_json(st);
 }
 
 Json base_report(const Job& job, const Summary& s) {
@@ -141,6 +140,31 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   return out;
 }
 
+// Δ⁴ = (∂²u + ∂²v)⁴ as PDE terms {du, dv, coefficient} for the residual report.
+std::vector<PdeTerm> tetraharmonic_terms() {
+  return {{8, 0, 1.0}, {6, 2, 4.0}, {4, 4, 6.0}, {2, 6, 4.0}, {0, 8, 1.0}};
+}
+
+SolveOutcome tetraharmonic(const Job& job, const TensorNet& net) {
+  TetraharmonicOptions o;
+  o.method = job.problem.method == PdeMethod::Explicit ? TetraharmonicOptions::Method::Explicit
+                                                        : TetraharmonicOptions::Method::LU;
+  const TetraharmonicResult r = solve_tetraharmonic(net, o);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["method"] = to_string(job.problem.method);
+  out.report["energy"] = nullptr;
+  out.report["pde_residual"] = finite_or_null(pde_residual(r.net, tetraharmonic_terms(), job.samples));
+  return out;
+}
+
+SolveOutcome biharmonic_load(const Job& job, const TensorNet& net) {
+  const BiharmonicLoadResult r = solve_biharmonic_load(net);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["energy"] = nullptr;
+  out.extra["load"] = net_to_json(r.load);
+  return out;
+}
+
 }  // namespace
 
 SolveOutcome run_job(const Job& job) {
@@ -150,6 +174,8 @@ SolveOutcome run_job(const Job& job) {
     if (k == ProblemKind::Extremal) return tensor_extremal(job, *t);
     if (k == ProblemKind::Pde) return tensor_pde(job, *t);
     if (is_cmc) return cmc(job, *t);
+    if (k == ProblemKind::Tetraharmonic) return tetraharmonic(job, *t);
+    if (k == ProblemKind::BiharmonicLoad) return biharmonic_load(job, *t);
   }
   if (const auto* t = std::get_if<TriangularNet>(&job.net)) {
     if (k == ProblemKind::Extremal) return triangular_extremal(job, *t);
@@ -166,7 +192,9 @@ void make_output_dir(const std::string& dir) {
 }
 
 Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
-  return mean_curvature_stats_impl(net, mesh, samples);
+  if (const auto* t = std::get_if<TensorNet>(&net)) return stats_json(bpde::mean_curvature_stats(*t, samples, 0.1));
+  if (const auto* t = std::get_if<TriangularNet>(&net)) return stats_json(bpde::mean_curvature_stats(*t, samples, 0.1));
+  return bspline_stats(mesh, samples);
 }
 
 Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }

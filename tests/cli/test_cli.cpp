@@ -135,3 +135,74 @@ TEST(Cli, HarmonicEvenDegreeIncompatibleDataExitsOne) {
   EXPECT_NE(res.find("\"converged\": false"), std::string::npos);
   EXPECT_NE(res.find("\"message\""), std::string::npos);
 }
+
+TEST(Cli, EnergyCheckAndCmc) {
+  // z = u v over [0,1]^2 as a degree-(1,1) net: Dirichlet energy 1/2 int (1 + v^2) + (1 + u^2) = 4/3;
+  // coons energy 1/2 int |x_uv|^2 = 1/2.
+  const fs::path net = write("saddle.json", kTensor);
+  CmdResult r = run("energy " + net.string() + " --energy dirichlet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(std::stod(r.out.substr(r.out.find(':') + 1)), 4.0 / 3.0, 1e-12) << r.out;
+  r = run("energy " + net.string() + " --energy coons");
+  EXPECT_NEAR(std::stod(r.out.substr(r.out.find(':') + 1)), 0.5, 1e-12) << r.out;
+  // V = 1/3 int <x_u ^ x_v, x> for (u, v, uv): x_u ^ x_v = (-v, -u, 1), <., x> = -uv - uv + uv = -uv,
+  // so V = -1/12.
+  r = run("energy " + net.string() + " --energy cmc --H 0.5");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"V\""), std::string::npos);
+  const double V = std::stod(r.out.substr(r.out.find("\"V\":") + 4));
+  EXPECT_NEAR(V, -1.0 / 12.0, 1e-12) << r.out;
+  expect_bad_input("energy " + net.string() + " --energy cmc", "--H");
+  expect_bad_input("energy " + net.string() + " --energy thin-plate", "unknown energy");
+  r = run("check " + net.string() + " --samples 8");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"self_intersections\":0"), std::string::npos) << r.out;
+}
+
+TEST(Cli, CmcPastTheFoldExitsOneWithTheDocumentedMessage) {
+  const fs::path out = tmpdir() / "fold";
+  // the circle in three arcs at degree 6 folds near |H| = 1.14 (docs/cmc.md)
+  const CmdResult demo = run("demo --out " + (tmpdir() / "demo").string());
+  ASSERT_EQ(demo.status, 0) << demo.err;
+  const std::string res = slurp_file(tmpdir() / "demo" / "result.json");
+  const auto p = res.find("\"net\"");
+  ASSERT_NE(p, std::string::npos);
+  // reuse the demo's net as the data of a job with H far past the fold
+  std::string job = "{\"net\": " + res.substr(res.find('{', p), res.find('}', p) - res.find('{', p) + 1) +
+                    ", \"problem\": {\"kind\": \"cmc\", \"H\": -5}}";
+  const CmdResult r = run("solve " + write("fold.json", job).string() + " --out " + out.string());
+  EXPECT_EQ(r.status, 1) << r.err;
+  const std::string fold = slurp_file(out / "result.json");
+  EXPECT_NE(fold.find("no critical point on the branch from H = 0 beyond H"), std::string::npos) << fold.substr(0, 400);
+  EXPECT_NE(fold.find("\"converged\": false"), std::string::npos);
+}
+
+TEST(Cli, PlateReproducesThePaperAndTetraharmonicJobsRun) {
+  CmdResult r = run("plate --aspect 1 --degree 11 --method admissible-load");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double w = std::stod(r.out.substr(r.out.find("\"center_deflection\":") + 20));
+  EXPECT_NEAR(w, 0.00126654, 5e-9);  // seed 000, n = 11, square: every printed digit
+  expect_bad_input("plate --aspect 1 --degree 3 --method ritz", "degree");
+  expect_bad_input("plate --aspect 1 --degree 8 --method fem", "method");
+  // C1 data from z = u^2 v^2 (degree 4, tetraharmonic and biharmonic-load jobs)
+  std::ostringstream pts;
+  pts.precision(17);
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      // Bernstein coefficients of u^2 at degree 4: i(i-1)/12
+      const double z = (i * (i - 1) / 12.0) * (j * (j - 1) / 12.0);
+      pts << (i + j == 0 ? "" : ",") << "[" << i / 4.0 << "," << j / 4.0 << "," << z << "]";
+    }
+  const std::string net = R"({"type": "tensor", "degree": [4, 4], "points": [)" + pts.str() + "]}";
+  for (const char* kind : {"tetraharmonic", "biharmonic-load"}) {
+    const std::string job = "{\"net\": " + net + ", \"fixed\": \"boundary+adjacent\", \"problem\": {\"kind\": \"" + kind + "\"}}";
+    const fs::path out = tmpdir() / kind;
+    r = run("solve " + write(std::string(kind) + ".json", job).string() + " --out " + out.string());
+    EXPECT_EQ(r.status, 0) << kind << r.err;
+    const std::string res = slurp_file(out / "result.json");
+    EXPECT_NE(res.find("\"energy\": null"), std::string::npos) << kind;
+    if (std::string(kind) == "biharmonic-load") {
+      EXPECT_NE(res.find("\"load\""), std::string::npos);
+    }
+  }
+}
