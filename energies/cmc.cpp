@@ -9,6 +9,7 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/kron.h"
 #include "energies/triangular_gram.h"
 #include "tensor/tensor_net.h"
 #include "triangular/triangular_net.h"
@@ -17,13 +18,6 @@ namespace bpde {
 namespace {
 
 // kron(A, B) for the tensor index i*(m+1) + j.
-Eigen::MatrixXd kron(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
-  Eigen::MatrixXd K(A.rows() * B.rows(), A.cols() * B.cols());
-  for (Eigen::Index i = 0; i < A.rows(); ++i)
-    for (Eigen::Index k = 0; k < A.cols(); ++k)
-      K.block(i * B.rows(), k * B.cols(), B.rows(), B.cols()) = A(i, k) * B;
-  return K;
-}
 
 }  // namespace
 

@@ -11,6 +11,8 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/kron.h"
+#include "core/quad_bernstein.h"
 #include "core/quadrature.h"
 #include "solvers/biharmonic_load.h"
 
@@ -19,12 +21,6 @@ namespace {
 
 using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-Eigen::MatrixXd kron(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
-  Eigen::MatrixXd K(A.rows() * B.rows(), A.cols() * B.cols());
-  for (Eigen::Index i = 0; i < A.rows(); ++i)
-    for (Eigen::Index j = 0; j < A.cols(); ++j) K.block(i * B.rows(), j * B.cols(), B.rows(), B.cols()) = A(i, j) * B;
-  return K;
-}
 
 // The deflection net (u_i, a v_j, W_ij) from the (n+1) x (n+1) scalar net W.
 TensorNet deflection_net(const Eigen::MatrixXd& W, double a) {
@@ -186,31 +182,9 @@ ClampedPlateResult ritz(int n, double a) {
 // (__float128, 113-bit mantissa): about 1e-20 relative at n = 30. Restricted to the nets that are
 // symmetric under i -> n-i and j -> n-j (the problem is, and its solution is unique), which
 // leaves (floor(n/2) - 1)^2 unknowns.
-using quad = __float128;
 
 quad qabs(quad x) { return x < 0 ? -x : x; }
 
-quad qbinom(int n, int k) {
-  if (k < 0 || k > n) return 0;
-  quad r = 1;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;  // exact: every partial product is an integer
-  return r;
-}
-
-// (n+1) x (n+1) matrix T_d = elevation(n-d -> n) * derivative(n -> n-d), row-major, in quad.
-std::vector<quad> qderivative_at_degree(int n, int d) {
-  std::vector<quad> D(static_cast<size_t>((n - d + 1) * (n + 1)), 0), T(static_cast<size_t>((n + 1) * (n + 1)), 0);
-  quad s = 1;
-  for (int k = 0; k < d; ++k) s *= (n - k);
-  for (int j = 0; j <= n - d; ++j)
-    for (int k = 0; k <= d; ++k) D[static_cast<size_t>(j * (n + 1) + j + k)] = s * ((d - k) % 2 ? -1 : 1) * qbinom(d, k);
-  for (int r = 0; r <= n; ++r)
-    for (int i = std::max(0, r - d); i <= std::min(r, n - d); ++i) {
-      const quad e = qbinom(n - d, i) * qbinom(d, r - i) / qbinom(n, r);
-      for (int c = 0; c <= n; ++c) T[static_cast<size_t>(r * (n + 1) + c)] += e * D[static_cast<size_t>(i * (n + 1) + c)];
-    }
-  return T;
-}
 
 // Solve A x = b (N x N, row-major) by Gaussian elimination with partial pivoting, in quad.
 // Returns false if a pivot is exactly zero.

@@ -13,6 +13,8 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/kron.h"
+#include "core/quad_bernstein.h"
 #include "solvers/biharmonic_load.h"
 #include "tensor/power_basis.h"
 
@@ -22,12 +24,6 @@ namespace {
 using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 constexpr double kBinom4[5] = {1.0, 4.0, 6.0, 4.0, 1.0};
 
-Eigen::MatrixXd kron(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
-  Eigen::MatrixXd K(A.rows() * B.rows(), A.cols() * B.cols());
-  for (Eigen::Index i = 0; i < A.rows(); ++i)
-    for (Eigen::Index j = 0; j < A.cols(); ++j) K.block(i * B.rows(), j * B.cols(), B.rows(), B.cols()) = A(i, j) * B;
-  return K;
-}
 
 void check_data(const TensorNet& data) {
   if (data.n() != data.m())
@@ -48,32 +44,8 @@ void check_data(const TensorNet& data) {
 // The Bernstein least-squares matrix is ill-conditioned (cond(A_I) ~ 3e6 at n = 12, 3e10 at
 // n = 16, 5e13 at n = 20), so a double QR loses up to 1e-3 relative in G. We factor in long double
 // (64-bit mantissa) and refine G with residuals computed in binary128 from exact matrix entries.
-using quad = __float128;
 using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
 
-quad qbinom(int n, int k) {
-  if (k < 0 || k > n) return 0;
-  quad r = 1;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
-
-// T_d = elevation(n-d -> n) * derivative(n -> n-d) in quad, (n+1) x (n+1) row-major; zero if d > n.
-std::vector<quad> qderivative_at_degree(int n, int d) {
-  std::vector<quad> T(static_cast<size_t>((n + 1) * (n + 1)), 0);
-  if (d > n) return T;
-  std::vector<quad> D(static_cast<size_t>((n - d + 1) * (n + 1)), 0);
-  quad s = 1;
-  for (int k = 0; k < d; ++k) s *= (n - k);
-  for (int j = 0; j <= n - d; ++j)
-    for (int k = 0; k <= d; ++k) D[static_cast<size_t>(j * (n + 1) + j + k)] = s * ((d - k) % 2 ? -1 : 1) * qbinom(d, k);
-  for (int r = 0; r <= n; ++r)
-    for (int i = std::max(0, r - d); i <= std::min(r, n - d); ++i) {
-      const quad e = qbinom(n - d, i) * qbinom(d, r - i) / qbinom(n, r);
-      for (int c = 0; c <= n; ++c) T[static_cast<size_t>(r * (n + 1) + c)] += e * D[static_cast<size_t>(i * (n + 1) + c)];
-    }
-  return T;
-}
 
 struct LuSolver {
   std::vector<int> interior, fixed;
