@@ -22,6 +22,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "configurations.h"
 #include "io/json_io.h"
@@ -53,6 +54,84 @@ double sphere_distance(const bpde::TensorNet& net) {
   for (int a = 0; a <= 200; ++a)
     for (int b = 0; b <= 200; ++b) d = std::max(d, std::abs(net.evaluate(a / 200.0, b / 200.0).norm() - 1));
   return d;
+}
+
+int self_intersections(const bpde::TensorNet& net) {
+  return bpde::check_report(bpde::sample_net(net, 50))["self_intersections"].get<int>();
+}
+
+// How the paper's qualitative claims depend on the choices it leaves open (README "Sensitivity").
+void sensitivity() {
+  const int n = c1ex::kDegree;
+  constexpr double pi = std::numbers::pi;
+  std::printf("\n### Fig. VI: which piece of the sphere (paper: 0.00822637 / 0.0141973)\n\n");
+  std::printf("| piece (degree-7 Chebyshev–Lobatto interpolant, outer two rings) | data | biharmonic-load | tetraharmonic |\n|---|---|---|---|\n");
+  auto sphere_row = [&](const char* name, auto f) {
+    const bpde::TensorNet full = c1ex::interpolate_tensor(n, f);
+    std::printf("| %s | %.1e | %.5f | %.5f |\n", name, sphere_distance(full),
+                sphere_distance(bpde::solve_biharmonic_load(full).net), sphere_distance(bpde::solve_tetraharmonic(full).net));
+  };
+  for (double a : {0.45, 0.5, 0.52}) {
+    char name[96];
+    std::snprintf(name, sizeof name, "graph (x, y, √(1−x²−y²)) over [−%.2f, %.2f]²%s", a, a, a == 0.5 ? " (used)" : "");
+    sphere_row(name, [a](double u, double v) {
+      const double x = a * (2 * u - 1), y = a * (2 * v - 1);
+      return Eigen::Vector3d(x, y, std::sqrt(1 - x * x - y * y));
+    });
+  }
+  sphere_row("longitude–latitude over [−π/4, π/4]²", [pi](double u, double v) {
+    const double l = pi / 2 * (u - 0.5), p = pi / 2 * (v - 0.5);
+    return Eigen::Vector3d(std::cos(p) * std::cos(l), std::cos(p) * std::sin(l), std::sin(p));
+  });
+  sphere_row("inverse stereographic over [−½, ½]²", [](double u, double v) -> Eigen::Vector3d {
+    const double s = u - 0.5, t = v - 0.5, r2 = s * s + t * t;
+    return Eigen::Vector3d(2 * s, 2 * t, r2 - 1) / (1 + r2);
+  });
+
+  std::printf("\n### Fig. IX row 3: the outward shift δ of the adjacent ring\n\n");
+  std::printf("| adjacent ring | self-int biharmonic-load | self-int tetraharmonic | z(½,½) biharmonic-load | z(½,½) tetraharmonic |\n|---|---|---|---|---|\n");
+  for (double d : {-0.1, -0.25, -0.5}) {
+    const bpde::TensorNet data = c1ex::arch2_with_shift(n, d);
+    const auto bl = bpde::solve_biharmonic_load(data).net;
+    const auto th = bpde::solve_tetraharmonic(data).net;
+    std::printf("| towards the origin, δ = %.2f%s | %d | %d | %.3f | %.3f |\n", d, d == -0.25 ? " (used)" : "",
+                self_intersections(bl), self_intersections(th), bl.evaluate(0.5, 0.5).z(), th.evaluate(0.5, 0.5).z());
+  }
+  {  // the other reading: a purely horizontal shift perpendicular to each side
+    const bpde::TensorNet ref = c1ex::arch2_with_shift(n, 0.0);
+    const double d = -0.25;
+    const bpde::TensorNet data = c1ex::rings_from(n, [&](int i, int j) -> Eigen::Vector3d {
+      if (c1ex::on_boundary(i, j, n)) return ref.point(i, j);
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      int count = 0;
+      if (j == 1) { sum += ref.point(i, 0) + Eigen::Vector3d(0, d, 0); ++count; }
+      if (j == n - 1) { sum += ref.point(i, n) - Eigen::Vector3d(0, d, 0); ++count; }
+      if (i == 1) { sum += ref.point(0, j) + Eigen::Vector3d(d, 0, 0); ++count; }
+      if (i == n - 1) { sum += ref.point(n, j) - Eigen::Vector3d(d, 0, 0); ++count; }
+      return sum / count;
+    });
+    const auto bl = bpde::solve_biharmonic_load(data).net;
+    const auto th = bpde::solve_tetraharmonic(data).net;
+    std::printf("| horizontally, perpendicular to each side, δ = %.2f | %d | %d | %.3f | %.3f |\n", d,
+                self_intersections(bl), self_intersections(th), bl.evaluate(0.5, 0.5).z(), th.evaluate(0.5, 0.5).z());
+  }
+
+  std::printf("\n### Fig. V: which adjacent points are lowered (by 0.5)\n\n");
+  std::printf("| lowered | z(½,½) biharmonic-load | z(½,½) tetraharmonic |\n|---|---|---|\n");
+  auto cyl_row = [&](const char* name, auto lowered) {
+    const bpde::TensorNet data = c1ex::rings_from(n, [&](int i, int j) -> Eigen::Vector3d {
+      Eigen::Vector3d p(-c1ex::ck(i, n), 2.0 * j / n - 1, c1ex::sk(i, n));
+      if (!c1ex::on_boundary(i, j, n) && lowered(i, j)) p.z() -= 0.5;
+      return p;
+    });
+    std::printf("| %s | %.3f | %.3f |\n", name, bpde::solve_biharmonic_load(data).net.evaluate(0.5, 0.5).z(),
+                bpde::solve_tetraharmonic(data).net.evaluate(0.5, 0.5).z());
+  };
+  cyl_row("none (Fig. IV)", [](int, int) { return false; });
+  cyl_row("next to the circular arcs, j = 1, n−1, 2 ≤ i ≤ n−2 (used)",
+          [n](int i, int j) { return (j == 1 || j == n - 1) && i >= 2 && i <= n - 2; });
+  cyl_row("next to the straight sides, i = 1, n−1", [n](int i, int) { return i == 1 || i == n - 1; });
+  cyl_row("the whole adjacent ring", [](int, int) { return true; });
 }
 
 }  // namespace
@@ -116,5 +195,6 @@ int main(int argc, char** argv) {
   // The data itself for Fig. VI: the full degree-7 interpolant of the sphere piece.
   std::printf("\nFig. VI data: the full degree-7 interpolant is within %.2e of the unit sphere.\n",
               sphere_distance(c1ex::interpolate_tensor(c1ex::kDegree, c1ex::sphere_piece)));
+  sensitivity();
   return 0;
 }
