@@ -14,6 +14,7 @@
 #include "energies/cmc.h"
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
+#include "solvers/bspline_extremal.h"
 #include "solvers/clamped_plate.h"
 #include "solvers/reference_boundaries.h"
 #include "solvers/smoothing_spline.h"
@@ -36,6 +37,17 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
   return 0;
 }
 
+namespace {
+
+// Energies of nets with huge coordinates overflow; say so instead of printing null.
+double finite_energy(double x, const char* what) {
+  if (!std::isfinite(x))
+    throw NonFiniteError(std::string(what) + " overflows: the net's coordinates are too large");
+  return x;
+}
+
+}  // namespace
+
 int cmd_energy(const std::string& net_path, const std::string& energy, std::optional<double> H) {
   const Net net = read_net_file(net_path);
   if (H && !std::isfinite(*H)) throw NonFiniteError("--H is not finite");
@@ -48,18 +60,22 @@ int cmd_energy(const std::string& net_path, const std::string& energy, std::opti
       e = cmc_energies(*tr, *H);
     else
       throw UnsupportedProblem("energy cmc needs a triangular or tensor net, not a " + net_kind(net) + " net");
-    std::cout << Json{{"D", e.D}, {"V", e.V}, {"DH", e.DH}}.dump() << "\n";
+    std::cout << Json{{"D", finite_energy(e.D, "D")}, {"V", finite_energy(e.V, "V")}, {"DH", finite_energy(e.DH, "D + 2HV")}}.dump() << "\n";
     return 0;
   }
   const EnergySpec spec = energy_from_argument(energy);
   if (const auto* t = std::get_if<TensorNet>(&net)) {
-    std::cout << Json{{"energy", energy_value(*t, spec)}}.dump() << "\n";
+    std::cout << Json{{"energy", finite_energy(energy_value(*t, spec), "the energy")}}.dump() << "\n";
     return 0;
   }
   if (const auto* t = std::get_if<TriangularNet>(&net)) {
     const Eigen::MatrixXd Q = triangular_gram(t->n(), spec);
     const Eigen::MatrixX3d& P = t->points();
-    std::cout << Json{{"energy", 0.5 * (P.transpose() * Q * P).trace()}}.dump() << "\n";
+    std::cout << Json{{"energy", finite_energy(0.5 * (P.transpose() * Q * P).trace(), "the energy")}}.dump() << "\n";
+    return 0;
+  }
+  if (const auto* b = std::get_if<BSplineNet>(&net)) {
+    std::cout << Json{{"energy", finite_energy(bspline_energy(*b, spec), "the energy")}}.dump() << "\n";
     return 0;
   }
   throw UnsupportedProblem("energy " + spec.name() + " on a " + net_kind(net) + " net is not available in this build yet");

@@ -198,8 +198,8 @@ void validate_combination(const Job& job, const std::string& src) {
         fail("problem \"pde\" on a bspline net has no explicit method; use \"method\": \"lu\"");
       if (e.order() == 4 && fx != FixedSet::Boundary)
         fail("a fourth-order pde (" + e.name() + ") takes \"fixed\": \"boundary\"");
-      if (e.order() == 2 && !(kind == "tensor" && fx == FixedSet::UBoundaries))
-        fail("a second-order pde (" + e.name() + ") takes a tensor net with \"fixed\": \"u-boundaries\"");
+      if (e.order() == 2 && fx != FixedSet::UBoundaries)
+        fail("a second-order pde (" + e.name() + ") takes \"fixed\": \"u-boundaries\"");
       if (e.order() == 2 && job.problem.method == PdeMethod::Explicit)
         fail("the second-order pde has no explicit method in seed 001; use \"method\": \"lu\"");
       if (e.order() == 4 && job.problem.method == PdeMethod::Explicit && !e.has_explicit_solution())

@@ -17,6 +17,8 @@
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
 #include "solvers/biharmonic_load.h"
+#include "solvers/bspline_extremal.h"
+#include "solvers/bspline_pde.h"
 #include "solvers/cmc.h"
 #include "solvers/tetraharmonic.h"
 #include "solvers/extremal.h"
@@ -43,31 +45,28 @@ Json check_report_impl(const TriangleMesh& mesh) {
 }
 
 // (see io/run_job.h)
-// {min, max, mean} of H over the sample grid, leaving out samples within parameter distance
-// 0.1 (relative to the domain) of a corner, where a circle split into arcs is nearly singular.
-Json mean_curvature_stats_impl(const Net& net, const TriangleMesh& mesh, int N) {
-  std::vector<double> vals;
-  auto add = [&](double du, double dv, Eigen::Index k, const std::vector<std::pair<double, double>>& corners) {
-    for (auto [cu, cv] : corners)
-      if (std::hypot(du - cu, dv - cv) < 0.1) return;
-    vals.push_back(mesh.H(k));
-  };
-  if (std::holds_alternative<TriangularNet>(net)) {
-    const Eigen::MatrixX2d uv = triangular_sample_parameters(N);
-    for (Eigen::Index k = 0; k < uv.rows(); ++k) add(uv(k, 0), uv(k, 1), k, {{0, 0}, {1, 0}, {0, 1}});
-  } else {
-    for (int a = 0; a <= N; ++a)
-      for (int b = 0; b <= N; ++b)
-        add(static_cast<double>(a) / N, static_cast<double>(b) / N, a * (N + 1) + b, {{0, 0}, {1, 0}, {0, 1}, {1, 1}});
-  }
-  if (vals.empty()) return nullptr;
-  double mn = vals[0], mx = vals[0], sum = 0;
-  for (double v : vals) {
-    mn = std::min(mn, v);
-    mx = std::max(mx, v);
-    sum += v;
-  }
-  return {{"min", mn}, {"max", mx}, {"mean", sum / static_cast<double>(vals.size())}};
+Json stats_json(const MeanCurvatureStats& st) {
+  if (st.count == 0) return nullptr;
+  return {{"min", st.min}, {"max", st.max}, {"mean", st.mean}, {"count", st.count}};
+}
+
+// B-spline surfaces (blends): the tensor rule of energies/cmc.h (leave out samples with both
+// parameters within 0.1 of the domain's ends) applied to the already sampled mesh.
+Json bspline_stats(const TriangleMesh& mesh, int N) {
+  MeanCurvatureStats st;
+  double sum = 0;
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N; ++b) {
+      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+      if (std::min(u, 1 - u) < 0.1 - 1e-12 && std::min(v, 1 - v) < 0.1 - 1e-12) continue;
+      const double h = mesh.H(a * (N + 1) + b);
+      st.min = st.count ? std::min(st.min, h) : h;
+      st.max = st.count ? std::max(st.max, h) : h;
+      sum += h;
+      ++st.count;
+    }
+  if (st.count) st.mean = sum / st.count;
+  return stats_json(st);
 }
 
 Json base_report(const Job& job, const Summary& s) {
@@ -168,6 +167,36 @@ SolveOutcome biharmonic_load(const Job& job, const TensorNet& net) {
   return out;
 }
 
+SolveOutcome bspline_extremal(const Job& job, const BSplineNet& net) {
+  const EnergySpec& e = *job.problem.energy;
+  BSplineExtremalOptions o;
+  o.fixed = job.fixed;
+  const BSplineExtremalResult r = solve_bspline_extremal(net, e, o);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["energy"] = finite_or_null(r.energy);
+  out.report["energy_name"] = e.name();
+  out.report["pde_residual"] = finite_or_null(bspline_pde_residual(r.net, e, job.samples));
+  return out;
+}
+
+SolveOutcome bspline_pde(const Job& job, const BSplineNet& net) {
+  const EnergySpec& e = *job.problem.energy;
+  BSplinePdeOptions o;
+  o.fixed = job.fixed;
+  const BSplinePdeResult r = solve_bspline_pde(net, e, o);
+  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  out.report["method"] = "lu";
+  out.report["energy"] = finite_or_null(r.energy);
+  out.report["energy_name"] = e.name();
+  out.report["rank"] = r.rank;
+  out.report["equations"] = r.equations;
+  out.report["free_parameters"] = r.free_parameters;
+  out.report["compatibility_conditions"] = r.compatibility_conditions;
+  out.report["minimum_energy_member"] = r.minimum_energy_member;
+  if (r.summary.converged) out.report["pde_residual"] = finite_or_null(bspline_pde_residual(r.net, e, job.samples));
+  return out;
+}
+
 }  // namespace
 
 SolveOutcome run_job(const Job& job) {
@@ -184,6 +213,10 @@ SolveOutcome run_job(const Job& job) {
     if (k == ProblemKind::Extremal) return triangular_extremal(job, *t);
     if (is_cmc) return cmc(job, *t);
   }
+  if (const auto* b = std::get_if<BSplineNet>(&job.net)) {
+    if (k == ProblemKind::Extremal) return bspline_extremal(job, *b);
+    if (k == ProblemKind::Pde) return bspline_pde(job, *b);
+  }
   throw UnsupportedProblem("problem \"" + to_string(k) + "\" on a " + net_kind(job.net) +
                            " net: this solver is not available in this build yet");
 }
@@ -195,7 +228,9 @@ void make_output_dir(const std::string& dir) {
 }
 
 Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
-  return mean_curvature_stats_impl(net, mesh, samples);
+  if (const auto* t = std::get_if<TensorNet>(&net)) return stats_json(bpde::mean_curvature_stats(*t, samples, 0.1));
+  if (const auto* t = std::get_if<TriangularNet>(&net)) return stats_json(bpde::mean_curvature_stats(*t, samples, 0.1));
+  return bspline_stats(mesh, samples);
 }
 
 Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }

@@ -25,8 +25,9 @@ struct SolveOutcome {
 /// without a solution returns converged = false with report["message"].
 SolveOutcome run_job(const Job& job);
 
-/// Mean-curvature statistics {min, max, mean} of a sampled net, leaving out samples within
-/// parameter distance 0.1 of a corner (nearly singular for a circle split into arcs).
+/// Mean-curvature statistics {min, max, mean, count} of a sampled net, away from the corners
+/// (energies/cmc.h mean_curvature_stats with corner margin 0.1; corners of a circle split into
+/// arcs are nearly singular), null when no sample qualifies.
 Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples);
 /// The object `bpde check` prints for a mesh (CGAL figures).
 Json check_report(const TriangleMesh& mesh);

@@ -120,6 +120,8 @@ BSplineNet::BSplineNet(int p, int q, std::vector<double> U, std::vector<double> 
                              " is not finite");
 }
 
+void BSplineNet::validate_knots(int k, const std::vector<double>& K, const char* dir) { check_knots(k, K, dir); }
+
 Eigen::MatrixXd BSplineNet::basis_table(int k, const std::vector<double>& K, const Eigen::VectorXd& t, int d) {
   const int count = static_cast<int>(K.size()) - k - 1;
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(t.size(), count);

@@ -42,6 +42,10 @@ class BSplineNet {
   SurfaceJet jet(double u, double v) const;
   FundamentalForms geometry(double u, double v) const;
 
+  /// The knot-vector checks of the constructor for one direction (degree k, knots K; dir names it
+  /// in messages, e.g. "u"): DegreeError, NonFiniteError, SizeError, ParameterError.
+  static void validate_knots(int k, const std::vector<double>& K, const char* dir);
+
   /// #t by n_basis table of the d-th derivatives of the basis functions (Piegl–Tiller A2.3) of
   /// one direction: knots K, degree k.
   static Eigen::MatrixXd basis_table(int k, const std::vector<double>& K, const Eigen::VectorXd& t, int d = 0);

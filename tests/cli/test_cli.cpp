@@ -206,3 +206,30 @@ TEST(Cli, PlateReproducesThePaperAndTetraharmonicJobsRun) {
     }
   }
 }
+
+TEST(Cli, BSplineJobs) {
+  // biquintic, 2 x 2 spans (knots 0^6 0.5 1^6): 7 x 7 control points from a wavy boundary.
+  std::ostringstream pts;
+  pts.precision(17);
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j)
+      pts << (i + j == 0 ? "" : ",") << "[" << i / 6.0 << "," << j / 6.0 << "," << 0.1 * ((i * 7 + j * 3) % 5) << "]";
+  const std::string net = R"({"type": "bspline", "degree": [5, 5], "knots": [[0,0,0,0,0,0,0.5,1,1,1,1,1,1],[0,0,0,0,0,0,0.5,1,1,1,1,1,1]], "points": [)" +
+                          pts.str() + "]}";
+  // the extremal exists for any boundary
+  CmdResult r = run("solve " + write("bs_ext.json", "{\"net\": " + net + R"(, "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}})").string() +
+                    " --out " + (tmpdir() / "bs_ext").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  // generic data on a multi-span net admit no spline solution of the biharmonic PDE (NOTES.md): exit 1
+  r = run("solve " + write("bs_pde.json", "{\"net\": " + net + R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})").string() +
+          " --out " + (tmpdir() / "bs_pde").string());
+  EXPECT_EQ(r.status, 1) << r.err;
+  const std::string res = slurp_file(tmpdir() / "bs_pde" / "result.json");
+  EXPECT_NE(res.find("\"rank\""), std::string::npos);
+  EXPECT_NE(res.find("\"converged\": false"), std::string::npos);
+  r = run("energy " + write("bs_net.json", net).string() + " --energy biharmonic");
+  EXPECT_EQ(r.status, 0) << r.err;
+  expect_bad_input("solve " + write("bs_exp.json", "{\"net\": " + net + R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}, "method": "explicit"}})").string() +
+                       " --out " + (tmpdir() / "bs_exp").string(),
+                   "explicit");
+}

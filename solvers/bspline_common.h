@@ -1,0 +1,67 @@
+#pragma once
+// Small index helpers shared by solvers/bspline_pde and solvers/bspline_extremal (internal).
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+
+namespace bpde::detail {
+
+/// Validates `fixed` (strictly increasing indices in 0..N-1: ParameterError / SizeError) and
+/// returns its complement in 0..N-1, increasing.
+inline std::vector<int> complement_indices(int N, const std::vector<int>& fixed, const std::string& who) {
+  for (size_t k = 0; k < fixed.size(); ++k) {
+    if (fixed[k] < 0 || fixed[k] >= N)
+      throw SizeError(who + ": fixed index " + std::to_string(fixed[k]) + " is outside 0.." + std::to_string(N - 1));
+    if (k > 0 && fixed[k] <= fixed[k - 1])
+      throw ParameterError(who + ": fixed indices must be strictly increasing (index " + std::to_string(k) + ")");
+  }
+  std::vector<int> out;
+  size_t k = 0;
+  for (int r = 0; r < N; ++r) {
+    if (k < fixed.size() && fixed[k] == r) {
+      ++k;
+      continue;
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+/// A(rows, cols) of a sparse matrix.
+inline Eigen::SparseMatrix<double> sparse_submatrix(const Eigen::SparseMatrix<double>& A, const std::vector<int>& rows,
+                                                    const std::vector<int>& cols) {
+  std::vector<int> rmap(static_cast<size_t>(A.rows()), -1), cmap(static_cast<size_t>(A.cols()), -1);
+  for (size_t k = 0; k < rows.size(); ++k) rmap[static_cast<size_t>(rows[k])] = static_cast<int>(k);
+  for (size_t k = 0; k < cols.size(); ++k) cmap[static_cast<size_t>(cols[k])] = static_cast<int>(k);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < A.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it) {
+      const int r = rmap[static_cast<size_t>(it.row())], cc = cmap[static_cast<size_t>(it.col())];
+      if (r >= 0 && cc >= 0) t.emplace_back(r, cc, it.value());
+    }
+  Eigen::SparseMatrix<double> S(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+inline Eigen::MatrixXd gather_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) {
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(idx.size()), 3);
+  for (size_t k = 0; k < idx.size(); ++k) out.row(static_cast<Eigen::Index>(k)) = P.row(idx[k]);
+  return out;
+}
+
+inline void scatter_rows(Eigen::MatrixX3d& P, const std::vector<int>& idx, const Eigen::MatrixXd& X) {
+  for (size_t k = 0; k < idx.size(); ++k) P.row(idx[k]) = X.row(static_cast<Eigen::Index>(k));
+}
+
+/// Columns idx of a dense matrix.
+inline Eigen::MatrixXd gather_cols(const Eigen::MatrixXd& A, const std::vector<int>& idx) {
+  Eigen::MatrixXd out(A.rows(), static_cast<Eigen::Index>(idx.size()));
+  for (size_t k = 0; k < idx.size(); ++k) out.col(static_cast<Eigen::Index>(k)) = A.col(idx[k]);
+  return out;
+}
+
+}  // namespace bpde::detail

@@ -1,0 +1,106 @@
+#pragma once
+// B-spline solutions of the general second- and fourth-order Euler–Lagrange equations
+// (seed 002, Sun–Zhu, eqs. (2) and (4), Algorithms 1–2), corrected as in NOTES.md (seed 002):
+//
+//   second order:  a x_uu + b x_uv + c x_vv = 0                          (eq. (2))
+//   fourth order:  A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv + E x_vvvv = 0 (eq. (4))
+//
+// The operator is the Euler–Lagrange operator of an EnergySpec (energies/energy_spec.h):
+// dirichlet -> (1,0,1), second-order [a,b,c] -> (a,b,c), any fourth-order energy -> its [A..E].
+//
+// Method. x is a tensor B-spline (tensor/bspline_net.h, standard indexing). Algorithms 1–2 ask
+// that Lx vanish identically on the domain; since x is a polynomial on every knot span, that is:
+// on every non-empty span [u_s, u_{s+1}] x [v_t, v_{t+1}], every Bernstein coefficient of Lx
+// (in local variables, at the common bidegree (max(p-k_u), max(q-k_v)) of the operator's terms)
+// vanishes. Those coefficients are linear in the control points:
+//   rows(span) = Σ_terms c · (E D_{k_u} C_u[s] / h_u^{k_u}) ⊗ (E D_{k_v} C_v[t] / h_v^{k_v}),
+// with C the Bézier extraction (tensor/bspline_ops.h), D the Bernstein derivative and E the
+// degree elevation operators (core/bernstein.h). This local basis is well conditioned; the
+// global monomial coefficients of the paper are not (NOTES.md). Each span's block of rows is
+// scaled to max |entry| = 1. The paper's equation counts (Lemmas 1–2) are not used: the rank is
+// computed (NOTES.md: Example 1 has rank 9, not 12; Example 2 rank 16, not 26).
+//
+// With the prescribed control points X_c moved to the right-hand side, A_f X_f = -A_c X_c is
+// compressed by Householder QR one u-span strip at a time (A itself is never formed) and
+// solved by an SVD (rank-revealing; singular values below rank_tolerance·σ_max count as zero):
+//   - inconsistent data (relative residual of the least-squares solution above
+//     consistency_tolerance): NO solution. The result is converged = false with a message, and
+//     its net is the input net unchanged (not a least-squares net; NOTES.md). On a multi-span net
+//     with A != 0 and E != 0 every solution is one global polynomial, so generic boundary data
+//     has no solution (e.g. 4 compatibility conditions for a biquintic net with 2 x 2 spans);
+//   - consistent data and full column rank: the unique solution;
+//   - consistent data with free parameters (degenerate operators such as x_uuuu = 0, or few fixed
+//     points): the member of the solution affine space that minimises the energy whose
+//     Euler–Lagrange operator L is (the EnergySpec's own functional, solvers/bspline_extremal.h),
+//     flagged by minimum_energy_member.
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/fixed_set.h"
+#include "energies/energy_spec.h"
+#include "solvers/pde_residual.h"
+#include "solvers/summary.h"
+#include "tensor/bspline_net.h"
+
+namespace bpde {
+
+struct BSplinePdeOptions {
+  /// Which control points are prescribed (FORMATS.md "fixed"). Default: boundary.
+  /// "u-boundaries" is accepted for second-order operators only (UnsupportedProblem otherwise).
+  FixedSet fixed = FixedSet::Boundary;
+  /// Singular values below rank_tolerance * (largest) count as zero. Default 1e-10.
+  double rank_tolerance = 1e-10;
+  /// Data are inconsistent when max|A_f X_f + A_c X_c| > consistency_tolerance *
+  /// max(|A_f||X_f| + |A_c||X_c|) (over all rows and coordinates). Default 1e-10: compatible
+  /// data rounded to doubles gives ~1e-16..1e-14; on a biquintic 2 x 2-span net, moving one
+  /// boundary point by 1e-6 of the data's size gives ~3e-9.
+  double consistency_tolerance = 1e-10;
+  /// Throws ParameterError unless both tolerances are in (0, 1).
+  void validate() const;
+};
+
+struct BSplinePdeResult {
+  BSplineNet net;               ///< the solution (or the input net unchanged when converged = false)
+  Summary summary;              ///< residual: the relative residual of the equations (see Options)
+  int equations = 0;            ///< number of equations (Bernstein coefficients of Lx over all spans)
+  int rank = 0;                 ///< rank of the equations over ALL control points (paper's count)
+  int rank_free = 0;            ///< rank of the equations over the free control points
+  int free_parameters = 0;      ///< dimension of the solution set (per coordinate) with the data fixed
+  int compatibility_conditions = 0;  ///< independent linear conditions the prescribed data must meet
+  bool minimum_energy_member = false;  ///< free parameters were fixed by minimising the energy
+  double energy = 0.0;          ///< the energy of the returned net (EnergySpec's functional)
+};
+
+/// The equations over all control points: a (#equations x nu*nv) matrix whose product with the
+/// points (one column per coordinate) lists the scaled Bernstein coefficients of Lx on every
+/// span (span by span, su * Sv + sv; within a span a * (dv+1) + b). Throws ParameterError for an
+/// operator with all coefficients zero, DegreeError if a term of the operator differentiates
+/// more often than the degree in that direction (it would vanish identically), and the knot
+/// checks of BSplineNet.
+Eigen::MatrixXd bspline_pde_equations(int p, int q, const std::vector<double>& U, const std::vector<double>& V,
+                                      const EnergySpec& op);
+
+/// Size limit of the solve: the equations are compressed strip by strip (one u-span at a time) to
+/// an N x N triangle, whose SVD is dense, so at most kMaxDensePdeUnknowns control points; larger
+/// requests throw UnsupportedProblem instead of running for minutes.
+inline constexpr int kMaxDensePdeUnknowns = 1500;
+
+/// Solve with the fixed set of the options (first overload) or an explicit strictly increasing
+/// list of fixed point indices i*nv + j (second overload; e.g. the paper's Example 1 fixes the
+/// row i = 0 only).
+BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op, const BSplinePdeOptions& options = {});
+BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op, const std::vector<int>& fixed,
+                                   const BSplinePdeOptions& options = {});
+
+/// FORMATS.md `pde_residual`: max over the (N+1)^2 sample grid of |Lx| divided by the max over the
+/// grid of Σ_k |c_k| |∂^k x|, the grid mapped onto the knot domain. As in solvers/pde_residual.h,
+/// the denominator is floored at 1e-8 Σ_k |c_k| p!/(p-k_u)! q!/(q-k_v)! h_u^-k_u h_v^-k_v max|P_ij|
+/// (h = the shortest span), so that an exact solution whose terms all vanish does not read
+/// rounding / rounding = O(1); 0 when everything vanishes.
+double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int samples = 50);
+
+/// max |A P| / max (|A| |P|) of the equations above for a given net (its relative equation
+/// residual; 0 means the net solves the PDE on every span to rounding).
+double bspline_pde_equation_residual(const BSplineNet& net, const EnergySpec& op);
+
+}  // namespace bpde
