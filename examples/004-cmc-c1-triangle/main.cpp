@@ -94,9 +94,11 @@ int main(int argc, char** argv) {
 
   if (write_jobs) {
     const std::vector<std::pair<std::string, double>> paper = {{"a", -2.0}, {"b", -1.5}, {"c", -1.0}};  // Fig. 4 order
-    for (const auto& [tag, H] : paper)
-      bpde::write_json_file((dir / ("n" + std::to_string(kDegree) + "-" + tag + "-H" + fmt(H) + ".json")).string(),
-                            job_json(c1_triangle(kDegree, kLift), H));
+    for (const auto& [tag, H] : paper) {
+      char name[64];
+      std::snprintf(name, sizeof name, "n%d-%s-H%g.json", kDegree, tag.c_str(), H);
+      bpde::write_json_file((dir / name).string(), job_json(c1_triangle(kDegree, kLift), H));
+    }
   }
 
   std::vector<fs::path> jobs;
