@@ -51,3 +51,24 @@ double mean_curvature_robust(const SurfaceJet& jet, GeometryAt&& geometry_at) {
 }
 
 }  // namespace bpde
+
+namespace bpde {
+
+/// Mean curvature at every sample from the sampled derivatives (one row per sample), with the
+/// fallback of mean_curvature_robust: geometry_at(k, h) evaluates sample k nudged by the
+/// fraction h towards the domain's centre.
+template <class GeometryAt>
+Eigen::VectorXd sampled_mean_curvature(const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& Xu,
+                                       const Eigen::MatrixX3d& Xv, const Eigen::MatrixX3d& Xuu,
+                                       const Eigen::MatrixX3d& Xuv, const Eigen::MatrixX3d& Xvv,
+                                       GeometryAt&& geometry_at) {
+  Eigen::VectorXd H(X.rows());
+  for (Eigen::Index k = 0; k < X.rows(); ++k) {
+    const SurfaceJet j{X.row(k).transpose(),   Xu.row(k).transpose(),  Xv.row(k).transpose(),
+                       Xuu.row(k).transpose(), Xuv.row(k).transpose(), Xvv.row(k).transpose()};
+    H(k) = mean_curvature_robust(j, [&](double h) { return geometry_at(k, h); });
+  }
+  return H;
+}
+
+}  // namespace bpde

@@ -20,3 +20,25 @@ inline std::string to_string(FixedSet f) {
 }
 
 }  // namespace bpde
+
+#include <vector>
+
+namespace bpde {
+
+/// The indices 0..size-1 that are not in `sorted` (an increasing list): the free points of a net
+/// given its fixed points.
+inline std::vector<int> complement_indices(const std::vector<int>& sorted, int size) {
+  std::vector<int> out;
+  out.reserve(static_cast<size_t>(size) - sorted.size());
+  size_t k = 0;
+  for (int r = 0; r < size; ++r) {
+    if (k < sorted.size() && sorted[k] == r) {
+      ++k;
+      continue;
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace bpde

@@ -184,17 +184,7 @@ std::vector<int> BSplineNet::fixed_indices(FixedSet fixed) const {
 }
 
 std::vector<int> BSplineNet::free_indices(FixedSet fixed) const {
-  const std::vector<int> f = fixed_indices(fixed);
-  std::vector<int> out;
-  size_t k = 0;
-  for (int r = 0; r < size(); ++r) {
-    if (k < f.size() && f[k] == r) {
-      ++k;
-      continue;
-    }
-    out.push_back(r);
-  }
-  return out;
+  return complement_indices(fixed_indices(fixed), size());
 }
 
 TriangleMesh sample_mesh(const BSplineNet& net, int N) {
@@ -219,14 +209,11 @@ TriangleMesh sample_mesh(const BSplineNet& net, int N) {
   TriangleMesh mesh;
   mesh.V = grid(0, 0);
   const Eigen::MatrixX3d Xu = grid(1, 0), Xv = grid(0, 1), Xuu = grid(2, 0), Xuv = grid(1, 1), Xvv = grid(0, 2);
-  mesh.H.resize(mesh.V.rows());
   const double cu = 0.5 * (net.u_min() + net.u_max()), cv = 0.5 * (net.v_min() + net.v_max());
-  for (Eigen::Index k = 0; k < mesh.V.rows(); ++k) {
-    SurfaceJet j{mesh.V.row(k).transpose(), Xu.row(k).transpose(),  Xv.row(k).transpose(),
-                 Xuu.row(k).transpose(),    Xuv.row(k).transpose(), Xvv.row(k).transpose()};
+  mesh.H = sampled_mean_curvature(mesh.V, Xu, Xv, Xuu, Xuv, Xvv, [&](Eigen::Index k, double h) {
     const double u = tu(k / (N + 1)), v = tv(k % (N + 1));
-    mesh.H(k) = mean_curvature_robust(j, [&](double h) { return net.geometry(u + h * (cu - u), v + h * (cv - v)); });
-  }
+    return net.geometry(u + h * (cu - u), v + h * (cv - v));
+  });
   mesh.F = grid_triangles(N);
   return mesh;
 }

@@ -172,17 +172,7 @@ std::vector<int> TensorNet::fixed_indices(FixedSet fixed) const {
 }
 
 std::vector<int> TensorNet::free_indices(FixedSet fixed) const {
-  const std::vector<int> f = fixed_indices(fixed);
-  std::vector<int> out;
-  size_t k = 0;
-  for (int r = 0; r < size(); ++r) {
-    if (k < f.size() && f[k] == r) {
-      ++k;
-      continue;
-    }
-    out.push_back(r);
-  }
-  return out;
+  return complement_indices(fixed_indices(fixed), size());
 }
 
 TriangleMesh sample_mesh(const TensorNet& net, int N) {
@@ -194,20 +184,10 @@ TriangleMesh sample_mesh(const TensorNet& net, int N) {
   const Eigen::MatrixX3d Xu = net.evaluate_grid(t, t, 1, 0), Xv = net.evaluate_grid(t, t, 0, 1),
                          Xuu = net.evaluate_grid(t, t, 2, 0), Xuv = net.evaluate_grid(t, t, 1, 1),
                          Xvv = net.evaluate_grid(t, t, 0, 2);
-  mesh.H.resize(mesh.V.rows());
-  for (int a = 0; a <= N; ++a)
-    for (int b = 0; b <= N; ++b) {
-      const int k = a * (N + 1) + b;
-      SurfaceJet j;
-      j.x = mesh.V.row(k).transpose();
-      j.xu = Xu.row(k).transpose();
-      j.xv = Xv.row(k).transpose();
-      j.xuu = Xuu.row(k).transpose();
-      j.xuv = Xuv.row(k).transpose();
-      j.xvv = Xvv.row(k).transpose();
-      const double u = t(a), v = t(b);
-      mesh.H(k) = mean_curvature_robust(j, [&](double h) { return net.geometry(u + h * (0.5 - u), v + h * (0.5 - v)); });
-    }
+  mesh.H = sampled_mean_curvature(mesh.V, Xu, Xv, Xuu, Xuv, Xvv, [&](Eigen::Index k, double h) {
+    const double u = t(k / (N + 1)), v = t(k % (N + 1));
+    return net.geometry(u + h * (0.5 - u), v + h * (0.5 - v));
+  });
   mesh.F = grid_triangles(N);
   return mesh;
 }

@@ -177,17 +177,7 @@ std::vector<int> TriangularNet::fixed_indices(FixedSet fixed) const {
 }
 
 std::vector<int> TriangularNet::free_indices(FixedSet fixed) const {
-  const std::vector<int> f = fixed_indices(fixed);
-  std::vector<int> out;
-  size_t k = 0;
-  for (int r = 0; r < size(); ++r) {
-    if (k < f.size() && f[k] == r) {
-      ++k;
-      continue;
-    }
-    out.push_back(r);
-  }
-  return out;
+  return complement_indices(fixed_indices(fixed), size());
 }
 
 Eigen::MatrixX2d triangular_sample_parameters(int N) {
@@ -214,19 +204,10 @@ TriangleMesh sample_mesh(const TriangularNet& net, int N) {
   };
   const Eigen::MatrixX3d Xu = deriv_values(1, 0), Xv = deriv_values(0, 1), Xuu = deriv_values(2, 0),
                          Xuv = deriv_values(1, 1), Xvv = deriv_values(0, 2);
-  mesh.H.resize(uv.rows());
-  for (Eigen::Index k = 0; k < uv.rows(); ++k) {
-    SurfaceJet j;
-    j.x = mesh.V.row(k).transpose();
-    j.xu = Xu.row(k).transpose();
-    j.xv = Xv.row(k).transpose();
-    j.xuu = Xuu.row(k).transpose();
-    j.xuv = Xuv.row(k).transpose();
-    j.xvv = Xvv.row(k).transpose();
+  mesh.H = sampled_mean_curvature(mesh.V, Xu, Xv, Xuu, Xuv, Xvv, [&](Eigen::Index k, double h) {
     const double u = uv(k, 0), v = uv(k, 1);
-    mesh.H(k) = mean_curvature_robust(
-        j, [&](double h) { return net.geometry(u + h * (1.0 / 3 - u), v + h * (1.0 / 3 - v)); });
-  }
+    return net.geometry(u + h * (1.0 / 3 - u), v + h * (1.0 / 3 - v));
+  });
   auto vid = [N](int a, int b) { return a * (N + 1) - a * (a - 1) / 2 + b; };
   mesh.F.resize(N * N, 3);
   int f = 0;
