@@ -1,5 +1,7 @@
 #include "io/blend_config.h"
 
+#include "io/json_io.h"
+
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -88,8 +90,10 @@ BlendConfig blend_config_from_json(const json& j) {
     if (j["kind"].get<std::string>() != "blend")
       throw ParseError("kind must be \"blend\", not \"" + j["kind"].get<std::string>() + "\"");
   }
-  check_fields(j, "", {"kind", "partition", "a", "epsilon", "edges", "points", "data", "samples"},
-               {"kind", "partition", "a", "epsilon", "edges"});
+  check_fields(j, "", {"kind", "partition", "a", "epsilon", "edges", "surfaces", "points", "data", "samples"},
+               {"kind", "partition", "a", "epsilon"});
+  if (j.contains("edges") == j.contains("surfaces"))
+    throw ParseError("a blend config gives exactly one of \"edges\" and \"surfaces\"");
   BlendConfig cfg;
   SmoothingSplineProblem& p = cfg.problem;
 
@@ -113,9 +117,38 @@ BlendConfig blend_config_from_json(const json& j) {
   if (!(p.epsilon > 0))
     throw ParameterError("epsilon must be > 0 (got " + std::to_string(p.epsilon) + ")");
 
-  const json& edges = j["edges"];
-  check_fields(edges, "edges", {"y0", "y1"}, {"y0", "y1"});
+  if (j.contains("surfaces")) {
+    // The surfaces to blend as nets (tensor or bspline, parameters mapped onto [0,1]^2); seed 003
+    // §6 as read in NOTES.md: u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0),
+    // u_y(x,1) = g_y(x,0), sampled at the nodes x_i = i/k.
+    const json& sj = j["surfaces"];
+    check_fields(sj, "surfaces", {"f", "g"}, {"f", "g"});
+    auto edge = [&](const json& nj, const std::string& w, double y, Eigen::MatrixX3d& value, Eigen::MatrixX3d& dy) {
+      const Net net = net_from_json(nj, w);
+      value.resize(p.k + 1, 3);
+      dy.resize(p.k + 1, 3);
+      for (int i = 0; i <= p.k; ++i) {
+        const double x = static_cast<double>(i) / p.k;
+        if (const auto* t = std::get_if<TensorNet>(&net)) {
+          value.row(i) = t->evaluate(x, y).transpose();
+          dy.row(i) = t->derivative(x, y, 0, 1).transpose();
+        } else if (const auto* b = std::get_if<BSplineNet>(&net)) {
+          const double u = b->u_min() + x * (b->u_max() - b->u_min());
+          const double v = b->v_min() + y * (b->v_max() - b->v_min());
+          value.row(i) = b->evaluate(u, v).transpose();
+          dy.row(i) = (b->v_max() - b->v_min()) * b->derivative(u, v, 0, 1).transpose();
+        } else {
+          throw ParseError(w + ": a blend surface is a tensor or bspline net, not a triangular net");
+        }
+      }
+    };
+    edge(sj["f"], "surfaces.f", 1.0, p.y0_value, p.y0_dy);
+    edge(sj["g"], "surfaces.g", 0.0, p.y1_value, p.y1_dy);
+  }
+  const json& edges = j.contains("edges") ? j["edges"] : json::object({{"y0", nullptr}});
+  if (j.contains("edges")) check_fields(edges, "edges", {"y0", "y1"}, {"y0", "y1"});
   for (const char* e : {"y0", "y1"}) {
+    if (!j.contains("edges")) break;
     const std::string w = std::string("edges.") + e;
     check_fields(edges[e], w, {"value", "dy"}, {"value", "dy"});
     Eigen::MatrixX3d value = edge_array(edges[e]["value"], p.k, w + ".value");

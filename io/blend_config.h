@@ -9,6 +9,9 @@
 // - partition: k intervals in x, l in y (integers in 1..BfsSpace::kMaxPartition);
 // - 1e-6 <= a <= 1e6: the operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y; epsilon > 0;
 // - edges: value and ∂/∂y at the k+1 nodes x_i = i/k of y = 0 and y = 1 (all four required);
+//   or, instead of "edges", "surfaces": {"f": NET, "g": NET} with the two surfaces to blend as
+//   tensor or bspline nets (parameters mapped onto [0,1]²): the edges are then f(x,1), f_y(x,1)
+//   and g(x,0), g_y(x,0) at the nodes (seed 003 §6 as read in NOTES.md);
 // - points / data: the approximation points A ⊂ [0,1]² and their values β; optional (default
 //   empty), equal lengths;
 // - samples: optional mesh resolution N (default 50, 1..4096).
