@@ -149,6 +149,36 @@ Eigen::Vector3d BSplineNet::derivative(double u, double v, int du, int dv) const
   return out;
 }
 
+namespace {
+
+// de Boor's algorithm on the control points ctrl(0..count-1) of one direction (degree k, knots K).
+Eigen::Vector3d de_boor(int k, const std::vector<double>& K, const std::vector<Eigen::Vector3d>& ctrl, double t) {
+  const int count = static_cast<int>(K.size()) - k - 1;
+  t = std::clamp(t, K[static_cast<size_t>(k)], K[static_cast<size_t>(count)]);
+  const int s = find_span(k, K, t);
+  std::vector<Eigen::Vector3d> d(static_cast<size_t>(k + 1));
+  for (int j = 0; j <= k; ++j) d[static_cast<size_t>(j)] = ctrl[static_cast<size_t>(s - k + j)];
+  for (int r = 1; r <= k; ++r)
+    for (int j = k; j >= r; --j) {
+      const int i = s - k + j;
+      const double den = K[static_cast<size_t>(i + k - r + 1)] - K[static_cast<size_t>(i)];
+      const double alpha = den > 0 ? (t - K[static_cast<size_t>(i)]) / den : 0.0;
+      d[static_cast<size_t>(j)] = (1 - alpha) * d[static_cast<size_t>(j - 1)] + alpha * d[static_cast<size_t>(j)];
+    }
+  return d[static_cast<size_t>(k)];
+}
+
+}  // namespace
+
+Eigen::Vector3d BSplineNet::evaluate_de_boor(double u, double v) const {
+  std::vector<Eigen::Vector3d> row(static_cast<size_t>(nv())), col(static_cast<size_t>(nu()));
+  for (int i = 0; i < nu(); ++i) {
+    for (int j = 0; j < nv(); ++j) row[static_cast<size_t>(j)] = points_.row(index(i, j)).transpose();
+    col[static_cast<size_t>(i)] = de_boor(q_, V_, row, v);
+  }
+  return de_boor(p_, U_, col, u);
+}
+
 SurfaceJet BSplineNet::jet(double u, double v) const {
   SurfaceJet j;
   j.x = derivative(u, v, 0, 0);

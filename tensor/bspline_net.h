@@ -39,6 +39,9 @@ class BSplineNet {
   /// Derivative of order (du, dv) at (u, v) in the knot domain (clamped to it).
   Eigen::Vector3d derivative(double u, double v, int du, int dv) const;
   Eigen::Vector3d evaluate(double u, double v) const { return derivative(u, v, 0, 0); }
+  /// x(u,v) by de Boor's algorithm (corner cutting in v on each of the p+1 active rows, then in
+  /// u); the same surface as evaluate(), by an independent route.
+  Eigen::Vector3d evaluate_de_boor(double u, double v) const;
   SurfaceJet jet(double u, double v) const;
   FundamentalForms geometry(double u, double v) const;
 

@@ -150,3 +150,15 @@ TEST(BSplineOps, BadInputThrowsTypedErrors) {
                ParameterError);
   EXPECT_THROW(BSplineNet(3, 3, clamped(2, {}), clamped(3, {}), Eigen::MatrixX3d::Zero(12, 3)), SizeError);
 }
+
+TEST(BSplineNetDeBoor, AgreesWithBasisEvaluationOnGeneralKnots) {
+  // non-uniform, repeated interior knot, unclamped ends
+  const std::vector<double> U = {-0.5, 0.0, 0.1, 0.4, 0.4, 0.7, 1.3, 1.5, 2.0};  // p = 3: 5 points
+  const std::vector<double> V = {0.0, 0.0, 0.0, 0.3, 0.8, 1.0, 1.0, 1.0};         // q = 2: 5 points
+  Eigen::MatrixX3d P(25, 3);
+  for (int r = 0; r < 25; ++r) P.row(r) << std::sin(1.0 + r), std::cos(0.3 * r), 0.1 * r * r;
+  const bpde::BSplineNet net(3, 2, U, V, P);
+  for (double u : {0.4, 0.55, 0.4000001, 1.3})
+    for (double v : {0.0, 0.25, 0.3, 0.99, 1.0})
+      EXPECT_LT((net.evaluate_de_boor(u, v) - net.evaluate(u, v)).norm(), 1e-13) << u << " " << v;
+}
