@@ -128,31 +128,7 @@ std::shared_ptr<const LuSolver> lu_solver(int n) {
       std::fill(X.begin(), X.end(), quad(0));
       for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = G(r, c);
       X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
-      std::fill(Y.begin(), Y.end(), quad(0));
-      std::vector<quad> XB(static_cast<size_t>(N));
-      for (int t = 0; t <= 4; ++t) {
-        const auto& A = T[static_cast<size_t>(8 - 2 * t)];
-        const auto& B = T[static_cast<size_t>(2 * t)];
-        if (8 - 2 * t > n || 2 * t > n) continue;
-        // XB = X B^T
-        for (int i = 0; i <= n; ++i)
-          for (int j = 0; j <= n; ++j) {
-            quad acc = 0;
-            for (int l = 0; l <= n; ++l) {
-              const quad b = B[static_cast<size_t>(j * n1 + l)];
-              if (b != 0) acc += X[static_cast<size_t>(i * n1 + l)] * b;
-            }
-            XB[static_cast<size_t>(i * n1 + j)] = acc;
-          }
-        // Y += C_t A XB
-        for (int i = 0; i <= n; ++i)
-          for (int k = 0; k <= n; ++k) {
-            const quad a = A[static_cast<size_t>(i * n1 + k)];
-            if (a == 0) continue;
-            const quad ca = kBinom4[t] * a;
-            for (int j = 0; j <= n; ++j) Y[static_cast<size_t>(i * n1 + j)] += ca * XB[static_cast<size_t>(k * n1 + j)];
-          }
-      }
+      apply_operator(T, n, X, Y);
       for (int r = 0; r < N; ++r) R(r, c) = static_cast<long double>(Y[static_cast<size_t>(r)]);
     }
     const MatL dG = qr.solve(R);
