@@ -161,7 +161,7 @@ TEST(Cli, EnergyCheckAndCmc) {
 
 TEST(Cli, CmcPastTheFoldExitsOneWithTheDocumentedMessage) {
   const fs::path out = tmpdir() / "fold";
-  // the circle in three arcs at degree 6 folds near |H| = 1.14 (docs/cmc.md)
+  // the circle in three arcs at degree 4 folds near |H| = 1.56 (examples/004-cmc-circle)
   const CmdResult demo = run("demo --out " + (tmpdir() / "demo").string());
   ASSERT_EQ(demo.status, 0) << demo.err;
   const std::string res = slurp_file(tmpdir() / "demo" / "result.json");
