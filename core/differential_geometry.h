@@ -72,3 +72,21 @@ Eigen::VectorXd sampled_mean_curvature(const Eigen::MatrixX3d& X, const Eigen::M
 }
 
 }  // namespace bpde
+
+namespace bpde {
+
+/// Position and derivatives up to order two of any surface type with evaluate(u, v) and
+/// derivative(u, v, du, dv) (tensor, triangular and B-spline nets).
+template <class Surface>
+SurfaceJet surface_jet(const Surface& s, double u, double v) {
+  SurfaceJet j;
+  j.x = s.evaluate(u, v);
+  j.xu = s.derivative(u, v, 1, 0);
+  j.xv = s.derivative(u, v, 0, 1);
+  j.xuu = s.derivative(u, v, 2, 0);
+  j.xuv = s.derivative(u, v, 1, 1);
+  j.xvv = s.derivative(u, v, 0, 2);
+  return j;
+}
+
+}  // namespace bpde

@@ -179,16 +179,7 @@ Eigen::Vector3d BSplineNet::evaluate_de_boor(double u, double v) const {
   return de_boor(p_, U_, col, u);
 }
 
-SurfaceJet BSplineNet::jet(double u, double v) const {
-  SurfaceJet j;
-  j.x = derivative(u, v, 0, 0);
-  j.xu = derivative(u, v, 1, 0);
-  j.xv = derivative(u, v, 0, 1);
-  j.xuu = derivative(u, v, 2, 0);
-  j.xuv = derivative(u, v, 1, 1);
-  j.xvv = derivative(u, v, 0, 2);
-  return j;
-}
+SurfaceJet BSplineNet::jet(double u, double v) const { return surface_jet(*this, u, v); }
 
 FundamentalForms BSplineNet::geometry(double u, double v) const { return fundamental_forms(jet(u, v)); }
 

@@ -97,16 +97,7 @@ Eigen::Vector3d TensorNet::derivative(double u, double v, int du, int dv) const 
   return eval_raw(derivative_raw(points_, n_, m_, du, dv), n_ - du, m_ - dv, u, v);
 }
 
-SurfaceJet TensorNet::jet(double u, double v) const {
-  SurfaceJet j;
-  j.x = evaluate(u, v);
-  j.xu = derivative(u, v, 1, 0);
-  j.xv = derivative(u, v, 0, 1);
-  j.xuu = derivative(u, v, 2, 0);
-  j.xuv = derivative(u, v, 1, 1);
-  j.xvv = derivative(u, v, 0, 2);
-  return j;
-}
+SurfaceJet TensorNet::jet(double u, double v) const { return surface_jet(*this, u, v); }
 
 FundamentalForms TensorNet::geometry(double u, double v) const { return fundamental_forms(jet(u, v)); }
 

@@ -93,16 +93,7 @@ Eigen::Vector3d TriangularNet::directional_derivative(double u, double v, const 
   return d(0) * derivative(u, v, 1, 0) + d(1) * derivative(u, v, 0, 1);
 }
 
-SurfaceJet TriangularNet::jet(double u, double v) const {
-  SurfaceJet j;
-  j.x = evaluate(u, v);
-  j.xu = derivative(u, v, 1, 0);
-  j.xv = derivative(u, v, 0, 1);
-  j.xuu = derivative(u, v, 2, 0);
-  j.xuv = derivative(u, v, 1, 1);
-  j.xvv = derivative(u, v, 0, 2);
-  return j;
-}
+SurfaceJet TriangularNet::jet(double u, double v) const { return surface_jet(*this, u, v); }
 
 FundamentalForms TriangularNet::geometry(double u, double v) const { return fundamental_forms(jet(u, v)); }
 
