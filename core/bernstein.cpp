@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <vector>
 
@@ -37,9 +38,16 @@ double binomial(int n, int k) {
 }
 
 double factorial(int n) {
-  double f = 1.0;
-  for (int i = 2; i <= n; ++i) f *= i;
-  return f;
+  // The same left-to-right products as the plain loop, tabulated (171! overflows to inf).
+  static const std::array<double, 171> table = [] {
+    std::array<double, 171> t{};
+    t[0] = 1.0;
+    for (int i = 1; i <= 170; ++i) t[static_cast<size_t>(i)] = i == 1 ? 1.0 : t[static_cast<size_t>(i - 1)] * i;
+    return t;
+  }();
+  if (n < 0) return 1.0;
+  if (n > 170) return std::numeric_limits<double>::infinity();
+  return table[static_cast<size_t>(n)];
 }
 
 void bernstein_values(int n, double t, double* out) {
@@ -57,19 +65,33 @@ void bernstein_values(int n, double t, double* out) {
 }
 
 Eigen::MatrixXd bernstein_table(int n, const Eigen::VectorXd& t, int d) {
-  Eigen::MatrixXd table = Eigen::MatrixXd::Zero(t.size(), n + 1);
-  if (d > n || d < 0) return table;
-  std::vector<double> low(static_cast<size_t>(n - d + 1));
+  if (d > n || d < 0) return Eigen::MatrixXd::Zero(t.size(), n + 1);
   // d-th derivative of B_i^n: n!/(n-d)! * sum_k (-1)^(d-k) C(d,k) B_{i-k}^{n-d}.
-  const double scale = factorial(n) / factorial(n - d);
-  for (Eigen::Index s = 0; s < t.size(); ++s) {
-    bernstein_values(n - d, t(s), low.data());
-    for (int j = 0; j <= n - d; ++j) {
-      for (int k = 0; k <= d; ++k) {
-        const double sign = ((d - k) % 2 == 0) ? 1.0 : -1.0;
-        table(s, j + k) += scale * sign * binomial(d, k) * low[static_cast<size_t>(j)];
-      }
-    }
+  // The degree q = n-d values come from the product form C(q,j) t^j (1-t)^(q-j), accurate to
+  // (q+2) ulp relative (all factors positive). The powers are built a column (one power, all
+  // points) at a time, so the loops vectorise over the points: this table feeds every grid
+  // evaluation.
+  const int q = n - d;
+  const Eigen::Index N = t.size();
+  Eigen::ArrayXXd tp(N, q + 1), sp(N, q + 1);
+  tp.col(0).setOnes();
+  sp.col(0).setOnes();
+  const Eigen::ArrayXd x = t.array(), y = 1.0 - t.array();
+  for (int j = 1; j <= q; ++j) {
+    tp.col(j) = tp.col(j - 1) * x;
+    sp.col(j) = sp.col(j - 1) * y;
+  }
+  Eigen::MatrixXd table(N, n + 1);
+  if (d == 0) {
+    for (int j = 0; j <= q; ++j) table.col(j) = binomial(q, j) * (tp.col(j) * sp.col(q - j)).matrix();
+    return table;
+  }
+  table.setZero();
+  const double scale = factorial(n) / factorial(q);
+  for (int j = 0; j <= q; ++j) {
+    const Eigen::ArrayXd low = binomial(q, j) * tp.col(j) * sp.col(q - j);
+    for (int k = 0; k <= d; ++k)
+      table.col(j + k).array() += scale * (((d - k) % 2 == 0) ? 1.0 : -1.0) * binomial(d, k) * low;
   }
   return table;
 }

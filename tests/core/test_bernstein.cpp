@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "core/bernstein.h"
 #include "core/errors.h"
@@ -28,6 +29,20 @@ TEST(Bernstein, ValuesMatchClosedFormAndSumToOne) {
         sum += b[i];
       }
       EXPECT_NEAR(sum, 1.0, 1e-14);
+    }
+  }
+}
+
+TEST(Bernstein, TableMatchesTheRecurrence) {
+  // bernstein_table (product form, vectorised over points) against bernstein_values (the
+  // all-positive de Casteljau recurrence), entry by entry, relative.
+  const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(37, 0.0, 1.0);
+  for (int n : {1, 4, 20, 64}) {
+    const Eigen::MatrixXd B = bernstein_table(n, t);
+    std::vector<double> b(static_cast<size_t>(n + 1));
+    for (Eigen::Index r = 0; r < t.size(); ++r) {
+      bernstein_values(n, t(r), b.data());
+      for (int i = 0; i <= n; ++i) EXPECT_NEAR(B(r, i), b[static_cast<size_t>(i)], 4e-16 * (n + 2) * b[static_cast<size_t>(i)] + 1e-300);
     }
   }
 }
