@@ -2,22 +2,51 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/row_major_product.h"
 
+#include <array>
+#include <mutex>
 #include <string>
 
 namespace bpde {
 namespace {
 
-// Apply (Mu kron Mv) to each coordinate of a row-major (n+1)(m+1) layout.
+// Apply (Mu kron Mv) to each coordinate of a row-major (n+1)(m+1) layout: out_c = Mu X_c Mv^T,
+// two small row-major products per coordinate (core/row_major_product.h).
 Eigen::MatrixX3d apply_tensor(const Eigen::MatrixXd& Mu, const Eigen::MatrixXd& Mv, const Eigen::MatrixX3d& X,
                               int n, int m) {
   Eigen::MatrixX3d out(X.rows(), 3);
   using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const RowMat MuR = Mu;  // (n+1) x (n+1) row-major
+  // Mv^T read row-major is Mv's column-major storage.
+  RowMat Y(n + 1, m + 1);
   for (int c = 0; c < 3; ++c) {
-    const Eigen::Map<const RowMat> Xc(X.col(c).data(), n + 1, m + 1);
-    Eigen::Map<RowMat>(out.col(c).data(), n + 1, m + 1) = Mu * Xc * Mv.transpose();
+    row_major_product(MuR.data(), n + 1, n + 1, n + 1, X.col(c).data(), m + 1, m + 1, Y.data(), m + 1);
+    row_major_product(Y.data(), n + 1, m + 1, m + 1, Mv.data(), m + 1, m + 1, out.col(c).data(), m + 1);
   }
   return out;
+}
+
+struct Conversions {
+  Eigen::MatrixXd to, from;  // F M and N F^-1 (see power_basis.h)
+};
+
+// Per degree, built once (thread-safe) and kept: these matrices are on the path of every explicit
+// PDE solve and of the lu route (solvers/pde_lu.h).
+const Conversions& conversions(int n) {
+  if (n < 0 || n > kMaxDegree) throw DegreeError("power basis: degree " + std::to_string(n) + " out of range 0..64");
+  static std::array<std::once_flag, kMaxDegree + 1> once;
+  static std::array<Conversions, kMaxDegree + 1> table;
+  const auto k = static_cast<size_t>(n);
+  std::call_once(once[k], [&] {
+    Eigen::MatrixXd to = bernstein_to_power_matrix(n), from = power_to_bernstein_matrix(n);
+    for (int r = 0; r <= n; ++r) {
+      to.row(r) *= factorial(r);
+      from.col(r) /= factorial(r);
+    }
+    table[k] = {std::move(to), std::move(from)};
+  });
+  return table[k];
 }
 
 }  // namespace
@@ -42,19 +71,16 @@ TensorNet from_power(int n, int m, const Eigen::MatrixX3d& c) {
 }
 
 Eigen::MatrixX3d to_factorial_power(const TensorNet& net) {
-  Eigen::MatrixX3d a = to_power(net);
-  for (int k = 0; k <= net.n(); ++k)
-    for (int l = 0; l <= net.m(); ++l) a.row(net.index(k, l)) *= factorial(k) * factorial(l);
-  return a;
+  return apply_tensor(conversions(net.n()).to, conversions(net.m()).to, net.points(), net.n(), net.m());
 }
 
 TensorNet from_factorial_power(int n, int m, const Eigen::MatrixX3d& a) {
   TensorNet shape(n, m);
   check_rows(shape, a, "from_factorial_power");
-  Eigen::MatrixX3d c = a;
-  for (int k = 0; k <= n; ++k)
-    for (int l = 0; l <= m; ++l) c.row(shape.index(k, l)) /= factorial(k) * factorial(l);
-  return from_power(n, m, c);
+  return TensorNet(n, m, apply_tensor(conversions(n).from, conversions(m).from, a, n, m));
 }
+
+const Eigen::MatrixXd& bernstein_to_factorial_power_matrix(int n) { return conversions(n).to; }
+const Eigen::MatrixXd& factorial_power_to_bernstein_matrix(int n) { return conversions(n).from; }
 
 }  // namespace bpde

@@ -24,4 +24,11 @@ Eigen::MatrixX3d to_factorial_power(const TensorNet& net);
 /// Net from seed 001's a_kl.
 TensorNet from_factorial_power(int n, int m, const Eigen::MatrixX3d& a);
 
+/// (n+1) x (n+1) matrix F M: a = (F M) p maps Bernstein coefficients p of a degree-n curve to its
+/// factorial-scaled monomial coefficients a_k = k! c_k (F = diag(k!), M = bernstein_to_power_matrix).
+/// Built once per degree and cached (thread-safe). DegreeError outside 0..kMaxDegree.
+const Eigen::MatrixXd& bernstein_to_factorial_power_matrix(int n);
+/// Its inverse N F^-1 (N = power_to_bernstein_matrix), cached likewise.
+const Eigen::MatrixXd& factorial_power_to_bernstein_matrix(int n);
+
 }  // namespace bpde

@@ -7,6 +7,7 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/row_major_product.h"
 
 namespace bpde {
 namespace {
@@ -124,16 +125,19 @@ Eigen::MatrixX3d TensorNet::evaluate_grid(const Eigen::VectorXd& us, const Eigen
     out.setZero();
     return out;
   }
-  const Eigen::MatrixXd Bu = bernstein_table(n_, us, du);  // #us x (n+1)
-  const Eigen::MatrixXd Bv = bernstein_table(m_, vs, dv);  // #vs x (m+1)
+  // Two row-major products per coordinate (core/row_major_product.h):
+  //   T = P_c * Bv^T    ((n+1) x #vs),   X = Bu * T    (#us x #vs, row a = u_a),
+  // and X is exactly out.col(c) read row-major (row index a * #vs + b).
+  using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const int nu = static_cast<int>(us.size()), nv = static_cast<int>(vs.size());
+  const Eigen::MatrixXd BvT = bernstein_table(m_, vs, dv);  // #vs x (m+1) column-major = (m+1) x #vs row-major
+  // #us x (n+1), row-major; the usual square grid (us = vs, same degree and order) reuses BvT.
+  const RowMat Bu = (n_ == m_ && du == dv && us.size() == vs.size() && us == vs) ? RowMat(BvT) : RowMat(bernstein_table(n_, us, du));
+  RowMat T(n_ + 1, nv);
   for (int c = 0; c < 3; ++c) {
-    // Pc is (n+1) x (m+1); points are stored row-major by (i, j) so map with a row-major view.
-    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>, 0,
-                     Eigen::OuterStride<>>
-        Pc(points_.col(c).data(), n_ + 1, m_ + 1, Eigen::OuterStride<>(m_ + 1));
-    const Eigen::MatrixXd X = Bu * (Pc * Bv.transpose());  // #us x #vs
-    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-        out.col(c).data(), us.size(), vs.size()) = X;
+    // Points are stored row-major by (i, j): column c is P_c, (n+1) x (m+1) row-major.
+    row_major_product(points_.col(c).data(), n_ + 1, m_ + 1, m_ + 1, BvT.data(), nv, nv, T.data(), nv);
+    row_major_product(Bu.data(), nu, n_ + 1, n_ + 1, T.data(), nv, nv, out.col(c).data(), nv);
   }
   return out;
 }
