@@ -56,18 +56,27 @@ OrthWeights orth_roots(double A, double C) {
   return w;
 }
 
-void orth_weight(const OrthWeights& w, double A, int K, int L, double& wcol, double& wrow) {
-  // G_{n} = x0^n (1 - q^{n+1}) / (1 - q);  w_col = G_{K-1} (-A)^L / G_{K+L-1},
-  // w_row = G_{L-1} (-E)^K / G_{K+L-1}  (E = 1), with G_{-1} = 0, G_0 = 1 (NOTES.md).
-  const double a = std::pow(-A / w.x0, L), e = std::pow(-1.0 / w.x0, K);
-  if (w.double_root) {
-    wcol = a * K / double(K + L);
-    wrow = e * L / double(K + L);
-  } else {
-    const double den = one_minus_pow(w.q, K + L);
-    wcol = a * one_minus_pow(w.q, K) / den;
-    wrow = e * one_minus_pow(w.q, L) / den;
+// Prop. 4 weights of every interior (k, l) with k + l <= N, K = floor(k/2), L = floor(l/2):
+//   G_{n} = x0^n (1 - q^{n+1}) / (1 - q);  w_col = G_{K-1} (-A)^L / G_{K+L-1},
+//   w_row = G_{L-1} (-E)^K / G_{K+L-1}  (E = 1), with G_{-1} = 0, G_0 = 1 (NOTES.md),
+// from tables of the powers (one std::pow per exponent, not per pair).
+void orth_weight_tables(const OrthWeights& w, double A, int N, Eigen::MatrixXd& wcol, Eigen::MatrixXd& wrow) {
+  const int H = N / 2 + 1;
+  Eigen::VectorXd pa(H), pe(H), om(N + 1);
+  for (int e = 0; e < H; ++e) {
+    pa(e) = std::pow(-A / w.x0, e);
+    pe(e) = std::pow(-1.0 / w.x0, e);
   }
+  for (int e = 0; e <= N; ++e) om(e) = w.double_root ? double(e) : one_minus_pow(w.q, e);
+  wcol.setZero(N + 1, N + 1);
+  wrow.setZero(N + 1, N + 1);
+  for (int k = 2; k <= N; ++k)
+    for (int l = 2; k + l <= N; ++l) {
+      const int K = k / 2, L = l / 2;
+      // double root: 1 - q^K -> K (the limit q -> 1 of (1 - q^K)/(1 - q^(K+L)) is K/(K+L))
+      wcol(k, l) = pa(L) * om(K) / om(K + L);
+      wrow(k, l) = pe(K) * om(L) / om(K + L);
+    }
 }
 
 ExplicitOperator transposed(const ExplicitOperator& op) {
@@ -186,9 +195,9 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
   }
   summary.converged = true;
   const int W = n + 2;  // padded: indices 0..n+1, zero outside the box
-  const Eigen::MatrixXd Mp = bernstein_to_power_matrix(n);
-  Eigen::VectorXd fact(n + 2);
-  for (int k = 0; k <= n + 1; ++k) fact(k) = factorial(k);
+  const Eigen::MatrixXd& Mf = bernstein_to_factorial_power_matrix(n);  // edge -> a (eq. (5)-(6))
+  Eigen::VectorXd ifact(n + 2);
+  for (int k = 0; k <= n + 1; ++k) ifact(k) = 1.0 / factorial(k);
 
   // Fundamental sequences for the G-norm family.
   Eigen::MatrixXd F;
@@ -198,8 +207,11 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
     const bool closed = st > 1e-3 && den > 1e-3 * (1 + std::pow(op.rho, 4));
     F = lemma1_sequences(op.rho, op.t, n + 1, closed);
   }
-  OrthWeights ow{1, 1, true};
-  if (op.family == ExplicitOperator::Family::Orthogonal) ow = orth_roots(op.A, op.C);
+  // Prop. 4 weights of every interior (k, l), shared by the three coordinates.
+  Eigen::MatrixXd wcol, wrow;
+  if (op.family == ExplicitOperator::Family::Orthogonal) {
+    orth_weight_tables(orth_roots(op.A, op.C), op.A, n + 1, wcol, wrow);
+  }
 
   Eigen::MatrixX3d out = Eigen::MatrixX3d::Zero((n + 1) * (n + 1), 3);
   for (int c = 0; c < 3; ++c) {
@@ -211,25 +223,26 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
       c0(j) = data.points()(data.index(j, 0), c);
       c1(j) = data.points()(data.index(j, n), c);
     }
-    // Monomial coefficients of the four edges: x(0,v), x(1,v) (= P_{n l}), x(u,0), x(u,1) (= P_{l n}).
-    const Eigen::VectorXd e0v = Mp * r0, e1v = Mp * r1, e0u = Mp * c0, e1u = Mp * c1;
+    // Factorial-scaled monomial coefficients of the four edges: x(0,v), x(1,v) (= P_{n l}),
+    // x(u,0), x(u,1) (= P_{l n}).
+    const Eigen::VectorXd e0v = Mf * r0, e1v = Mf * r1, e0u = Mf * c0, e1u = Mf * c1;
     for (int j = 0; j <= n; ++j) {
-      a(0, j) = fact(j) * e0v(j);  // eq. (5)
-      a(j, 0) = fact(j) * e0u(j);  // eq. (6)
+      a(0, j) = e0v(j);  // eq. (5)
+      a(j, 0) = e0u(j);  // eq. (6)
     }
     for (int s = n + 1; s >= 2; --s) {
       // eq. (7): a_{1,s-1} from x(1, v), a_{s-1,1} from x(u, 1).
       {
         const int j = s - 1;
         double sum = 0;
-        for (int i = 2; i <= n; ++i) sum += a(i, j) / fact(i);
-        a(1, j) = fact(j) * e1v(j) - a(0, j) - sum;
+        for (int i = 2; i <= n; ++i) sum += a(i, j) * ifact(i);
+        a(1, j) = e1v(j) - a(0, j) - sum;
       }
       if (s - 1 != 1) {
         const int i = s - 1;
         double sum = 0;
-        for (int j = 2; j <= n; ++j) sum += a(i, j) / fact(j);
-        a(i, 1) = fact(i) * e1u(i) - a(i, 0) - sum;
+        for (int j = 2; j <= n; ++j) sum += a(i, j) * ifact(j);
+        a(i, 1) = e1u(i) - a(i, 0) - sum;
       }
       if (s < 4) continue;
       // Interior of the anti-diagonal: k, l >= 2, k + l = s.
@@ -238,9 +251,7 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
         case ExplicitOperator::Family::Orthogonal:
           for (int l = 2; l <= s - 2; ++l) {
             const int k = s - l, K = k / 2, L = l / 2;
-            double wc, wr;
-            orth_weight(ow, op.A, K, L, wc, wr);
-            a(k, l) = wc * a(k + 2 * L, l % 2) + wr * a(k % 2, 2 * K + l);  // eq. (21)
+            a(k, l) = wcol(k, l) * a(k + 2 * L, l % 2) + wrow(k, l) * a(k % 2, 2 * K + l);  // eq. (21)
           }
           break;
         case ExplicitOperator::Family::GNorm: {
@@ -311,7 +322,8 @@ PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, cons
   }
   const int n = data.n();
   const bool flip = e.family == ExplicitOperator::Family::GNorm && e.rho > 1;
-  const TensorNet work = flip ? transpose(data) : data;
+  const TensorNet flipped = flip ? transpose(data) : TensorNet(1, 1);
+  const TensorNet& work = flip ? flipped : data;
   if (flip) e = transposed(e);
   PdeSolution out{data, Summary{}};
   if (e.family == ExplicitOperator::Family::GNorm && std::abs(e.rho - 1) < 1e-6) {
@@ -335,7 +347,9 @@ PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, cons
     TensorNet sol = from_factorial_power(n, n, a);
     if (flip) sol = transpose(sol);
     // The prescribed ring is data: copy it exactly (the power-basis round trip rounds it).
-    for (int idx : data.boundary_indices()) sol.points().row(idx) = data.points().row(idx);
+    for (int k = 0; k <= n; ++k)
+      for (int idx : {data.index(0, k), data.index(n, k), data.index(k, 0), data.index(k, n)})
+        sol.points().row(idx) = data.points().row(idx);
     if (!sol.points().allFinite()) {
       out.summary.converged = false;
       out.summary.message = "the explicit solution overflowed double precision";
