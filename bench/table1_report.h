@@ -1,0 +1,15 @@
+#pragma once
+// `bpde_bench --table1`: run seed 001's Table 1 routes
+// (Biharmonic/{explicit,lu,lu-bernstein,mould}/<n>) and print them beside the paper's milliseconds,
+// with the ratios and the two speed goals of the benchmark: every route >= 100x faster than the
+// paper's own time for it (explicit vs. the paper's explicit column, lu vs. its linear-system
+// column, mould vs. the faster of the two), and at n = 20 explicit and mould >= 10x faster than
+// lu (also shown against lu-bernstein, the dense linear system).
+namespace bpde_bench {
+
+/// argv without "--table1"; other Google Benchmark flags pass through (a --benchmark_filter of
+/// the caller's replaces the default ^Biharmonic/(explicit|lu|lu-bernstein|mould)/ filter).
+/// Returns the exit code.
+int run_table1(int argc, char** argv);
+
+}  // namespace bpde_bench
