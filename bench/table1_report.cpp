@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace bpde_bench {
 namespace {
 
@@ -34,6 +36,7 @@ double to_ms(double t, benchmark::TimeUnit u) {
 // repetitions the median aggregate wins over single iterations.
 class Collector : public benchmark::ConsoleReporter {
  public:
+  explicit Collector(OutputOptions options) : ConsoleReporter(options) {}
   std::map<std::string, double> ms, median_ms;
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
@@ -73,7 +76,9 @@ int run_table1(int argc, char** argv) {
   args.push_back(nullptr);
   benchmark::Initialize(&n_args, args.data());
   if (benchmark::ReportUnrecognizedArguments(n_args, args.data())) return 1;
-  Collector collector;
+  // Colour only on a terminal, as Google Benchmark's own default reporter does.
+  Collector collector(isatty(fileno(stdout)) ? benchmark::ConsoleReporter::OO_Defaults
+                                             : benchmark::ConsoleReporter::OO_Tabular);
   benchmark::RunSpecifiedBenchmarks(&collector);
   benchmark::Shutdown();
 
