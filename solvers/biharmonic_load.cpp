@@ -4,14 +4,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/per_degree.h"
 #include "core/kron.h"
 #include "core/quad_bernstein.h"
 #include "tensor/power_basis.h"
@@ -66,14 +65,7 @@ struct LoadSolver {
 using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
 
 
-std::shared_ptr<const LoadSolver> load_solver(int n) {
-  static std::mutex mutex;
-  static std::map<int, std::shared_ptr<const LoadSolver>> cache;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = cache.find(n);
-    if (it != cache.end()) return it->second;
-  }
+std::shared_ptr<const LoadSolver> build_load_solver(int n) {
   auto s = std::make_shared<LoadSolver>();
   s->interior = interior_indices(n);
   s->fixed = TensorNet(n, n).fixed_indices(FixedSet::BoundaryAdjacent);
@@ -133,8 +125,12 @@ std::shared_ptr<const LoadSolver> load_solver(int n) {
     if (d <= 1e-18L * G.cwiseAbs().maxCoeff()) break;
   }
   s->G = G.cast<double>();
-  std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(n, std::move(s)).first->second;
+  return s;
+}
+
+std::shared_ptr<const LoadSolver> load_solver(int n) {
+  static PerDegree<std::shared_ptr<const LoadSolver>> cache;
+  return cache.get(n, build_load_solver, "load solver");
 }
 
 }  // namespace

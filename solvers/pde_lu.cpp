@@ -5,12 +5,12 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <sstream>
 #include <string>
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/per_degree.h"
 #include "core/row_major_product.h"
 #include "tensor/power_basis.h"
 
@@ -390,11 +390,14 @@ bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, doubl
   struct Tables {
     std::vector<T> to, from;
   };
-  static std::array<std::once_flag, kMaxDegree + 1> once;
-  static std::array<Tables, kMaxDegree + 1> tables;
-  std::call_once(once[sz(n)], [&] { factorial_power_conversions<T>(n, tables[sz(n)].to, tables[sz(n)].from); });
-  const std::vector<T>& to = tables[sz(n)].to;
-  const std::vector<T>& from = tables[sz(n)].from;
+  static PerDegree<Tables> cache;
+  const Tables& tables = cache.get(n, [](int d) {
+    Tables t;
+    factorial_power_conversions<T>(d, t.to, t.from);
+    return t;
+  });
+  const std::vector<T>& to = tables.to;
+  const std::vector<T>& from = tables.from;
   // a_kl, entry ((k*N + l)*3 + d).
   std::vector<T> a(sz(N * N * 3), T(0)), e1v(sz(N * 3), T(0)), e1u(sz(N * 3), T(0));
   auto A = [&](int k, int l, int d) -> T& { return a[sz((k * N + l) * 3 + d)]; };

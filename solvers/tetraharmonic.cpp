@@ -5,14 +5,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/per_degree.h"
 #include "core/kron.h"
 #include "core/quad_bernstein.h"
 #include "solvers/biharmonic_load.h"
@@ -82,14 +81,7 @@ void apply_operator(const std::vector<std::vector<quad>>& T, int n, const std::v
   }
 }
 
-std::shared_ptr<const LuSolver> lu_solver(int n) {
-  static std::mutex mutex;
-  static std::map<int, std::shared_ptr<const LuSolver>> cache;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = cache.find(n);
-    if (it != cache.end()) return it->second;
-  }
+std::shared_ptr<const LuSolver> build_lu_solver(int n) {
   auto s = std::make_shared<LuSolver>();
   const TensorNet shape(n, n);
   s->fixed = shape.fixed_indices(FixedSet::BoundaryAdjacent);
@@ -140,8 +132,12 @@ std::shared_ptr<const LuSolver> lu_solver(int n) {
   }
   s->G = G.cast<double>();
   s->T = std::move(T);
-  std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(n, std::move(s)).first->second;
+  return s;
+}
+
+std::shared_ptr<const LuSolver> lu_solver(int n) {
+  static PerDegree<std::shared_ptr<const LuSolver>> cache;
+  return cache.get(n, build_lu_solver, "lu solver");
 }
 
 // Relative residual of Δ⁴x: max |Bernstein coefficient of Δ⁴x| divided by the max of the same

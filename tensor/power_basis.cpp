@@ -2,10 +2,9 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/per_degree.h"
 #include "core/row_major_product.h"
 
-#include <array>
-#include <mutex>
 #include <string>
 
 namespace bpde {
@@ -34,19 +33,18 @@ struct Conversions {
 // Per degree, built once (thread-safe) and kept: these matrices are on the path of every explicit
 // PDE solve and of the lu route (solvers/pde_lu.h).
 const Conversions& conversions(int n) {
-  if (n < 0 || n > kMaxDegree) throw DegreeError("power basis: degree " + std::to_string(n) + " out of range 0..64");
-  static std::array<std::once_flag, kMaxDegree + 1> once;
-  static std::array<Conversions, kMaxDegree + 1> table;
-  const auto k = static_cast<size_t>(n);
-  std::call_once(once[k], [&] {
-    Eigen::MatrixXd to = bernstein_to_power_matrix(n), from = power_to_bernstein_matrix(n);
-    for (int r = 0; r <= n; ++r) {
-      to.row(r) *= factorial(r);
-      from.col(r) /= factorial(r);
-    }
-    table[k] = {std::move(to), std::move(from)};
-  });
-  return table[k];
+  static PerDegree<Conversions> cache;
+  return cache.get(
+      n,
+      [](int d) {
+        Eigen::MatrixXd to = bernstein_to_power_matrix(d), from = power_to_bernstein_matrix(d);
+        for (int r = 0; r <= d; ++r) {
+          to.row(r) *= factorial(r);
+          from.col(r) /= factorial(r);
+        }
+        return Conversions{std::move(to), std::move(from)};
+      },
+      "power basis");
 }
 
 }  // namespace
