@@ -9,6 +9,7 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/row_major_product.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {
@@ -213,19 +214,25 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
     orth_weight_tables(orth_roots(op.A, op.C), op.A, n + 1, wcol, wrow);
   }
 
-  Eigen::MatrixX3d out = Eigen::MatrixX3d::Zero((n + 1) * (n + 1), 3);
-  for (int c = 0; c < 3; ++c) {
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(W, W);
-    Eigen::VectorXd r0(n + 1), c0(n + 1), r1(n + 1), c1(n + 1);
+  // Factorial-scaled monomial coefficients of the four edges of the three coordinates, one
+  // product Mf * [edges] (columns 4c + e, e: x(0,v), x(1,v) (= P_{n l}), x(u,0), x(u,1) (= P_{l n})),
+  // computed as its transpose [edges]^T Mf^T: column-major storage read row-major.
+  const int N = n + 1;
+  Eigen::MatrixXd edges(N, 12), mono(N, 12);
+  for (int c = 0; c < 3; ++c)
     for (int j = 0; j <= n; ++j) {
-      r0(j) = data.points()(data.index(0, j), c);
-      r1(j) = data.points()(data.index(n, j), c);
-      c0(j) = data.points()(data.index(j, 0), c);
-      c1(j) = data.points()(data.index(j, n), c);
+      edges(j, 4 * c + 0) = data.points()(data.index(0, j), c);
+      edges(j, 4 * c + 1) = data.points()(data.index(n, j), c);
+      edges(j, 4 * c + 2) = data.points()(data.index(j, 0), c);
+      edges(j, 4 * c + 3) = data.points()(data.index(j, n), c);
     }
-    // Factorial-scaled monomial coefficients of the four edges: x(0,v), x(1,v) (= P_{n l}),
-    // x(u,0), x(u,1) (= P_{l n}).
-    const Eigen::VectorXd e0v = Mf * r0, e1v = Mf * r1, e0u = Mf * c0, e1u = Mf * c1;
+  row_major_product(edges.data(), 12, N, N, Mf.data(), N, N, mono.data(), N);
+  Eigen::MatrixX3d out = Eigen::MatrixX3d::Zero(N * N, 3);
+  Eigen::MatrixXd a(W, W);
+  for (int c = 0; c < 3; ++c) {
+    a.setZero();
+    const auto e0v = mono.col(4 * c + 0), e1v = mono.col(4 * c + 1), e0u = mono.col(4 * c + 2),
+               e1u = mono.col(4 * c + 3);
     for (int j = 0; j <= n; ++j) {
       a(0, j) = e0v(j);  // eq. (5)
       a(j, 0) = e0u(j);  // eq. (6)
