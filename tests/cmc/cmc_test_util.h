@@ -9,18 +9,10 @@
 #include "core/bernstein.h"
 #include "solvers/reference_boundaries.h"
 #include "tensor/tensor_net.h"
+#include "tests/random_points.h"
 #include "triangular/triangular_net.h"
 
 namespace bpde::testutil {
-
-inline Eigen::MatrixX3d random_points(int rows, unsigned seed, double scale = 1.0) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> d(-scale, scale);
-  Eigen::MatrixX3d P(rows, 3);
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < 3; ++c) P(r, c) = d(gen);
-  return P;
-}
 
 using bpde::circle_three_arcs;
 using bpde::fit_curve;

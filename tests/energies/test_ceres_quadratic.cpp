@@ -3,25 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <random>
 
 #include "core/errors.h"
 #include "energies/ceres_quadratic.h"
 #include "energies/quadratic_energy.h"
 #include "energies/tensor_gram.h"
 #include "solvers/extremal.h"
+#include "tests/random_points.h"
 
 namespace bpde {
 namespace {
 
-Eigen::MatrixX3d random_points(int N, unsigned seed) {
-  std::mt19937 g(seed);
-  std::uniform_real_distribution<double> U(-1, 1);
-  Eigen::MatrixX3d P(N, 3);
-  for (int I = 0; I < N; ++I)
-    for (int c = 0; c < 3; ++c) P(I, c) = U(g);
-  return P;
-}
+using testutil::random_points;
 
 std::vector<double*> point_blocks(std::vector<Eigen::Vector3d>& pts) {
   std::vector<double*> b;

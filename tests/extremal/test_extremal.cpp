@@ -11,18 +11,12 @@
 #include "energies/quadratic_energy.h"
 #include "energies/tensor_gram.h"
 #include "solvers/extremal.h"
+#include "tests/random_points.h"
 
 namespace bpde {
 namespace {
 
-Eigen::MatrixX3d random_points(int N, unsigned seed) {
-  std::mt19937 g(seed);
-  std::uniform_real_distribution<double> U(-1, 1);
-  Eigen::MatrixX3d P(N, 3);
-  for (int I = 0; I < N; ++I)
-    for (int c = 0; c < 3; ++c) P(I, c) = U(g);
-  return P;
-}
+using testutil::random_points;
 
 // Net of the polynomial patch x(u,v) = Σ_kl C[c](k,l) u^k v^l (power coefficients per coordinate,
 // each (n+1) x (m+1)), exactly via the power -> Bernstein matrices.
