@@ -10,9 +10,10 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
-#include "core/per_degree.h"
 #include "core/kron.h"
+#include "core/per_degree.h"
 #include "core/quad_bernstein.h"
+#include "solvers/refine_mould.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {
@@ -90,40 +91,37 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
   MatL G = -lu.solve(B);
   std::vector<quad> X(static_cast<size_t>(N));
   // Refine until the correction is below 1e-18 of G (at most 8 steps; 2 suffice up to n ~ 20).
-  long double last = 0;
-  for (int step = 0; step < (n <= 8 ? 0 : 8); ++step) {
-    MatL R(ni, nf);
-    for (int c = 0; c < nf; ++c) {
-      std::fill(X.begin(), X.end(), quad(0));
-      for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = G(r, c);
-      X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
-      // Y = T2 X T2^T (then the other terms entrywise on the interior rows).
-      std::vector<quad> XT(static_cast<size_t>(N), 0);
-      for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j) {
-          quad acc = 0;
-          for (int l = 0; l <= n; ++l)
-            if (t2(j, l) != 0) acc += X[static_cast<size_t>(i * n1 + l)] * t2(j, l);
-          XT[static_cast<size_t>(i * n1 + j)] = acc;
+  refine_mould(
+      G, n <= 8 ? 0 : 8,
+      [&](const MatL& cur) {
+        MatL R(ni, nf);
+        for (int c = 0; c < nf; ++c) {
+          std::fill(X.begin(), X.end(), quad(0));
+          for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = cur(r, c);
+          X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
+          // Y = T2 X T2^T (then the other terms entrywise on the interior rows).
+          std::vector<quad> XT(static_cast<size_t>(N), 0);
+          for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j) {
+              quad acc = 0;
+              for (int l = 0; l <= n; ++l)
+                if (t2(j, l) != 0) acc += X[static_cast<size_t>(i * n1 + l)] * t2(j, l);
+              XT[static_cast<size_t>(i * n1 + j)] = acc;
+            }
+          for (int r = 0; r < ni; ++r) {
+            const int i = s->interior[static_cast<size_t>(r)] / n1, j = s->interior[static_cast<size_t>(r)] % n1;
+            quad acc = 0;
+            for (int k = 0; k <= n; ++k) {
+              if (t2(i, k) != 0) acc += 2 * t2(i, k) * XT[static_cast<size_t>(k * n1 + j)];
+              if (t4(i, k) != 0) acc += t4(i, k) * X[static_cast<size_t>(k * n1 + j)];
+              if (t4(j, k) != 0) acc += t4(j, k) * X[static_cast<size_t>(i * n1 + k)];
+            }
+            R(r, c) = static_cast<long double>(acc);
+          }
         }
-      for (int r = 0; r < ni; ++r) {
-        const int i = s->interior[static_cast<size_t>(r)] / n1, j = s->interior[static_cast<size_t>(r)] % n1;
-        quad acc = 0;
-        for (int k = 0; k <= n; ++k) {
-          if (t2(i, k) != 0) acc += 2 * t2(i, k) * XT[static_cast<size_t>(k * n1 + j)];
-          if (t4(i, k) != 0) acc += t4(i, k) * X[static_cast<size_t>(k * n1 + j)];
-          if (t4(j, k) != 0) acc += t4(j, k) * X[static_cast<size_t>(i * n1 + k)];
-        }
-        R(r, c) = static_cast<long double>(acc);
-      }
-    }
-    const MatL dG = lu.solve(R);
-    const long double d = dG.cwiseAbs().maxCoeff();
-    if (step > 0 && d > 0.5L * last) break;  // not contracting (cond ~ 1e19 or worse): keep G
-    G -= dG;
-    last = d;
-    if (d <= 1e-18L * G.cwiseAbs().maxCoeff()) break;
-  }
+        return R;
+      },
+      [&](const MatL& R) -> MatL { return lu.solve(R); });
   s->G = G.cast<double>();
   return s;
 }

@@ -11,10 +11,11 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
-#include "core/per_degree.h"
 #include "core/kron.h"
+#include "core/per_degree.h"
 #include "core/quad_bernstein.h"
 #include "solvers/biharmonic_load.h"
+#include "solvers/refine_mould.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {
@@ -111,25 +112,22 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
   MatL G = -qr.solve(AF);
   // Refinement: R = A_I G + A_F in quad (Kronecker form, X_c = G(:,c) on the interior + e_f),
   // then G -= QR \ R. The system is consistent (Theorem 1), so R -> 0.
-  // Refine until the correction is below 1e-18 of G (at most 8 steps; 2 suffice up to n ~ 20).
+  // Two steps (solvers/refine_mould.h) suffice up to n ~ 20; none below n = 9.
   std::vector<quad> X(static_cast<size_t>(N)), Y(static_cast<size_t>(N));
-  long double last = 0;
-  for (int step = 0; step < (n <= 8 ? 0 : 2); ++step) {
-    MatL R(N, nf);
-    for (int c = 0; c < nf; ++c) {
-      std::fill(X.begin(), X.end(), quad(0));
-      for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = G(r, c);
-      X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
-      apply_operator(T, n, X, Y);
-      for (int r = 0; r < N; ++r) R(r, c) = static_cast<long double>(Y[static_cast<size_t>(r)]);
-    }
-    const MatL dG = qr.solve(R);
-    const long double d = dG.cwiseAbs().maxCoeff();
-    if (step > 0 && d > 0.5L * last) break;  // not contracting (cond ~ 1e19 or worse): keep G
-    G -= dG;
-    last = d;
-    if (d <= 1e-18L * G.cwiseAbs().maxCoeff()) break;
-  }
+  refine_mould(
+      G, n <= 8 ? 0 : 2,
+      [&](const MatL& cur) {
+        MatL R(N, nf);
+        for (int c = 0; c < nf; ++c) {
+          std::fill(X.begin(), X.end(), quad(0));
+          for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = cur(r, c);
+          X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
+          apply_operator(T, n, X, Y);
+          for (int r = 0; r < N; ++r) R(r, c) = static_cast<long double>(Y[static_cast<size_t>(r)]);
+        }
+        return R;
+      },
+      [&](const MatL& R) -> MatL { return qr.solve(R); });
   s->G = G.cast<double>();
   s->T = std::move(T);
   return s;
