@@ -4,47 +4,16 @@
 // volume quadrature tables) is cached by CmcFunctional and built before timing.
 #include <benchmark/benchmark.h>
 
-#include <Eigen/Dense>
-#include <cmath>
-#include <numbers>
-#include <vector>
-
-#include "core/bernstein.h"
 #include "energies/cmc.h"
 #include "solvers/cmc.h"
+#include "solvers/reference_boundaries.h"
 
 namespace {
 
 using namespace bpde;
 
-Eigen::Vector3d sphere(double u, double v) {
-  const double s = u - 1.0 / 3, t = v - 1.0 / 3, r2 = s * s + t * t;
-  return Eigen::Vector3d(2 * s, 2 * t, r2 - 1) / (1 + r2);
-}
-
-Eigen::MatrixX3d fit(int n, double u0, double v0, double u1, double v1) {
-  Eigen::MatrixXd A(n + 1, n + 1);
-  Eigen::MatrixX3d rhs(n + 1, 3);
-  std::vector<double> b(static_cast<size_t>(n + 1));
-  for (int k = 0; k <= n; ++k) {
-    const double t = 0.5 * (1 - std::cos(std::numbers::pi * k / n));
-    bernstein_values(n, t, b.data());
-    for (int i = 0; i <= n; ++i) A(k, i) = b[static_cast<size_t>(i)];
-    rhs.row(k) = sphere(u0 + (u1 - u0) * t, v0 + (v1 - v0) * t).transpose();
-  }
-  return A.partialPivLu().solve(rhs);
-}
-
-TriangularNet sphere_data(int n) {
-  TriangularNet net(n);
-  const Eigen::MatrixX3d e1 = fit(n, 0, 0, 1, 0), e2 = fit(n, 0, 0, 0, 1), e3 = fit(n, 0, 1, 1, 0);
-  for (int i = 0; i <= n; ++i) {
-    net.set_point(i, 0, e1.row(i).transpose());
-    net.set_point(0, i, e2.row(i).transpose());
-    net.set_point(i, n - i, e3.row(i).transpose());
-  }
-  return net;
-}
+// The unit sphere's boundary over the reference triangle (conformal data, H = +1).
+TriangularNet sphere_data(int n) { return triangular_boundary(n, sphere_triangle); }
 
 void run(benchmark::State& state, CmcSolver solver, bool dirichlet) {
   const int n = static_cast<int>(state.range(0));
