@@ -1,5 +1,9 @@
 #include "core/row_major_product.h"
 
+#include <sstream>
+
+#include "core/errors.h"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define BPDE_X86_DISPATCH 1
 #include <immintrin.h>
@@ -139,6 +143,12 @@ bool row_major_product_uses_fma() {
 }
 
 void row_major_product(const double* A, int r, int k, int lda, const double* B, int w, int ldb, double* C, int ldc) {
+  if (r < 0 || k < 0 || w < 0 || lda < k || ldb < w || ldc < w) {
+    std::ostringstream m;
+    m << "row_major_product: sizes r = " << r << ", k = " << k << ", w = " << w << " need 0 <= k <= lda = " << lda
+      << " and 0 <= w <= ldb = " << ldb << ", ldc = " << ldc;
+    throw SizeError(m.str());
+  }
 #ifdef BPDE_X86_DISPATCH
   if (cpu_has_fma()) {
     product_fma(A, r, k, lda, B, w, ldb, C, ldc);

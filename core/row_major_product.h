@@ -20,6 +20,8 @@
 // which is 2 (n+1) #u #v + 2 (n+1)(m+1) #v flops.
 namespace bpde {
 
+/// SizeError for negative sizes or a leading dimension smaller than its row (pointers are trusted:
+/// A holds r rows of lda, B k rows of ldb, C r rows of ldc).
 void row_major_product(const double* A, int r, int k, int lda, const double* B, int w, int ldb, double* C, int ldc);
 
 /// True when row_major_product runs its AVX2/FMA path on this CPU.

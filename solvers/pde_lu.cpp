@@ -553,7 +553,8 @@ bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, doubl
   for (int k = 2; k <= n; ++k)
     for (int l = 2; l <= n + 1 - k; ++l)
       for (int d = 0; d < 3; ++d) interior(k * N + l, d) = static_cast<double>(A(k, l, d));
-  Eigen::MatrixX3d P = from_factorial_power(n, n, interior).points();
+  TensorNet interior_net = from_factorial_power(n, n, interior);
+  Eigen::MatrixX3d P = std::move(interior_net.points());
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j)
       for (int d = 0; d < 3; ++d) {

@@ -4,6 +4,7 @@
 #include <random>
 #include <vector>
 
+#include "core/errors.h"
 #include "core/row_major_product.h"
 
 using namespace bpde;
@@ -42,6 +43,14 @@ TEST(RowMajorProduct, ZeroInnerDimensionGivesZero) {
   std::vector<double> C(6, 1.0);
   row_major_product(nullptr, 2, 0, 0, nullptr, 3, 3, C.data(), 3);
   for (double c : C) EXPECT_EQ(c, 0.0);
+}
+
+TEST(RowMajorProduct, RejectsInconsistentSizes) {
+  std::vector<double> A(6), B(6), C(6);
+  EXPECT_THROW(row_major_product(A.data(), -1, 2, 2, B.data(), 3, 3, C.data(), 3), SizeError);
+  EXPECT_THROW(row_major_product(A.data(), 2, 3, 2, B.data(), 2, 2, C.data(), 2), SizeError);  // lda < k
+  EXPECT_THROW(row_major_product(A.data(), 2, 2, 2, B.data(), 3, 2, C.data(), 3), SizeError);  // ldb < w
+  EXPECT_THROW(row_major_product(A.data(), 2, 2, 2, B.data(), 3, 3, C.data(), 2), SizeError);  // ldc < w
 }
 
 }  // namespace
