@@ -10,14 +10,14 @@
 #include "core/errors.h"
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
+#include "jobs/run_job.h"
 #include "energies/cmc.h"
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
-#include "solvers/bspline_extremal.h"
-#include "solvers/clamped_plate.h"
-#include "solvers/reference_boundaries.h"
-#include "solvers/smoothing_spline.h"
+#include "solvers/bspline/bspline_extremal.h"
+#include "solvers/c1/clamped_plate.h"
+#include "boundaries/reference_boundaries.h"
+#include "solvers/blend/smoothing_spline.h"
 
 namespace bpde::app {
 

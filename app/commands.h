@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "io/run_job.h"
+#include "jobs/run_job.h"
 
 namespace bpde::app {
 

@@ -9,8 +9,8 @@
 
 #include <cmath>
 
-#include "solvers/bspline_extremal.h"
-#include "solvers/bspline_pde.h"
+#include "solvers/bspline/bspline_extremal.h"
+#include "solvers/bspline/bspline_pde.h"
 
 namespace {
 

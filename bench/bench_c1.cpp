@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "solvers/biharmonic_load.h"
-#include "solvers/clamped_plate.h"
-#include "solvers/tetraharmonic.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/c1/clamped_plate.h"
+#include "solvers/c1/tetraharmonic.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <benchmark/benchmark.h>
 
 #include "energies/cmc.h"
-#include "solvers/cmc.h"
-#include "solvers/reference_boundaries.h"
+#include "solvers/cmc/cmc.h"
+#include "boundaries/reference_boundaries.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Seed 001 Table 1 (Arnal–Monterde–Ugail §7): biharmonic surface from a degree-n boundary, solve +
 // evaluation on a 50x50 parametric mesh (TensorNet::evaluate_grid), n in {4,5,8,10,12,15,18,20}.
-//   Biharmonic/explicit/<n>      closed form (solvers/pde_explicit.h) + evaluation
-//   Biharmonic/lu/<n>            the "lu" method (solvers/pde_lu.h): build and solve the
+//   Biharmonic/explicit/<n>      closed form (solvers/pde/pde_explicit.h) + evaluation
+//   Biharmonic/lu/<n>            the "lu" method (solvers/pde/pde_lu.h): build and solve the
 //                                block-triangular anti-diagonal system, O(n^3) + evaluation
 //   Biharmonic/lu-bernstein/<n>  the dense Bernstein least-squares system built and factored in
 //                                long double each time, O(n^6) + evaluation: the classical
@@ -14,8 +14,8 @@
 
 #include <cmath>
 
-#include "solvers/pde_explicit.h"
-#include "solvers/pde_lu.h"
+#include "solvers/pde/pde_explicit.h"
+#include "solvers/pde/pde_lu.h"
 #include "tensor/tensor_net.h"
 
 namespace {

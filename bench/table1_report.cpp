@@ -83,7 +83,7 @@ int run_table1(int argc, char** argv) {
   benchmark::Shutdown();
 
   std::printf("\nSeed 001 Table 1: biharmonic, solve + 50x50 evaluation, CPU milliseconds\n");
-  std::printf("(lu: the anti-diagonal block LU; lu-bernstein: the dense Bernstein system, solvers/pde_lu.h)\n\n");
+  std::printf("(lu: the anti-diagonal block LU; lu-bernstein: the dense Bernstein system, solvers/pde/pde_lu.h)\n\n");
   std::printf("| n | paper explicit | paper linear system | explicit | lu | lu-bernstein | mould |"
               " lu / explicit | lu / mould | lu-bernstein / explicit | lu-bernstein / mould |"
               " paper / explicit | paper / lu | paper / mould |\n");

@@ -23,7 +23,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-#include "solvers/smoothing_spline.h"
+#include "solvers/blend/smoothing_spline.h"
 
 namespace bpde {
 

@@ -7,7 +7,7 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "io/json_io.h"
-#include "solvers/cmc.h"
+#include "solvers/cmc/cmc.h"
 
 namespace bpde {
 

@@ -31,7 +31,7 @@ struct Conversions {
 };
 
 // Per degree, built once (thread-safe) and kept: these matrices are on the path of every explicit
-// PDE solve and of the lu route (solvers/pde_lu.h).
+// PDE solve and of the lu route (solvers/pde/pde_lu.h).
 const Conversions& conversions(int n) {
   static PerDegree<Conversions> cache;
   return cache.get(

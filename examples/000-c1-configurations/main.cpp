@@ -27,9 +27,9 @@
 #include "configurations.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
-#include "solvers/biharmonic_load.h"
-#include "solvers/tetraharmonic.h"
+#include "jobs/run_job.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/c1/tetraharmonic.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "solvers/clamped_plate.h"
+#include "solvers/c1/clamped_plate.h"
 
 namespace {
 

@@ -11,10 +11,10 @@
 
 #include "energies/quadratic_energy.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
+#include "jobs/run_job.h"
 #include "solvers/extremal.h"
-#include "solvers/pde_lu.h"
-#include "solvers/pde_residual.h"
+#include "solvers/pde/pde_lu.h"
+#include "solvers/pde/pde_residual.h"
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "energies/energy_spec.h"
-#include "solvers/bspline_extremal.h"
-#include "solvers/bspline_pde.h"
+#include "solvers/bspline/bspline_extremal.h"
+#include "solvers/bspline/bspline_pde.h"
 #include "tensor/bspline_net.h"
 #include "tensor/bspline_ops.h"
 #include "tensor/tensor_net.h"

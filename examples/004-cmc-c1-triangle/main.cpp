@@ -23,8 +23,8 @@
 
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
-#include "solvers/cmc.h"
+#include "jobs/run_job.h"
+#include "solvers/cmc/cmc.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;

@@ -1,5 +1,5 @@
 // 004-cmc-circle: seed 004 (Arnal–Lluch–Monterde) Fig. 1 — CMC critical points spanning the unit
-// circle split into three arcs (solvers/reference_boundaries.h: circle_three_arcs), H = −1.5, −1,
+// circle split into three arcs (boundaries/reference_boundaries.h: circle_three_arcs), H = −1.5, −1,
 // −0.5, at the paper's degree n = 4 and at n = 5, 6, 8, 10; and the fold of the H-branch per degree.
 //
 // Usage: example_004_cmc_circle [--write-jobs] [EXAMPLE_DIR [OUT_DIR]]
@@ -18,9 +18,9 @@
 
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
-#include "solvers/cmc.h"
-#include "solvers/reference_boundaries.h"
+#include "jobs/run_job.h"
+#include "solvers/cmc/cmc.h"
+#include "boundaries/reference_boundaries.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;

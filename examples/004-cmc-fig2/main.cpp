@@ -23,9 +23,9 @@
 
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
-#include "solvers/cmc.h"
-#include "solvers/reference_boundaries.h"
+#include "jobs/run_job.h"
+#include "solvers/cmc/cmc.h"
+#include "boundaries/reference_boundaries.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;

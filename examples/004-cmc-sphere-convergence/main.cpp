@@ -1,5 +1,5 @@
 // 004-cmc-sphere-convergence: CMC critical points (seed 004, eq. (11)) with conformal boundary
-// data taken from the unit sphere (inverse stereographic projection; solvers/reference_boundaries.h:
+// data taken from the unit sphere (inverse stereographic projection; boundaries/reference_boundaries.h:
 // sphere_triangle, sphere_square) converge to the sphere as the degree grows (NOTES.md, seed 004).
 //
 // Usage: example_004_cmc_sphere_convergence [--write-jobs] [EXAMPLE_DIR [OUT_DIR]]
@@ -21,9 +21,9 @@
 #include "energies/cmc.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
-#include "solvers/cmc.h"
-#include "solvers/reference_boundaries.h"
+#include "jobs/run_job.h"
+#include "solvers/cmc/cmc.h"
+#include "boundaries/reference_boundaries.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;

@@ -1,11 +1,11 @@
-// Tests of the BFS C¹ bicubic element (solvers/bfs_element.h).
+// Tests of the BFS C¹ bicubic element (solvers/blend/bfs_element.h).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <random>
 
 #include "core/errors.h"
-#include "solvers/bfs_element.h"
+#include "solvers/blend/bfs_element.h"
 
 namespace bpde {
 namespace {

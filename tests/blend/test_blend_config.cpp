@@ -152,7 +152,7 @@ TEST(BlendConfig, MalformedOrOverflowingText) {
 
 TEST(BlendConfig, ExampleConfigsAreTheCylindersOfSection6) {
   const std::filesystem::path dir =
-      std::filesystem::path(BPDE_SOURCE_DIR) / "examples" / "007-blend-cylinders";
+      std::filesystem::path(BPDE_SOURCE_DIR) / "examples" / "003-blend-cylinders";
   const char* names[4] = {"fig2a.json", "fig2b.json", "fig2c.json", "fig2d.json"};
   const double as[4] = {1, 10, 10, 10}, eps[4] = {1, 1, 1e-3, 1e-5};
   const int ms[4] = {0, 0, 9, 9};

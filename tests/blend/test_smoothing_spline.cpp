@@ -1,4 +1,4 @@
-// Tests of the discrete smoothing PDE spline (seed 003; solvers/smoothing_spline.h).
+// Tests of the discrete smoothing PDE spline (seed 003; solvers/blend/smoothing_spline.h).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -8,7 +8,7 @@
 
 #include "core/errors.h"
 #include "core/quadrature.h"
-#include "solvers/smoothing_spline.h"
+#include "solvers/blend/smoothing_spline.h"
 
 namespace bpde {
 namespace {

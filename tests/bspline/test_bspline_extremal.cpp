@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/errors.h"
-#include "solvers/bspline_extremal.h"
+#include "solvers/bspline/bspline_extremal.h"
 #include "tests/bspline/helpers.h"
 
 using namespace bpde;

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "core/errors.h"
-#include "solvers/bspline_extremal.h"
-#include "solvers/bspline_pde.h"
+#include "solvers/bspline/bspline_extremal.h"
+#include "solvers/bspline/bspline_pde.h"
 #include "tests/bspline/helpers.h"
 
 using namespace bpde;

@@ -7,8 +7,8 @@
 
 #include "c1_polynomials.h"
 #include "core/errors.h"
-#include "solvers/biharmonic_load.h"
-#include "solvers/tetraharmonic.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/c1/tetraharmonic.h"
 
 namespace bpde {
 namespace {

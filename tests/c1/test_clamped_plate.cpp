@@ -9,8 +9,8 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
-#include "solvers/biharmonic_load.h"
-#include "solvers/clamped_plate.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/c1/clamped_plate.h"
 
 namespace bpde {
 namespace {

@@ -11,8 +11,8 @@
 
 #include "core/bernstein.h"
 #include "core/quadrature.h"
-#include "solvers/biharmonic_load.h"
-#include "solvers/tetraharmonic.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/c1/tetraharmonic.h"
 
 namespace bpde {
 namespace {

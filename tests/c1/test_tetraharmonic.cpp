@@ -10,7 +10,7 @@
 #include "c1_polynomials.h"
 #include "core/bernstein.h"
 #include "core/errors.h"
-#include "solvers/tetraharmonic.h"
+#include "solvers/c1/tetraharmonic.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {

@@ -9,7 +9,7 @@
 #include "energies/volume.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "solvers/reference_boundaries.h"
+#include "boundaries/reference_boundaries.h"
 
 using namespace bpde;
 

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "core/bernstein.h"
-#include "solvers/reference_boundaries.h"
+#include "boundaries/reference_boundaries.h"
 #include "tensor/tensor_net.h"
 #include "tests/random_points.h"
 #include "triangular/triangular_net.h"

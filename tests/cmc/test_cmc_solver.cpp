@@ -8,7 +8,7 @@
 #include "cmc_test_util.h"
 #include "core/errors.h"
 #include "energies/cmc.h"
-#include "solvers/cmc.h"
+#include "solvers/cmc/cmc.h"
 
 namespace bpde {
 namespace {

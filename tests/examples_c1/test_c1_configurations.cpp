@@ -9,9 +9,9 @@
 
 #include "examples/000-c1-configurations/configurations.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
-#include "solvers/biharmonic_load.h"
-#include "solvers/tetraharmonic.h"
+#include "jobs/run_job.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/c1/tetraharmonic.h"
 
 namespace {
 

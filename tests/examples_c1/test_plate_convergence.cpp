@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "solvers/clamped_plate.h"
+#include "solvers/c1/clamped_plate.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "io/run_job.h"
+#include "jobs/run_job.h"
 #include "tensor/tensor_net.h"
 #include "triangular/triangular_net.h"
 

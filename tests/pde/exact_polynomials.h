@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "solvers/pde_lu.h"
+#include "solvers/pde/pde_lu.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde::testing {

@@ -6,8 +6,8 @@
 
 #include "core/errors.h"
 #include "exact_polynomials.h"
-#include "solvers/harmonic_pde.h"
-#include "solvers/pde_residual.h"
+#include "solvers/pde/harmonic_pde.h"
+#include "solvers/pde/pde_residual.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {

@@ -6,9 +6,9 @@
 
 #include "core/errors.h"
 #include "exact_polynomials.h"
-#include "solvers/pde_explicit.h"
-#include "solvers/pde_lu.h"
-#include "solvers/pde_residual.h"
+#include "solvers/pde/pde_explicit.h"
+#include "solvers/pde/pde_lu.h"
+#include "solvers/pde/pde_residual.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {

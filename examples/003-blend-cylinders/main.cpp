@@ -5,7 +5,7 @@
 // u_y(x,1) = g_y(x,0) at the nodes x_i = i/8; approximation points A = {(i/9, 1/2)}, β = ρh with
 // h(x, y) = (2y - 1, 0.5 cos 2πx, 0.5 sin 2πx).
 //
-// Usage: example_007_blend_cylinders EXAMPLE_DIR [OUT_DIR]
+// Usage: example_003_blend_cylinders EXAMPLE_DIR [OUT_DIR]
 //   Writes EXAMPLE_DIR/fig2{a,b,c,d}.json (FORMATS.md blend configs), reads them back, solves
 //   each one by the KKT system (LU) and by elimination, and prints the README table. With
 //   OUT_DIR, also writes OUT_DIR/fig2X.obj (the (50+1)² sampled surface).
@@ -21,7 +21,7 @@
 #include "checks/mesh_checks.h"
 #include "core/errors.h"
 #include "io/blend_config.h"
-#include "solvers/smoothing_spline.h"
+#include "solvers/blend/smoothing_spline.h"
 
 using namespace bpde;
 

@@ -31,14 +31,14 @@
 //   - consistent data and full column rank: the unique solution;
 //   - consistent data with free parameters (degenerate operators such as x_uuuu = 0, or few fixed
 //     points): the member of the solution affine space that minimises the energy whose
-//     Euler–Lagrange operator L is (the EnergySpec's own functional, solvers/bspline_extremal.h),
+//     Euler–Lagrange operator L is (the EnergySpec's own functional, solvers/bspline/bspline_extremal.h),
 //     flagged by minimum_energy_member.
 #include <Eigen/Core>
 #include <vector>
 
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
-#include "solvers/pde_residual.h"
+#include "solvers/pde/pde_residual.h"
 #include "solvers/summary.h"
 #include "tensor/bspline_net.h"
 
@@ -93,7 +93,7 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
                                    const BSplinePdeOptions& options = {});
 
 /// FORMATS.md `pde_residual`: max over the (N+1)^2 sample grid of |Lx| divided by the max over the
-/// grid of Σ_k |c_k| |∂^k x|, the grid mapped onto the knot domain. As in solvers/pde_residual.h,
+/// grid of Σ_k |c_k| |∂^k x|, the grid mapped onto the knot domain. As in solvers/pde/pde_residual.h,
 /// the denominator is floored at 1e-8 Σ_k |c_k| p!/(p-k_u)! q!/(q-k_v)! h_u^-k_u h_v^-k_v max|P_ij|
 /// (h = the shortest span), so that an exact solution whose terms all vanish does not read
 /// rounding / rounding = O(1); 0 when everything vanishes.

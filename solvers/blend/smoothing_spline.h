@@ -3,7 +3,7 @@
 // PDE splines", §3 eq. (6), §5 Definition 2, Theorem 6 / eq. (8), §6).
 //
 // Given a k×l partition of Ω = [0,1]², the space X_h of Bogner–Fox–Schmit C¹ bicubic fields
-// (solvers/bfs_element.h), ε > 0 and a > 0, the discrete PDE spline σ ∈ X_h (three independent
+// (solvers/blend/bfs_element.h), ε > 0 and a > 0, the discrete PDE spline σ ∈ X_h (three independent
 // coordinates) minimises
 //     J(v) = Σ_i |v(a_i) - β_i|² + ε ( |v|_L² - 2 (f, v)_0 )                              (6)
 // over H_h = {v ∈ X_h : τ v = y}, where
@@ -32,7 +32,7 @@
 
 #include "core/differential_geometry.h"
 #include "core/mesh.h"
-#include "solvers/bfs_element.h"
+#include "solvers/blend/bfs_element.h"
 #include "tensor/bspline_net.h"
 #include "solvers/summary.h"
 

@@ -6,7 +6,7 @@
 //
 // on a net of degree (n, m) whose rows i = 0 and i = n (the curves x(0, v) and x(1, v)) are given.
 //
-// Existence and uniqueness (monomial anti-diagonal analysis, solvers/pde_lu.h): for Δ and n = m
+// Existence and uniqueness (monomial anti-diagonal analysis, solvers/pde/pde_lu.h): for Δ and n = m
 // the harmonic polynomials of bidegree (n, n) have dimension 2n+2 (odd n) or 2n+1 (even n) against
 // 2n+2 data values, so the solution is unique for odd n, and for even n the two rows must satisfy
 // one linear condition (for Δ: equal n-th differences, i.e. x(1,v) - x(0,v) has degree < n in v).
@@ -14,10 +14,10 @@
 // condition (relative tolerance PdeLuOptions::compatibility_tolerance) give Summary converged =
 // false with a message (the command exits 1); the net is then the least-squares net.
 //
-// The solve is the Bernstein least-squares system of solvers/pde_lu.h (PdeMould with
+// The solve is the Bernstein least-squares system of solvers/pde/pde_lu.h (PdeMould with
 // FixedSet::UBoundaries); use a PdeMould directly to solve many data sets of one degree.
 #include "energies/energy_spec.h"
-#include "solvers/pde_lu.h"
+#include "solvers/pde/pde_lu.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {

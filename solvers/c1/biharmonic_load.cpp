@@ -1,4 +1,4 @@
-#include "solvers/biharmonic_load.h"
+#include "solvers/c1/biharmonic_load.h"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -13,7 +13,7 @@
 #include "core/kron.h"
 #include "core/per_degree.h"
 #include "core/quad_bernstein.h"
-#include "solvers/refine_mould.h"
+#include "solvers/c1/refine_mould.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {

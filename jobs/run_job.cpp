@@ -4,7 +4,7 @@
 #include <chrono>
 #include <string>
 
-#include "io/run_job.h"
+#include "jobs/run_job.h"
 
 #include <cmath>
 #include <filesystem>
@@ -16,16 +16,16 @@
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
-#include "solvers/biharmonic_load.h"
-#include "solvers/bspline_extremal.h"
-#include "solvers/bspline_pde.h"
-#include "solvers/cmc.h"
-#include "solvers/tetraharmonic.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/bspline/bspline_extremal.h"
+#include "solvers/bspline/bspline_pde.h"
+#include "solvers/cmc/cmc.h"
+#include "solvers/c1/tetraharmonic.h"
 #include "solvers/extremal.h"
-#include "solvers/harmonic_pde.h"
-#include "solvers/pde_explicit.h"
-#include "solvers/pde_lu.h"
-#include "solvers/pde_residual.h"
+#include "solvers/pde/harmonic_pde.h"
+#include "solvers/pde/pde_explicit.h"
+#include "solvers/pde/pde_lu.h"
+#include "solvers/pde/pde_residual.h"
 
 namespace bpde {
 namespace {
@@ -44,7 +44,7 @@ Json check_report_impl(const TriangleMesh& mesh) {
   return j;
 }
 
-// (see io/run_job.h)
+// (see jobs/run_job.h)
 Json stats_json(const MeanCurvatureStats& st) {
   if (st.count == 0) return nullptr;
   return {{"min", st.min}, {"max", st.max}, {"mean", st.mean}, {"count", st.count}};

@@ -1,4 +1,4 @@
-#include "solvers/tetraharmonic.h"
+#include "solvers/c1/tetraharmonic.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -14,8 +14,8 @@
 #include "core/kron.h"
 #include "core/per_degree.h"
 #include "core/quad_bernstein.h"
-#include "solvers/biharmonic_load.h"
-#include "solvers/refine_mould.h"
+#include "solvers/c1/biharmonic_load.h"
+#include "solvers/c1/refine_mould.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {
@@ -112,7 +112,7 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
   MatL G = -qr.solve(AF);
   // Refinement: R = A_I G + A_F in quad (Kronecker form, X_c = G(:,c) on the interior + e_f),
   // then G -= QR \ R. The system is consistent (Theorem 1), so R -> 0.
-  // Two steps (solvers/refine_mould.h) suffice up to n ~ 20; none below n = 9.
+  // Two steps (solvers/c1/refine_mould.h) suffice up to n ~ 20; none below n = 9.
   std::vector<quad> X(static_cast<size_t>(N)), Y(static_cast<size_t>(N));
   refine_mould(
       G, n <= 8 ? 0 : 2,

@@ -1,4 +1,4 @@
-#include "solvers/pde_lu.h"
+#include "solvers/pde/pde_lu.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

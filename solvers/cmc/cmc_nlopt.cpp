@@ -1,4 +1,4 @@
-// NLopt correctors of the CMC solver (solvers/cmc.h):
+// NLopt correctors of the CMC solver (solvers/cmc/cmc.h):
 //  - LD_LBFGS on D_H at fixed H (the branch point is a local minimum), in the variables Z with
 //    Y = Y0 + L^{-T} Z, L the Cholesky factor of the free Dirichlet Gram (so D is 1/2|Z|^2 + ...).
 //  - SLSQP for min D subject to V = V0 (isoperimetric view), same variables, then a bordered
@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-#include "solvers/cmc_problem.h"
+#include "solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {
 namespace {

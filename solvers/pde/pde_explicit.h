@@ -31,7 +31,7 @@
 //
 // Accepted operators: those with EnergySpec::has_explicit_solution(), and also any [A..E]
 // proportional to the Coons operator [0,0,1,0,0] or to a modified biharmonic one [1,0,2a²,0,a⁴]
-// (a != 0). Anything else throws UnsupportedProblem suggesting method "lu" (solvers/pde_lu.h).
+// (a != 0). Anything else throws UnsupportedProblem suggesting method "lu" (solvers/pde/pde_lu.h).
 //
 // Accuracy: the monomial coefficients a_kl are badly conditioned at high degree; measured errors
 // against exact solutions are in docs/pde_accuracy.md.
@@ -39,7 +39,7 @@
 #include <string>
 
 #include "energies/energy_spec.h"
-#include "solvers/pde_lu.h"  // PdeSolution
+#include "solvers/pde/pde_lu.h"  // PdeSolution
 #include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 

@@ -2,7 +2,7 @@
 // Polynomial solutions of linear homogeneous PDEs with prescribed boundary control points, by a
 // linear solve (the "lu" method of seed 001, Arnal–Monterde–Ugail §3 and §7 Table 1; the
 // Bernstein form below is also the engine of the harmonic PDE from u-boundaries,
-// solvers/harmonic_pde.h).
+// solvers/pde/harmonic_pde.h).
 //
 // Problem. x(u,v) = sum_{i<=n, j<=m} B_i^n(u) B_j^m(v) P_ij (FORMATS.md layout, row i*(m+1)+j).
 // Given the prescribed points (FixedSet::Boundary: the outer ring; FixedSet::UBoundaries: rows
@@ -59,7 +59,7 @@
 
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
-#include "solvers/pde_residual.h"
+#include "solvers/pde/pde_residual.h"
 #include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 

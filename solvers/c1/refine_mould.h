@@ -6,7 +6,7 @@
 // G -= correct(R), where correct applies the long double factorisation. It stops when a
 // correction falls below 1e-18 of G, when a correction after the first fails to halve (not
 // contracting: the condition number is beyond ~1e19 and G is kept as it is), or after max_steps.
-// Used by solvers/biharmonic_load.cpp and solvers/tetraharmonic.cpp.
+// Used by solvers/c1/biharmonic_load.cpp and solvers/c1/tetraharmonic.cpp.
 #include <Eigen/Core>
 
 namespace bpde {

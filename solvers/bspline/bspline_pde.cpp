@@ -1,4 +1,4 @@
-#include "solvers/bspline_pde.h"
+#include "solvers/bspline/bspline_pde.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
@@ -11,8 +11,8 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
-#include "solvers/bspline_common.h"
-#include "solvers/bspline_extremal.h"
+#include "solvers/bspline/bspline_common.h"
+#include "solvers/bspline/bspline_extremal.h"
 #include "tensor/bspline_ops.h"
 
 namespace bpde {

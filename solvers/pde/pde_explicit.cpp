@@ -1,4 +1,4 @@
-#include "solvers/pde_explicit.h"
+#include "solvers/pde/pde_explicit.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

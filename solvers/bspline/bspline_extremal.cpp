@@ -1,4 +1,4 @@
-#include "solvers/bspline_extremal.h"
+#include "solvers/bspline/bspline_extremal.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
@@ -11,7 +11,7 @@
 
 #include "core/errors.h"
 #include "core/quadrature.h"
-#include "solvers/bspline_common.h"
+#include "solvers/bspline/bspline_common.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/smoothing_spline.h"
+#include "solvers/blend/smoothing_spline.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>

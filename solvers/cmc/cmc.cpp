@@ -1,4 +1,4 @@
-#include "solvers/cmc.h"
+#include "solvers/cmc/cmc.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -11,7 +11,7 @@
 
 #include "core/errors.h"
 #include "energies/cmc.h"
-#include "solvers/cmc_problem.h"
+#include "solvers/cmc/cmc_problem.h"
 
 namespace bpde {
 

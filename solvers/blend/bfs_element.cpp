@@ -1,4 +1,4 @@
-#include "solvers/bfs_element.h"
+#include "solvers/blend/bfs_element.h"
 
 #include <Eigen/SparseCore>
 #include <algorithm>

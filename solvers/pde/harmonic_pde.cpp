@@ -1,4 +1,4 @@
-#include "solvers/harmonic_pde.h"
+#include "solvers/pde/harmonic_pde.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "solvers/clamped_plate.h"
+#include "solvers/c1/clamped_plate.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -14,7 +14,7 @@
 #include "core/kron.h"
 #include "core/quad_bernstein.h"
 #include "core/quadrature.h"
-#include "solvers/biharmonic_load.h"
+#include "solvers/c1/biharmonic_load.h"
 
 namespace bpde {
 namespace {

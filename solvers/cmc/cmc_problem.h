@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "energies/cmc.h"
-#include "solvers/cmc.h"
+#include "solvers/cmc/cmc.h"
 
 namespace bpde::cmc_detail {
 

@@ -1,4 +1,4 @@
-#include "solvers/pde_residual.h"
+#include "solvers/pde/pde_residual.h"
 
 #include <algorithm>
 #include <cmath>
