@@ -6,9 +6,12 @@
 
 #include <cstring>
 
+#include "core/row_major_product.h"
 #include "table1_report.h"
 
 int main(int argc, char** argv) {
+  // The evaluation kernel's path decides every route's speed: record it beside the CPU context.
+  benchmark::AddCustomContext("row_major_product", bpde::row_major_product_uses_fma() ? "avx2-fma" : "portable");
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--table1") == 0) return bpde_bench::run_table1(argc, argv);
   benchmark::Initialize(&argc, argv);

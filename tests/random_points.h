@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <random>
 
-namespace bpde::testutil {
+namespace bpde::testing {
 
 inline Eigen::MatrixX3d random_points(int rows, unsigned seed, double scale = 1.0) {
   std::mt19937 gen(seed);
@@ -15,4 +15,4 @@ inline Eigen::MatrixX3d random_points(int rows, unsigned seed, double scale = 1.
   return P;
 }
 
-}  // namespace bpde::testutil
+}  // namespace bpde::testing

@@ -7,7 +7,7 @@
 #include "tensor/power_basis.h"
 #include "tensor/tensor_net.h"
 
-namespace bpde::c1test {
+namespace bpde::testing {
 
 using CPoly = std::vector<std::vector<std::complex<double>>>;  // c[k][l] of u^k v^l
 
@@ -70,4 +70,4 @@ inline double relative_difference(const TensorNet& a, const TensorNet& b) {
   return (a.points() - b.points()).cwiseAbs().maxCoeff() / b.points().cwiseAbs().maxCoeff();
 }
 
-}  // namespace bpde::c1test
+}  // namespace bpde::testing

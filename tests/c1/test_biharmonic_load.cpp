@@ -13,7 +13,7 @@
 namespace bpde {
 namespace {
 
-using namespace c1test;
+using namespace testing;
 
 // Smooth, non-polynomial C¹ data: the outer two rings of the net of (u, v, sin(2u) cosh(v) + u v²)
 // sampled at the Greville points (any values would do: every data set has a solution).

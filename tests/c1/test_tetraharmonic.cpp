@@ -16,7 +16,7 @@
 namespace bpde {
 namespace {
 
-using namespace c1test;
+using namespace testing;
 using Method = TetraharmonicOptions::Method;
 
 // An exact tetraharmonic (not triharmonic) polynomial surface of bidegree <= n, as a degree-(n,n) net.

@@ -12,7 +12,7 @@
 #include "tests/random_points.h"
 #include "triangular/triangular_net.h"
 
-namespace bpde::testutil {
+namespace bpde::testing {
 
 using bpde::circle_three_arcs;
 using bpde::fit_curve;
@@ -23,4 +23,4 @@ using bpde::sphere_triangle;
 using bpde::tensor_boundary;
 using bpde::triangular_boundary;
 
-}  // namespace bpde::testutil
+}  // namespace bpde::testing

@@ -16,7 +16,7 @@ TEST(CmcFunctional, ValueGradientHessianAgainstFiniteDifferences) {
   const double H = -1.3;
   for (int kind = 0; kind < 2; ++kind) {
     const CmcFunctional f = kind == 0 ? CmcFunctional::triangular(5) : CmcFunctional::tensor(3, 4);
-    const Eigen::MatrixX3d P = testutil::random_points(f.size(), 40 + kind);
+    const Eigen::MatrixX3d P = testing::random_points(f.size(), 40 + kind);
     EXPECT_NEAR(f.value(P, H), f.dirichlet(P) + 2 * H * f.volume(P), 1e-14 * std::abs(f.value(P, H)));
     const Eigen::MatrixX3d G = f.gradient(P, H);
     const double h = 1e-4, gs = G.cwiseAbs().maxCoeff();
@@ -50,7 +50,7 @@ TEST(CmcFunctional, JacobianBlockOfNotes) {
   const double H = 0.7;
   const CmcFunctional f = CmcFunctional::triangular(n);
   const auto I = triangular_multi_indices(n);
-  const Eigen::MatrixX3d P = testutil::random_points(f.size(), 77);
+  const Eigen::MatrixX3d P = testing::random_points(f.size(), 77);
   const std::vector<int> idx = TriangularNet(n).free_indices(FixedSet::Boundary);
   const Eigen::MatrixXd J = f.hessian(P, H, idx);
   for (size_t a = 0; a < idx.size(); ++a)
@@ -68,7 +68,7 @@ TEST(CmcFunctional, JacobianBlockOfNotes) {
 }
 
 TEST(CmcFunctional, TensorGramIsDirichlet) {
-  const TensorNet net(3, 2, testutil::random_points(12, 8));
+  const TensorNet net(3, 2, testing::random_points(12, 8));
   const CmcFunctional f = CmcFunctional::tensor(3, 2);
   const QuadratureRule1D r = gauss_legendre01(4);
   double D = 0;

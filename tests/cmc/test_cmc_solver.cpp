@@ -26,7 +26,7 @@ double rel_points(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b) {
 }
 
 TEST(CmcSolver, ZeroHIsTheDirichletExtremal) {
-  const TriangularNet data = testutil::triangular_boundary(6, testutil::sphere_triangle);
+  const TriangularNet data = testing::triangular_boundary(6, testing::sphere_triangle);
   const auto r = solve_cmc(data, opts(0.0));
   EXPECT_TRUE(r.summary.converged);
   EXPECT_LE(r.summary.residual, 1e-11);
@@ -39,13 +39,13 @@ TEST(CmcSolver, ZeroHIsTheDirichletExtremal) {
     EXPECT_EQ((r.net.points().row(i) - data.points().row(i)).norm(), 0.0);
   EXPECT_LT(rel_points(r.net.points(), dirichlet_extremal(data, FixedSet::Boundary).points()), 1e-15);
   EXPECT_NEAR(r.DH, r.D, 0.0);
-  const TensorNet td = testutil::tensor_boundary(4, testutil::sphere_square);
+  const TensorNet td = testing::tensor_boundary(4, testing::sphere_square);
   const auto rt = solve_cmc(td, opts(0.0));
   EXPECT_TRUE(rt.summary.converged);
 }
 
 TEST(CmcSolver, PlanarBoundaryMirrorsUnderHToMinusH) {
-  const TriangularNet data = testutil::triangular_boundary(7, testutil::planar_triangle);
+  const TriangularNet data = testing::triangular_boundary(7, testing::planar_triangle);
   const auto a = solve_cmc(data, opts(-1.5));
   const auto b = solve_cmc(data, opts(1.5));
   ASSERT_TRUE(a.summary.converged) << a.summary.message;
@@ -58,7 +58,7 @@ TEST(CmcSolver, PlanarBoundaryMirrorsUnderHToMinusH) {
   EXPECT_GT(a.V, 0.0);
   EXPECT_NEAR(a.V, -b.V, 1e-12 * std::abs(a.V));
   // Tensor: the unit square in z = 0, corners P_00 -> P_n0 -> P_nn -> P_0n counter-clockwise.
-  const TensorNet td = testutil::tensor_boundary(
+  const TensorNet td = testing::tensor_boundary(
       5, [](double u, double v) { return Eigen::Vector3d(u + 0.05 * u * v, v, 0); });
   const auto ta = solve_cmc(td, opts(-1.0));
   const auto tb = solve_cmc(td, opts(1.0));
@@ -70,7 +70,7 @@ TEST(CmcSolver, PlanarBoundaryMirrorsUnderHToMinusH) {
 }
 
 TEST(CmcSolver, ThreeSolversAgree) {
-  const TriangularNet data = testutil::triangular_boundary(6, testutil::sphere_triangle);
+  const TriangularNet data = testing::triangular_boundary(6, testing::sphere_triangle);
   const auto n = solve_cmc(data, opts(0.8, CmcSolver::Newton));
   const auto c = solve_cmc(data, opts(0.8, CmcSolver::Ceres));
   const auto l = solve_cmc(data, opts(0.8, CmcSolver::NLopt));
@@ -82,7 +82,7 @@ TEST(CmcSolver, ThreeSolversAgree) {
   EXPECT_LT(rel_points(l.net.points(), n.net.points()), 1e-10);
   EXPECT_NEAR(c.DH, n.DH, 1e-12 * std::abs(n.DH));
   // Tensor and C1 data too.
-  const TensorNet td = testutil::tensor_boundary(5, testutil::sphere_square);
+  const TensorNet td = testing::tensor_boundary(5, testing::sphere_square);
   const auto tn = solve_cmc(td, opts(0.5, CmcSolver::Newton, FixedSet::BoundaryAdjacent));
   const auto tc = solve_cmc(td, opts(0.5, CmcSolver::Ceres, FixedSet::BoundaryAdjacent));
   const auto tl = solve_cmc(td, opts(0.5, CmcSolver::NLopt, FixedSet::BoundaryAdjacent));
@@ -92,7 +92,7 @@ TEST(CmcSolver, ThreeSolversAgree) {
 }
 
 TEST(CmcSolver, VolumeConstrainedViewRecoversH) {
-  const TriangularNet data = testutil::triangular_boundary(5, testutil::planar_triangle);
+  const TriangularNet data = testing::triangular_boundary(5, testing::planar_triangle);
   const auto h = solve_cmc(data, opts(-2.0));
   ASSERT_TRUE(h.summary.converged);
   CmcOptions o;
@@ -106,7 +106,7 @@ TEST(CmcSolver, VolumeConstrainedViewRecoversH) {
 }
 
 TEST(CmcSolver, FoldIsDetectedAndReported) {
-  const TriangularNet data = testutil::triangular_boundary(5, testutil::planar_triangle);
+  const TriangularNet data = testing::triangular_boundary(5, testing::planar_triangle);
   for (CmcSolver s : {CmcSolver::Newton, CmcSolver::Ceres, CmcSolver::NLopt}) {
     const auto r = solve_cmc(data, opts(-60.0, s));
     EXPECT_FALSE(r.summary.converged) << to_string(s);
@@ -128,7 +128,7 @@ TEST(CmcSolver, FoldIsDetectedAndReported) {
 
 TEST(CmcSolver, FoldOnTensorNetsAndWithC1Data) {
   const std::string prefix = "no critical point on the branch from H = 0 beyond H ≈ ";
-  const TensorNet sq = testutil::tensor_boundary(
+  const TensorNet sq = testing::tensor_boundary(
       5, [](double u, double v) { return Eigen::Vector3d(u, v + 0.1 * u * (1 - u), 0); });
   const auto t = solve_cmc(sq, opts(40.0));
   EXPECT_FALSE(t.summary.converged);
@@ -136,7 +136,7 @@ TEST(CmcSolver, FoldOnTensorNetsAndWithC1Data) {
   EXPECT_GT(t.H, 1.0);
   EXPECT_TRUE(solve_cmc(sq, opts(0.99 * t.H)).summary.converged);
   EXPECT_FALSE(solve_cmc(sq, opts(1.01 * t.H)).summary.converged);
-  const TriangularNet tri = solve_cmc(testutil::triangular_boundary(7, testutil::planar_triangle), opts(-1.0)).net;
+  const TriangularNet tri = solve_cmc(testing::triangular_boundary(7, testing::planar_triangle), opts(-1.0)).net;
   const auto c = solve_cmc(tri, opts(-80.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent));
   EXPECT_FALSE(c.summary.converged);
   EXPECT_EQ(c.summary.message.rfind(prefix, 0), 0u) << c.summary.message;
@@ -148,7 +148,7 @@ TEST(CmcSolver, ConvergesToTheSphereWithConformalData) {
   // H = +1 approach the unit sphere as the degree grows.
   double prev_dist = 1e9, prev_h = 1e9;
   for (int n : {4, 6, 8, 10, 12}) {
-    const TriangularNet data = testutil::triangular_boundary(n, testutil::sphere_triangle);
+    const TriangularNet data = testing::triangular_boundary(n, testing::sphere_triangle);
     const auto r = solve_cmc(data, opts(1.0));
     ASSERT_TRUE(r.summary.converged) << n << ": " << r.summary.message;
     double dist = 0;
@@ -172,7 +172,7 @@ TEST(CmcSolver, ConvergesToTheSphereWithConformalData) {
 TEST(CmcSolver, TensorConvergesToTheSphereWithConformalData) {
   double prev_dist = 1e9, prev_h = 1e9;
   for (int n : {4, 6, 8, 10}) {
-    const TensorNet data = testutil::tensor_boundary(n, testutil::sphere_square);
+    const TensorNet data = testing::tensor_boundary(n, testing::sphere_square);
     const auto r = solve_cmc(data, opts(1.0));
     ASSERT_TRUE(r.summary.converged) << n << ": " << r.summary.message;
     double dist = 0;
@@ -198,19 +198,19 @@ TEST(CmcSolver, FoldIsAsymmetricForANonPlanarBoundary) {
     EXPECT_FALSE(r.summary.converged);
     return r.H;
   };
-  const TriangularNet sphere = testutil::triangular_boundary(6, testutil::sphere_triangle);
+  const TriangularNet sphere = testing::triangular_boundary(6, testing::sphere_triangle);
   const double fp = fold(sphere, 50), fm = fold(sphere, -50);
   EXPECT_GT(fp, 1.0);
   EXPECT_LT(fm, -1.0);
   EXPECT_GT(std::abs(std::abs(fm) - fp), 0.05);
-  const TriangularNet circle = testutil::circle_three_arcs(6);
+  const TriangularNet circle = testing::circle_three_arcs(6);
   const double cp = fold(circle, 50), cm = fold(circle, -50);
   EXPECT_NEAR(cp, -cm, 1e-3 * cp);
   EXPECT_NEAR(cp, 1.142, 2e-3);
 }
 
 TEST(CmcSolver, C1ProblemKeepsTheAdjacentRing) {
-  const TriangularNet data = testutil::triangular_boundary(7, testutil::sphere_triangle);
+  const TriangularNet data = testing::triangular_boundary(7, testing::sphere_triangle);
   const TriangularNet full = solve_cmc(data, opts(1.0)).net;  // a net with a sensible second ring
   const auto r = solve_cmc(full, opts(1.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent));
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
@@ -222,7 +222,7 @@ TEST(CmcSolver, C1ProblemKeepsTheAdjacentRing) {
 
 TEST(CmcSolver, TensorUBoundariesUsesTheGeneralHessian) {
   // Free points on the v-boundaries are not interior: the quadrature Hessian route.
-  const TensorNet data = testutil::tensor_boundary(4, testutil::sphere_square);
+  const TensorNet data = testing::tensor_boundary(4, testing::sphere_square);
   const auto n = solve_cmc(data, opts(0.5, CmcSolver::Newton, FixedSet::UBoundaries));
   const auto c = solve_cmc(data, opts(0.5, CmcSolver::Ceres, FixedSet::UBoundaries));
   ASSERT_TRUE(n.summary.converged) << n.summary.message;
@@ -233,7 +233,7 @@ TEST(CmcSolver, TensorUBoundariesUsesTheGeneralHessian) {
 }
 
 TEST(CmcSolver, BadInput) {
-  const TriangularNet t6 = testutil::triangular_boundary(6, testutil::sphere_triangle);
+  const TriangularNet t6 = testing::triangular_boundary(6, testing::sphere_triangle);
   EXPECT_THROW(solve_cmc(t6, opts(std::nan(""))), NonFiniteError);
   EXPECT_THROW(solve_cmc(t6, opts(INFINITY)), NonFiniteError);
   EXPECT_THROW(solve_cmc(TriangularNet(2), opts(1.0)), DegreeError);
@@ -262,7 +262,7 @@ TEST(CmcSolver, BadInput) {
 TEST(CmcSolver, PaperFigure1Setup) {
   // Circle split in three arcs, degree 4 (seed 004 Fig. 1), H = -0.5, -1, -1.5: report what the
   // branch from H = 0 gives (docs/cmc.md). H < 0 bulges to +z.
-  const TriangularNet data = testutil::circle_three_arcs(4);
+  const TriangularNet data = testing::circle_three_arcs(4);
   for (double H : {-0.5, -1.0, -1.5}) {
     const auto r = solve_cmc(data, opts(H));
     const MeanCurvatureStats s = mean_curvature_stats(r.net, 30, 0.1);

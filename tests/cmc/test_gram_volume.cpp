@@ -33,7 +33,7 @@ TEST(TriangularGram, ProductIntegralsSumToArea) {
 
 TEST(TriangularGram, DirichletAgainstQuadratureOfNetDerivatives) {
   for (int n : {1, 3, 6, 11}) {
-    const Eigen::MatrixX3d P = testutil::random_points(TriangularNet::count(n), 7 + n);
+    const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 7 + n);
     const TriangularNet net(n, P);
     const QuadratureRuleTriangle q = gauss_triangle(n + 1);
     double D = 0;
@@ -61,7 +61,7 @@ TEST(TriangularGram, DirichletOfTheIdentityMapAndConstants) {
 TEST(TriangularGram, GenericTermsAgainstQuadrature) {
   // Biharmonic and a mixed second-order energy, exact vs quadrature of net derivatives.
   const int n = 6;
-  const Eigen::MatrixX3d P = testutil::random_points(TriangularNet::count(n), 99);
+  const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 99);
   const TriangularNet net(n, P);
   const QuadratureRuleTriangle q = gauss_triangle(n + 1);
   double Eb = 0, E2 = 0;
@@ -82,7 +82,7 @@ TEST(TriangularGram, GenericTermsAgainstQuadrature) {
 
 TEST(TriangularGram, BasisTableDerivativesMatchNet) {
   const int n = 5;
-  const Eigen::MatrixX3d P = testutil::random_points(TriangularNet::count(n), 5);
+  const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 5);
   const TriangularNet net(n, P);
   Eigen::MatrixX2d uv(3, 2);
   uv << 0.2, 0.3, 0.6, 0.1, 0.05, 0.9;
@@ -120,7 +120,7 @@ double quadrature_volume_tensor(const TensorNet& net, int q) {
 
 TEST(Volume, ClosedFormCorrectedEq5MatchesQuadrature) {
   for (int n = 1; n <= 6; ++n) {
-    const Eigen::MatrixX3d P = testutil::random_points(TriangularNet::count(n), 31 + n);
+    const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 31 + n);
     const TriangularNet net(n, P);
     const double Vq = quadrature_volume_triangular(net, 2 * n + 2);
     const double Vf = VolumeForm::triangular(n).value(P);
@@ -136,7 +136,7 @@ TEST(Volume, PrintedSignOfD13IsWrong) {
   // With + d_13 as printed in eq. (5), V of a generic net is wrong (NOTES.md erratum).
   const int n = 3;
   const auto I = triangular_multi_indices(n);
-  const Eigen::MatrixX3d P = testutil::random_points(TriangularNet::count(n), 4);
+  const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 4);
   double Vwrong = 0;
   for (size_t a = 0; a < I.size(); ++a)
     for (size_t b = 0; b < I.size(); ++b)
@@ -185,7 +185,7 @@ TEST(Volume, CoordinateFormNeedsTheCyclicAverage) {
                P(Eigen::Index(c), 2);
     return V;
   };
-  const Eigen::MatrixX3d P = testutil::random_points(int(N), 17);
+  const Eigen::MatrixX3d P = testing::random_points(int(N), 17);
   const double V = VolumeForm::triangular(n).value(P);
   EXPECT_NEAR(coord_form(P, true), V, 1e-14);
   EXPECT_GT(std::abs(coord_form(P, false) - V), 1e-4);
@@ -215,7 +215,7 @@ TEST(Volume, GraphOverTriangleAndSquare) {
 
 TEST(Volume, TensorAgainstQuadrature) {
   for (auto [n, m] : {std::pair{1, 1}, {2, 3}, {5, 4}, {7, 7}}) {
-    const Eigen::MatrixX3d P = testutil::random_points((n + 1) * (m + 1), 3 + n * m);
+    const Eigen::MatrixX3d P = testing::random_points((n + 1) * (m + 1), 3 + n * m);
     const TensorNet net(n, m, P);
     const double Vq = quadrature_volume_tensor(net, 2 * std::max(n, m) + 2);
     const VolumeForm f = VolumeForm::tensor(n, m);
@@ -256,13 +256,13 @@ void check_gradient_hessian(const Form& f, const Eigen::MatrixX3d& P, const std:
 TEST(Volume, GradientAndHessianAgainstFiniteDifferences) {
   {
     const int n = 4;
-    const Eigen::MatrixX3d P = testutil::random_points(TriangularNet::count(n), 11);
+    const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 11);
     std::vector<int> all(static_cast<size_t>(P.rows()));
     for (int r = 0; r < P.rows(); ++r) all[static_cast<size_t>(r)] = r;
     check_gradient_hessian(VolumeForm::triangular(n), P, all);
   }
   {
-    const Eigen::MatrixX3d P = testutil::random_points(4 * 3, 12);
+    const Eigen::MatrixX3d P = testing::random_points(4 * 3, 12);
     std::vector<int> some = {0, 4, 5, 11};
     check_gradient_hessian(VolumeForm::tensor(3, 2), P, some);
   }
@@ -271,7 +271,7 @@ TEST(Volume, GradientAndHessianAgainstFiniteDifferences) {
 TEST(Volume, FastInteriorHessianMatchesQuadrature) {
   for (int n : {3, 4, 7, 12}) {
     const VolumeForm f = VolumeForm::triangular(n);
-    const Eigen::MatrixX3d P = testutil::random_points(f.size(), 50 + n);
+    const Eigen::MatrixX3d P = testing::random_points(f.size(), 50 + n);
     for (FixedSet fs : {FixedSet::Boundary, FixedSet::BoundaryAdjacent}) {
       if (fs == FixedSet::BoundaryAdjacent && n < 6) continue;
       const std::vector<int> idx = TriangularNet(n).free_indices(fs);
@@ -284,7 +284,7 @@ TEST(Volume, FastInteriorHessianMatchesQuadrature) {
   }
   for (auto [n, m] : {std::pair{2, 2}, {3, 5}, {6, 4}, {9, 9}}) {
     const VolumeForm f = VolumeForm::tensor(n, m);
-    const Eigen::MatrixX3d P = testutil::random_points(f.size(), 60 + n + m);
+    const Eigen::MatrixX3d P = testing::random_points(f.size(), 60 + n + m);
     const std::vector<int> idx = TensorNet(n, m).free_indices(FixedSet::Boundary);
     const Eigen::MatrixXd A = f.hessian(P, idx), B = f.hessian_quadrature(P, idx);
     EXPECT_LE((A - B).cwiseAbs().maxCoeff(), 1e-13 * B.cwiseAbs().maxCoeff()) << n << "," << m;
@@ -298,7 +298,7 @@ TEST(Volume, InteriorGradientIsEq10WithoutTheSpuriousThird) {
   // For interior I: dV/dP_I = ∫ B_I x_u ∧ x_v = 1/2 sum_JK C_IJK P_J ∧ P_K (eqs. (7), (10)).
   const int n = 4;
   const auto I = triangular_multi_indices(n);
-  const Eigen::MatrixX3d P = testutil::random_points(TriangularNet::count(n), 21);
+  const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 21);
   const Eigen::MatrixX3d G = VolumeForm::triangular(n).gradient(P);
   const TriangularNet net(n, P);
   for (int r : net.free_indices(FixedSet::Boundary)) {

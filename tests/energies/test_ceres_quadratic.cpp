@@ -14,7 +14,7 @@
 namespace bpde {
 namespace {
 
-using testutil::random_points;
+using testing::random_points;
 
 std::vector<double*> point_blocks(std::vector<Eigen::Vector3d>& pts) {
   std::vector<double*> b;

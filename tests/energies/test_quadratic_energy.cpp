@@ -9,7 +9,7 @@
 namespace bpde {
 namespace {
 
-using testutil::random_points;
+using testing::random_points;
 
 TEST(QuadraticEnergy, GradientMatchesCentralDifferences) {
   for (const auto& e : {EnergySpec::dirichlet(), EnergySpec::laplacian_squared(), EnergySpec::fourth_order({1, 0.4, 2, -0.3, 1.5})}) {

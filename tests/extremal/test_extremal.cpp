@@ -16,7 +16,7 @@
 namespace bpde {
 namespace {
 
-using testutil::random_points;
+using testing::random_points;
 
 // Net of the polynomial patch x(u,v) = Σ_kl C[c](k,l) u^k v^l (power coefficients per coordinate,
 // each (n+1) x (m+1)), exactly via the power -> Bernstein matrices.
