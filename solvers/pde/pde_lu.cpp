@@ -681,9 +681,4 @@ PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeL
   return finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st, t0);
 }
 
-Eigen::MatrixXd pde_bernstein_matrix(const std::vector<PdeTerm>& terms, int n, int m) {
-  check_degrees(n, m, "pde_bernstein_matrix");
-  return bernstein_matrix_ld(terms, n, m).cast<double>();
-}
-
 }  // namespace bpde
