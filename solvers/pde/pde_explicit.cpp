@@ -2,7 +2,6 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -14,8 +13,6 @@
 
 namespace bpde {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // sin(n pi/2) and cos(n pi/2), exactly.
 double sin_half_pi(int n) {
@@ -194,7 +191,7 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
       << "]; use method \"lu\"";
     throw DegreeError(s.str());
   }
-  summary.converged = true;
+  summary.set_converged();
   const int W = n + 2;  // padded: indices 0..n+1, zero outside the box
   const Eigen::MatrixXd& Mf = bernstein_to_factorial_power_matrix(n);  // edge -> a (eq. (5)-(6))
   Eigen::VectorXd ifact(n + 2);
@@ -300,8 +297,7 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
               std::ostringstream m;
               m << "the polynomial solution is not unique: on the anti-diagonal k + l = " << s
                 << " the operator has a nonzero polynomial solution with zero boundary data (system (9) is singular)";
-              summary.converged = false;
-              summary.message = m.str();
+              summary.set_failed(Status::NotUnique, m.str());
               return out;
             }
             const Eigen::VectorXd y = svd.solve(rhs);
@@ -317,8 +313,9 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
   return out;
 }
 
-PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
-  const auto t0 = Clock::now();
+namespace {
+
+PdeSolution solve_explicit_untimed(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
   options.validate();
   ExplicitOperator e = classify_explicit_operator(op);
   if (data.m() != data.n()) {
@@ -340,16 +337,14 @@ PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, cons
     const PdeStructure st =
         analyse_pde_structure({e.A, e.B, e.C, e.D, e.E}, n, n, FixedSet::Boundary, options.rank_tolerance);
     if (!st.unique) {
-      out.summary.converged = false;
-      out.summary.message = st.diagnosis + "; the data are returned unchanged";
-      out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      out.summary.set_failed(Status::NotUnique, st.diagnosis + "; the data are returned unchanged");
       return out;
     }
   }
   const Eigen::MatrixX3d a = explicit_pde_coefficients(work, e, options, out.summary);
   if (out.summary.converged && !a.allFinite()) {
-    out.summary.converged = false;
-    out.summary.message = "the explicit coefficients overflowed double precision; the data are returned unchanged";
+    out.summary.set_failed(Status::NumericalLimit,
+                           "the explicit coefficients overflowed double precision; the data are returned unchanged");
   } else if (out.summary.converged) {
     TensorNet sol = from_factorial_power(n, n, a);
     if (flip) sol = transpose(sol);
@@ -358,15 +353,24 @@ PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, cons
       for (int idx : {data.index(0, k), data.index(n, k), data.index(k, 0), data.index(k, n)})
         sol.points().row(idx) = data.points().row(idx);
     if (!sol.points().allFinite()) {
-      out.summary.converged = false;
-      out.summary.message = "the explicit solution overflowed double precision";
+      out.summary.set_failed(Status::NumericalLimit, "the explicit solution overflowed double precision");
     } else {
       out.net = std::move(sol);
     }
   } else {
     out.summary.message += "; the data are returned unchanged";
   }
-  out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace
+
+PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
+  PdeSolution out;
+  {
+    ScopedTimer timer(out.summary.seconds);
+    out = solve_explicit_untimed(data, op, options);
+  }
   return out;
 }
 

@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -16,8 +15,6 @@
 
 namespace bpde {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 std::vector<double> operator_coefficients(const EnergySpec& op) {
   if (op.order() == 2) {
@@ -250,32 +247,28 @@ double violation(const Eigen::MatrixXd& W, const Eigen::MatrixXd& XB) {
 }
 
 PdeSolution finish(const TensorNet& data, int n, int m, const Split& sp, const Eigen::MatrixXd& XF, double viol,
-                   double tol, const PdeStructure& st, Clock::time_point t0) {
+                   double tol, const PdeStructure& st) {
   PdeSolution out{TensorNet(n, m, data.points()), Summary{}};
   for (size_t q = 0; q < sp.free.size(); ++q) out.net.points().row(sp.free[q]) = XF.row(static_cast<Eigen::Index>(q));
   out.summary.residual = viol;
   if (!XF.allFinite()) {
     out.net = data;
-    out.summary.converged = false;
-    out.summary.message = "the linear solve produced non-finite values (data too large for double precision)";
+    out.summary.set_failed(Status::NumericalLimit,
+                           "the linear solve produced non-finite values (data too large for double precision)");
   } else if (viol > tol) {
     std::ostringstream s;
     s << "no polynomial solution: the data violate a compatibility condition (relative violation " << viol
       << " > tolerance " << tol << "); " << st.diagnosis << "; the returned net is the least-squares net";
-    out.summary.converged = false;
-    out.summary.message = s.str();
+    out.summary.set_failed(Status::Incompatible, s.str());
   } else {
-    out.summary.converged = true;
+    out.summary.set_converged();
   }
-  out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return out;
 }
 
-PdeSolution not_unique(const TensorNet& data, const PdeStructure& st, Clock::time_point t0) {
+PdeSolution not_unique(const TensorNet& data, const PdeStructure& st) {
   PdeSolution out{data, Summary{}};
-  out.summary.converged = false;
-  out.summary.message = st.diagnosis + "; the data are returned unchanged";
-  out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  out.summary.set_failed(Status::NotUnique, st.diagnosis + "; the data are returned unchanged");
   return out;
 }
 
@@ -373,12 +366,13 @@ bool eliminate(int r, int u, T* M, T* b, T tol, T* y) {
 
 template <class T>
 bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, double rank_tolerance, TensorNet& out,
-                        std::string& why) {
+                        Status& status, std::string& why) {
   const int n = data.n();
   const int N = n + 1;
   double cmax = 0;
   for (double x : coeffs) cmax = std::max(cmax, std::abs(x));
   if (!(cmax > 0)) {
+    status = Status::NotUnique;
     why = "the polynomial solution is not unique: the operator is zero";
     return false;
   }
@@ -425,6 +419,7 @@ bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, doubl
     std::ostringstream m;
     m << "the polynomial solution is not unique: on the anti-diagonal k + l = " << s
       << " the operator has a nonzero polynomial solution with zero boundary data";
+    status = Status::NotUnique;
     why = m.str();
     return false;
   };
@@ -563,6 +558,7 @@ bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, doubl
         P(i * N + j, d) = static_cast<double>(v + static_cast<T>(P(i * N + j, d)));
       }
   if (!P.allFinite()) {
+    status = Status::NumericalLimit;
     why = "the linear solve overflowed double precision";
     return false;
   }
@@ -628,42 +624,51 @@ double PdeMould::compatibility_violation(const TensorNet& data) const {
 }
 
 PdeSolution PdeMould::solve(const TensorNet& data) const {
-  const auto t0 = Clock::now();
-  if (data.n() != n_ || data.m() != m_) {
-    std::ostringstream s;
-    s << "pde mould of degree [" << n_ << ", " << m_ << "] cannot solve a net of degree [" << data.n() << ", "
-      << data.m() << "]";
-    throw DegreeError(s.str());
+  PdeSolution out;
+  {
+    ScopedTimer timer(out.summary.seconds);
+    if (data.n() != n_ || data.m() != m_) {
+      std::ostringstream s;
+      s << "pde mould of degree [" << n_ << ", " << m_ << "] cannot solve a net of degree [" << data.n() << ", "
+        << data.m() << "]";
+      throw DegreeError(s.str());
+    }
+    if (!structure_.unique) {
+      out = not_unique(data, structure_);
+    } else {
+      const Eigen::MatrixXd XB = rows_of(data.points(), fixed_idx_);
+      const Eigen::MatrixXd XF = mould_product(S_, XB);
+      const double viol = W_.rows() ? violation(W_, XB) : 0.0;
+      out = finish(data, n_, m_, {fixed_idx_, free_idx_}, XF, viol, options_.compatibility_tolerance, structure_);
+    }
   }
-  if (!structure_.unique) return not_unique(data, structure_, t0);
-  const Eigen::MatrixXd XB = rows_of(data.points(), fixed_idx_);
-  const Eigen::MatrixXd XF = mould_product(S_, XB);
-  const double viol = W_.rows() ? violation(W_, XB) : 0.0;
-  return finish(data, n_, m_, {fixed_idx_, free_idx_}, XF, viol, options_.compatibility_tolerance, structure_, t0);
+  return out;
 }
 
-PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
-  const auto t0 = Clock::now();
-  options.validate();
-  check_problem(op, FixedSet::Boundary);
-  const int n = data.n(), m = data.m();
-  if (n == m && options.formulation == PdeLuOptions::Formulation::AntiDiagonal) {
-    PdeSolution out{data, Summary{}};
-    std::string why;
-    TensorNet sol(n, n);
-    if (antidiagonal_solve<LD>(data, operator_coefficients(op), options.rank_tolerance, sol, why)) {
-      out.net = std::move(sol);
-      out.summary.converged = true;
-    } else {
-      out.summary.converged = false;
-      out.summary.message = why + "; the data are returned unchanged";
-    }
-    out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    return out;
+namespace {
+
+// n = m: the block LU on the anti-diagonals.
+PdeSolution solve_antidiagonal(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
+  const int n = data.n();
+  PdeSolution out{data, Summary{}};
+  Status status = Status::NoConvergence;
+  std::string why;
+  TensorNet sol(n, n);
+  if (antidiagonal_solve<LD>(data, operator_coefficients(op), options.rank_tolerance, sol, status, why)) {
+    out.net = std::move(sol);
+    out.summary.set_converged();
+  } else {
+    out.summary.set_failed(status, why + "; the data are returned unchanged");
   }
+  return out;
+}
+
+// Any degrees: the Bernstein least-squares system, factored for this call.
+PdeSolution solve_bernstein(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
+  const int n = data.n(), m = data.m();
   const PdeStructure st = analyse_pde_structure(operator_coefficients(op), n, m, FixedSet::Boundary,
                                                 options.rank_tolerance);
-  if (!st.unique) return not_unique(data, st, t0);
+  if (!st.unique) return not_unique(data, st);
   const Split sp = split_indices(n, m, FixedSet::Boundary);
   const MatL K = bernstein_matrix_ld(pde_operator_terms(op), n, m);
   const MatL KFB = columns(K, sp.fixed);
@@ -678,7 +683,23 @@ PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeL
   } else if (st.conditions > 0) {
     viol = violation(conditions_without_unknowns(KFB, st.conditions), XB);
   }
-  return finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st, t0);
+  return finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st);
+}
+
+}  // namespace
+
+PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
+  PdeSolution out;
+  {
+    ScopedTimer timer(out.summary.seconds);
+    options.validate();
+    check_problem(op, FixedSet::Boundary);
+    if (data.n() == data.m() && options.formulation == PdeLuOptions::Formulation::AntiDiagonal)
+      out = solve_antidiagonal(data, op, options);
+    else
+      out = solve_bernstein(data, op, options);
+  }
+  return out;
 }
 
 }  // namespace bpde
