@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <list>
 #include <mutex>
@@ -77,31 +76,30 @@ LVector elevate(const LVector& f, int r) {
   return g;
 }
 
-Basis1D make_basis(int n, int s, int dmax) {
-  Basis1D b;
-  b.n = n;
-  b.s = s;
-  b.K = n + 1 - 2 * s;
-  const int K = b.K;
-  const double lam = 2.0 * s + 0.5;
-  const QuadratureRule1D rule = gauss_legendre01(n + 2);  // exact for degree <= 2n + 3
-  const int q = static_cast<int>(rule.x.size());
-
-  // Power-basis coefficients of g(t) = (t - t^2)^s, for its derivatives.
+// Power-basis coefficients of g(t) = (t - t^2)^s (degree 2s), for its derivatives.
+std::vector<double> weight_power_coefficients(int s) {
   std::vector<double> g(static_cast<size_t>(2 * s + 1), 0.0);
   for (int r = 0; r <= s; ++r) g[static_cast<size_t>(s + r)] = binomial(s, r) * ((r % 2) ? -1.0 : 1.0);
-  auto g_derivative = [&](int d, double t) {
-    double v = 0.0;
-    for (int e = d; e <= 2 * s; ++e) {
-      double c = g[static_cast<size_t>(e)];
-      for (int z = 0; z < d; ++z) c *= (e - z);
-      v += c * std::pow(t, e - d);
-    }
-    return v;
-  };
+  return g;
+}
 
-  // Phi[d](g, k) = φ_k^(d)(x_g) (unnormalised), by Leibniz and d^e/dt^e C_k^λ(2t-1) =
-  // 2^e * 2^e λ(λ+1)..(λ+e-1) C_{k-e}^(λ+e)(2t-1).
+// g^(d)(t) from the power coefficients of g (degree 2s).
+double weight_derivative(const std::vector<double>& g, int s, int d, double t) {
+  double v = 0.0;
+  for (int e = d; e <= 2 * s; ++e) {
+    double c = g[static_cast<size_t>(e)];
+    for (int z = 0; z < d; ++z) c *= (e - z);
+    v += c * std::pow(t, e - d);
+  }
+  return v;
+}
+
+// Phi[d](g, k) = φ_k^(d)(x_g) (unnormalised) at the nodes of `rule`, d = 0..dmax, by Leibniz and
+// d^e/dt^e C_k^λ(2t-1) = 2^e * 2^e λ(λ+1)..(λ+e-1) C_{k-e}^(λ+e)(2t-1).
+std::vector<Eigen::MatrixXd> basis_derivatives_at_nodes(const QuadratureRule1D& rule, int s, int K, int dmax) {
+  const double lam = 2.0 * s + 0.5;
+  const int q = static_cast<int>(rule.x.size());
+  const std::vector<double> g = weight_power_coefficients(s);
   std::vector<Eigen::MatrixXd> Phi(static_cast<size_t>(dmax + 1), Eigen::MatrixXd::Zero(q, K));
   std::vector<double> vals(static_cast<size_t>(K + 1));
   for (int gi = 0; gi < q; ++gi) {
@@ -116,19 +114,18 @@ Basis1D make_basis(int n, int s, int dmax) {
     }
     for (int d = 0; d <= dmax; ++d)
       for (int r = 0; r <= d; ++r) {
-        const double gd = binomial(d, r) * g_derivative(r, t);
+        const double gd = binomial(d, r) * weight_derivative(g, s, r, t);
         if (gd == 0.0) continue;
         for (int k = 0; k < K; ++k) Phi[static_cast<size_t>(d)](gi, k) += gd * P[static_cast<size_t>(d - r)][static_cast<size_t>(k)];
       }
   }
-  // Normalise to unit L2 norm.
-  Eigen::VectorXd norm(K);
-  for (int k = 0; k < K; ++k) norm(k) = 1.0 / std::sqrt((rule.w.array() * Phi[0].col(k).array().square()).sum());
-  for (auto& P : Phi) P = P * norm.asDiagonal();
+  return Phi;
+}
 
-  // 1-D integrals.
+// The 1-D integrals A[a][c] = ∫ φ^(a) φ^(c)ᵀ and C[a][c] = ∫ φ^(a) (B^n)^(c)ᵀ by the quadrature.
+void basis_integrals(const std::vector<Eigen::MatrixXd>& Phi, const QuadratureRule1D& rule, int dmax, Basis1D& b) {
   std::vector<Eigen::MatrixXd> Bern;
-  for (int d = 0; d <= dmax; ++d) Bern.push_back(bernstein_table(n, rule.x, d));
+  for (int d = 0; d <= dmax; ++d) Bern.push_back(bernstein_table(b.n, rule.x, d));
   b.A.assign(static_cast<size_t>(dmax + 1), std::vector<Eigen::MatrixXd>(static_cast<size_t>(dmax + 1)));
   b.C = b.A;
   for (int a = 0; a <= dmax; ++a)
@@ -136,9 +133,12 @@ Basis1D make_basis(int n, int s, int dmax) {
       b.A[static_cast<size_t>(a)][static_cast<size_t>(c)] = Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Phi[static_cast<size_t>(c)];
       b.C[static_cast<size_t>(a)][static_cast<size_t>(c)] = Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Bern[static_cast<size_t>(c)];
     }
+}
 
-  // Bernstein coefficients of φ_k: C_k by the same recurrence in Bernstein form, times g, elevated.
-  b.T.resize(K, K);
+// Bernstein coefficients (indices s..n-s, degree n) of the normalised φ_k, k = 0..K-1, in the
+// columns of a K x K matrix: C_k by the Gegenbauer recurrence in Bernstein form, times g, elevated.
+Eigen::MatrixXd basis_bernstein_coefficients(int n, int s, int K, const Eigen::VectorXd& norm) {
+  Eigen::MatrixXd T(K, K);
   std::vector<LVector> Ck;
   const long double llam = 2.0L * s + 0.5L;
   for (int k = 0; k < K; ++k) {
@@ -156,8 +156,25 @@ Basis1D make_basis(int n, int s, int dmax) {
     LVector h = LVector::Zero(k + 2 * s + 1);
     for (int i = s; i <= k + s; ++i) h(i) = c(i - s) * lbinomial(k, i - s) / lbinomial(k + 2 * s, i);
     const LVector full = elevate(h, n - k - 2 * s);
-    b.T.col(k) = (static_cast<long double>(norm(k)) * full.segment(s, K)).cast<double>();
+    T.col(k) = (static_cast<long double>(norm(k)) * full.segment(s, K)).cast<double>();
   }
+  return T;
+}
+
+Basis1D make_basis(int n, int s, int dmax) {
+  Basis1D b;
+  b.n = n;
+  b.s = s;
+  b.K = n + 1 - 2 * s;
+  const int K = b.K;
+  const QuadratureRule1D rule = gauss_legendre01(n + 2);  // exact for degree <= 2n + 3
+  std::vector<Eigen::MatrixXd> Phi = basis_derivatives_at_nodes(rule, s, K, dmax);
+  // Normalise to unit L2 norm.
+  Eigen::VectorXd norm(K);
+  for (int k = 0; k < K; ++k) norm(k) = 1.0 / std::sqrt((rule.w.array() * Phi[0].col(k).array().square()).sum());
+  for (auto& P : Phi) P = P * norm.asDiagonal();
+  basis_integrals(Phi, rule, dmax, b);
+  b.T = basis_bernstein_coefficients(n, s, K, norm);
   return b;
 }
 
@@ -425,10 +442,10 @@ std::shared_ptr<const ExtremalSolver> ExtremalSolver::cached(const EnergySpec& e
   return solver;
 }
 
-ExtremalResult solve_extremal(const TensorNet& net, const EnergySpec& energy, FixedSet fixed,
-                              const ExtremalOptions& options) {
-  options.validate();
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+
+ExtremalResult solve_extremal_untimed(const TensorNet& net, const EnergySpec& energy, FixedSet fixed,
+                                      const ExtremalOptions& options) {
   std::shared_ptr<const ExtremalSolver> solver =
       options.use_cache ? ExtremalSolver::cached(energy, net.n(), net.m(), fixed, options)
                         : std::make_shared<const ExtremalSolver>(energy, net.n(), net.m(), fixed, options);
@@ -436,15 +453,31 @@ ExtremalResult solve_extremal(const TensorNet& net, const EnergySpec& energy, Fi
   r.energy = solver->extremal_energy(r.net.points());
   r.summary.iterations = 0;
   r.summary.residual = solver->reduced_residual(r.net.points());
-  r.summary.converged = r.summary.residual <= 1e-11 && std::isfinite(r.energy) && r.net.points().allFinite();
+  const bool ok = r.summary.residual <= kConvergenceTolerance && std::isfinite(r.energy) && r.net.points().allFinite();
   std::ostringstream s;
-  if (!r.summary.converged)
-    s << "extremal: optimality residual " << r.summary.residual << " above 1e-11";
+  if (!ok)
+    s << "extremal: optimality residual " << r.summary.residual << " above " << kConvergenceTolerance;
   else
     s << "direct solve";
   s << " (Bernstein-coordinate residual " << solver->optimality_residual(r.net.points()) << ")";
+  if (ok)
+    r.summary.set_converged();
+  else
+    r.summary.set_failed(Status::NumericalLimit, s.str());
   r.summary.message = s.str();
-  r.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace
+
+ExtremalResult solve_extremal(const TensorNet& net, const EnergySpec& energy, FixedSet fixed,
+                              const ExtremalOptions& options) {
+  options.validate();
+  ExtremalResult r;
+  {
+    ScopedTimer timer(r.summary.seconds);
+    r = solve_extremal_untimed(net, energy, fixed, options);
+  }
   return r;
 }
 

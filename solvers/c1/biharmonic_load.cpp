@@ -2,9 +2,9 @@
 
 #include <Eigen/LU>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -152,9 +152,9 @@ TensorNet bilaplacian_load_net(const TensorNet& net, double c40, double c22, dou
   return TensorNet(n, n, std::move(out));
 }
 
-BiharmonicLoadResult solve_biharmonic_load(const TensorNet& data, const BiharmonicLoadOptions& options) {
-  options.validate();
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+
+BiharmonicLoadResult solve_biharmonic_load_untimed(const TensorNet& data) {
   check_square_degree(data, 4, "biharmonic-load");
   const int n = data.n();
   const auto solver = load_solver(n);
@@ -183,13 +183,29 @@ BiharmonicLoadResult solve_biharmonic_load(const TensorNet& data, const Biharmon
     }
   }
   for (int r : solver->interior) res = std::max(res, result.load.points().row(r).cwiseAbs().maxCoeff());
-  result.summary.residual = scale > 0.0 ? res / scale : 0.0;
-  result.summary.converged = result.summary.residual <= 1e-11;
-  result.summary.message = result.summary.converged
-                               ? "solved (Bernstein-basis LU)"
-                               : "the load net does not vanish on the interior to 1e-11 (relative residual " +
-                                     std::to_string(result.summary.residual) + ")";
-  result.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Summary& summary = result.summary;
+  summary.residual = scale > 0.0 ? res / scale : 0.0;
+  if (summary.residual <= kConvergenceTolerance) {
+    summary.set_converged();
+    summary.message = "solved (Bernstein-basis LU)";
+  } else {
+    std::ostringstream m;
+    m << "the load net does not vanish on the interior to " << kConvergenceTolerance << " (relative residual "
+      << summary.residual << ")";
+    summary.set_failed(Status::NumericalLimit, m.str());
+  }
+  return result;
+}
+
+}  // namespace
+
+BiharmonicLoadResult solve_biharmonic_load(const TensorNet& data, const BiharmonicLoadOptions& options) {
+  options.validate();
+  BiharmonicLoadResult result;
+  {
+    ScopedTimer timer(result.summary.seconds);
+    result = solve_biharmonic_load_untimed(data);
+  }
   return result;
 }
 

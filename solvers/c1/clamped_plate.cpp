@@ -3,9 +3,9 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -167,9 +167,14 @@ ClampedPlateResult ritz(int n, double a) {
   out.net = deflection_net(W, a);
   out.load = load_net(load_of(W, a), a);
   out.summary.residual = (K * c - f).norm() / f.norm();
-  out.summary.converged = out.summary.residual <= 1e-11;
-  out.summary.message = out.summary.converged ? "solved (Ritz, integrated-Legendre basis, Cholesky)"
-                                              : "the Galerkin residual is " + std::to_string(out.summary.residual);
+  if (out.summary.residual <= kConvergenceTolerance) {
+    out.summary.set_converged();
+    out.summary.message = "solved (Ritz, integrated-Legendre basis, Cholesky)";
+  } else {
+    std::ostringstream m;
+    m << "the Galerkin residual is " << out.summary.residual;
+    out.summary.set_failed(Status::NumericalLimit, m.str());
+  }
   return out;
 }
 
@@ -214,16 +219,30 @@ bool qsolve(std::vector<quad>& A, std::vector<quad>& b, int N) {
   return true;
 }
 
-ClampedPlateResult admissible_load(int n, double a) {
-  ClampedPlateResult out;
+// The Bernstein system of the admissible load on the symmetric nets: unknown (i, j) of the
+// fundamental domain 2 <= i, j <= h = floor(n/2) at row/column (i-2) L + (j-2), L = h - 1.
+struct SymmetricPlateSystem {
+  int n, h, L, N;
+  std::vector<quad> A;  // N x N, row-major; right-hand side 1
+  // Unknown of the net point (i, j), 2 <= i, j <= n-2, through the symmetries i -> n-i, j -> n-j.
+  int pos(int i, int j) const { return (rep(i) - 2) * L + (rep(j) - 2); }
+  int rep(int i) const { return i <= h ? i : n - i; }
+};
+
+SymmetricPlateSystem plate_system(int n, double a) {
+  SymmetricPlateSystem sys;
+  sys.n = n;
+  sys.h = n / 2;
+  sys.L = sys.h - 1;
+  sys.N = sys.L * sys.L;  // fundamental domain 2..h in each direction
+  const int h = sys.h, L = sys.L, N = sys.N;
   const std::vector<quad> T4 = qderivative_at_degree(n, 4), T2 = qderivative_at_degree(n, 2);
   auto t4 = [&](int i, int k) { return T4[static_cast<size_t>(i * (n + 1) + k)]; };
   auto t2 = [&](int i, int k) { return T2[static_cast<size_t>(i * (n + 1) + k)]; };
   const quad qa = a, c2 = 2 / (qa * qa), c4 = 1 / (qa * qa * qa * qa);
-  const int h = n / 2, L = h - 1, N = L * L;  // fundamental domain 2..h in each direction
-  auto rep = [&](int i) { return i <= h ? i : n - i; };
-  auto pos = [&](int i, int j) { return (rep(i) - 2) * L + (rep(j) - 2); };
-  std::vector<quad> A(static_cast<size_t>(N * N), 0), x(static_cast<size_t>(N), 1);
+  auto pos = [&](int i, int j) { return sys.pos(i, j); };
+  std::vector<quad>& A = sys.A;
+  A.assign(static_cast<size_t>(N * N), 0);
   for (int i = 2; i <= h; ++i)
     for (int j = 2; j <= h; ++j) {
       const size_t row = static_cast<size_t>(((i - 2) * L + (j - 2)) * N);
@@ -234,48 +253,59 @@ ClampedPlateResult admissible_load(int n, double a) {
           for (int l = 2; l <= n - 2; ++l) A[row + static_cast<size_t>(pos(k, l))] += c2 * t2(i, k) * t2(j, l);
       }
     }
-  // Mixed precision: LU in long double (x87, 64-bit mantissa), residuals and updates in quad
-  // (iterative refinement). Each step contracts the error by ~ cond * 1e-19 (~1e-3 at n = 30);
-  // fall back to a quad LU if the refinement stalls.
+  return sys;
+}
+
+// Solve A x = 1 (N x N, row-major, in quad). Mixed precision: LU in long double (x87, 64-bit
+// mantissa), residuals and updates in quad (iterative refinement). Each step contracts the error
+// by ~ cond * 1e-19 (~1e-3 at n = 30); fall back to a quad LU if the refinement stalls (which
+// overwrites A). x must hold N ones on entry. False if the system is singular.
+bool solve_refined(std::vector<quad>& A, int N, std::vector<quad>& x, int& iterations) {
   bool ok = true;
-  int iterations = 0;
-  {
-    using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
-    using VecL = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
-    MatL Ad(N, N);
-    for (int r = 0; r < N; ++r)
-      for (int c = 0; c < N; ++c) Ad(r, c) = static_cast<long double>(A[static_cast<size_t>(r * N + c)]);
-    const Eigen::PartialPivLU<MatL> lu(Ad);
-    std::vector<quad> sol(static_cast<size_t>(N), 0);
-    VecL rd(N);
-    bool refined = false;
-    for (int it = 0; it < 20 && !refined; ++it) {
-      for (int r = 0; r < N; ++r) {
-        quad acc = 1;  // b = 1
-        for (int c = 0; c < N; ++c) acc -= A[static_cast<size_t>(r * N + c)] * sol[static_cast<size_t>(c)];
-        rd(r) = static_cast<long double>(acc);
-      }
-      const VecL d = lu.solve(rd);
-      double dmax = 0.0, xmax = 0.0;
-      for (int r = 0; r < N; ++r) {
-        sol[static_cast<size_t>(r)] += static_cast<quad>(d(r));
-        dmax = std::max(dmax, std::abs(static_cast<double>(d(r))));
-        xmax = std::max(xmax, std::abs(static_cast<double>(sol[static_cast<size_t>(r)])));
-      }
-      refined = std::isfinite(dmax) && dmax <= 1e-17 * xmax;
-      iterations = it + 1;
+  using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+  using VecL = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
+  MatL Ad(N, N);
+  for (int r = 0; r < N; ++r)
+    for (int c = 0; c < N; ++c) Ad(r, c) = static_cast<long double>(A[static_cast<size_t>(r * N + c)]);
+  const Eigen::PartialPivLU<MatL> lu(Ad);
+  std::vector<quad> sol(static_cast<size_t>(N), 0);
+  VecL rd(N);
+  bool refined = false;
+  for (int it = 0; it < 20 && !refined; ++it) {
+    for (int r = 0; r < N; ++r) {
+      quad acc = 1;  // b = 1
+      for (int c = 0; c < N; ++c) acc -= A[static_cast<size_t>(r * N + c)] * sol[static_cast<size_t>(c)];
+      rd(r) = static_cast<long double>(acc);
     }
-    if (refined)
-      x = sol;
-    else
-      ok = qsolve(A, x, N);
+    const VecL d = lu.solve(rd);
+    double dmax = 0.0, xmax = 0.0;
+    for (int r = 0; r < N; ++r) {
+      sol[static_cast<size_t>(r)] += static_cast<quad>(d(r));
+      dmax = std::max(dmax, std::abs(static_cast<double>(d(r))));
+      xmax = std::max(xmax, std::abs(static_cast<double>(sol[static_cast<size_t>(r)])));
+    }
+    refined = std::isfinite(dmax) && dmax <= 1e-17 * xmax;
+    iterations = it + 1;
   }
+  if (refined)
+    x = sol;
+  else
+    ok = qsolve(A, x, N);
+  return ok;
+}
+
+ClampedPlateResult admissible_load(int n, double a) {
+  ClampedPlateResult out;
+  SymmetricPlateSystem sys = plate_system(n, a);
+  std::vector<quad> x(static_cast<size_t>(sys.N), 1);
+  int iterations = 0;
+  const bool ok = solve_refined(sys.A, sys.N, x, iterations);
   quad w = 0, half_n = 1;
   for (int k = 0; k < n; ++k) half_n /= 2;
   Eigen::MatrixXd W = Eigen::MatrixXd::Zero(n + 1, n + 1);
   for (int i = 2; i <= n - 2; ++i)
     for (int j = 2; j <= n - 2; ++j) {
-      const quad xij = x[static_cast<size_t>(pos(i, j))];
+      const quad xij = x[static_cast<size_t>(sys.pos(i, j))];
       W(i, j) = static_cast<double>(xij);
       w += qbinom(n, i) * qbinom(n, j) * half_n * half_n * xij;
     }
@@ -290,9 +320,14 @@ ClampedPlateResult admissible_load(int n, double a) {
     for (int j = 2; j <= n - 2; ++j) res = std::max(res, std::abs(R(i, j) - 1.0));
   out.summary.residual = res;
   out.summary.iterations = iterations;
-  out.summary.converged = ok && std::isfinite(out.center_deflection);
-  out.summary.message = out.summary.converged ? "solved (admissible load, Bernstein basis, long-double LU refined in binary128)"
-                                              : "the admissible-load system is singular";
+  if (!ok) {
+    out.summary.set_failed(Status::NotUnique, "the admissible-load system is singular");
+  } else if (!std::isfinite(out.center_deflection)) {
+    out.summary.set_failed(Status::NumericalLimit, "the admissible-load solution is not finite in double precision");
+  } else {
+    out.summary.set_converged();
+    out.summary.message = "solved (admissible load, Bernstein basis, long-double LU refined in binary128)";
+  }
   return out;
 }
 
@@ -316,10 +351,12 @@ ClampedPlateOptions::Method parse_plate_method(const std::string& name) {
 
 ClampedPlateResult solve_clamped_plate(const ClampedPlateOptions& options) {
   options.validate();
-  const auto t0 = std::chrono::steady_clock::now();
-  ClampedPlateResult out = options.method == ClampedPlateOptions::Method::Ritz ? ritz(options.degree, options.aspect)
-                                                                               : admissible_load(options.degree, options.aspect);
-  out.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ClampedPlateResult out;
+  {
+    ScopedTimer timer(out.summary.seconds);
+    out = options.method == ClampedPlateOptions::Method::Ritz ? ritz(options.degree, options.aspect)
+                                                              : admissible_load(options.degree, options.aspect);
+  }
   return out;
 }
 

@@ -3,9 +3,9 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -161,6 +161,109 @@ double relative_residual(const TensorNet& net) {
   return scale > 0.0 ? res / scale : 0.0;
 }
 
+// ---- the explicit recursion of Annex A, in named steps.
+
+// Row i of the net (P_i0..P_in) and column j (P_0j..P_nj) as (n+1) x 3 Bernstein coefficients.
+Eigen::MatrixX3d net_row(const TensorNet& data, int i) {
+  const int n = data.n();
+  Eigen::MatrixX3d r(n + 1, 3);
+  for (int j = 0; j <= n; ++j) r.row(j) = data.points().row(data.index(i, j));
+  return r;
+}
+Eigen::MatrixX3d net_col(const TensorNet& data, int j) {
+  const int n = data.n();
+  Eigen::MatrixX3d r(n + 1, 3);
+  for (int i = 0; i <= n; ++i) r.row(i) = data.points().row(data.index(i, j));
+  return r;
+}
+
+// Factorial power coefficients (k! times power coefficient k) of a Bernstein curve; Mp is the
+// Bernstein-to-power matrix of degree n.
+Eigen::MatrixX3d factorial_power(const Eigen::MatrixXd& Mp, int n, const Eigen::MatrixX3d& bern) {
+  Eigen::MatrixX3d c = Mp * bern;
+  for (int k = 0; k <= n; ++k) c.row(k) *= factorial(k);
+  return c;
+}
+
+// The coefficients a_ij being filled in, and the curves at u = 1 and v = 1 they must match.
+struct AnnexA {
+  int n;
+  Eigen::MatrixX3d a;                 // a_ij, row i*(n+1)+j; zero until set
+  Eigen::MatrixX3d X1, DX1, Y1, DY1;  // x(1,v), x_u(1,v), x(u,1), x_v(u,1) (factorial power basis)
+
+  // Boundary curves and cross derivatives in the factorial power basis: eqs. (17)-(24). Sets
+  // a_0j, a_1j, a_i0, a_i1.
+  explicit AnnexA(const TensorNet& data) : n(data.n()), a(Eigen::MatrixX3d::Zero((n + 1) * (n + 1), 3)) {
+    const Eigen::MatrixXd Mp = bernstein_to_power_matrix(n);
+    auto fpow = [&](const Eigen::MatrixX3d& bern) { return factorial_power(Mp, n, bern); };
+    const Eigen::MatrixX3d a0j = fpow(net_row(data, 0)), a1j = fpow(n * (net_row(data, 1) - net_row(data, 0)));
+    const Eigen::MatrixX3d ai0 = fpow(net_col(data, 0)), ai1 = fpow(n * (net_col(data, 1) - net_col(data, 0)));
+    X1 = fpow(net_row(data, n));
+    DX1 = fpow(n * (net_row(data, n) - net_row(data, n - 1)));
+    Y1 = fpow(net_col(data, n));
+    DY1 = fpow(n * (net_col(data, n) - net_col(data, n - 1)));
+    for (int k = 0; k <= n; ++k) {
+      set(0, k, a0j.row(k));
+      set(1, k, a1j.row(k));
+      set(k, 0, ai0.row(k));
+      set(k, 1, ai1.row(k));
+    }
+  }
+
+  Eigen::RowVector3d A(int i, int j) const {
+    if (i < 0 || j < 0 || i > n || j > n) return Eigen::RowVector3d::Zero();
+    return a.row(i * (n + 1) + j);
+  }
+  void set(int i, int j, const Eigen::RowVector3d& x) { a.row(i * (n + 1) + j) = x; }
+
+  // S^k: unknowns a_2k, a_3k (column k); S_k: unknowns a_k2, a_k3 (row k).
+  //   a2/2 + a3/6 = r1,  a2 + a3/2 = r2   =>   a2 = 6 r1 - 2 r2,  a3 = 6 r2 - 12 r1.
+  void solve_column(int k, Eigen::RowVector3d& a2, Eigen::RowVector3d& a3) const {
+    Eigen::RowVector3d r1 = X1.row(k) - A(0, k) - A(1, k), r2 = DX1.row(k) - A(1, k);
+    for (int i = 4; i <= n; ++i) {
+      r1 -= A(i, k) / factorial(i);
+      r2 -= A(i, k) / factorial(i - 1);
+    }
+    a2 = 6.0 * r1 - 2.0 * r2;
+    a3 = 6.0 * r2 - 12.0 * r1;
+  }
+  void solve_row(int k, Eigen::RowVector3d& a2, Eigen::RowVector3d& a3) const {
+    Eigen::RowVector3d r1 = Y1.row(k) - A(k, 0) - A(k, 1), r2 = DY1.row(k) - A(k, 1);
+    for (int j = 4; j <= n; ++j) {
+      r1 -= A(k, j) / factorial(j);
+      r2 -= A(k, j) / factorial(j - 1);
+    }
+    a2 = 6.0 * r1 - 2.0 * r2;
+    a3 = 6.0 * r2 - 12.0 * r1;
+  }
+
+  // Lemma 2 on the diagonal i + j = r (r >= 8): unknowns a_{r-j,j}, 4 <= j <= r-4, split by the
+  // parity of j; the equations are eq. (7) at (r-8-j', j'), j' = j - 4.
+  void lemma2(int r) {
+    for (int p = 0; p <= 1; ++p) {
+      std::vector<int> J;
+      for (int j = 4; j <= r - 4; ++j)
+        if (j % 2 == p) J.push_back(j);
+      const int K = static_cast<int>(J.size());
+      if (K == 0) continue;
+      Eigen::MatrixXd M = Eigen::MatrixXd::Zero(K, K);
+      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(K, 3);
+      for (int e = 0; e < K; ++e) {
+        const int jp = J[static_cast<size_t>(e)] - 4;
+        for (int t = 0; t <= 4; ++t) {
+          const int jj = jp + 2 * t;
+          if (jj >= 4 && jj <= r - 4)
+            M(e, (jj - J[0]) / 2) += kBinom4[t];
+          else
+            rhs.row(e) -= kBinom4[t] * A(r - jj, jj);
+        }
+      }
+      const Eigen::MatrixXd sol = M.llt().solve(rhs);
+      for (int e = 0; e < K; ++e) set(r - J[static_cast<size_t>(e)], J[static_cast<size_t>(e)], sol.row(e));
+    }
+  }
+};
+
 }  // namespace
 
 void TetraharmonicOptions::validate() const {
@@ -203,171 +306,108 @@ double lemma2_determinant(int k) {
 Eigen::MatrixX3d explicit_coefficients(const TensorNet& data) {
   check_data(data);
   const int n = data.n();
-  const Eigen::MatrixXd Mp = bernstein_to_power_matrix(n);
-  Eigen::MatrixX3d a = Eigen::MatrixX3d::Zero((n + 1) * (n + 1), 3);
-  auto A = [&](int i, int j) -> Eigen::RowVector3d {
-    if (i < 0 || j < 0 || i > n || j > n) return Eigen::RowVector3d::Zero();
-    return a.row(i * (n + 1) + j);
-  };
-  auto set = [&](int i, int j, const Eigen::RowVector3d& x) { a.row(i * (n + 1) + j) = x; };
-
-  // Boundary curves and cross derivatives in the factorial power basis: eqs. (17)-(24).
-  // row(i) = points P_i0..P_in; col(j) = P_0j..P_nj.
-  auto row = [&](int i) {
-    Eigen::MatrixX3d r(n + 1, 3);
-    for (int j = 0; j <= n; ++j) r.row(j) = data.points().row(data.index(i, j));
-    return r;
-  };
-  auto col = [&](int j) {
-    Eigen::MatrixX3d r(n + 1, 3);
-    for (int i = 0; i <= n; ++i) r.row(i) = data.points().row(data.index(i, j));
-    return r;
-  };
-  auto fpow = [&](const Eigen::MatrixX3d& bern) {  // k! * power coefficient k
-    Eigen::MatrixX3d c = Mp * bern;
-    for (int k = 0; k <= n; ++k) c.row(k) *= factorial(k);
-    return c;
-  };
-  const Eigen::MatrixX3d a0j = fpow(row(0)), a1j = fpow(n * (row(1) - row(0)));
-  const Eigen::MatrixX3d ai0 = fpow(col(0)), ai1 = fpow(n * (col(1) - col(0)));
-  const Eigen::MatrixX3d X1 = fpow(row(n)), DX1 = fpow(n * (row(n) - row(n - 1)));  // x(1,v), x_u(1,v)
-  const Eigen::MatrixX3d Y1 = fpow(col(n)), DY1 = fpow(n * (col(n) - col(n - 1)));  // x(u,1), x_v(u,1)
-  for (int k = 0; k <= n; ++k) {
-    set(0, k, a0j.row(k));
-    set(1, k, a1j.row(k));
-    set(k, 0, ai0.row(k));
-    set(k, 1, ai1.row(k));
-  }
-
-  // S^k: unknowns a_2k, a_3k (column k); S_k: unknowns a_k2, a_k3 (row k).
-  //   a2/2 + a3/6 = r1,  a2 + a3/2 = r2   =>   a2 = 6 r1 - 2 r2,  a3 = 6 r2 - 12 r1.
-  auto solve_column = [&](int k, Eigen::RowVector3d& a2, Eigen::RowVector3d& a3) {
-    Eigen::RowVector3d r1 = X1.row(k) - A(0, k) - A(1, k), r2 = DX1.row(k) - A(1, k);
-    for (int i = 4; i <= n; ++i) {
-      r1 -= A(i, k) / factorial(i);
-      r2 -= A(i, k) / factorial(i - 1);
-    }
-    a2 = 6.0 * r1 - 2.0 * r2;
-    a3 = 6.0 * r2 - 12.0 * r1;
-  };
-  auto solve_row = [&](int k, Eigen::RowVector3d& a2, Eigen::RowVector3d& a3) {
-    Eigen::RowVector3d r1 = Y1.row(k) - A(k, 0) - A(k, 1), r2 = DY1.row(k) - A(k, 1);
-    for (int j = 4; j <= n; ++j) {
-      r1 -= A(k, j) / factorial(j);
-      r2 -= A(k, j) / factorial(j - 1);
-    }
-    a2 = 6.0 * r1 - 2.0 * r2;
-    a3 = 6.0 * r2 - 12.0 * r1;
-  };
-
-  // Lemma 2 on the diagonal i + j = r (r >= 8): unknowns a_{r-j,j}, 4 <= j <= r-4, split by the
-  // parity of j; the equations are eq. (7) at (r-8-j', j'), j' = j - 4.
-  auto lemma2 = [&](int r) {
-    for (int p = 0; p <= 1; ++p) {
-      std::vector<int> J;
-      for (int j = 4; j <= r - 4; ++j)
-        if (j % 2 == p) J.push_back(j);
-      const int K = static_cast<int>(J.size());
-      if (K == 0) continue;
-      Eigen::MatrixXd M = Eigen::MatrixXd::Zero(K, K);
-      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(K, 3);
-      for (int e = 0; e < K; ++e) {
-        const int jp = J[static_cast<size_t>(e)] - 4;
-        for (int t = 0; t <= 4; ++t) {
-          const int jj = jp + 2 * t;
-          if (jj >= 4 && jj <= r - 4)
-            M(e, (jj - J[0]) / 2) += kBinom4[t];
-          else
-            rhs.row(e) -= kBinom4[t] * A(r - jj, jj);
-        }
-      }
-      const Eigen::MatrixXd sol = M.llt().solve(rhs);
-      for (int e = 0; e < K; ++e) set(r - J[static_cast<size_t>(e)], J[static_cast<size_t>(e)], sol.row(e));
-    }
-  };
-
+  AnnexA s(data);
   Eigen::RowVector3d c2, c3, r2, r3;
   for (int k = n; k >= 4; --k) {
-    solve_column(k, c2, c3);
-    solve_row(k, r2, r3);
-    set(2, k, c2);
-    set(3, k, c3);
-    set(k, 2, r2);
-    set(k, 3, r3);
-    if (k + 3 >= 8) lemma2(k + 3);
+    s.solve_column(k, c2, c3);
+    s.solve_row(k, r2, r3);
+    s.set(2, k, c2);
+    s.set(3, k, c3);
+    s.set(k, 2, r2);
+    s.set(k, 3, r3);
+    if (k + 3 >= 8) s.lemma2(k + 3);
   }
   // k = 3: a_23, a_33 from S^3; a_32 (and a_33 again) from S_3 — compatible (eqs. (32)-(33)).
-  solve_column(3, c2, c3);
-  solve_row(3, r2, r3);
-  set(2, 3, c2);
-  set(3, 2, r2);
-  set(3, 3, 0.5 * (c3 + r3));
+  s.solve_column(3, c2, c3);
+  s.solve_row(3, r2, r3);
+  s.set(2, 3, c2);
+  s.set(3, 2, r2);
+  s.set(3, 3, 0.5 * (c3 + r3));
   // k = 2: a_22 from S^2 and S_2 (a_32, a_23 already known).
-  solve_column(2, c2, c3);
-  solve_row(2, r2, r3);
-  set(2, 2, 0.5 * (c2 + r2));
-  return a;
+  s.solve_column(2, c2, c3);
+  s.solve_row(2, r2, r3);
+  s.set(2, 2, 0.5 * (c2 + r2));
+  return s.a;
 }
 
 }  // namespace tetraharmonic_detail
 
-TetraharmonicResult solve_tetraharmonic(const TensorNet& data, const TetraharmonicOptions& options) {
-  options.validate();
-  const auto t0 = std::chrono::steady_clock::now();
-  check_data(data);
+namespace {
+
+// Per-solve refinement where G * data cancels (a small solution from a large G): residual of the
+// net in binary128, correction by the cached long-double QR, up to 3 steps.
+void refine_lu_solution(const LuSolver& s, int n, TensorNet& net) {
+  const int N = (n + 1) * (n + 1);
+  std::vector<quad> Y(static_cast<size_t>(N));
+  for (int c = 0; c < 3; ++c) {
+    std::vector<quad> xq(static_cast<size_t>(N));
+    for (int r = 0; r < N; ++r) xq[static_cast<size_t>(r)] = net.points()(r, c);
+    for (int step = 0; step < 3; ++step) {
+      apply_operator(s.T, n, xq, Y);
+      Eigen::Matrix<long double, Eigen::Dynamic, 1> res(N);
+      for (int r = 0; r < N; ++r) res(r) = static_cast<long double>(Y[static_cast<size_t>(r)]);
+      const Eigen::Matrix<long double, Eigen::Dynamic, 1> d = s.qr->solve(res);
+      long double dmax = 0, xmax = 0;
+      for (size_t r = 0; r < s.interior.size(); ++r) {
+        xq[static_cast<size_t>(s.interior[r])] -= static_cast<quad>(d(static_cast<Eigen::Index>(r)));
+        dmax = std::max(dmax, std::abs(d(static_cast<Eigen::Index>(r))));
+        xmax = std::max(xmax, std::abs(static_cast<long double>(xq[static_cast<size_t>(s.interior[r])])));
+      }
+      if (dmax <= 1e-18L * xmax) break;
+    }
+    for (int r : s.interior) net.points()(r, c) = static_cast<double>(xq[static_cast<size_t>(r)]);
+  }
+}
+
+// The LU method: interior = G * outer rings (the cached solution operator), refined if needed.
+TensorNet lu_solution(const TensorNet& data, const std::vector<int>& fixed) {
   const int n = data.n();
   TensorNet net(n, n);
+  const auto s = lu_solver(n);
+  Eigen::MatrixXd xf(s->fixed.size(), 3);
+  for (size_t r = 0; r < s->fixed.size(); ++r) xf.row(static_cast<Eigen::Index>(r)) = data.points().row(s->fixed[r]);
+  const Eigen::MatrixXd xi = s->G * xf;
+  for (size_t r = 0; r < s->interior.size(); ++r)
+    net.points().row(s->interior[r]) = xi.row(static_cast<Eigen::Index>(r));
+  for (int r : fixed) net.points().row(r) = data.points().row(r);
+  if (relative_residual(net) > 1e-12) refine_lu_solution(*s, n, net);
+  return net;
+}
+
+TetraharmonicResult solve_tetraharmonic_untimed(const TensorNet& data, const TetraharmonicOptions& options) {
+  check_data(data);
+  const int n = data.n();
+  const bool explicit_method = options.method == TetraharmonicOptions::Method::Explicit;
   const std::vector<int> fixed = data.fixed_indices(FixedSet::BoundaryAdjacent);
-  if (options.method == TetraharmonicOptions::Method::Explicit) {
-    net = from_factorial_power(n, n, tetraharmonic_detail::explicit_coefficients(data));
-  } else {
-    const auto s = lu_solver(n);
-    Eigen::MatrixXd xf(s->fixed.size(), 3);
-    for (size_t r = 0; r < s->fixed.size(); ++r) xf.row(static_cast<Eigen::Index>(r)) = data.points().row(s->fixed[r]);
-    const Eigen::MatrixXd xi = s->G * xf;
-    for (size_t r = 0; r < s->interior.size(); ++r)
-      net.points().row(s->interior[r]) = xi.row(static_cast<Eigen::Index>(r));
-    for (int r : fixed) net.points().row(r) = data.points().row(r);
-    // Per-solve refinement where G * data cancels (a small solution from a large G): residual
-    // of the net in binary128, correction by the cached long-double QR, up to 3 steps.
-    if (relative_residual(net) > 1e-12) {
-      const int N = (n + 1) * (n + 1);
-      std::vector<quad> X(static_cast<size_t>(N)), Y(static_cast<size_t>(N));
-      for (int c = 0; c < 3; ++c) {
-        std::vector<quad> xq(static_cast<size_t>(N));
-        for (int r = 0; r < N; ++r) xq[static_cast<size_t>(r)] = net.points()(r, c);
-        for (int step = 0; step < 3; ++step) {
-          apply_operator(s->T, n, xq, Y);
-          Eigen::Matrix<long double, Eigen::Dynamic, 1> res(N);
-          for (int r = 0; r < N; ++r) res(r) = static_cast<long double>(Y[static_cast<size_t>(r)]);
-          const Eigen::Matrix<long double, Eigen::Dynamic, 1> d = s->qr->solve(res);
-          long double dmax = 0, xmax = 0;
-          for (size_t r = 0; r < s->interior.size(); ++r) {
-            xq[static_cast<size_t>(s->interior[r])] -= static_cast<quad>(d(static_cast<Eigen::Index>(r)));
-            dmax = std::max(dmax, std::abs(d(static_cast<Eigen::Index>(r))));
-            xmax = std::max(xmax, std::abs(static_cast<long double>(xq[static_cast<size_t>(s->interior[r])])));
-          }
-          if (dmax <= 1e-18L * xmax) break;
-        }
-        for (int r : s->interior) net.points()(r, c) = static_cast<double>(xq[static_cast<size_t>(r)]);
-      }
-    }
-  }
+  TensorNet net = explicit_method ? from_factorial_power(n, n, tetraharmonic_detail::explicit_coefficients(data))
+                                  : lu_solution(data, fixed);
   for (int r : fixed) net.points().row(r) = data.points().row(r);
 
   TetraharmonicResult result{net, {}};
-  result.summary.residual = relative_residual(net);
-  result.summary.converged = std::isfinite(result.summary.residual) && result.summary.residual <= 1e-11;
-  if (result.summary.converged)
-    result.summary.message = options.method == TetraharmonicOptions::Method::Explicit
-                                 ? "solved (explicit recursion of Annex A)"
-                                 : "solved (Bernstein-basis least squares, QR)";
-  else
-    result.summary.message = "Δ⁴x vanishes only to a relative residual of " + std::to_string(result.summary.residual) +
-                             (options.method == TetraharmonicOptions::Method::Explicit
-                                  ? " (the power-basis recursion lost accuracy at this degree; use \"lu\")"
-                                  : "");
-  result.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Summary& summary = result.summary;
+  summary.residual = relative_residual(net);
+  if (std::isfinite(summary.residual) && summary.residual <= kConvergenceTolerance) {
+    summary.set_converged();
+    summary.message =
+        explicit_method ? "solved (explicit recursion of Annex A)" : "solved (Bernstein-basis least squares, QR)";
+  } else {
+    std::ostringstream m;
+    m << "Δ⁴x vanishes only to a relative residual of " << summary.residual
+      << (explicit_method ? " (the power-basis recursion lost accuracy at this degree; use \"lu\")" : "");
+    summary.set_failed(Status::NumericalLimit, m.str());
+  }
+  return result;
+}
+
+}  // namespace
+
+TetraharmonicResult solve_tetraharmonic(const TensorNet& data, const TetraharmonicOptions& options) {
+  options.validate();
+  TetraharmonicResult result;
+  {
+    ScopedTimer timer(result.summary.seconds);
+    result = solve_tetraharmonic_untimed(data, options);
+  }
   return result;
 }
 

@@ -2,7 +2,6 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -14,8 +13,6 @@
 
 namespace bpde {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // sin(n pi/2) and cos(n pi/2), exactly.
 double sin_half_pi(int n) {
@@ -185,38 +182,24 @@ Eigen::MatrixXd lemma1_sequences(double rho, double t, int N, bool closed_form) 
   return F;
 }
 
-Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const ExplicitOperator& op,
-                                           const PdeExplicitOptions& options, Summary& summary) {
+namespace {
+
+// The steps of explicit_pde_coefficients. `a` is the (n+2) x (n+2) table of one coordinate's
+// a_kl (zero outside the box); anti-diagonal s holds the a_kl with k + l = s.
+
+// Lemma 1 sequences of the G-norm operator, by eq. (12) where it is accurate, else by recurrence.
+Eigen::MatrixXd gnorm_sequences(const ExplicitOperator& op, int n) {
+  const double st = std::abs(std::sin(op.t));
+  const double den = (1 - op.rho * op.rho) * (1 - op.rho * op.rho) + 4 * op.rho * op.rho * std::cos(op.t) * std::cos(op.t);
+  const bool closed = st > 1e-3 && den > 1e-3 * (1 + std::pow(op.rho, 4));
+  return lemma1_sequences(op.rho, op.t, n + 1, closed);
+}
+
+// Factorial-scaled monomial coefficients of the four edges of the three coordinates, one
+// product Mf * [edges] (columns 4c + e, e: x(0,v), x(1,v) (= P_{n l}), x(u,0), x(u,1) (= P_{l n})),
+// computed as its transpose [edges]^T Mf^T: column-major storage read row-major.
+Eigen::MatrixXd edge_monomials(const TensorNet& data, const Eigen::MatrixXd& Mf) {
   const int n = data.n();
-  if (data.m() != n) {
-    std::ostringstream s;
-    s << "pde: method \"explicit\" needs a net of degree [n, n] (seed 001), got [" << data.n() << ", " << data.m()
-      << "]; use method \"lu\"";
-    throw DegreeError(s.str());
-  }
-  summary.converged = true;
-  const int W = n + 2;  // padded: indices 0..n+1, zero outside the box
-  const Eigen::MatrixXd& Mf = bernstein_to_factorial_power_matrix(n);  // edge -> a (eq. (5)-(6))
-  Eigen::VectorXd ifact(n + 2);
-  for (int k = 0; k <= n + 1; ++k) ifact(k) = 1.0 / factorial(k);
-
-  // Fundamental sequences for the G-norm family.
-  Eigen::MatrixXd F;
-  if (op.family == ExplicitOperator::Family::GNorm) {
-    const double st = std::abs(std::sin(op.t));
-    const double den = (1 - op.rho * op.rho) * (1 - op.rho * op.rho) + 4 * op.rho * op.rho * std::cos(op.t) * std::cos(op.t);
-    const bool closed = st > 1e-3 && den > 1e-3 * (1 + std::pow(op.rho, 4));
-    F = lemma1_sequences(op.rho, op.t, n + 1, closed);
-  }
-  // Prop. 4 weights of every interior (k, l), shared by the three coordinates.
-  Eigen::MatrixXd wcol, wrow;
-  if (op.family == ExplicitOperator::Family::Orthogonal) {
-    orth_weight_tables(orth_roots(op.A, op.C), op.A, n + 1, wcol, wrow);
-  }
-
-  // Factorial-scaled monomial coefficients of the four edges of the three coordinates, one
-  // product Mf * [edges] (columns 4c + e, e: x(0,v), x(1,v) (= P_{n l}), x(u,0), x(u,1) (= P_{l n})),
-  // computed as its transpose [edges]^T Mf^T: column-major storage read row-major.
   const int N = n + 1;
   Eigen::MatrixXd edges(N, 12), mono(N, 12);
   for (int c = 0; c < 3; ++c)
@@ -227,6 +210,125 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
       edges(j, 4 * c + 3) = data.points()(data.index(j, n), c);
     }
   row_major_product(edges.data(), 12, N, N, Mf.data(), N, N, mono.data(), N);
+  return mono;
+}
+
+// eq. (7): a_{1,s-1} from x(1, v), a_{s-1,1} from x(u, 1).
+template <class Edge>
+void edge_unknowns(Eigen::MatrixXd& a, int n, int s, const Edge& e1v, const Edge& e1u, const Eigen::VectorXd& ifact) {
+  {
+    const int j = s - 1;
+    double sum = 0;
+    for (int i = 2; i <= n; ++i) sum += a(i, j) * ifact(i);
+    a(1, j) = e1v(j) - a(0, j) - sum;
+  }
+  if (s - 1 != 1) {
+    const int i = s - 1;
+    double sum = 0;
+    for (int j = 2; j <= n; ++j) sum += a(i, j) * ifact(j);
+    a(i, 1) = e1u(i) - a(i, 0) - sum;
+  }
+}
+
+// Orthogonal family: Prop. 4, eq. (21), with the weight tables of orth_weight_tables.
+void orthogonal_antidiagonal(Eigen::MatrixXd& a, int s, const Eigen::MatrixXd& wcol, const Eigen::MatrixXd& wrow) {
+  for (int l = 2; l <= s - 2; ++l) {
+    const int k = s - l, K = k / 2, L = l / 2;
+    a(k, l) = wcol(k, l) * a(k + 2 * L, l % 2) + wrow(k, l) * a(k % 2, 2 * K + l);  // eq. (21)
+  }
+}
+
+// G-norm family, M_s != 0: Prop. 2, eq. (13), from the known y_0, y_1, y_{s-1}, y_s.
+void gnorm_closed_form(Eigen::MatrixXd& a, int s, const Eigen::MatrixXd& F, double M) {
+  const double Cs = F(2, s), Ds = F(3, s), Cp = F(2, s - 1), Dp = F(3, s - 1);
+  const double y0 = a(s, 0), y1 = a(s - 1, 1), ysm = a(1, s - 1), ys = a(0, s);
+  const double As = F(0, s), Bs = F(1, s), Ap = F(0, s - 1), Bp = F(1, s - 1);
+  const double MAD = As * Dp - Ds * Ap, MAC = As * Cp - Cs * Ap;
+  const double MBD = Bs * Dp - Ds * Bp, MBC = Bs * Cp - Cs * Bp;
+  for (int l = 2; l <= s - 2; ++l) {  // Prop. 2, eq. (13)
+    const double Al = F(0, l), Bl = F(1, l), Cl = F(2, l), Dl = F(3, l);
+    const double bA = (Al * M - Cl * MAD + Dl * MAC) / M;
+    const double bB = (Bl * M - Cl * MBD + Dl * MBC) / M;
+    const double bC = (-Cl * Ds + Dl * Cs) / M;
+    const double bD = (Cl * Dp - Dl * Cp) / M;
+    a(s - l, l) = bA * y0 + bB * y1 + bC * ysm + bD * ys;
+  }
+}
+
+// G-norm family, M_s ~ 0: system (9) on this anti-diagonal, unknowns y_2..y_{s-2}, equations
+// l0 = 0..s-4, solved numerically. False (with the summary failed) if it is singular.
+bool gnorm_system9(Eigen::MatrixXd& a, int s, const ExplicitOperator& op, const PdeExplicitOptions& options,
+                   Summary& summary) {
+  const double y0 = a(s, 0), y1 = a(s - 1, 1), ysm = a(1, s - 1), ys = a(0, s);
+  const int u = s - 3;
+  const double co[5] = {op.A, op.B, op.C, op.D, op.E};
+  Eigen::MatrixXd Mx = Eigen::MatrixXd::Zero(u, u);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(u);
+  const double yknown[4] = {y0, y1, ysm, ys};
+  for (int l0 = 0; l0 < u; ++l0)
+    for (int j = 0; j <= 4; ++j) {
+      const int l = l0 + j;
+      if (l >= 2 && l <= s - 2) Mx(l0, l - 2) += co[j];
+      else rhs(l0) -= co[j] * (l == 0 ? yknown[0] : l == 1 ? yknown[1] : l == s - 1 ? yknown[2] : yknown[3]);
+    }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Mx, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const auto& sv = svd.singularValues();
+  if (!(sv(u - 1) > options.rank_tolerance * std::max(1.0, sv(0)))) {
+    std::ostringstream m;
+    m << "the polynomial solution is not unique: on the anti-diagonal k + l = " << s
+      << " the operator has a nonzero polynomial solution with zero boundary data (system (9) is singular)";
+    summary.set_failed(Status::NotUnique, m.str());
+    return false;
+  }
+  const Eigen::VectorXd y = svd.solve(rhs);
+  for (int l = 2; l <= s - 2; ++l) a(s - l, l) = y(l - 2);
+  return true;
+}
+
+// G-norm family: the closed form where M_s is large enough relative to its terms, else system (9).
+bool gnorm_antidiagonal(Eigen::MatrixXd& a, int s, const Eigen::MatrixXd& F, const ExplicitOperator& op,
+                        const PdeExplicitOptions& options, Summary& summary) {
+  const double Cs = F(2, s), Ds = F(3, s), Cp = F(2, s - 1), Dp = F(3, s - 1);
+  const double M = Cs * Dp - Ds * Cp;  // M_s(C, D)
+  // Scale of M_s: the squared size of the sequences so far (they do not grow exponentially
+  // for rho <= 1, which the transposition ensures); C_s, D_s themselves can all vanish.
+  const double fmax = F.leftCols(s + 1).cwiseAbs().maxCoeff();
+  const double Mscale = fmax * fmax;
+  if (std::abs(M) > options.singular_tolerance * Mscale) {
+    gnorm_closed_form(a, s, F, M);
+    return true;
+  }
+  return gnorm_system9(a, s, op, options, summary);
+}
+
+}  // namespace
+
+Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const ExplicitOperator& op,
+                                           const PdeExplicitOptions& options, Summary& summary) {
+  const int n = data.n();
+  if (data.m() != n) {
+    std::ostringstream s;
+    s << "pde: method \"explicit\" needs a net of degree [n, n] (seed 001), got [" << data.n() << ", " << data.m()
+      << "]; use method \"lu\"";
+    throw DegreeError(s.str());
+  }
+  summary.set_converged();
+  const int W = n + 2;  // padded: indices 0..n+1, zero outside the box
+  const Eigen::MatrixXd& Mf = bernstein_to_factorial_power_matrix(n);  // edge -> a (eq. (5)-(6))
+  Eigen::VectorXd ifact(n + 2);
+  for (int k = 0; k <= n + 1; ++k) ifact(k) = 1.0 / factorial(k);
+
+  // Fundamental sequences for the G-norm family.
+  Eigen::MatrixXd F;
+  if (op.family == ExplicitOperator::Family::GNorm) F = gnorm_sequences(op, n);
+  // Prop. 4 weights of every interior (k, l), shared by the three coordinates.
+  Eigen::MatrixXd wcol, wrow;
+  if (op.family == ExplicitOperator::Family::Orthogonal) {
+    orth_weight_tables(orth_roots(op.A, op.C), op.A, n + 1, wcol, wrow);
+  }
+
+  const Eigen::MatrixXd mono = edge_monomials(data, Mf);
+  const int N = n + 1;
   Eigen::MatrixX3d out = Eigen::MatrixX3d::Zero(N * N, 3);
   Eigen::MatrixXd a(W, W);
   for (int c = 0; c < 3; ++c) {
@@ -238,77 +340,15 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
       a(j, 0) = e0u(j);  // eq. (6)
     }
     for (int s = n + 1; s >= 2; --s) {
-      // eq. (7): a_{1,s-1} from x(1, v), a_{s-1,1} from x(u, 1).
-      {
-        const int j = s - 1;
-        double sum = 0;
-        for (int i = 2; i <= n; ++i) sum += a(i, j) * ifact(i);
-        a(1, j) = e1v(j) - a(0, j) - sum;
-      }
-      if (s - 1 != 1) {
-        const int i = s - 1;
-        double sum = 0;
-        for (int j = 2; j <= n; ++j) sum += a(i, j) * ifact(j);
-        a(i, 1) = e1u(i) - a(i, 0) - sum;
-      }
+      edge_unknowns(a, n, s, e1v, e1u, ifact);
       if (s < 4) continue;
       // Interior of the anti-diagonal: k, l >= 2, k + l = s.
       switch (op.family) {
         case ExplicitOperator::Family::Coons: break;  // a_kl = 0 (§5.2.1)
-        case ExplicitOperator::Family::Orthogonal:
-          for (int l = 2; l <= s - 2; ++l) {
-            const int k = s - l, K = k / 2, L = l / 2;
-            a(k, l) = wcol(k, l) * a(k + 2 * L, l % 2) + wrow(k, l) * a(k % 2, 2 * K + l);  // eq. (21)
-          }
+        case ExplicitOperator::Family::Orthogonal: orthogonal_antidiagonal(a, s, wcol, wrow); break;
+        case ExplicitOperator::Family::GNorm:
+          if (!gnorm_antidiagonal(a, s, F, op, options, summary)) return out;
           break;
-        case ExplicitOperator::Family::GNorm: {
-          const double Cs = F(2, s), Ds = F(3, s), Cp = F(2, s - 1), Dp = F(3, s - 1);
-          const double M = Cs * Dp - Ds * Cp;  // M_s(C, D)
-          // Scale of M_s: the squared size of the sequences so far (they do not grow exponentially
-          // for rho <= 1, which the transposition ensures); C_s, D_s themselves can all vanish.
-          const double fmax = F.leftCols(s + 1).cwiseAbs().maxCoeff();
-          const double Mscale = fmax * fmax;
-          const double y0 = a(s, 0), y1 = a(s - 1, 1), ysm = a(1, s - 1), ys = a(0, s);
-          if (std::abs(M) > options.singular_tolerance * Mscale) {
-            const double As = F(0, s), Bs = F(1, s), Ap = F(0, s - 1), Bp = F(1, s - 1);
-            const double MAD = As * Dp - Ds * Ap, MAC = As * Cp - Cs * Ap;
-            const double MBD = Bs * Dp - Ds * Bp, MBC = Bs * Cp - Cs * Bp;
-            for (int l = 2; l <= s - 2; ++l) {  // Prop. 2, eq. (13)
-              const double Al = F(0, l), Bl = F(1, l), Cl = F(2, l), Dl = F(3, l);
-              const double bA = (Al * M - Cl * MAD + Dl * MAC) / M;
-              const double bB = (Bl * M - Cl * MBD + Dl * MBC) / M;
-              const double bC = (-Cl * Ds + Dl * Cs) / M;
-              const double bD = (Cl * Dp - Dl * Cp) / M;
-              a(s - l, l) = bA * y0 + bB * y1 + bC * ysm + bD * ys;
-            }
-          } else {
-            // System (9) on this anti-diagonal: unknowns y_2..y_{s-2}, equations l0 = 0..s-4.
-            const int u = s - 3;
-            const double co[5] = {op.A, op.B, op.C, op.D, op.E};
-            Eigen::MatrixXd Mx = Eigen::MatrixXd::Zero(u, u);
-            Eigen::VectorXd rhs = Eigen::VectorXd::Zero(u);
-            const double yknown[4] = {y0, y1, ysm, ys};
-            for (int l0 = 0; l0 < u; ++l0)
-              for (int j = 0; j <= 4; ++j) {
-                const int l = l0 + j;
-                if (l >= 2 && l <= s - 2) Mx(l0, l - 2) += co[j];
-                else rhs(l0) -= co[j] * (l == 0 ? yknown[0] : l == 1 ? yknown[1] : l == s - 1 ? yknown[2] : yknown[3]);
-              }
-            Eigen::JacobiSVD<Eigen::MatrixXd> svd(Mx, Eigen::ComputeFullU | Eigen::ComputeFullV);
-            const auto& sv = svd.singularValues();
-            if (!(sv(u - 1) > options.rank_tolerance * std::max(1.0, sv(0)))) {
-              std::ostringstream m;
-              m << "the polynomial solution is not unique: on the anti-diagonal k + l = " << s
-                << " the operator has a nonzero polynomial solution with zero boundary data (system (9) is singular)";
-              summary.converged = false;
-              summary.message = m.str();
-              return out;
-            }
-            const Eigen::VectorXd y = svd.solve(rhs);
-            for (int l = 2; l <= s - 2; ++l) a(s - l, l) = y(l - 2);
-          }
-          break;
-        }
       }
     }
     for (int k = 0; k <= n; ++k)
@@ -317,8 +357,9 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
   return out;
 }
 
-PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
-  const auto t0 = Clock::now();
+namespace {
+
+PdeSolution solve_explicit_untimed(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
   options.validate();
   ExplicitOperator e = classify_explicit_operator(op);
   if (data.m() != data.n()) {
@@ -340,16 +381,14 @@ PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, cons
     const PdeStructure st =
         analyse_pde_structure({e.A, e.B, e.C, e.D, e.E}, n, n, FixedSet::Boundary, options.rank_tolerance);
     if (!st.unique) {
-      out.summary.converged = false;
-      out.summary.message = st.diagnosis + "; the data are returned unchanged";
-      out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      out.summary.set_failed(Status::NotUnique, st.diagnosis + "; the data are returned unchanged");
       return out;
     }
   }
   const Eigen::MatrixX3d a = explicit_pde_coefficients(work, e, options, out.summary);
   if (out.summary.converged && !a.allFinite()) {
-    out.summary.converged = false;
-    out.summary.message = "the explicit coefficients overflowed double precision; the data are returned unchanged";
+    out.summary.set_failed(Status::NumericalLimit,
+                           "the explicit coefficients overflowed double precision; the data are returned unchanged");
   } else if (out.summary.converged) {
     TensorNet sol = from_factorial_power(n, n, a);
     if (flip) sol = transpose(sol);
@@ -358,15 +397,24 @@ PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, cons
       for (int idx : {data.index(0, k), data.index(n, k), data.index(k, 0), data.index(k, n)})
         sol.points().row(idx) = data.points().row(idx);
     if (!sol.points().allFinite()) {
-      out.summary.converged = false;
-      out.summary.message = "the explicit solution overflowed double precision";
+      out.summary.set_failed(Status::NumericalLimit, "the explicit solution overflowed double precision");
     } else {
       out.net = std::move(sol);
     }
   } else {
     out.summary.message += "; the data are returned unchanged";
   }
-  out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace
+
+PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
+  PdeSolution out;
+  {
+    ScopedTimer timer(out.summary.seconds);
+    out = solve_explicit_untimed(data, op, options);
+  }
   return out;
 }
 

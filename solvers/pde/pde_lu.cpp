@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -16,8 +15,6 @@
 
 namespace bpde {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 std::vector<double> operator_coefficients(const EnergySpec& op) {
   if (op.order() == 2) {
@@ -250,32 +247,28 @@ double violation(const Eigen::MatrixXd& W, const Eigen::MatrixXd& XB) {
 }
 
 PdeSolution finish(const TensorNet& data, int n, int m, const Split& sp, const Eigen::MatrixXd& XF, double viol,
-                   double tol, const PdeStructure& st, Clock::time_point t0) {
+                   double tol, const PdeStructure& st) {
   PdeSolution out{TensorNet(n, m, data.points()), Summary{}};
   for (size_t q = 0; q < sp.free.size(); ++q) out.net.points().row(sp.free[q]) = XF.row(static_cast<Eigen::Index>(q));
   out.summary.residual = viol;
   if (!XF.allFinite()) {
     out.net = data;
-    out.summary.converged = false;
-    out.summary.message = "the linear solve produced non-finite values (data too large for double precision)";
+    out.summary.set_failed(Status::NumericalLimit,
+                           "the linear solve produced non-finite values (data too large for double precision)");
   } else if (viol > tol) {
     std::ostringstream s;
     s << "no polynomial solution: the data violate a compatibility condition (relative violation " << viol
       << " > tolerance " << tol << "); " << st.diagnosis << "; the returned net is the least-squares net";
-    out.summary.converged = false;
-    out.summary.message = s.str();
+    out.summary.set_failed(Status::Incompatible, s.str());
   } else {
-    out.summary.converged = true;
+    out.summary.set_converged();
   }
-  out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return out;
 }
 
-PdeSolution not_unique(const TensorNet& data, const PdeStructure& st, Clock::time_point t0) {
+PdeSolution not_unique(const TensorNet& data, const PdeStructure& st) {
   PdeSolution out{data, Summary{}};
-  out.summary.converged = false;
-  out.summary.message = st.diagnosis + "; the data are returned unchanged";
-  out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  out.summary.set_failed(Status::NotUnique, st.diagnosis + "; the data are returned unchanged");
   return out;
 }
 
@@ -291,13 +284,18 @@ PdeSolution not_unique(const TensorNet& data, const PdeStructure& st, Clock::tim
 // l + 1 plus coefficients on higher anti-diagonals. So, taking the anti-diagonals s = 2n .. 2 in
 // turn, each block  [PDE rows of degree s - 4; edge rows l = s-1 and k = s-1]  is a small linear
 // system in that anti-diagonal's unknowns, with the higher anti-diagonals already known: the
-// whole system is block triangular. Each block (at most n rows, entries c_j and 1) is factored by
-// column-pivoted QR, which also reveals its rank: a rank-deficient block is a nonzero polynomial
-// solution with zero data (the solution is not unique). At s = 2 the two edge rows both give
-// a_11; the row of the edge u = 1 is used, as in the explicit route.
+// whole system is block triangular. The edge rows give a_{1,s-1} and a_{s-1,1} directly
+// (coefficient 1); the PDE rows of a block s <= n+1 are then a banded Toeplitz system (bandwidth
+// 2 + 2, at most n - 2 unknowns) solved by banded Gaussian elimination with partial pivoting. The
+// blocks s = n+2, n+3 (outside the box but for their corner, homogeneous) are truncated
+// convolutions, solved by dense Gaussian elimination with complete pivoting; s >= n+4 are full
+// convolutions, injective, so zero. A pivot below the rank tolerance is a rank-deficient block:
+// a nonzero polynomial solution with zero data (the solution is not unique). At s = 2 the two
+// edge rows both give a_11; the row of the edge u = 1 is used, as in the explicit route.
 //
-// Cost O(n^4) flops for the blocks plus O(n^3) for the two basis changes, against O(n^6) for a
-// dense solve: the Table 1 benchmark at n = 20 runs in tens of microseconds.
+// Cost: O(n) per banded block and per edge row, O(n^3) for the two truncated blocks and for the
+// interior part of the way back to Bernstein form (O(n^2) for the edges): O(n^3) in all, against
+// O(n^6) for a dense solve; the Table 1 benchmark at n = 20 runs in tens of microseconds.
 // Accuracy: the same basis changes as the explicit route (both stay at the data-rounding floor of
 // docs/pde_accuracy.md; the blocks themselves are well conditioned).
 // Factorial-scaled power basis <-> Bernstein at degree n in the scalar T, both lower triangular,
@@ -371,70 +369,86 @@ bool eliminate(int r, int u, T* M, T* b, T tol, T* y) {
   return true;
 }
 
+inline size_t sz(int i) { return static_cast<size_t>(i); }
+
+// The basis-change tables are constants of the degree: built once per degree (thread-safe).
 template <class T>
-bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, double rank_tolerance, TensorNet& out,
-                        std::string& why) {
-  const int n = data.n();
-  const int N = n + 1;
-  double cmax = 0;
-  for (double x : coeffs) cmax = std::max(cmax, std::abs(x));
-  if (!(cmax > 0)) {
-    why = "the polynomial solution is not unique: the operator is zero";
-    return false;
-  }
-  // PDE rows with entries O(1), like the edge rows: a fair rank test.
-  std::array<T, 5> c{};
-  for (size_t j = 0; j < 5; ++j) c[j] = static_cast<T>(coeffs[j] / cmax);
-  auto sz = [](int i) { return static_cast<size_t>(i); };
-  // The basis-change tables are constants of the degree: built once per degree (thread-safe).
-  struct Tables {
-    std::vector<T> to, from;
-  };
-  static PerDegree<Tables> cache;
-  const Tables& tables = cache.get(n, [](int d) {
-    Tables t;
+struct ConversionTables {
+  std::vector<T> to, from;
+};
+
+template <class T>
+const ConversionTables<T>& conversion_tables(int n) {
+  static PerDegree<ConversionTables<T>> cache;
+  return cache.get(n, [](int d) {
+    ConversionTables<T> t;
     factorial_power_conversions<T>(d, t.to, t.from);
     return t;
   });
-  const std::vector<T>& to = tables.to;
-  const std::vector<T>& from = tables.from;
-  // a_kl, entry ((k*N + l)*3 + d).
-  std::vector<T> a(sz(N * N * 3), T(0)), e1v(sz(N * 3), T(0)), e1u(sz(N * 3), T(0));
-  auto A = [&](int k, int l, int d) -> T& { return a[sz((k * N + l) * 3 + d)]; };
+}
+
+// The unknowns a_kl of the square case and the edge data they must match.
+template <class T>
+struct AntiDiagonalUnknowns {
+  int n, N;
+  std::vector<T> a;         // a_kl, entry ((k*N + l)*3 + d)
+  std::vector<T> e1v, e1u;  // factorial-scaled monomials of x(1,v) and x(u,1), entry (k*3 + d)
+  std::vector<T> ifact;     // 1 / k!
+
   // Edges to factorial-scaled monomials: x(0,v) -> a_{0l}, x(u,0) -> a_{k0} (eq. (5)-(6));
   // x(1,v) -> e1v, x(u,1) -> e1u (eq. (7)).
-  for (int k = 0; k <= n; ++k)
-    for (int i = 0; i <= k; ++i) {
-      const T w = to[sz(k * N + i)];
-      for (int d = 0; d < 3; ++d) {
-        A(0, k, d) += w * static_cast<T>(data.points()(data.index(0, i), d));
-        A(k, 0, d) += k == 0 ? T(0) : w * static_cast<T>(data.points()(data.index(i, 0), d));
-        e1v[sz(k * 3 + d)] += w * static_cast<T>(data.points()(data.index(n, i), d));
-        e1u[sz(k * 3 + d)] += w * static_cast<T>(data.points()(data.index(i, n), d));
+  AntiDiagonalUnknowns(const TensorNet& data, const std::vector<T>& to)
+      : n(data.n()), N(n + 1), a(sz(N * N * 3), T(0)), e1v(sz(N * 3), T(0)), e1u(sz(N * 3), T(0)), ifact(sz(N)) {
+    for (int k = 0; k <= n; ++k)
+      for (int i = 0; i <= k; ++i) {
+        const T w = to[sz(k * N + i)];
+        for (int d = 0; d < 3; ++d) {
+          A(0, k, d) += w * static_cast<T>(data.points()(data.index(0, i), d));
+          A(k, 0, d) += k == 0 ? T(0) : w * static_cast<T>(data.points()(data.index(i, 0), d));
+          e1v[sz(k * 3 + d)] += w * static_cast<T>(data.points()(data.index(n, i), d));
+          e1u[sz(k * 3 + d)] += w * static_cast<T>(data.points()(data.index(i, n), d));
+        }
       }
-    }
-  std::vector<T> ifact(sz(N));
-  {
     T f = 1;
     for (int k = 0; k <= n; ++k) {
       if (k > 0) f *= k;
       ifact[sz(k)] = T(1) / f;
     }
   }
-  auto not_unique = [&](int s) {
-    std::ostringstream m;
-    m << "the polynomial solution is not unique: on the anti-diagonal k + l = " << s
-      << " the operator has a nonzero polynomial solution with zero boundary data";
-    why = m.str();
-    return false;
-  };
-  const T tol = static_cast<T>(rank_tolerance);
+
+  T& A(int k, int l, int d) { return a[sz((k * N + l) * 3 + d)]; }
+
+  // eq. (7): a_{1,s-1} from x(1, v) (index l = s-1), a_{s-1,1} from x(u, 1) (index k = s-1; not
+  // at s = 2, where both give a_11).
+  void edge_rows(int s) {
+    {
+      const int l = s - 1;
+      for (int d = 0; d < 3; ++d) {
+        T v = e1v[sz(l * 3 + d)] - A(0, l, d);
+        for (int k = 2; k <= n; ++k) v -= ifact[sz(k)] * A(k, l, d);
+        A(1, l, d) = v;
+      }
+    }
+    if (s != 2) {
+      const int k = s - 1;
+      for (int d = 0; d < 3; ++d) {
+        T v = e1u[sz(k * 3 + d)] - A(k, 0, d);
+        for (int l = 2; l <= n; ++l) v -= ifact[sz(l)] * A(k, l, d);
+        A(k, 1, d) = v;
+      }
+    }
+  }
+};
+
+// Anti-diagonals s >= n+2 lie outside the box but for their corner: no data reach them (a_{s,0},
+// a_{0,s} and the edge rows are absent), so their blocks are homogeneous and a = 0 there unless
+// a block is rank deficient. For s >= n+4 the rows are the full convolution of the anti-diagonal
+// with (c_0..c_4), injective for c != 0: nothing to do. s = n+2, n+3 are truncated convolutions:
+// check their rank (e.g. the G-norm with rho = 1, t = 0 fails here, NOTES.md). Returns the first
+// rank-deficient s, or 0 if both have full rank.
+template <class T>
+int rank_deficient_outer_block(const std::array<T, 5>& c, int n, T tol) {
   std::vector<T> M, b, y;
-  // Anti-diagonals s >= n+2 lie outside the box but for their corner: no data reach them (a_{s,0},
-  // a_{0,s} and the edge rows are absent), so their blocks are homogeneous and a = 0 there unless
-  // a block is rank deficient. For s >= n+4 the rows are the full convolution of the anti-diagonal
-  // with (c_0..c_4), injective for c != 0: nothing to do. s = n+2, n+3 are truncated convolutions:
-  // check their rank (e.g. the G-norm with rho = 1, t = 0 fails here, NOTES.md).
   for (int s = std::min(2 * n, n + 3); s >= n + 2; --s) {
     const int k0 = s - n, u = 2 * n - s + 1;  // unknowns a_{k, s-k}, k = s-n..n
     if (u <= 0) continue;
@@ -452,107 +466,100 @@ bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, doubl
     }
     b.assign(sz(std::max(row, 1) * 3), T(0));
     y.assign(sz(u * 3), T(0));
-    if (row < u || !eliminate<T>(row, u, M.data(), b.data(), tol, y.data())) return not_unique(s);
+    if (row < u || !eliminate<T>(row, u, M.data(), b.data(), tol, y.data())) return s;
   }
-  // Anti-diagonals s = n+1 .. 2. The edge rows give a_{1,s-1} and a_{s-1,1} at once (coefficient 1);
-  // the PDE rows l' = 0..s-4 are then a banded Toeplitz system (bandwidth 2 + 2) in the interior
-  // y_l = a_{s-l,l}, l = 2..s-2, with y_0 = a_{s,0}, y_1, y_{s-1}, y_s = a_{0,s} known (system (9)).
-  // It is solved by banded Gaussian elimination with partial pivoting; a pivot below the rank
-  // tolerance (relative to max |c_j| = 1) means the block is singular: not unique.
+  return 0;
+}
+
+// Anti-diagonal s <= n+1, after its edge rows: the PDE rows l' = 0..s-4 are a banded Toeplitz
+// system (bandwidth 2 + 2) in the interior y_l = a_{s-l,l}, l = 2..s-2, with y_0 = a_{s,0}, y_1,
+// y_{s-1}, y_s = a_{0,s} known (system (9)). It is solved by banded Gaussian elimination with
+// partial pivoting; a pivot below the rank tolerance (relative to max |c_j| = 1) means the block
+// is singular: false (not unique). `band` and `rhs` are work space.
+template <class T>
+bool solve_interior_block(AntiDiagonalUnknowns<T>& x, int s, const std::array<T, 5>& c, T tol, std::vector<T>& band,
+                          std::vector<T>& rhs) {
+  const int n = x.n;
   const int W5 = 5;  // stored band width after pivoting fill: columns l0-2 .. l0+2 -> l0-2 .. l0+4
-  std::vector<T> band, rhs;
-  for (int s = std::min(n + 1, 2 * n); s >= 2; --s) {
-    // eq. (7): a_{1,s-1} from x(1, v) (index l = s-1), a_{s-1,1} from x(u, 1) (index k = s-1).
-    {
-      const int l = s - 1;
-      for (int d = 0; d < 3; ++d) {
-        T v = e1v[sz(l * 3 + d)] - A(0, l, d);
-        for (int k = 2; k <= n; ++k) v -= ifact[sz(k)] * A(k, l, d);
-        A(1, l, d) = v;
-      }
+  const int m = s - 3;  // interior unknowns y_2..y_{s-2}
+  if (m <= 0) return true;
+  // Row l0 (0..m-1): sum_j c_j y_{l0+j} = 0. Unknown y_l -> column l - 2 = l0 + j - 2.
+  // band(l0, q) holds column l0 - 2 + q, q = 0..6 (q = 5, 6: fill from row swaps).
+  const int Q = W5 + 2;
+  band.assign(sz(m * Q), T(0));
+  rhs.assign(sz(m * 3), T(0));
+  for (int l0 = 0; l0 < m; ++l0)
+    for (int j = 0; j <= 4; ++j) {
+      const int l = l0 + j, k = s - l;
+      if (k > n || l > n) continue;  // outside the box: a = 0
+      if (l >= 2 && l <= s - 2)
+        band[sz(l0 * Q + j)] += c[sz(j)];
+      else
+        for (int d = 0; d < 3; ++d) rhs[sz(l0 * 3 + d)] -= c[sz(j)] * x.A(k, l, d);
     }
-    if (s != 2) {
-      const int k = s - 1;
-      for (int d = 0; d < 3; ++d) {
-        T v = e1u[sz(k * 3 + d)] - A(k, 0, d);
-        for (int l = 2; l <= n; ++l) v -= ifact[sz(l)] * A(k, l, d);
-        A(k, 1, d) = v;
+  // Banded elimination with partial pivoting (rows l0 .. l0+2 can hold column l0).
+  auto at_col = [&](int r, int col) -> T& { return band[sz(r * Q + (col - r + 2))]; };
+  for (int p = 0; p < m; ++p) {
+    int pr = p;
+    T best = std::abs(at_col(p, p));
+    for (int r = p + 1; r <= std::min(m - 1, p + 2); ++r)
+      if (std::abs(at_col(r, p)) > best) {
+        best = std::abs(at_col(r, p));
+        pr = r;
       }
+    if (!(best > tol)) return false;
+    const int cmaxcol = std::min(m - 1, p + 4);
+    if (pr != p) {
+      for (int col = p; col <= cmaxcol; ++col) {
+        // Columns beyond a row's stored range are zero; the swap stays inside both rows' ranges
+        // because rows p..p+2 all cover columns p..p+4.
+        std::swap(at_col(p, col), at_col(pr, col));
+      }
+      for (int d = 0; d < 3; ++d) std::swap(rhs[sz(p * 3 + d)], rhs[sz(pr * 3 + d)]);
     }
-    const int m = s - 3;  // interior unknowns y_2..y_{s-2}
-    if (m <= 0) continue;
-    // Row l0 (0..m-1): sum_j c_j y_{l0+j} = 0. Unknown y_l -> column l - 2 = l0 + j - 2.
-    // band(l0, q) holds column l0 - 2 + q, q = 0..6 (q = 5, 6: fill from row swaps).
-    const int Q = W5 + 2;
-    band.assign(sz(m * Q), T(0));
-    rhs.assign(sz(m * 3), T(0));
-    for (int l0 = 0; l0 < m; ++l0)
-      for (int j = 0; j <= 4; ++j) {
-        const int l = l0 + j, k = s - l;
-        if (k > n || l > n) continue;  // outside the box: a = 0
-        if (l >= 2 && l <= s - 2)
-          band[sz(l0 * Q + j)] += c[sz(j)];
-        else
-          for (int d = 0; d < 3; ++d) rhs[sz(l0 * 3 + d)] -= c[sz(j)] * A(k, l, d);
-      }
-    // Banded elimination with partial pivoting (rows l0 .. l0+2 can hold column l0).
-    auto at_col = [&](int r, int col) -> T& { return band[sz(r * Q + (col - r + 2))]; };
-    for (int p = 0; p < m; ++p) {
-      int pr = p;
-      T best = std::abs(at_col(p, p));
-      for (int r = p + 1; r <= std::min(m - 1, p + 2); ++r)
-        if (std::abs(at_col(r, p)) > best) {
-          best = std::abs(at_col(r, p));
-          pr = r;
-        }
-      if (!(best > tol)) return not_unique(s);
-      const int cmaxcol = std::min(m - 1, p + 4);
-      if (pr != p) {
-        for (int col = p; col <= cmaxcol; ++col) {
-          // Columns beyond a row's stored range are zero; the swap stays inside both rows' ranges
-          // because rows p..p+2 all cover columns p..p+4.
-          std::swap(at_col(p, col), at_col(pr, col));
-        }
-        for (int d = 0; d < 3; ++d) std::swap(rhs[sz(p * 3 + d)], rhs[sz(pr * 3 + d)]);
-      }
-      const T piv = at_col(p, p);
-      for (int r = p + 1; r <= std::min(m - 1, p + 2); ++r) {
-        const T f = at_col(r, p) / piv;
-        if (f == T(0)) continue;
-        at_col(r, p) = 0;
-        for (int col = p + 1; col <= cmaxcol; ++col) at_col(r, col) -= f * at_col(p, col);
-        for (int d = 0; d < 3; ++d) rhs[sz(r * 3 + d)] -= f * rhs[sz(p * 3 + d)];
-      }
+    const T piv = at_col(p, p);
+    for (int r = p + 1; r <= std::min(m - 1, p + 2); ++r) {
+      const T f = at_col(r, p) / piv;
+      if (f == T(0)) continue;
+      at_col(r, p) = 0;
+      for (int col = p + 1; col <= cmaxcol; ++col) at_col(r, col) -= f * at_col(p, col);
+      for (int d = 0; d < 3; ++d) rhs[sz(r * 3 + d)] -= f * rhs[sz(p * 3 + d)];
     }
-    for (int p = m - 1; p >= 0; --p)
-      for (int d = 0; d < 3; ++d) {
-        T v = rhs[sz(p * 3 + d)];
-        for (int col = p + 1; col <= std::min(m - 1, p + 4); ++col) v -= at_col(p, col) * rhs[sz(col * 3 + d)];
-        rhs[sz(p * 3 + d)] = v / at_col(p, p);
-      }
-    for (int l = 2; l <= s - 2; ++l)
-      for (int d = 0; d < 3; ++d) A(s - l, l, d) = rhs[sz((l - 2) * 3 + d)];
   }
-  // Back to Bernstein form, P_d = from * A_d * from^T (from lower triangular). Split A into its
-  // edge lines (k <= 1 or l <= 1: they carry the boundary curves, and summing them to Bernstein form
-  // cancels ~3^n-fold, so they stay in T: O(n^2)) and the interior block k, l >= 2 (the cached
-  // double conversion of tensor/power_basis.h: O(n^3), vectorised).
-  //   from A_edge from^T (i, j) = from(i,0) r_0(j) + from(i,1) r_1(j) + c_0(i) from(j,0) + c_1(i) from(j,1)
-  //   r_k(j) = sum_l from(j,l) A(k,l)  (k = 0, 1),   c_l(i) = sum_{k>=2} from(i,k) A(k,l)  (l = 0, 1).
+  for (int p = m - 1; p >= 0; --p)
+    for (int d = 0; d < 3; ++d) {
+      T v = rhs[sz(p * 3 + d)];
+      for (int col = p + 1; col <= std::min(m - 1, p + 4); ++col) v -= at_col(p, col) * rhs[sz(col * 3 + d)];
+      rhs[sz(p * 3 + d)] = v / at_col(p, p);
+    }
+  for (int l = 2; l <= s - 2; ++l)
+    for (int d = 0; d < 3; ++d) x.A(s - l, l, d) = rhs[sz((l - 2) * 3 + d)];
+  return true;
+}
+
+// Back to Bernstein form, P_d = from * A_d * from^T (from lower triangular). Split A into its
+// edge lines (k <= 1 or l <= 1: they carry the boundary curves, and summing them to Bernstein form
+// cancels ~3^n-fold, so they stay in T: O(n^2)) and the interior block k, l >= 2 (the cached
+// double conversion of tensor/power_basis.h: O(n^3), vectorised).
+//   from A_edge from^T (i, j) = from(i,0) r_0(j) + from(i,1) r_1(j) + c_0(i) from(j,0) + c_1(i) from(j,1)
+//   r_k(j) = sum_l from(j,l) A(k,l)  (k = 0, 1),   c_l(i) = sum_{k>=2} from(i,k) A(k,l)  (l = 0, 1).
+template <class T>
+Eigen::MatrixX3d to_bernstein(AntiDiagonalUnknowns<T>& x, const std::vector<T>& from) {
+  const int n = x.n, N = x.N;
   std::vector<T> r(sz(2 * N * 3), T(0)), cc(sz(2 * N * 3), T(0));
   for (int e = 0; e < 2; ++e)
     for (int j = 0; j <= n; ++j)
       for (int d = 0; d < 3; ++d) {
         T rv = 0, cv = 0;
-        for (int l = 0; l <= j; ++l) rv += from[sz(j * N + l)] * A(e, l, d);
-        for (int k = 2; k <= j; ++k) cv += from[sz(j * N + k)] * A(k, e, d);
+        for (int l = 0; l <= j; ++l) rv += from[sz(j * N + l)] * x.A(e, l, d);
+        for (int k = 2; k <= j; ++k) cv += from[sz(j * N + k)] * x.A(k, e, d);
         r[sz((e * N + j) * 3 + d)] = rv;
         cc[sz((e * N + j) * 3 + d)] = cv;
       }
   Eigen::MatrixX3d interior = Eigen::MatrixX3d::Zero(N * N, 3);
   for (int k = 2; k <= n; ++k)
     for (int l = 2; l <= n + 1 - k; ++l)
-      for (int d = 0; d < 3; ++d) interior(k * N + l, d) = static_cast<double>(A(k, l, d));
+      for (int d = 0; d < 3; ++d) interior(k * N + l, d) = static_cast<double>(x.A(k, l, d));
   TensorNet interior_net = from_factorial_power(n, n, interior);
   Eigen::MatrixX3d P = std::move(interior_net.points());
   for (int i = 0; i <= n; ++i)
@@ -562,7 +569,45 @@ bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, doubl
                     cc[sz(i * 3 + d)] * from[sz(j * N)] + cc[sz((N + i) * 3 + d)] * from[sz(j * N + 1)];
         P(i * N + j, d) = static_cast<double>(v + static_cast<T>(P(i * N + j, d)));
       }
+  return P;
+}
+
+// The square case n = m: the anti-diagonals s = 2n .. 2 in turn (see the comment above). False
+// with the status and reason when the solution is not unique or overflows.
+template <class T>
+bool antidiagonal_solve(const TensorNet& data, std::vector<double> coeffs, double rank_tolerance, TensorNet& out,
+                        Status& status, std::string& why) {
+  const int n = data.n();
+  double cmax = 0;
+  for (double x : coeffs) cmax = std::max(cmax, std::abs(x));
+  if (!(cmax > 0)) {
+    status = Status::NotUnique;
+    why = "the polynomial solution is not unique: the operator is zero";
+    return false;
+  }
+  // PDE rows with entries O(1), like the edge rows: a fair rank test.
+  std::array<T, 5> c{};
+  for (size_t j = 0; j < 5; ++j) c[j] = static_cast<T>(coeffs[j] / cmax);
+  const ConversionTables<T>& tables = conversion_tables<T>(n);
+  AntiDiagonalUnknowns<T> x(data, tables.to);
+  auto not_unique = [&](int s) {
+    std::ostringstream m;
+    m << "the polynomial solution is not unique: on the anti-diagonal k + l = " << s
+      << " the operator has a nonzero polynomial solution with zero boundary data";
+    status = Status::NotUnique;
+    why = m.str();
+    return false;
+  };
+  const T tol = static_cast<T>(rank_tolerance);
+  if (const int s = rank_deficient_outer_block<T>(c, n, tol)) return not_unique(s);
+  std::vector<T> band, rhs;
+  for (int s = std::min(n + 1, 2 * n); s >= 2; --s) {
+    x.edge_rows(s);
+    if (!solve_interior_block<T>(x, s, c, tol, band, rhs)) return not_unique(s);
+  }
+  Eigen::MatrixX3d P = to_bernstein<T>(x, tables.from);
   if (!P.allFinite()) {
+    status = Status::NumericalLimit;
     why = "the linear solve overflowed double precision";
     return false;
   }
@@ -628,42 +673,51 @@ double PdeMould::compatibility_violation(const TensorNet& data) const {
 }
 
 PdeSolution PdeMould::solve(const TensorNet& data) const {
-  const auto t0 = Clock::now();
-  if (data.n() != n_ || data.m() != m_) {
-    std::ostringstream s;
-    s << "pde mould of degree [" << n_ << ", " << m_ << "] cannot solve a net of degree [" << data.n() << ", "
-      << data.m() << "]";
-    throw DegreeError(s.str());
+  PdeSolution out;
+  {
+    ScopedTimer timer(out.summary.seconds);
+    if (data.n() != n_ || data.m() != m_) {
+      std::ostringstream s;
+      s << "pde mould of degree [" << n_ << ", " << m_ << "] cannot solve a net of degree [" << data.n() << ", "
+        << data.m() << "]";
+      throw DegreeError(s.str());
+    }
+    if (!structure_.unique) {
+      out = not_unique(data, structure_);
+    } else {
+      const Eigen::MatrixXd XB = rows_of(data.points(), fixed_idx_);
+      const Eigen::MatrixXd XF = mould_product(S_, XB);
+      const double viol = W_.rows() ? violation(W_, XB) : 0.0;
+      out = finish(data, n_, m_, {fixed_idx_, free_idx_}, XF, viol, options_.compatibility_tolerance, structure_);
+    }
   }
-  if (!structure_.unique) return not_unique(data, structure_, t0);
-  const Eigen::MatrixXd XB = rows_of(data.points(), fixed_idx_);
-  const Eigen::MatrixXd XF = mould_product(S_, XB);
-  const double viol = W_.rows() ? violation(W_, XB) : 0.0;
-  return finish(data, n_, m_, {fixed_idx_, free_idx_}, XF, viol, options_.compatibility_tolerance, structure_, t0);
+  return out;
 }
 
-PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
-  const auto t0 = Clock::now();
-  options.validate();
-  check_problem(op, FixedSet::Boundary);
-  const int n = data.n(), m = data.m();
-  if (n == m && options.formulation == PdeLuOptions::Formulation::AntiDiagonal) {
-    PdeSolution out{data, Summary{}};
-    std::string why;
-    TensorNet sol(n, n);
-    if (antidiagonal_solve<LD>(data, operator_coefficients(op), options.rank_tolerance, sol, why)) {
-      out.net = std::move(sol);
-      out.summary.converged = true;
-    } else {
-      out.summary.converged = false;
-      out.summary.message = why + "; the data are returned unchanged";
-    }
-    out.summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    return out;
+namespace {
+
+// n = m: the block LU on the anti-diagonals.
+PdeSolution solve_antidiagonal(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
+  const int n = data.n();
+  PdeSolution out{data, Summary{}};
+  Status status = Status::NoConvergence;
+  std::string why;
+  TensorNet sol(n, n);
+  if (antidiagonal_solve<LD>(data, operator_coefficients(op), options.rank_tolerance, sol, status, why)) {
+    out.net = std::move(sol);
+    out.summary.set_converged();
+  } else {
+    out.summary.set_failed(status, why + "; the data are returned unchanged");
   }
+  return out;
+}
+
+// Any degrees: the Bernstein least-squares system, factored for this call.
+PdeSolution solve_bernstein(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
+  const int n = data.n(), m = data.m();
   const PdeStructure st = analyse_pde_structure(operator_coefficients(op), n, m, FixedSet::Boundary,
                                                 options.rank_tolerance);
-  if (!st.unique) return not_unique(data, st, t0);
+  if (!st.unique) return not_unique(data, st);
   const Split sp = split_indices(n, m, FixedSet::Boundary);
   const MatL K = bernstein_matrix_ld(pde_operator_terms(op), n, m);
   const MatL KFB = columns(K, sp.fixed);
@@ -678,12 +732,23 @@ PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeL
   } else if (st.conditions > 0) {
     viol = violation(conditions_without_unknowns(KFB, st.conditions), XB);
   }
-  return finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st, t0);
+  return finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st);
 }
 
-Eigen::MatrixXd pde_bernstein_matrix(const std::vector<PdeTerm>& terms, int n, int m) {
-  check_degrees(n, m, "pde_bernstein_matrix");
-  return bernstein_matrix_ld(terms, n, m).cast<double>();
+}  // namespace
+
+PdeSolution solve_pde_lu(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
+  PdeSolution out;
+  {
+    ScopedTimer timer(out.summary.seconds);
+    options.validate();
+    check_problem(op, FixedSet::Boundary);
+    if (data.n() == data.m() && options.formulation == PdeLuOptions::Formulation::AntiDiagonal)
+      out = solve_antidiagonal(data, op, options);
+    else
+      out = solve_bernstein(data, op, options);
+  }
+  return out;
 }
 
 }  // namespace bpde

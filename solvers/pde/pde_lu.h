@@ -100,10 +100,6 @@ struct PdeStructure {
 PdeStructure analyse_pde_structure(const std::vector<double>& coeffs, int n, int m, FixedSet fixed,
                                    double rank_tolerance = 1e-10);
 
-/// (n+1)(m+1) x (n+1)(m+1) matrix K with (K P) = the Bernstein coefficients, at bidegree (n, m),
-/// of L x for the net P (one coordinate), L = sum of the terms.
-Eigen::MatrixXd pde_bernstein_matrix(const std::vector<PdeTerm>& terms, int n, int m);
-
 /// The "mould" of Table 1: for one (operator, n, m, fixed set) it factors the Bernstein system
 /// once and stores the matrix S with  x_free = S x_fixed  (#free x #fixed) and the compatibility
 /// functionals. Each solve is then one matrix product (plus one small product for the checks).

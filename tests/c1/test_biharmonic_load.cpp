@@ -38,6 +38,7 @@ TEST(BiharmonicLoad, SolvesDelta2xEqualsPWithVanishingInteriorLoad) {
     const TensorNet data = smooth_data(n);
     const auto r = solve_biharmonic_load(data);
     EXPECT_TRUE(r.summary.converged) << r.summary.message;
+    EXPECT_EQ(r.summary.status, Status::Converged);
     // Outer two rings are the data, exactly.
     for (int idx : data.fixed_indices(FixedSet::BoundaryAdjacent)) EXPECT_EQ(r.net.points().row(idx), data.points().row(idx));
     // The load net is zero at 2 <= i, j <= n-2, relative to a bound of the terms that cancel:

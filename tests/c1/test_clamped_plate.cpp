@@ -195,6 +195,8 @@ TEST(ClampedPlate, BothMethodsMatchHighPrecisionReference) {
     EXPECT_NEAR(ritz.center_deflection, r.ritz, 1e-11 * r.ritz) << "ritz n=" << r.n << " a=" << r.aspect;
     EXPECT_TRUE(adm.summary.converged) << adm.summary.message;
     EXPECT_TRUE(ritz.summary.converged) << ritz.summary.message;
+    EXPECT_EQ(adm.summary.status, Status::Converged);
+    EXPECT_EQ(ritz.summary.status, Status::Converged);
   }
 }
 

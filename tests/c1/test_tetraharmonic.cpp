@@ -111,12 +111,14 @@ TEST(Tetraharmonic, LuConvergesAtDegree20WhereExplicitDoesNot) {
     for (int j = 0; j <= n; ++j) data.set_point(i, j, Eigen::Vector3d(i / double(n), j / double(n), std::sin(3.0 * i / n)));
   const auto lu = solve_tetraharmonic(data);
   EXPECT_TRUE(lu.summary.converged) << lu.summary.message;
+  EXPECT_EQ(lu.summary.status, Status::Converged);
   EXPECT_LT(lu.summary.residual, 1e-15);
   TetraharmonicOptions o;
   o.method = Method::Explicit;
   const auto ex = solve_tetraharmonic(data, o);
   EXPECT_FALSE(ex.summary.converged);  // the power-basis recursion is honest about its accuracy
-  EXPECT_NE(ex.summary.message.find("lu"), std::string::npos);
+  EXPECT_EQ(ex.summary.status, Status::NumericalLimit) << ex.summary.message;
+  EXPECT_NE(ex.summary.message.find("lu"), std::string::npos);  // the message suggests the remedy
 }
 
 TEST(Tetraharmonic, SolutionSpaceHasDimension8nMinus8) {

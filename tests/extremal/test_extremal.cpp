@@ -192,6 +192,7 @@ TEST(Extremal, HighDegreeIsAcceptedAndStaysFinite) {
     const TensorNet data = base.elevated(n - 8, n - 8);
     const ExtremalResult r = solve_extremal(data, EnergySpec::biharmonic(), FixedSet::Boundary);
     EXPECT_TRUE(r.summary.converged) << n << " " << r.summary.message;
+    EXPECT_EQ(r.summary.status, Status::Converged) << n;
     EXPECT_LE(r.summary.residual, 1e-14);
     EXPECT_TRUE(r.net.points().allFinite());
     EXPECT_GT(r.energy, 0.0);

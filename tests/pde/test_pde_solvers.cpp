@@ -190,8 +190,10 @@ TEST(PdeExplicitAndLu, RhoOneNonOrthogonalIsNotUnique) {
     const PdeSolution l = solve_pde_lu(data, op);
     EXPECT_FALSE(e.summary.converged);
     EXPECT_FALSE(l.summary.converged);
-    EXPECT_NE(e.summary.message.find("not unique"), std::string::npos) << e.summary.message;
-    EXPECT_NE(l.summary.message.find("not unique"), std::string::npos) << l.summary.message;
+    EXPECT_EQ(e.summary.status, Status::NotUnique) << e.summary.message;
+    EXPECT_EQ(l.summary.status, Status::NotUnique) << l.summary.message;
+    EXPECT_FALSE(e.summary.message.empty());
+    EXPECT_FALSE(l.summary.message.empty());
   }
   // Check the kernel claim itself with pde_residual: x = u^2 v^2 (u - v) has L x = 0.
   Eigen::MatrixX3d c = Eigen::MatrixX3d::Zero(16, 3);
@@ -203,9 +205,12 @@ TEST(PdeExplicitAndLu, RhoOneNonOrthogonalIsNotUnique) {
   EXPECT_TRUE(solve_pde_lu(random_net(5, 5, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
   EXPECT_FALSE(solve_pde_lu(random_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
   EXPECT_FALSE(solve_pde_lu(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_EQ(solve_pde_lu(random_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status, Status::NotUnique);
   EXPECT_TRUE(solve_pde_explicit(random_net(5, 5, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
   EXPECT_FALSE(solve_pde_explicit(random_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
   EXPECT_FALSE(solve_pde_explicit(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_EQ(solve_pde_explicit(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status,
+            Status::NotUnique);
   // Off rho = 1 the solution is unique again (and both routes agree).
   const TensorNet d = random_net(8, 8, 2);
   const PdeSolution e8 = solve_pde_explicit(d, EnergySpec::gnorm(1.05, kPi / 4));
@@ -230,7 +235,8 @@ TEST(PdeExplicit, WrongOperatorsAreUnsupported) {
   EXPECT_THROW(solve_pde_explicit(data, EnergySpec::modified_biharmonic(0.0)), ParameterError);
   const PdeSolution flat = solve_pde_lu(data, EnergySpec::modified_biharmonic(0.0));
   EXPECT_FALSE(flat.summary.converged);
-  EXPECT_NE(flat.summary.message.find("not unique"), std::string::npos) << flat.summary.message;
+  EXPECT_EQ(flat.summary.status, Status::NotUnique) << flat.summary.message;
+  EXPECT_FALSE(flat.summary.message.empty());
   TensorNet out(6, 6);
   EXPECT_THROW(PdeMould(EnergySpec::modified_biharmonic(0.0), 6, 6).apply(data, out), UnsupportedProblem);
   PdeExplicitOptions bad;
@@ -266,13 +272,15 @@ TEST(PdeLu, UnequalDegrees) {
     EXPECT_GT(mould.structure().conditions, 0);
     const PdeSolution ok = mould.solve(boundary_only(exact));
     ASSERT_TRUE(ok.summary.converged) << ok.summary.message;
+    EXPECT_EQ(ok.summary.status, Status::Converged);
     EXPECT_LT(relative_error(ok.net, exact), 1e-10);
     const PdeSolution l = solve_pde_lu(boundary_only(exact), EnergySpec::biharmonic());
     ASSERT_TRUE(l.summary.converged) << l.summary.message;
     EXPECT_LT(relative_error(l.net, exact), 1e-10);
     const PdeSolution bad = mould.solve(random_net(n, m, 2));
     EXPECT_FALSE(bad.summary.converged);
-    EXPECT_NE(bad.summary.message.find("compatibility"), std::string::npos) << bad.summary.message;
+    EXPECT_EQ(bad.summary.status, Status::Incompatible) << bad.summary.message;
+    EXPECT_FALSE(bad.summary.message.empty());
   }
 }
 
@@ -334,6 +342,7 @@ TEST(PdeLu, BlockRankDecisionsMatchTheStructureAnalysis) {
       const PdeStructure st = analyse_pde_structure({c[0], c[1], c[2], c[3], c[4]}, n, n, FixedSet::Boundary);
       const PdeSolution l = solve_pde_lu(random_net(n, n, 9u + n), op);
       EXPECT_EQ(l.summary.converged, st.unique) << "t=" << t << " n=" << n << ": " << l.summary.message;
+      EXPECT_EQ(l.summary.status, st.unique ? Status::Converged : Status::NotUnique) << "t=" << t << " n=" << n;
       (st.unique ? unique : singular) += 1;
     }
   // The sweep must exercise both outcomes, or it proves nothing.
