@@ -1,5 +1,6 @@
 #pragma once
-// Small index helpers shared by solvers/bspline_pde and solvers/bspline_extremal (internal).
+// Small helpers shared by solvers/bspline/bspline_pde.cpp and bspline_extremal.cpp (internal):
+// index sets, gathers and scatters, and timing.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>
