@@ -3,7 +3,6 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <limits>
 #include <cmath>
@@ -29,6 +28,18 @@ void require_edge(const Eigen::MatrixX3d& M, int k, const std::string& name) {
     throw SizeError(name + ": " + std::to_string(M.rows()) + " points, expected k+1 = " +
                     std::to_string(k + 1) + " (one per node x_i = i/k)");
   require_finite(M, name);
+}
+
+// f() (a SmoothingSplineResult) with the wall time of the call in summary.seconds.
+template <class F>
+SmoothingSplineResult timed(const F& f) {
+  double seconds = 0.0;
+  SmoothingSplineResult r = [&] {
+    ScopedTimer timer(seconds);
+    return f();
+  }();
+  r.summary.seconds = seconds;
+  return r;
 }
 
 std::string sci(double v) {
@@ -160,7 +171,225 @@ struct SmoothingSplineSolver::Impl {
   double kkt_scale = 1.0;
   bool factored = false;
   std::string factor_message;
+
+  // ---- construction
+  /// R = ((ω_r, ω_s)_L), A = (ω_j(a_i)) (m by n), C = AᵀA + εR and |C|.
+  void assemble(const SmoothingSplineProblem& problem);
+  /// The constrained dofs (per node i: u(x_i,0), u_y(x_i,0), u(x_i,1), u_y(x_i,1)) and the rest.
+  void split_dofs();
+  /// The KKT matrix of eq. (8), equilibrated, by sparse LU.
+  void factor_kkt();
+  /// The reduced SPD system C_ff on the free dofs by sparse LDLT (and C_fc for the right-hand side).
+  void factor_reduced();
+
+  // ---- solve
+  /// ParameterError unless problem has the partition, a, ε and points that were factored.
+  void check_same_problem(const SmoothingSplineProblem& problem) const;
+  /// y: the boundary values τσ of the problem in the order of the constrained dofs.
+  Eigen::MatrixX3d boundary_values(const SmoothingSplineProblem& problem) const;
+  /// α from the factorisation (the right-hand side F of eq. (8) and y).
+  Eigen::MatrixX3d solve_linear(const Eigen::MatrixX3d& F, const Eigen::MatrixX3d& y) const;
+  struct Residuals {
+    Eigen::MatrixX3d g;   ///< Cα - F
+    double stationarity;  ///< max |g_free| / max (|C||α| + |F|)_free
+    double constraint;    ///< max |α_c - y| / max(|y|, |α|)
+  };
+  Residuals residuals(const Eigen::MatrixX3d& alpha, const Eigen::MatrixX3d& F, const Eigen::MatrixX3d& y) const;
+  /// J of eq. (6) for a field c, and its parts.
+  struct Functional {
+    double J = 0, misfit = 0, max_error = 0, energy = 0;
+  };
+  Functional functional(const SmoothingSplineProblem& problem, const Eigen::MatrixX3d& load,
+                        const Eigen::MatrixX3d& c) const;
+  /// The verdict on a finite α from the factored system (sets converged, status, message, residual).
+  void judge(const SmoothingSplineProblem& problem, const Eigen::MatrixX3d& alpha, const Functional& J,
+             const Functional& J0, const Residuals& res, Summary& summary) const;
+  /// SmoothingSplineSolver::solve without the timing.
+  SmoothingSplineResult solve(const SmoothingSplineProblem& problem) const;
 };
+
+void SmoothingSplineSolver::Impl::assemble(const SmoothingSplineProblem& problem) {
+  const int n = space.num_dofs();
+  R = space.assemble_form(SecondOrderForm::from_a(problem.a));
+  std::vector<Eigen::Triplet<double>> trip;
+  for (Eigen::Index i = 0; i < problem.points.rows(); ++i) {
+    std::array<int, 16> idx;
+    std::array<double, 16> val;
+    space.basis_at(problem.points(i, 0), problem.points(i, 1), 0, 0, idx, val);
+    for (int c = 0; c < 16; ++c)
+      if (val[c] != 0) trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
+  }
+  A.resize(problem.points.rows(), n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  C = Eigen::SparseMatrix<double>(A.transpose() * A) + problem.epsilon * R;
+  C.makeCompressed();
+  Cabs = C.cwiseAbs();
+}
+
+void SmoothingSplineSolver::Impl::split_dofs() {
+  const int n = space.num_dofs();
+  for (int i = 0; i <= space.k(); ++i)
+    for (int j : {0, space.l()})
+      for (int d : {0, 2}) constrained.push_back(space.dof(i, j, d));
+  position.assign(n, -1);
+  std::vector<bool> is_c(n, false);
+  for (int c : constrained) is_c[c] = true;
+  for (int r = 0; r < n; ++r)
+    if (!is_c[r]) {
+      position[r] = static_cast<int>(free_dofs.size());
+      free_dofs.push_back(r);
+    }
+}
+
+void SmoothingSplineSolver::Impl::factor_kkt() {
+  const int n = space.num_dofs();
+  const int nc = static_cast<int>(constrained.size());
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(C.nonZeros() + 2 * nc);
+  for (int col = 0; col < C.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it)
+      t.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+  // Equilibrate: D is scaled by s = max |C_ij| so that the LU pivots see blocks of one size
+  // (the constraint rows then read s·α_c = s·y).
+  kkt_scale = std::max(C.coeffs().cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
+  for (int c = 0; c < nc; ++c) {
+    t.emplace_back(constrained[c], n + c, kkt_scale);
+    t.emplace_back(n + c, constrained[c], kkt_scale);
+  }
+  Eigen::SparseMatrix<double> K(n + nc, n + nc);
+  K.setFromTriplets(t.begin(), t.end());
+  K.makeCompressed();
+  lu.analyzePattern(K);
+  lu.factorize(K);
+  factored = lu.info() == Eigen::Success;
+  if (!factored) factor_message = "the KKT matrix of eq. (8) is singular: " + lu.lastErrorMessage();
+}
+
+void SmoothingSplineSolver::Impl::factor_reduced() {
+  const int n = space.num_dofs();
+  const int nc = static_cast<int>(constrained.size());
+  const int nf = static_cast<int>(free_dofs.size());
+  std::vector<Eigen::Triplet<double>> tf, tc;
+  std::vector<int> cpos(n, -1);
+  for (int c = 0; c < nc; ++c) cpos[constrained[c]] = c;
+  for (int col = 0; col < C.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it) {
+      const int r = position[it.row()];
+      if (r < 0) continue;
+      if (position[col] >= 0)
+        tf.emplace_back(r, position[col], it.value());
+      else
+        tc.emplace_back(r, cpos[col], it.value());
+    }
+  Cff.resize(nf, nf);
+  Cff.setFromTriplets(tf.begin(), tf.end());
+  Cfc.resize(nf, nc);
+  Cfc.setFromTriplets(tc.begin(), tc.end());
+  ldlt.compute(Cff);
+  factored = ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > 0).all();
+  if (!factored)
+    factor_message =
+        "the reduced system is numerically singular (epsilon or a too small for the data "
+        "term?)";
+}
+
+void SmoothingSplineSolver::Impl::check_same_problem(const SmoothingSplineProblem& problem) const {
+  if (problem.k != key.k || problem.l != key.l || problem.a != key.a || problem.epsilon != key.epsilon ||
+      problem.points.rows() != key.points.rows() || problem.points != key.points)
+    throw ParameterError(
+        "SmoothingSplineSolver::solve: the problem's partition, a, epsilon or points differ from "
+        "the factored ones");
+}
+
+Eigen::MatrixX3d SmoothingSplineSolver::Impl::boundary_values(const SmoothingSplineProblem& problem) const {
+  Eigen::MatrixX3d y(static_cast<Eigen::Index>(constrained.size()), 3);
+  for (int i = 0, c = 0; i <= space.k(); ++i) {
+    y.row(c++) = problem.y0_value.row(i);
+    y.row(c++) = problem.y0_dy.row(i);
+    y.row(c++) = problem.y1_value.row(i);
+    y.row(c++) = problem.y1_dy.row(i);
+  }
+  return y;
+}
+
+Eigen::MatrixX3d SmoothingSplineSolver::Impl::solve_linear(const Eigen::MatrixX3d& F, const Eigen::MatrixX3d& y) const {
+  const int n = space.num_dofs();
+  const int nc = static_cast<int>(constrained.size());
+  Eigen::MatrixX3d alpha = Eigen::MatrixX3d::Zero(n, 3);
+  if (options.method == SmoothingSplineOptions::Method::kKktLu) {
+    Eigen::MatrixXd rhs(n + nc, 3);
+    rhs.topRows(n) = F;
+    rhs.bottomRows(nc) = kkt_scale * y;
+    const Eigen::MatrixXd z = lu.solve(rhs);
+    alpha = z.topRows(n);
+  } else {
+    const int nf = static_cast<int>(free_dofs.size());
+    Eigen::MatrixXd Ff(nf, 3);
+    for (int r = 0; r < nf; ++r) Ff.row(r) = F.row(free_dofs[r]);
+    const Eigen::MatrixXd af = ldlt.solve(Ff - Cfc * y);
+    for (int r = 0; r < nf; ++r) alpha.row(free_dofs[r]) = af.row(r);
+    for (int c = 0; c < nc; ++c) alpha.row(constrained[c]) = y.row(c);
+  }
+  return alpha;
+}
+
+SmoothingSplineSolver::Impl::Residuals SmoothingSplineSolver::Impl::residuals(const Eigen::MatrixX3d& alpha,
+                                                                            const Eigen::MatrixX3d& F,
+                                                                            const Eigen::MatrixX3d& y) const {
+  const int nc = static_cast<int>(constrained.size());
+  Residuals res{C * alpha - F, 0.0, 0.0};
+  const Eigen::MatrixX3d scale = Cabs * alpha.cwiseAbs() + F.cwiseAbs();
+  double gmax = 0, smax = 0;
+  for (int r : free_dofs) {
+    gmax = std::max(gmax, res.g.row(r).cwiseAbs().maxCoeff());
+    smax = std::max(smax, scale.row(r).maxCoeff());
+  }
+  res.stationarity = smax > 0 ? gmax / smax : gmax;
+  double cmax = 0;
+  for (int c = 0; c < nc; ++c) cmax = std::max(cmax, (alpha.row(constrained[c]) - y.row(c)).cwiseAbs().maxCoeff());
+  const double cscale = std::max(y.cwiseAbs().maxCoeff(), alpha.cwiseAbs().maxCoeff());
+  res.constraint = cscale > 0 ? cmax / cscale : cmax;
+  return res;
+}
+
+SmoothingSplineSolver::Impl::Functional SmoothingSplineSolver::Impl::functional(const SmoothingSplineProblem& problem,
+                                                                              const Eigen::MatrixX3d& load,
+                                                                              const Eigen::MatrixX3d& c) const {
+  Functional f;
+  const Eigen::MatrixX3d r = A * c - problem.data;
+  f.misfit = r.squaredNorm();
+  f.max_error = r.rows() ? r.rowwise().norm().maxCoeff() : 0.0;
+  f.energy = (c.transpose() * (R * c)).trace();
+  f.J = f.misfit + problem.epsilon * (f.energy - 2 * (load.transpose() * c).trace());
+  return f;
+}
+
+void SmoothingSplineSolver::Impl::judge(const SmoothingSplineProblem& problem, const Eigen::MatrixX3d& alpha,
+                                        const Functional& J, const Functional& J0, const Residuals& res,
+                                        Summary& summary) const {
+  summary.residual = res.stationarity;
+  // σ must do at least as well as the feasible field with the free dofs at 0; |σ|_L² >= 0; and
+  // without load 0 <= J(σ) <= J0.
+  const double en_abs = (alpha.cwiseAbs().transpose() * (R.cwiseAbs() * alpha.cwiseAbs())).trace();
+  if (J.J > J0.J + 1e-9 * (std::abs(J0.J) + std::abs(J.J)) || J.energy < -1e-10 * en_abs ||
+      (!problem.load && J.J < -1e-9 * J0.J)) {
+    summary.set_failed(Status::NumericalLimit,
+                       "the linear solve is inaccurate: J(sigma) exceeds J of a feasible field, or J < 0 "
+                       "(ill-conditioned: epsilon or a too small or too large?)");
+    return;
+  }
+  if (res.stationarity <= kConvergenceTolerance && res.constraint <= kConvergenceTolerance) {
+    summary.message = options.method == SmoothingSplineOptions::Method::kKktLu
+                          ? "solved the KKT system of eq. (8) by sparse LU"
+                          : "solved the reduced SPD system by sparse LDLT";
+    summary.set_converged();
+  } else {
+    summary.set_failed(Status::NumericalLimit, "the linear solve is inaccurate: stationarity residual " +
+                                                   sci(res.stationarity) + ", constraint residual " +
+                                                   sci(res.constraint) +
+                                                   " (ill-conditioned: epsilon or a too small or too large?)");
+  }
+}
 
 SmoothingSplineSolver::~SmoothingSplineSolver() = default;
 
@@ -177,85 +406,12 @@ SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& probl
   m.key.points = problem.points;
   m.options = options;
   m.space = BfsSpace(problem.k, problem.l);
-  const BfsSpace& V = m.space;
-  const int n = V.num_dofs();
-
-  m.R = V.assemble_form(SecondOrderForm::from_a(problem.a));
-  // A = (ω_j(a_i)): m by n
-  std::vector<Eigen::Triplet<double>> trip;
-  for (Eigen::Index i = 0; i < problem.points.rows(); ++i) {
-    std::array<int, 16> idx;
-    std::array<double, 16> val;
-    V.basis_at(problem.points(i, 0), problem.points(i, 1), 0, 0, idx, val);
-    for (int c = 0; c < 16; ++c)
-      if (val[c] != 0) trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
-  }
-  m.A.resize(problem.points.rows(), n);
-  m.A.setFromTriplets(trip.begin(), trip.end());
-  m.C = Eigen::SparseMatrix<double>(m.A.transpose() * m.A) + problem.epsilon * m.R;
-  m.C.makeCompressed();
-  m.Cabs = m.C.cwiseAbs();
-
-  for (int i = 0; i <= V.k(); ++i)
-    for (int j : {0, V.l()})
-      for (int d : {0, 2}) m.constrained.push_back(V.dof(i, j, d));
-  m.position.assign(n, -1);
-  {
-    std::vector<bool> is_c(n, false);
-    for (int c : m.constrained) is_c[c] = true;
-    for (int r = 0; r < n; ++r)
-      if (!is_c[r]) {
-        m.position[r] = static_cast<int>(m.free_dofs.size());
-        m.free_dofs.push_back(r);
-      }
-  }
-  const int nc = static_cast<int>(m.constrained.size());
-
-  if (options.method == SmoothingSplineOptions::Method::kKktLu) {
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(m.C.nonZeros() + 2 * nc);
-    for (int col = 0; col < m.C.outerSize(); ++col)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(m.C, col); it; ++it)
-        t.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
-    // Equilibrate: D is scaled by s = max |C_ij| so that the LU pivots see blocks of one size
-    // (the constraint rows then read s·α_c = s·y).
-    m.kkt_scale = std::max(m.C.coeffs().cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
-    for (int c = 0; c < nc; ++c) {
-      t.emplace_back(m.constrained[c], n + c, m.kkt_scale);
-      t.emplace_back(n + c, m.constrained[c], m.kkt_scale);
-    }
-    Eigen::SparseMatrix<double> K(n + nc, n + nc);
-    K.setFromTriplets(t.begin(), t.end());
-    K.makeCompressed();
-    m.lu.analyzePattern(K);
-    m.lu.factorize(K);
-    m.factored = m.lu.info() == Eigen::Success;
-    if (!m.factored) m.factor_message = "the KKT matrix of eq. (8) is singular: " + m.lu.lastErrorMessage();
-  } else {
-    const int nf = static_cast<int>(m.free_dofs.size());
-    std::vector<Eigen::Triplet<double>> tf, tc;
-    std::vector<int> cpos(n, -1);
-    for (int c = 0; c < nc; ++c) cpos[m.constrained[c]] = c;
-    for (int col = 0; col < m.C.outerSize(); ++col)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(m.C, col); it; ++it) {
-        const int r = m.position[it.row()];
-        if (r < 0) continue;
-        if (m.position[col] >= 0)
-          tf.emplace_back(r, m.position[col], it.value());
-        else
-          tc.emplace_back(r, cpos[col], it.value());
-      }
-    m.Cff.resize(nf, nf);
-    m.Cff.setFromTriplets(tf.begin(), tf.end());
-    m.Cfc.resize(nf, nc);
-    m.Cfc.setFromTriplets(tc.begin(), tc.end());
-    m.ldlt.compute(m.Cff);
-    m.factored = m.ldlt.info() == Eigen::Success && (m.ldlt.vectorD().array() > 0).all();
-    if (!m.factored)
-      m.factor_message =
-          "the reduced system is numerically singular (epsilon or a too small for the data "
-          "term?)";
-  }
+  m.assemble(problem);
+  m.split_dofs();
+  if (options.method == SmoothingSplineOptions::Method::kKktLu)
+    m.factor_kkt();
+  else
+    m.factor_reduced();
 }
 
 const BfsSpace& SmoothingSplineSolver::space() const { return impl_->space; }
@@ -265,16 +421,11 @@ const std::vector<int>& SmoothingSplineSolver::constrained_dofs() const {
   return impl_->constrained;
 }
 
-SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem& problem) const {
-  const auto t0 = std::chrono::steady_clock::now();
+SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplineProblem& problem) const {
+  Summary summary;
   problem.validate();
-  const Impl& m = *impl_;
-  if (problem.k != m.key.k || problem.l != m.key.l || problem.a != m.key.a ||
-      problem.epsilon != m.key.epsilon || problem.points.rows() != m.key.points.rows() ||
-      problem.points != m.key.points)
-    throw ParameterError(
-        "SmoothingSplineSolver::solve: the problem's partition, a, epsilon or points differ from "
-        "the factored ones");
+  const Impl& m = *this;
+  m.check_same_problem(problem);
   const BfsSpace& V = m.space;
   const int n = V.num_dofs();
   const int nc = static_cast<int>(m.constrained.size());
@@ -283,120 +434,55 @@ SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem&
   Eigen::MatrixX3d Fload = Eigen::MatrixX3d::Zero(n, 3);
   if (problem.load) Fload = V.assemble_load(problem.load, m.options.load_quadrature);
   const Eigen::MatrixX3d F = Eigen::MatrixX3d(m.A.transpose() * problem.data) + problem.epsilon * Fload;
-  Eigen::MatrixX3d y(nc, 3);
-  for (int i = 0, c = 0; i <= V.k(); ++i) {
-    y.row(c++) = problem.y0_value.row(i);
-    y.row(c++) = problem.y0_dy.row(i);
-    y.row(c++) = problem.y1_value.row(i);
-    y.row(c++) = problem.y1_dy.row(i);
-  }
+  const Eigen::MatrixX3d y = m.boundary_values(problem);
 
   Eigen::MatrixX3d alpha = Eigen::MatrixX3d::Zero(n, 3);
-  Summary summary;
-  if (!m.factored) {
-    summary.converged = false;
-    summary.message = m.factor_message;
-  } else if (m.options.method == SmoothingSplineOptions::Method::kKktLu) {
-    Eigen::MatrixXd rhs(n + nc, 3);
-    rhs.topRows(n) = F;
-    rhs.bottomRows(nc) = m.kkt_scale * y;
-    const Eigen::MatrixXd z = m.lu.solve(rhs);
-    alpha = z.topRows(n);
-  } else {
-    const int nf = static_cast<int>(m.free_dofs.size());
-    Eigen::MatrixXd Ff(nf, 3);
-    for (int r = 0; r < nf; ++r) Ff.row(r) = F.row(m.free_dofs[r]);
-    const Eigen::MatrixXd af = m.ldlt.solve(Ff - m.Cfc * y);
-    for (int r = 0; r < nf; ++r) alpha.row(m.free_dofs[r]) = af.row(r);
-    for (int c = 0; c < nc; ++c) alpha.row(m.constrained[c]) = y.row(c);
-  }
+  if (!m.factored)
+    summary.set_failed(Status::NotUnique, m.factor_message);
+  else
+    alpha = m.solve_linear(F, y);
 
-  // optimality and constraint residuals
-  const Eigen::MatrixX3d g = m.C * alpha - F;
-  const Eigen::MatrixX3d scale = m.Cabs * alpha.cwiseAbs() + F.cwiseAbs();
-  double gmax = 0, smax = 0;
-  for (int r : m.free_dofs) {
-    gmax = std::max(gmax, g.row(r).cwiseAbs().maxCoeff());
-    smax = std::max(smax, scale.row(r).maxCoeff());
-  }
-  const double stationarity = smax > 0 ? gmax / smax : gmax;
-  double cmax = 0;
-  for (int c = 0; c < nc; ++c)
-    cmax = std::max(cmax, (alpha.row(m.constrained[c]) - y.row(c)).cwiseAbs().maxCoeff());
-  const double cscale = std::max(y.cwiseAbs().maxCoeff(), alpha.cwiseAbs().maxCoeff());
-  const double constraint = cscale > 0 ? cmax / cscale : cmax;
-  SmoothingSplineResult result{SmoothingSpline(V, Eigen::MatrixX3d::Zero(n, 3)), 0, 0, 0, 0, {}, {}};
-  // J of eq. (6) for a field
-  Eigen::MatrixX3d Fl = Fload;
-  auto functional = [&](const Eigen::MatrixX3d& c, double& misfit, double& maxerr, double& energy) {
-    const Eigen::MatrixX3d r = m.A * c - problem.data;
-    misfit = r.squaredNorm();
-    maxerr = r.rows() ? r.rowwise().norm().maxCoeff() : 0.0;
-    energy = (c.transpose() * (m.R * c)).trace();
-    return misfit + problem.epsilon * (energy - 2 * (Fl.transpose() * c).trace());
-  };
+  const Residuals res = m.residuals(alpha, F, y);
   // The feasible field with the free dofs at 0: σ must do at least as well.
   Eigen::MatrixX3d v0 = Eigen::MatrixX3d::Zero(n, 3);
   for (int c = 0; c < nc; ++c) v0.row(m.constrained[c]) = y.row(c);
-  double mis0, err0, en0;
-  const double J0 = functional(v0, mis0, err0, en0);
-  if (!std::isfinite(J0))
+  const Functional J0 = m.functional(problem, Fload, v0);
+  if (!std::isfinite(J0.J))
     throw NonFiniteError(
         "the boundary data, data, load or epsilon are too large: the functional of eq. (6) overflows");
-  double mis = 0, err = 0, en = 0, J = 0;
-  if (alpha.allFinite()) J = functional(alpha, mis, err, en);
+  Functional J;
+  if (alpha.allFinite()) J = m.functional(problem, Fload, alpha);
   if (m.factored) {
-    if (!alpha.allFinite() || !std::isfinite(J)) {
-      summary.converged = false;
-      summary.message =
-          "the linear solve produced non-finite values (ill-conditioned: epsilon or a too small "
-          "or too large?)";
+    if (!alpha.allFinite() || !std::isfinite(J.J)) {
+      summary.set_failed(Status::NumericalLimit,
+                         "the linear solve produced non-finite values (ill-conditioned: epsilon or a too small "
+                         "or too large?)");
       alpha.setZero();
-      J = functional(alpha, mis, err, en);
-    } else if (const double en_abs =
-                   (alpha.cwiseAbs().transpose() * (m.R.cwiseAbs() * alpha.cwiseAbs())).trace();
-               J > J0 + 1e-9 * (std::abs(J0) + std::abs(J)) || en < -1e-10 * en_abs ||
-               (!problem.load && J < -1e-9 * J0)) {  // without load 0 <= J(sigma) <= J0
-      summary.converged = false;
-      summary.residual = stationarity;
-      summary.message =
-          "the linear solve is inaccurate: J(sigma) exceeds J of a feasible field, or J < 0 "
-          "(ill-conditioned: epsilon or a too small or too large?)";
+      J = m.functional(problem, Fload, alpha);
     } else {
-      summary.residual = stationarity;
-      summary.converged = stationarity <= 1e-11 && constraint <= 1e-11;
-      if (!summary.converged)
-        summary.message = "the linear solve is inaccurate: stationarity residual " +
-                          sci(stationarity) + ", constraint residual " + sci(constraint) +
-                          " (ill-conditioned: epsilon or a too small or too large?)";
-      else
-        summary.message = m.options.method == SmoothingSplineOptions::Method::kKktLu
-                              ? "solved the KKT system of eq. (8) by sparse LU"
-                              : "solved the reduced SPD system by sparse LDLT";
+      m.judge(problem, alpha, J, J0, res, summary);
     }
   }
-  result.spline = SmoothingSpline(V, alpha);
+  SmoothingSplineResult result{SmoothingSpline(V, alpha), J.J, J.misfit, J.energy, J.max_error, {}, {}};
   result.multipliers.resize(nc, 3);
-  for (int c = 0; c < nc; ++c) result.multipliers.row(c) = -g.row(m.constrained[c]);
+  for (int c = 0; c < nc; ++c) result.multipliers.row(c) = -res.g.row(m.constrained[c]);
   if (!result.multipliers.allFinite()) result.multipliers.setZero();
   if (!std::isfinite(summary.residual)) summary.residual = 0.0;
-  result.data_misfit = mis;
-  result.max_data_error = err;
-  result.energy = en;
-  result.functional = J;
   summary.iterations = 0;
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   result.summary = summary;
   return result;
 }
 
+SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem& problem) const {
+  return timed([&] { return impl_->solve(problem); });
+}
+
 SmoothingSplineResult solve_smoothing_spline(const SmoothingSplineProblem& problem,
                                              const SmoothingSplineOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  SmoothingSplineSolver solver(problem, options);
-  SmoothingSplineResult r = solver.solve(problem);
-  r.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
+  return timed([&] {
+    SmoothingSplineSolver solver(problem, options);
+    return solver.solve(problem);
+  });
 }
 
 }  // namespace bpde

@@ -116,9 +116,10 @@ struct SmoothingSplineResult {
   /// for each node i, u(x_i,0), u_y(x_i,0), u(x_i,1), u_y(x_i,1)). With either method they are
   /// the rows of F - Cα at the constrained dofs (first block row of eq. (8)).
   Eigen::MatrixX3d multipliers;
-  /// converged: the stationarity residual on the free dofs is <= 1e-11 relative to the size of
-  /// its terms (max |(Cα - F)_free| / max(|C||α| + |F|)_free), and τσ = y to the same relative
-  /// tolerance. residual holds that stationarity value.
+  /// converged: the stationarity residual on the free dofs is <= kConvergenceTolerance (1e-11)
+  /// relative to the size of its terms (max |(Cα - F)_free| / max(|C||α| + |F|)_free), and τσ = y
+  /// to the same relative tolerance. residual holds that stationarity value. Otherwise status
+  /// NotUnique (the system of eq. (8) is singular) or NumericalLimit (the solve is inaccurate).
   Summary summary;
 };
 

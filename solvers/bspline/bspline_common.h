@@ -1,11 +1,13 @@
 #pragma once
-// Small index helpers shared by solvers/bspline_pde and solvers/bspline_extremal (internal).
+// Small helpers shared by solvers/bspline/bspline_pde.cpp and bspline_extremal.cpp (internal):
+// index sets, gathers and scatters, and timing.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>
 #include <vector>
 
 #include "core/errors.h"
+#include "solvers/summary.h"
 
 namespace bpde::detail {
 
@@ -62,6 +64,18 @@ inline Eigen::MatrixXd gather_cols(const Eigen::MatrixXd& A, const std::vector<i
   Eigen::MatrixXd out(A.rows(), static_cast<Eigen::Index>(idx.size()));
   for (size_t k = 0; k < idx.size(); ++k) out.col(static_cast<Eigen::Index>(k)) = A.col(idx[k]);
   return out;
+}
+
+/// f() (a result with a Summary `summary`) with the wall time of the call in summary.seconds.
+template <class F>
+auto timed(const F& f) {
+  double seconds = 0.0;
+  auto r = [&] {
+    ScopedTimer timer(seconds);
+    return f();
+  }();
+  r.summary.seconds = seconds;
+  return r;
 }
 
 }  // namespace bpde::detail

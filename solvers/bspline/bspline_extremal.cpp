@@ -4,7 +4,6 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -83,7 +82,7 @@ struct BSplineExtremalSolver::Impl {
   int p = 0, q = 0;
   std::vector<double> U, V;
   EnergySpec energy;
-  double tol = 1e-11;
+  double tol = kConvergenceTolerance;
   Eigen::SparseMatrix<double> Q, Qff, Qfc;
   std::vector<int> fixed, free;
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
@@ -91,6 +90,8 @@ struct BSplineExtremalSolver::Impl {
   // Dense fallback (built on demand when Q_ff is not positive definite).
   mutable std::unique_ptr<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>> cod;
   mutable double eig_ratio = 0.0;
+  /// BSplineExtremalSolver::solve without the timing.
+  BSplineExtremalResult solve(const BSplineNet& data) const;
 };
 
 BSplineExtremalSolver::BSplineExtremalSolver(int p, int q, const std::vector<double>& U, const std::vector<double>& V,
@@ -129,8 +130,11 @@ const std::vector<int>& BSplineExtremalSolver::fixed() const { return impl_->fix
 const std::vector<int>& BSplineExtremalSolver::free() const { return impl_->free; }
 
 BSplineExtremalResult BSplineExtremalSolver::solve(const BSplineNet& data) const {
-  const auto t0 = std::chrono::steady_clock::now();
-  const Impl& m = *impl_;
+  return detail::timed([&] { return impl_->solve(data); });
+}
+
+BSplineExtremalResult BSplineExtremalSolver::Impl::solve(const BSplineNet& data) const {
+  const Impl& m = *this;
   if (data.p() != m.p || data.q() != m.q || data.knots_u() != m.U || data.knots_v() != m.V)
     throw ParameterError("bspline extremal: the net's degrees or knots differ from the ones the solver was built for");
   const Eigen::MatrixXd Xc = detail::gather_rows(data.points(), m.fixed);
@@ -177,27 +181,24 @@ BSplineExtremalResult BSplineExtremalSolver::solve(const BSplineNet& data) const
   const Eigen::MatrixX3d& P = out.net.points();
   out.energy = 0.5 * (P.transpose() * (m.Q * P)).trace();
   out.summary.residual = res;
-  out.summary.converged = res <= m.tol && Xf.allFinite();
-  if (!out.summary.converged) {
+  out.summary.message = message;
+  // Q_ff singular: the reduced system has no unique solution; otherwise rounding stopped it.
+  out.summary.finish(res <= m.tol && Xf.allFinite(), m.llt_ok ? Status::NumericalLimit : Status::NotUnique, [&] {
     std::ostringstream s;
     s << "the reduced extremal system has no solution to the tolerance: relative residual " << res << " > " << m.tol;
     if (!message.empty()) s << "; " << message;
-    out.summary.message = s.str();
-  } else {
-    out.summary.message = message;
-  }
-  out.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return s.str();
+  });
   return out;
 }
 
 BSplineExtremalResult solve_bspline_extremal(const BSplineNet& data, const EnergySpec& energy,
                                              const std::vector<int>& fixed, const BSplineExtremalOptions& options) {
   options.validate();
-  const auto t0 = std::chrono::steady_clock::now();
-  BSplineExtremalSolver solver(data.p(), data.q(), data.knots_u(), data.knots_v(), energy, fixed, options.tolerance);
-  BSplineExtremalResult r = solver.solve(data);
-  r.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
+  return detail::timed([&] {
+    BSplineExtremalSolver solver(data.p(), data.q(), data.knots_u(), data.knots_v(), energy, fixed, options.tolerance);
+    return solver.solve(data);
+  });
 }
 
 BSplineExtremalResult solve_bspline_extremal(const BSplineNet& data, const EnergySpec& energy,

@@ -46,7 +46,7 @@ struct BSplineExtremalOptions {
   /// Which control points are prescribed (FORMATS.md "fixed"). Default: boundary.
   FixedSet fixed = FixedSet::Boundary;
   /// Relative residual of the reduced system above which the solve counts as failed. Default 1e-11.
-  double tolerance = 1e-11;
+  double tolerance = kConvergenceTolerance;
   /// Throws ParameterError if tolerance is not in (0, 1).
   void validate() const;
 };
@@ -54,7 +54,9 @@ struct BSplineExtremalOptions {
 struct BSplineExtremalResult {
   BSplineNet net;   ///< the input net with its free points replaced by the extremal's
   double energy = 0.0;
-  Summary summary;  ///< residual: max |Q_ff X_f + Q_fc X_c| / max(|Q_ff||X_f| + |Q_fc||X_c|)
+  /// residual: max |Q_ff X_f + Q_fc X_c| / max(|Q_ff||X_f| + |Q_fc||X_c|); when above the
+  /// tolerance, status NotUnique (Q_ff singular) or NumericalLimit.
+  Summary summary;
 };
 
 /// The extremal with the fixed points of `data` given by options.fixed (or, in the second
@@ -70,7 +72,8 @@ BSplineExtremalResult solve_bspline_extremal(const BSplineNet& data, const Energ
 class BSplineExtremalSolver {
  public:
   BSplineExtremalSolver(int p, int q, const std::vector<double>& U, const std::vector<double>& V,
-                        const EnergySpec& energy, const std::vector<int>& fixed, double tolerance = 1e-11);
+                        const EnergySpec& energy, const std::vector<int>& fixed,
+                        double tolerance = kConvergenceTolerance);
   ~BSplineExtremalSolver();
   BSplineExtremalSolver(BSplineExtremalSolver&&) noexcept;
   BSplineExtremalSolver& operator=(BSplineExtremalSolver&&) noexcept;

@@ -4,7 +4,6 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -244,56 +243,125 @@ double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int sam
   return smax > 0 ? lmax / smax : 0.0;
 }
 
-BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op, const std::vector<int>& fixed,
-                                   const BSplinePdeOptions& options) {
-  options.validate();
-  const auto t0 = std::chrono::steady_clock::now();
-  const int N = data.size();
+namespace {
+
+void check_size(int N) {
   if (N > kMaxDensePdeUnknowns)
     throw UnsupportedProblem("bspline pde: a net with " + std::to_string(N) + " control points exceeds the dense "
                              "solver's limit of " + std::to_string(kMaxDensePdeUnknowns) +
                              " points; use the extremal, or fewer spans (on several spans an elliptic fourth-order "
                              "solution is one polynomial anyway)");
+}
+
+// Singular values above rank_tolerance * the largest.
+int count_rank(const Eigen::VectorXd& sv, double rank_tolerance) {
+  int k = 0;
+  const double top = sv.size() ? sv(0) : 0.0;
+  for (Eigen::Index i = 0; i < sv.size(); ++i)
+    if (sv(i) > rank_tolerance * top) ++k;
+  return k;
+}
+
+// Rank-revealing least squares over the free points: Rf = U diag(s) V^T with V square (nf x nf),
+// so that its last nf - rank columns span the null space of Rf.
+struct FreeSvd {
+  Eigen::VectorXd s;
+  Eigen::MatrixXd U, V;
+  explicit FreeSvd(const Eigen::MatrixXd& Rf) {
+    if (Rf.rows() >= Rf.cols()) {
+      const Eigen::BDCSVD<Eigen::MatrixXd> svd(Rf, Eigen::ComputeThinU | Eigen::ComputeThinV);
+      s = svd.singularValues();
+      U = svd.matrixU();
+      V = svd.matrixV();
+    } else {
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Rf, Eigen::ComputeThinU | Eigen::ComputeFullV);
+      s = svd.singularValues();
+      U = svd.matrixU();
+      V = svd.matrixV();
+    }
+  }
+  /// The minimum-norm least-squares solution of Rf X = B at rank r.
+  Eigen::MatrixXd least_squares(const Eigen::MatrixXd& B, int r) const {
+    return V.leftCols(r) * (s.head(r).cwiseInverse().asDiagonal() * (U.leftCols(r).transpose() * B));
+  }
+};
+
+std::string incompatible_message(const EnergySpec& op, std::size_t prescribed, const BSplinePdeResult& out,
+                                 double res, double tolerance) {
+  std::ostringstream m;
+  m << "incompatible data: no B-spline solution of the " << op.name() << " PDE on this net meets the prescribed "
+    << prescribed << " control points. The " << out.equations << " span equations have rank " << out.rank << " ("
+    << out.rank_free << " on the free points), so the prescribed points must meet " << out.compatibility_conditions
+    << " linear compatibility condition(s); the least-squares residual is " << fmt(res) << " relative (tolerance "
+    << fmt(tolerance) << ").";
+  return m.str();
+}
+
+// Consistent data with free parameters: moves Xf to the member of Xf + Z Y (Z spans the free
+// parameters) that minimises the energy of op, and says so in the returned message.
+std::string minimise_energy_over_free_parameters(const BSplineNet& data, const EnergySpec& op,
+                                                 const std::vector<int>& free, const std::vector<int>& fixed,
+                                                 const Eigen::MatrixXd& Xc, const Eigen::MatrixXd& Z,
+                                                 const BSplinePdeResult& out, Eigen::MatrixXd& Xf) {
+  const Eigen::SparseMatrix<double> Q = bspline_gram(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
+  const Eigen::MatrixXd Qff = Eigen::MatrixXd(detail::sparse_submatrix(Q, free, free));
+  const Eigen::MatrixXd Qfc = Eigen::MatrixXd(detail::sparse_submatrix(Q, free, fixed));
+  const Eigen::MatrixXd H = Z.transpose() * Qff * Z;
+  const Eigen::MatrixXd g = Z.transpose() * (Qff * Xf + Qfc * Xc);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
+  const Eigen::VectorXd lam = es.eigenvalues();
+  // Zero eigenvalues are judged against the energy's scale on all free points (|Q_ff|), not
+  // against H alone: an energy that vanishes on the whole solution set gives H ~ rounding. The
+  // cut is relative to that scale (a rank decision, not the convergence tolerance).
+  const double qscale = Qff.cwiseAbs().maxCoeff();
+  const double cut = 1e-11 * std::max(qscale, 1e-300);
+  Eigen::VectorXd inv = Eigen::VectorXd::Zero(lam.size());
+  int zero = 0, negative = 0;
+  for (Eigen::Index k = 0; k < lam.size(); ++k) {
+    if (std::abs(lam(k)) > cut)
+      inv(k) = 1.0 / lam(k);
+    else
+      ++zero;
+    if (lam(k) < -cut) ++negative;
+  }
+  const Eigen::MatrixXd Y = -es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() * g;
+  Xf += Z * Y;
+  std::ostringstream m;
+  m << "the PDE with the prescribed points leaves " << out.free_parameters
+    << " free parameter(s) per coordinate (equations of rank " << out.rank << " over all points, " << out.rank_free
+    << " over the free ones); returned the member of minimal " << op.name() << " energy";
+  if (negative > 0)
+    m << " (the energy is indefinite on the solution set: this is its critical point, not a minimum)";
+  else if (zero > 0)
+    m << " (the energy is constant along " << zero << " direction(s) of the solution set: the minimum-norm minimiser)";
+  return m.str();
+}
+
+// The solve of solve_bspline_pde into out (out.net holds the data).
+void solve_into(const BSplineNet& data, const EnergySpec& op, const std::vector<int>& fixed,
+                const BSplinePdeOptions& options, BSplinePdeResult& out) {
+  const int N = data.size();
+  check_size(N);
   const SpanSystem sys(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
   const std::vector<int> free = detail::complement_indices(N, fixed, "bspline pde");
   if (free.empty()) throw SizeError("bspline pde: every control point is fixed; nothing to solve");
   const Eigen::MatrixXd Xc = detail::gather_rows(data.points(), fixed);
-  BSplinePdeResult out{data, {}, sys.equations(), 0, 0, 0, 0, false, 0.0};
+  out.equations = sys.equations();
 
   // Compress the tall system strip by strip: R^T R = A^T A, so R has the singular values of A and
   // |A_f X_f + A_c X_c| = |R_f X_f + R_c X_c|; the SVDs below act on N rows and A is never formed.
   const Eigen::MatrixXd Rm = sys.compressed();
   const Eigen::MatrixXd Rf = detail::gather_cols(Rm, free);
   const Eigen::MatrixXd B = -(detail::gather_cols(Rm, fixed) * Xc);
-  auto count_rank = [&](const Eigen::VectorXd& sv) {
-    int k = 0;
-    const double top = sv.size() ? sv(0) : 0.0;
-    for (Eigen::Index i = 0; i < sv.size(); ++i)
-      if (sv(i) > options.rank_tolerance * top) ++k;
-    return k;
-  };
-  // Rank over all control points (the paper's count).
-  out.rank = count_rank(Eigen::BDCSVD<Eigen::MatrixXd>(Rm).singularValues());
-  // Rank-revealing least squares over the free points (V must be square: nf x nf).
+  // Rank over all control points (the paper's count), then over the free points.
+  out.rank = count_rank(Eigen::BDCSVD<Eigen::MatrixXd>(Rm).singularValues(), options.rank_tolerance);
   const int nf = static_cast<int>(free.size());
-  Eigen::VectorXd s;
-  Eigen::MatrixXd Uthin, Vfull;
-  if (Rf.rows() >= Rf.cols()) {
-    const Eigen::BDCSVD<Eigen::MatrixXd> svd(Rf, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    s = svd.singularValues();
-    Uthin = svd.matrixU();
-    Vfull = svd.matrixV();
-  } else {
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Rf, Eigen::ComputeThinU | Eigen::ComputeFullV);
-    s = svd.singularValues();
-    Uthin = svd.matrixU();
-    Vfull = svd.matrixV();
-  }
-  const int r = count_rank(s);
+  const FreeSvd svd(Rf);
+  const int r = count_rank(svd.s, options.rank_tolerance);
   out.rank_free = r;
   out.free_parameters = nf - r;
   out.compatibility_conditions = out.rank - r;
-  Eigen::MatrixXd Xf = Vfull.leftCols(r) * (s.head(r).cwiseInverse().asDiagonal() * (Uthin.leftCols(r).transpose() * B));
+  Eigen::MatrixXd Xf = svd.least_squares(B, r);
 
   auto residual_of = [&](const Eigen::MatrixXd& X) {
     Eigen::MatrixXd full(N, 3);
@@ -305,65 +373,39 @@ BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op,
   out.summary.residual = res;
 
   if (!(res <= options.consistency_tolerance) || !Xf.allFinite()) {
-    std::ostringstream m;
-    m << "incompatible data: no B-spline solution of the " << op.name() << " PDE on this net meets the prescribed "
-      << fixed.size() << " control points. The " << out.equations << " span equations have rank " << out.rank
-      << " (" << r << " on the free points), so the prescribed points must meet " << out.compatibility_conditions
-      << " linear compatibility condition(s); the least-squares residual is " << fmt(res)
-      << " relative (tolerance " << fmt(options.consistency_tolerance) << ").";
-    out.summary.message = m.str();
-    out.summary.converged = false;
+    // The input net is returned unchanged (no least-squares net).
+    out.summary.set_failed(Xf.allFinite() ? Status::Incompatible : Status::NumericalLimit,
+                           incompatible_message(op, fixed.size(), out, res, options.consistency_tolerance));
     out.energy = bspline_energy(out.net, op);
-    out.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return out;
+    return;
   }
 
   std::string message;
   if (out.free_parameters > 0) {
-    // Minimise the energy over X0 + Z Y.
-    const Eigen::MatrixXd Z = Vfull.rightCols(out.free_parameters);
-    const Eigen::SparseMatrix<double> Q = bspline_gram(data.p(), data.q(), data.knots_u(), data.knots_v(), op);
-    const Eigen::MatrixXd Qff = Eigen::MatrixXd(detail::sparse_submatrix(Q, free, free));
-    const Eigen::MatrixXd Qfc = Eigen::MatrixXd(detail::sparse_submatrix(Q, free, fixed));
-    const Eigen::MatrixXd H = Z.transpose() * Qff * Z;
-    const Eigen::MatrixXd g = Z.transpose() * (Qff * Xf + Qfc * Xc);
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(H);
-    const Eigen::VectorXd lam = es.eigenvalues();
-    // Zero eigenvalues are judged against the energy's scale on all free points (|Q_ff|), not
-    // against H alone: an energy that vanishes on the whole solution set gives H ~ rounding.
-    const double qscale = Qff.cwiseAbs().maxCoeff();
-    const double cut = 1e-11 * std::max(qscale, 1e-300);
-    Eigen::VectorXd inv = Eigen::VectorXd::Zero(lam.size());
-    int zero = 0, negative = 0;
-    for (Eigen::Index k = 0; k < lam.size(); ++k) {
-      if (std::abs(lam(k)) > cut)
-        inv(k) = 1.0 / lam(k);
-      else
-        ++zero;
-      if (lam(k) < -cut) ++negative;
-    }
-    const Eigen::MatrixXd Y = -es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() * g;
-    Xf += Z * Y;
+    message = minimise_energy_over_free_parameters(data, op, free, fixed, Xc, svd.V.rightCols(out.free_parameters),
+                                                   out, Xf);
     res = residual_of(Xf);
     out.summary.residual = res;
     out.minimum_energy_member = true;
-    std::ostringstream m;
-    m << "the PDE with the prescribed points leaves " << out.free_parameters
-      << " free parameter(s) per coordinate (equations of rank " << out.rank << " over all points, " << r
-      << " over the free ones); returned the member of minimal " << op.name() << " energy";
-    if (negative > 0)
-      m << " (the energy is indefinite on the solution set: this is its critical point, not a minimum)";
-    else if (zero > 0)
-      m << " (the energy is constant along " << zero << " direction(s) of the solution set: the minimum-norm minimiser)";
-    message = m.str();
   }
   detail::scatter_rows(out.net.points(), free, Xf);
   out.energy = bspline_energy(out.net, op);
-  out.summary.converged = res <= options.consistency_tolerance && Xf.allFinite();
-  out.summary.message = out.summary.converged
-                            ? message
-                            : "the solution lost accuracy: relative residual " + fmt(res) + " after fixing the free parameters";
-  out.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.summary.message = message;
+  out.summary.finish(res <= options.consistency_tolerance && Xf.allFinite(), Status::NumericalLimit, [&] {
+    return "the solution lost accuracy: relative residual " + fmt(res) + " after fixing the free parameters";
+  });
+}
+
+}  // namespace
+
+BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op, const std::vector<int>& fixed,
+                                   const BSplinePdeOptions& options) {
+  options.validate();
+  BSplinePdeResult out{data, {}, 0, 0, 0, 0, 0, false, 0.0};
+  {
+    ScopedTimer timer(out.summary.seconds);
+    solve_into(data, op, fixed, options, out);
+  }
   return out;
 }
 

@@ -45,8 +45,10 @@
 namespace bpde {
 
 struct BSplinePdeOptions {
-  /// Which control points are prescribed (FORMATS.md "fixed"). Default: boundary.
-  /// "u-boundaries" is accepted for second-order operators only (UnsupportedProblem otherwise).
+  /// Which control points are prescribed (FORMATS.md "fixed"). Default: boundary. Any order takes
+  /// "boundary" and "boundary+adjacent" (C1 data: the outer two rings; the ranks, free parameters
+  /// and compatibility conditions are computed for the set as for any other); "u-boundaries" is
+  /// accepted for second-order operators only (UnsupportedProblem otherwise).
   FixedSet fixed = FixedSet::Boundary;
   /// Singular values below rank_tolerance * (largest) count as zero. Default 1e-10.
   double rank_tolerance = 1e-10;
@@ -61,7 +63,9 @@ struct BSplinePdeOptions {
 
 struct BSplinePdeResult {
   BSplineNet net;               ///< the solution (or the input net unchanged when converged = false)
-  Summary summary;              ///< residual: the relative residual of the equations (see Options)
+  /// residual: the relative residual of the equations (see Options); status Incompatible when the
+  /// data miss the compatibility conditions, NumericalLimit when rounding spoils the solution.
+  Summary summary;
   int equations = 0;            ///< number of equations (Bernstein coefficients of Lx over all spans)
   int rank = 0;                 ///< rank of the equations over ALL control points (paper's count)
   int rank_free = 0;            ///< rank of the equations over the free control points

@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -12,6 +11,7 @@
 #include "core/errors.h"
 #include "energies/cmc.h"
 #include "solvers/cmc/cmc_problem.h"
+#include "solvers/summary.h"
 
 namespace bpde {
 
@@ -219,135 +219,208 @@ TensorNet make_net(const TensorNet& data, const Eigen::MatrixX3d& P) {
   return TensorNet(data.n(), data.m(), P);
 }
 
+// How a solve ended, before the final checks of finish().
+struct Outcome {
+  double H = 0.0;  ///< H of the net in p.P
+  bool ok = false;
+  Status why = Status::NoConvergence;  ///< the reason when !ok
+  std::string message;
+};
+
+// The result from p.P at out.H. Never reports a net as converged unless eq. (11) holds to the
+// tolerance here.
 template <class Net>
-CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  o.validate();
-  check_degree(data, o.fixed);
-  const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
-  CmcProblem p{functional_for(data), data.free_indices(o.fixed), data.points()};
-  for (int r : fixed_idx)
-    if (!p.P.row(r).allFinite())
-      throw NonFiniteError("cmc: prescribed control point " + std::to_string(r) + " is not finite");
-  for (int r : p.free) p.P.row(r).setZero();
-  const DirichletFactor dir = dirichlet_solve(p, fixed_idx);
-  const Eigen::MatrixXd& L = dir.L;
-
-  CmcResult<Net> res;
-  auto finish = [&](double H, bool converged, std::string message) {
-    res.H = H;
-    res.D = p.f->dirichlet(p.P);
-    res.V = p.f->volume(p.P);
-    res.DH = res.D + 2.0 * H * res.V;
-    res.net = make_net(data, p.P);
-    res.summary.residual = p.residual(H);
-    // Never report a net as converged unless eq. (11) holds to the tolerance here.
-    if (converged && !(res.summary.residual <= o.tolerance)) {
-      converged = false;
-      message = "the final net misses eq. (11) by " + std::to_string(res.summary.residual) +
-                " (relative) after: " + message;
-    }
-    res.summary.converged = converged;
-    res.summary.message = std::move(message);
-    res.summary.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return res;
-  };
-
-  if (o.V) {
-    double H = 0.0;
-    std::string note;
-    const CorrectorStats st = nlopt_volume_solve(p, *o.V, o, L, H, note);
-    res.summary.iterations = st.iterations + st.polish_steps;
-    return finish(H, st.ok, note);
+void finish(CmcResult<Net>& res, const Net& data, const CmcProblem& p, const CmcOptions& o, Outcome out) {
+  res.H = out.H;
+  res.D = p.f->dirichlet(p.P);
+  res.V = p.f->volume(p.P);
+  res.DH = res.D + 2.0 * out.H * res.V;
+  res.net = make_net(data, p.P);
+  res.summary.residual = p.residual(out.H);
+  if (out.ok && !(res.summary.residual <= o.tolerance)) {
+    out.ok = false;
+    out.why = Status::NumericalLimit;
+    out.message = "the final net misses eq. (11) by " + std::to_string(res.summary.residual) +
+                  " (relative) after: " + out.message;
   }
-
-  const double Ht = o.H;
-  if (Ht == 0.0) {
-    const double r = p.residual(0.0);
-    return finish(0.0, r <= o.tolerance,
-                  r <= o.tolerance ? "Dirichlet extremal (linear solve)"
-                                   : "Dirichlet extremal: the linear solve is not accurate to the tolerance");
+  if (out.ok) {
+    res.summary.message = std::move(out.message);
+    res.summary.set_converged();
+  } else {
+    res.summary.set_failed(out.why, std::move(out.message));
   }
+}
 
-  // Tangent of the branch at H = 0: C_ff dY/dH = -2 dV/dP (free rows).
+// V mode: min D subject to V = V0 from the Dirichlet extremal in p.P.
+Outcome volume_solve(CmcProblem& p, const CmcOptions& o, const Eigen::MatrixXd& L, Summary& summary) {
+  Outcome out;
+  const CorrectorStats st = nlopt_volume_solve(p, *o.V, o, L, out.H, out.message);
+  summary.iterations = st.iterations + st.polish_steps;
+  out.ok = st.ok;
+  return out;
+}
+
+// H = 0: the Dirichlet extremal in p.P is the answer.
+Outcome dirichlet_outcome(const CmcProblem& p, const CmcOptions& o) {
+  const double r = p.residual(0.0);
+  if (r <= o.tolerance) return {0.0, true, Status::Converged, "Dirichlet extremal (linear solve)"};
+  return {0.0, false, Status::NumericalLimit,
+          "Dirichlet extremal: the linear solve is not accurate to the tolerance"};
+}
+
+// Tangent of the branch at H = 0: C_ff dY/dH = -2 dV/dP (free rows).
+Eigen::VectorXd initial_tangent(const CmcProblem& p, const SymFactor& gram) {
   Eigen::VectorXd tangent(3 * p.k());
-  {
-    const Eigen::VectorXd gV = p.volume_gradient();
-    Eigen::MatrixX3d G(p.k(), 3);
-    for (int a = 0; a < p.k(); ++a) G.row(a) = gV.segment<3>(3 * a).transpose();
-    const Eigen::MatrixXd T = dir.gram->solve(G);
-    for (int a = 0; a < p.k(); ++a) tangent.segment<3>(3 * a) = -2.0 * T.row(a).transpose();
+  const Eigen::VectorXd gV = p.volume_gradient();
+  Eigen::MatrixX3d G(p.k(), 3);
+  for (int a = 0; a < p.k(); ++a) G.row(a) = gV.segment<3>(3 * a).transpose();
+  const Eigen::MatrixXd T = gram.solve(G);
+  for (int a = 0; a < p.k(); ++a) tangent.segment<3>(3 * a) = -2.0 * T.row(a).transpose();
+  return tangent;
+}
+
+// First step: the whole way to Ht, but not beyond |H| = 16 / (size of the data), the scale where
+// a fold can occur (steps double after easy corrector runs, so large |H| are reached quickly).
+double first_step(double Ht, const Eigen::MatrixX3d& P, const std::vector<int>& fixed_idx) {
+  double step = Ht;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (int r : fixed_idx) {
+    lo = lo.cwiseMin(P.row(r).transpose());
+    hi = hi.cwiseMax(P.row(r).transpose());
+  }
+  const double diam = (hi - lo).norm();
+  if (std::isfinite(diam) && diam > 0 && std::abs(step) > 16.0 / diam) step = std::copysign(16.0 / diam, Ht);
+  return step;
+}
+
+// The step control of the continuation in H (cmc.h): proposes the next H on the way from 0 to the
+// target; an accepted step doubles the next one after an easy corrector run (<= 4 iterations) and
+// keeps it otherwise; a rejected step halves it, until it falls below min_step relative to
+// max(1, |H reached|) (the fold). At most max_continuation_steps attempts.
+class StepController {
+ public:
+  struct Step {
+    double s;   ///< the step in H
+    double hn;  ///< the H proposed: h + s, exactly the target on the last step
+  };
+  StepController(double target, double first_step, const CmcOptions& o)
+      : target_(target), step_(first_step), min_step_(o.min_step), max_attempts_(o.max_continuation_steps) {}
+
+  bool reached_target() const { return h_ == target_; }
+  /// The last H accepted.
+  double h() const { return h_; }
+  /// Counts an attempt; false once max_continuation_steps attempts are used up.
+  bool attempt() { return ++attempts_ <= max_attempts_; }
+  Step propose() const {
+    double s = step_;
+    if (std::abs(target_ - h_) <= std::abs(s) * (1 + 1e-12)) s = target_ - h_;
+    return {s, (target_ - h_ == s) ? target_ : h_ + s};
+  }
+  void accept(const Step& st, int corrector_iterations) {
+    h_ = st.hn;
+    step_ = corrector_iterations <= 4 ? 2 * st.s : st.s;
+  }
+  /// Halves the step; false when it collapsed (a fold at h()).
+  bool reject(const Step& st) {
+    step_ = st.s / 2;
+    return !(std::abs(step_) < min_step_ * std::max(1.0, std::abs(h_)));
   }
 
-  double h = 0.0;
-  Eigen::VectorXd y = p.get();
-  // First step: the whole way, but not beyond |H| = 16 / (size of the data), the scale where a
-  // fold can occur (steps double after easy corrector runs, so large |H| are reached quickly).
-  double step = Ht;
-  {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (int r : fixed_idx) {
-      lo = lo.cwiseMin(p.P.row(r).transpose());
-      hi = hi.cwiseMax(p.P.row(r).transpose());
-    }
-    const double diam = (hi - lo).norm();
-    if (std::isfinite(diam) && diam > 0 && std::abs(step) > 16.0 / diam) step = std::copysign(16.0 / diam, Ht);
+ private:
+  double target_, step_, min_step_;
+  int max_attempts_, attempts_ = 0;
+  double h_ = 0.0;
+};
+
+// The chosen corrector at fixed H from the predicted point in p.P.
+CorrectorStats correct(CmcProblem& p, double H, const CmcOptions& o, const Eigen::MatrixXd& L) {
+  switch (o.solver) {
+    case CmcSolver::Newton: return newton_correct(p, H, o, o.max_corrector_iterations);
+    case CmcSolver::Ceres: return ceres_correct(p, H, o);
+    case CmcSolver::NLopt: return nlopt_correct(p, H, o, L);
   }
-  int attempts = 0, polish = 0;
-  while (h != Ht) {
-    if (++attempts > o.max_continuation_steps) {
+  return {};
+}
+
+// Stay on the branch: the corrector may move the predicted point by at most half the step (the
+// tangent predictor is second-order accurate, so small steps always pass on the branch).
+bool on_branch(const Eigen::VectorXd& y, const Eigen::VectorXd& pred, const Eigen::VectorXd& yn) {
+  const double dev = (yn - pred).norm(), move = (yn - y).norm();
+  return dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
+}
+
+// Positive definite Hessian at H (strict local minimum: still before the first fold); known from
+// the corrector when corrector_pd == 1. When the continuation goes on (!last), the factor also
+// gives the next tangent dY/dH = -J^{-1} 2 dV/dY.
+bool strict_minimum(const CmcProblem& p, double H, bool last, int corrector_pd, Eigen::VectorXd& next_tangent) {
+  if (last && corrector_pd == 1) return true;
+  const SymFactor fac(p.hessian(H));
+  if (fac.pd && !last) next_tangent = -2.0 * fac.solve(p.volume_gradient());
+  return fac.pd;
+}
+
+// H mode, H != 0: continuation from the Dirichlet extremal in p.P to o.H. Predictor: the tangent;
+// corrector: the chosen solver; a step is accepted when the corrector converged, stayed on the
+// branch and the Hessian is positive definite. Adds the corrector iterations to summary.
+Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFactor& dir,
+                        const std::vector<int>& fixed_idx, Summary& summary, int& continuation_steps) {
+  const double Ht = o.H;
+  const bool gram_singular = !dir.gram->use_llt;
+  Eigen::VectorXd tangent = initial_tangent(p, *dir.gram);
+  Eigen::VectorXd y = p.get();
+  StepController control(Ht, first_step(Ht, p.P, fixed_idx), o);
+  int polish = 0;
+  while (!control.reached_target()) {
+    if (!control.attempt()) {
       p.set(y);
-      return finish(h, false, fold_message(h, !dir.gram->use_llt));
+      return {control.h(), false, Status::NoConvergence, fold_message(control.h(), gram_singular)};
     }
-    double s = step;
-    if (std::abs(Ht - h) <= std::abs(s) * (1 + 1e-12)) s = Ht - h;
-    const double hn = (Ht - h == s) ? Ht : h + s;
-    const Eigen::VectorXd pred = y + tangent * s;  // tangent predictor
+    const StepController::Step step = control.propose();
+    const bool last = step.hn == Ht;
+    const Eigen::VectorXd pred = y + tangent * step.s;  // tangent predictor
     p.set(pred);
-    CorrectorStats st;
-    switch (o.solver) {
-      case CmcSolver::Newton: st = newton_correct(p, hn, o, o.max_corrector_iterations); break;
-      case CmcSolver::Ceres: st = ceres_correct(p, hn, o); break;
-      case CmcSolver::NLopt: st = nlopt_correct(p, hn, o, L); break;
-    }
-    res.summary.iterations += st.iterations + st.polish_steps;
-    bool accept = st.ok;
-    if (accept) {
-      // Stay on the branch: the corrector may move the predicted point by at most half the step
-      // (the tangent predictor is second-order accurate, so small steps always pass on the branch).
-      const Eigen::VectorXd yn = p.get();
-      const double dev = (yn - pred).norm(), move = (yn - y).norm();
-      accept = dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
-    }
+    const CorrectorStats st = correct(p, step.hn, o, dir.L);
+    summary.iterations += st.iterations + st.polish_steps;
     Eigen::VectorXd next_tangent;
-    if (accept) {
-      // Positive definite Hessian (strict local minimum: still before the first fold). When the
-      // continuation goes on, its Cholesky factor also gives the tangent dY/dH = -J^{-1} 2 dV/dY.
-      if (hn != Ht || st.pd != 1) {
-        const SymFactor fac(p.hessian(hn));
-        accept = fac.pd;
-        if (accept && hn != Ht) next_tangent = -2.0 * fac.solve(p.volume_gradient());
-      }
-    }
-    if (accept) {
+    if (st.ok && on_branch(y, pred, p.get()) && strict_minimum(p, step.hn, last, st.pd, next_tangent)) {
       polish += st.polish_steps;
       y = p.get();
-      h = hn;
-      if (hn != Ht) tangent = next_tangent;
-      ++res.continuation_steps;
-      step = st.iterations <= 4 ? 2 * s : s;
+      if (!last) tangent = next_tangent;
+      ++continuation_steps;
+      control.accept(step, st.iterations);
     } else {
       p.set(y);
-      step = s / 2;
-      if (std::abs(step) < o.min_step * std::max(1.0, std::abs(h))) return finish(h, false, fold_message(h, !dir.gram->use_llt));
+      if (!control.reject(step))
+        return {control.h(), false, gram_singular ? Status::NumericalLimit : Status::Fold,
+                fold_message(control.h(), gram_singular)};
     }
   }
-  std::string msg = "reached H = " + std::to_string(Ht) + " in " +
-                    std::to_string(res.continuation_steps) + " continuation step(s) with " +
-                    to_string(o.solver);
+  std::string msg = "reached H = " + std::to_string(Ht) + " in " + std::to_string(continuation_steps) +
+                    " continuation step(s) with " + to_string(o.solver);
   if (polish > 0) msg += " (+" + std::to_string(polish) + " Newton polish step(s))";
-  return finish(Ht, true, msg);
+  return {Ht, true, Status::Converged, msg};
+}
+
+template <class Net>
+CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
+  CmcResult<Net> res;
+  {
+    ScopedTimer timer(res.summary.seconds);
+    o.validate();
+    check_degree(data, o.fixed);
+    const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
+    CmcProblem p{functional_for(data), data.free_indices(o.fixed), data.points()};
+    for (int r : fixed_idx)
+      if (!p.P.row(r).allFinite())
+        throw NonFiniteError("cmc: prescribed control point " + std::to_string(r) + " is not finite");
+    for (int r : p.free) p.P.row(r).setZero();
+    const DirichletFactor dir = dirichlet_solve(p, fixed_idx);
+    const Outcome out = o.V           ? volume_solve(p, o, dir.L, res.summary)
+                        : o.H == 0.0  ? dirichlet_outcome(p, o)
+                                      : continue_branch(p, o, dir, fixed_idx, res.summary, res.continuation_steps);
+    finish(res, data, p, o, out);
+  }
+  return res;
 }
 
 template <class Net>

@@ -56,7 +56,7 @@ struct CmcOptions {
   std::optional<double> V;            ///< target volume (V mode); default unset
   CmcSolver solver = CmcSolver::Newton;  ///< default newton
   FixedSet fixed = FixedSet::Boundary;   ///< default boundary (C0 data)
-  double tolerance = 1e-11;           ///< relative eq. (11) residual; default 1e-11, in (0, 1e-3]
+  double tolerance = kConvergenceTolerance;  ///< relative eq. (11) residual; default 1e-11, in (0, 1e-3]
   int max_corrector_iterations = 30;  ///< per continuation step; default 30, >= 1
   int max_continuation_steps = 400;   ///< default 400, >= 1
   double min_step = 1e-5;             ///< smallest H step, relative to max(1, |H reached|); default 1e-5
@@ -73,7 +73,10 @@ struct CmcResult {
   double V = 0.0;     ///< volume 1/3 ∫ <x_u ∧ x_v, x>
   double DH = 0.0;    ///< D + 2HV
   int continuation_steps = 0;  ///< accepted continuation steps (H mode)
-  Summary summary;    ///< converged, iterations (corrector iterations in all), residual, message
+  /// converged, iterations (corrector iterations in all), residual, message; status Fold past the
+  /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),
+  /// NoConvergence when max_continuation_steps run out or the V-mode solve fails.
+  Summary summary;
 };
 
 /// Solve with the data (prescribed points) of `data`; its free points are ignored.

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to solvers/cmc*.cpp: the CMC problem over the free control points, and the correctors.
+// Internal to solvers/cmc/*.cpp: the CMC problem over the free control points, and the correctors.
 // The free unknowns form a vector y of length 3k, y(3a + c) = P(free[a], c).
 #include <Eigen/Core>
 #include <Eigen/Cholesky>

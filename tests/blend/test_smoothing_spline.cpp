@@ -157,6 +157,8 @@ TEST(SmoothingSpline, InterpolatesBoundaryValuesAndDyAtTheNodes) {
   p.y1_dy = Eigen::MatrixX3d::Random(9, 3);
   const auto r = solve_smoothing_spline(p);
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
+  EXPECT_EQ(r.summary.status, Status::Converged);
+  EXPECT_GE(r.summary.seconds, 0.0);
   for (int i = 0; i <= 8; ++i) {
     const double x = i / 8.0;
     EXPECT_LT((r.spline.evaluate(x, 0) - p.y0_value.row(i).transpose()).norm(), 1e-12);
@@ -242,6 +244,8 @@ TEST(SmoothingSpline, NumericallySingularProblemsAreReportedNotConverged) {
     o.method = method;
     const auto r = solve_smoothing_spline(cylinders(10.0, 1e-300, true), o);
     EXPECT_FALSE(r.summary.converged);
+    EXPECT_TRUE(r.summary.status == Status::NotUnique || r.summary.status == Status::NumericalLimit)
+        << to_string(r.summary.status);
     EXPECT_FALSE(r.summary.message.empty());
     EXPECT_TRUE(std::isfinite(r.functional));
     EXPECT_TRUE(r.spline.coefficients().allFinite());

@@ -1,4 +1,4 @@
-// solvers/bspline_extremal against independent Bézier computations, exact polynomial
+// solvers/bspline/bspline_extremal against independent Bézier computations, exact polynomial
 // reproduction and finite differences of an independently assembled energy.
 #include <gtest/gtest.h>
 
@@ -185,6 +185,7 @@ TEST(BSplineExtremal, SemidefiniteEnergyFallsBackToMinimumNorm) {
   const BSplineExtremalResult r =
       solve_bspline_extremal(data, EnergySpec::coons(), BSplineExtremalOptions{FixedSet::UBoundaries});
   EXPECT_TRUE(r.summary.converged) << r.summary.message;
+  EXPECT_EQ(r.summary.status, Status::Converged);
   EXPECT_NE(r.summary.message.find("not positive definite"), std::string::npos);
   EXPECT_LT(r.summary.residual, 1e-11);
 }

@@ -1,4 +1,4 @@
-// solvers/bspline_pde: ranks (seed 002 Examples 1-2, NOTES.md), exact polynomial solutions on
+// solvers/bspline/bspline_pde: ranks (seed 002 Examples 1-2, NOTES.md), exact polynomial solutions on
 // single- and multi-span nets, incompatible data, degenerate operators, bad input.
 #include <gtest/gtest.h>
 
@@ -171,7 +171,8 @@ TEST(BSplinePde, MultiSpanBiquinticNeedsFourCompatibilityConditions) {
   const BSplineNet generic = random_net(5, 5, U, V, 5);
   const BSplinePdeResult bad = solve_bspline_pde(generic, op);
   EXPECT_FALSE(bad.summary.converged);
-  EXPECT_NE(bad.summary.message.find("incompatible"), std::string::npos);
+  EXPECT_EQ(bad.summary.status, Status::Incompatible);
+  EXPECT_FALSE(bad.summary.message.empty());
   EXPECT_EQ(bad.compatibility_conditions, 4);
   EXPECT_EQ(bad.rank, 29);  // 49 - 20: the solution space is the 20 biharmonic polynomials of bidegree (5,5)
   EXPECT_GT(bad.summary.residual, 1e-6);
@@ -181,6 +182,7 @@ TEST(BSplinePde, MultiSpanBiquinticNeedsFourCompatibilityConditions) {
   const BSplineNet exact = spline_of(fourth_order_solution({1, 0, 2, 0, 1}, 5), 5, 5, U, V);
   const BSplinePdeResult r = solve_bspline_pde(blank_free(exact, exact.free_indices(FixedSet::Boundary)), op);
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
+  EXPECT_EQ(r.summary.status, Status::Converged);
   EXPECT_EQ(r.free_parameters, 0);
   EXPECT_LT(r.summary.residual, 1e-12);
   EXPECT_LT(max_point_error(r.net, exact), 1e-10);
@@ -191,7 +193,62 @@ TEST(BSplinePde, MultiSpanBiquinticNeedsFourCompatibilityConditions) {
   // relative tolerance.
   BSplineNet perturbed = blank_free(exact, exact.free_indices(FixedSet::Boundary));
   perturbed.points()(1, 2) += 1e-5;
-  EXPECT_FALSE(solve_bspline_pde(perturbed, op).summary.converged);
+  const BSplinePdeResult off = solve_bspline_pde(perturbed, op);
+  EXPECT_FALSE(off.summary.converged);
+  EXPECT_EQ(off.summary.status, Status::Incompatible);
+}
+
+TEST(BSplinePde, BoundaryAdjacentDataGiveBackAPolynomialSolution) {
+  // C1 data: the outer two rings of a net built from one global biharmonic polynomial. The
+  // prescribed set leaves the 3 x 3 inner points free; a biharmonic function with zero values and
+  // normal derivatives on the boundary vanishes, so they are determined (no free parameter) and
+  // the data must meet rank - 9 compatibility conditions. Ranks checked against the SVD of the
+  // assembled equations.
+  const EnergySpec op = EnergySpec::biharmonic();
+  BSplinePdeOptions o;
+  o.fixed = FixedSet::BoundaryAdjacent;
+  struct Case {
+    int n;
+    std::vector<double> interior;
+    int rank;
+  };
+  // Single span: the 4n biharmonic polynomials of bidegree (n, n) span the null space; 2 x 2
+  // spans: the 20 biharmonic polynomials of bidegree (5, 5) (see the case above).
+  for (const Case& c : {Case{6, {}, 49 - 4 * 6}, Case{5, {0.5}, 29}}) {
+    const std::vector<double> U = clamped(c.n, c.interior), V = clamped(c.n, c.interior);
+    const BSplineNet exact = spline_of(fourth_order_solution({1, 0, 2, 0, 1}, 5), c.n, c.n, U, V);
+    ASSERT_LT(bspline_pde_equation_residual(exact, op), 1e-12);
+    const std::vector<int> fixed = exact.fixed_indices(FixedSet::BoundaryAdjacent);
+    const std::vector<int> free = exact.free_indices(FixedSet::BoundaryAdjacent);
+    ASSERT_EQ(free.size(), 9u);
+    const Eigen::MatrixXd A = bspline_pde_equations(c.n, c.n, U, V, op);
+    Eigen::MatrixXd Af(A.rows(), 9);
+    for (int k = 0; k < 9; ++k) Af.col(k) = A.col(free[k]);
+    ASSERT_EQ(rank_of(A), c.rank);
+    ASSERT_EQ(rank_of(Af), 9);
+
+    const BSplinePdeResult r = solve_bspline_pde(blank_free(exact, free), op, o);
+    ASSERT_TRUE(r.summary.converged) << r.summary.message;
+    EXPECT_EQ(r.summary.status, Status::Converged);
+    EXPECT_EQ(r.rank, c.rank) << "n = " << c.n;
+    EXPECT_EQ(r.rank_free, 9);
+    EXPECT_EQ(r.free_parameters, 0);
+    EXPECT_EQ(r.compatibility_conditions, c.rank - 9);
+    EXPECT_FALSE(r.minimum_energy_member);
+    EXPECT_LT(max_point_error(r.net, exact), 1e-10) << "n = " << c.n;
+    for (int idx : fixed) EXPECT_EQ(r.net.points().row(idx), exact.points().row(idx));
+    // The same set given as an explicit list.
+    const BSplinePdeResult listed = solve_bspline_pde(blank_free(exact, free), op, fixed);
+    EXPECT_EQ(listed.net.points(), r.net.points());
+
+    // Generic C1 data miss the conditions: reported, the net unchanged.
+    const BSplineNet generic = random_net(c.n, c.n, U, V, 7);
+    const BSplinePdeResult bad = solve_bspline_pde(generic, op, o);
+    EXPECT_FALSE(bad.summary.converged);
+    EXPECT_EQ(bad.summary.status, Status::Incompatible);
+    EXPECT_EQ(bad.compatibility_conditions, c.rank - 9);
+    EXPECT_EQ(bad.net.points(), generic.points());
+  }
 }
 
 TEST(BSplinePde, UnclampedUniformMultiSpanRecoversPolynomial) {
@@ -226,6 +283,7 @@ TEST(BSplinePde, SecondOrderFromUBoundaries) {
   const std::vector<double> K4 = clamped(4, {});
   const BSplinePdeResult even = solve_bspline_pde(random_net(4, 4, K4, K4, 3), lap, o);
   EXPECT_FALSE(even.summary.converged);
+  EXPECT_EQ(even.summary.status, Status::Incompatible);
   EXPECT_EQ(even.compatibility_conditions, 1);
   // General (a, b, c) with real characteristic roots: solutions (u + lam v)^k.
   const EnergySpec op = EnergySpec::second_order(1, 3, 2);  // 1 + 3 lam + 2 lam^2 = 0: lam = -1, -1/2
@@ -262,7 +320,7 @@ TEST(BSplinePde, CoonsOperatorGivesTheCoonsPatchOnMultiSpanNets) {
 TEST(BSplinePde, CoonsSolutionIsTheCoonsExtremal) {
   // Integration by parts: with clamped knots the free basis functions vanish on the boundary, so a
   // net with x_uuvv = 0 on every span (p, q >= 3) is stationary for 1/2 |x_uv|^2 - the PDE solution
-  // and the extremal (solvers/bspline_extremal) must coincide.
+  // and the extremal (solvers/bspline/bspline_extremal) must coincide.
   const BSplineNet data = random_net(4, 3, clamped(4, {0.3, 0.6}), clamped(3, {0.45}), 45);
   const BSplinePdeResult r = solve_bspline_pde(data, EnergySpec::coons());
   const BSplineExtremalResult e = solve_bspline_extremal(data, EnergySpec::coons());

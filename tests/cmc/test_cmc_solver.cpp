@@ -44,6 +44,35 @@ TEST(CmcSolver, ZeroHIsTheDirichletExtremal) {
   EXPECT_TRUE(rt.summary.converged);
 }
 
+TEST(CmcSolver, StatusSaysWhyTheSolveEnded) {
+  const TriangularNet data = testing::triangular_boundary(5, testing::planar_triangle);
+  const auto zero = solve_cmc(data, opts(0.0));
+  EXPECT_EQ(zero.summary.status, Status::Converged);
+  for (CmcSolver s : {CmcSolver::Newton, CmcSolver::Ceres, CmcSolver::NLopt}) {
+    const auto ok = solve_cmc(data, opts(-2.0, s));
+    EXPECT_TRUE(ok.summary.converged) << to_string(s);
+    EXPECT_EQ(ok.summary.status, Status::Converged) << to_string(s);
+    EXPECT_GE(ok.summary.seconds, 0.0);
+  }
+  // Out of continuation steps before a target on the branch: an iteration limit, not a fold.
+  const double fold = solve_cmc(data, opts(-60.0)).H;
+  const auto reachable = solve_cmc(data, opts(0.9 * fold));
+  ASSERT_TRUE(reachable.summary.converged) << reachable.summary.message;
+  ASSERT_GT(reachable.continuation_steps, 1);
+  CmcOptions few = opts(0.9 * fold);
+  few.max_continuation_steps = 1;
+  const auto limited = solve_cmc(data, few);
+  EXPECT_FALSE(limited.summary.converged);
+  EXPECT_EQ(limited.summary.status, Status::NoConvergence);
+  EXPECT_FALSE(limited.summary.message.empty());
+  EXPECT_GT(limited.H, 0.9 * fold);
+  // V mode.
+  CmcOptions v;
+  v.V = solve_cmc(data, opts(-2.0)).V;
+  v.solver = CmcSolver::NLopt;
+  EXPECT_EQ(solve_cmc(data, v).summary.status, Status::Converged);
+}
+
 TEST(CmcSolver, PlanarBoundaryMirrorsUnderHToMinusH) {
   const TriangularNet data = testing::triangular_boundary(7, testing::planar_triangle);
   const auto a = solve_cmc(data, opts(-1.5));
@@ -110,6 +139,7 @@ TEST(CmcSolver, FoldIsDetectedAndReported) {
   for (CmcSolver s : {CmcSolver::Newton, CmcSolver::Ceres, CmcSolver::NLopt}) {
     const auto r = solve_cmc(data, opts(-60.0, s));
     EXPECT_FALSE(r.summary.converged) << to_string(s);
+    EXPECT_EQ(r.summary.status, Status::Fold) << to_string(s);
     const std::string prefix = "no critical point on the branch from H = 0 beyond H ≈ ";
     ASSERT_EQ(r.summary.message.rfind(prefix, 0), 0u) << r.summary.message;
     EXPECT_GT(r.H, -60.0);
@@ -132,6 +162,7 @@ TEST(CmcSolver, FoldOnTensorNetsAndWithC1Data) {
       5, [](double u, double v) { return Eigen::Vector3d(u, v + 0.1 * u * (1 - u), 0); });
   const auto t = solve_cmc(sq, opts(40.0));
   EXPECT_FALSE(t.summary.converged);
+  EXPECT_EQ(t.summary.status, Status::Fold);
   EXPECT_EQ(t.summary.message.rfind(prefix, 0), 0u) << t.summary.message;
   EXPECT_GT(t.H, 1.0);
   EXPECT_TRUE(solve_cmc(sq, opts(0.99 * t.H)).summary.converged);
@@ -139,6 +170,7 @@ TEST(CmcSolver, FoldOnTensorNetsAndWithC1Data) {
   const TriangularNet tri = solve_cmc(testing::triangular_boundary(7, testing::planar_triangle), opts(-1.0)).net;
   const auto c = solve_cmc(tri, opts(-80.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent));
   EXPECT_FALSE(c.summary.converged);
+  EXPECT_EQ(c.summary.status, Status::Fold);
   EXPECT_EQ(c.summary.message.rfind(prefix, 0), 0u) << c.summary.message;
   EXPECT_TRUE(solve_cmc(tri, opts(0.99 * c.H, CmcSolver::Newton, FixedSet::BoundaryAdjacent)).summary.converged);
 }

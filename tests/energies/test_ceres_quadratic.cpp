@@ -1,11 +1,37 @@
-// The Ceres adapter: its cost equals the energy; Ceres alone reproduces the linear extremal; with
-// a non-quadratic soft pin it agrees with an independent Newton iteration on the same objective.
+// A quadratic energy as a Ceres residual block, and its tests: the cost equals the energy;
+// Ceres alone reproduces the linear extremal; with a non-quadratic soft pin it agrees with an
+// independent Newton iteration on the same objective.
+//
+// The adapter lives here, not in the library: its only user is this test. It was tried as the
+// Dirichlet part of the CMC Ceres route (solvers/cmc/cmc_ceres.cpp): minimise D_H = D + 2HV with
+// D as this block and 2HV as the one least-squares form a sign-indefinite cubic term has,
+// r = sqrt(2 (2HV + K)). On the triangular degree-5 planar-triangle data, correcting from the
+// solution at 0.95 H to H (H from 0.1 to 0.97 of the fold), that route stalls at a relative
+// eq. (11) residual of 1e-10..1e-9 (the cost change vanishes in rounding before the gradient
+// reaches 1e-11) after 5..200 iterations, depending on the shift K and more towards the fold
+// (Gauss–Newton drops the 2H d²V part of the Hessian). The route of cmc_ceres.cpp (LM on the
+// residuals F_I of eq. (11), exact Jacobian) reaches 1e-11 in 3..5 iterations. The energy form
+// suits terms that are sums of squares (e.g. an area term per quadrature node).
+//
+// The adapter: E(P) = 1/2 Σ_c P_c^T Q P_c (energies/quadratic_energy.h) with Q symmetric positive
+// semidefinite, factored once as Q = R^T R with R = diag(sqrt(λ_k)) V_k^T from its
+// eigen-decomposition, keeping the eigenvalues above rank_tolerance * λ_max. The residual vector
+// is r[3k + c] = (R P_c)_k, so Ceres's cost of the block, 1/2 |r|^2, EQUALS E(P). Parameter
+// blocks: one block of 3 doubles per control point, in point order; prescribed points are held
+// with problem.SetParameterBlockConstant.
 #include <gtest/gtest.h>
 
+#include <ceres/ceres.h>
+
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/errors.h"
-#include "energies/ceres_quadratic.h"
 #include "energies/quadratic_energy.h"
 #include "energies/tensor_gram.h"
 #include "solvers/extremal.h"
@@ -13,6 +39,95 @@
 
 namespace bpde {
 namespace {
+
+/// R (r x N) with R^T R = Q up to the dropped eigenvalues below rank_tolerance * λ_max. Throws
+/// SizeError (not square), NonFiniteError, ParameterError if Q has an eigenvalue below
+/// -negative_tolerance * λ_max (Q indefinite: the energy is not a sum of squares).
+Eigen::MatrixXd psd_factor(const Eigen::MatrixXd& Q, double rank_tolerance = 1e-14,
+                           double negative_tolerance = 1e-10);
+
+class QuadraticEnergyCost : public ceres::CostFunction {
+ public:
+  /// From a factor R (r x N), see psd_factor.
+  explicit QuadraticEnergyCost(Eigen::MatrixXd R);
+  /// From the Gram matrix Q (N x N) through psd_factor.
+  static QuadraticEnergyCost* from_gram(const Eigen::MatrixXd& Q);
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+ private:
+  Eigen::MatrixXd R_;
+};
+
+/// Adds the energy of Q to `problem`; blocks[I] points to the 3 doubles of control point I
+/// (blocks.size() == Q.rows(), SizeError otherwise). Ceres takes ownership of the cost function.
+ceres::ResidualBlockId add_quadratic_energy(ceres::Problem& problem, const Eigen::MatrixXd& Q,
+                                            const std::vector<double*>& blocks);
+
+Eigen::MatrixXd psd_factor(const Eigen::MatrixXd& Q, double rank_tolerance, double negative_tolerance) {
+  if (Q.rows() != Q.cols()) throw SizeError("psd_factor: Gram matrix is not square");
+  if (!Q.allFinite()) throw NonFiniteError("psd_factor: Gram matrix has a non-finite entry");
+  if (Q.rows() == 0) return Eigen::MatrixXd(0, 0);
+  const Eigen::MatrixXd S = 0.5 * (Q + Q.transpose());
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S);
+  if (es.info() != Eigen::Success) throw ParameterError("psd_factor: eigen-decomposition failed");
+  const Eigen::VectorXd& lam = es.eigenvalues();  // increasing
+  const double lmax = std::max(lam.cwiseAbs().maxCoeff(), 0.0);
+  if (lmax == 0.0) return Eigen::MatrixXd::Zero(0, Q.cols());
+  if (lam(0) < -negative_tolerance * lmax) {
+    std::ostringstream s;
+    s << "psd_factor: the Gram matrix is indefinite (eigenvalue " << lam(0) << " against " << lmax
+      << "): the energy is not a sum of squares and cannot be a Ceres residual";
+    throw ParameterError(s.str());
+  }
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index k = 0; k < lam.size(); ++k)
+    if (lam(k) > rank_tolerance * lmax) keep.push_back(k);
+  Eigen::MatrixXd R(static_cast<Eigen::Index>(keep.size()), Q.cols());
+  for (size_t r = 0; r < keep.size(); ++r)
+    R.row(static_cast<Eigen::Index>(r)) = std::sqrt(lam(keep[r])) * es.eigenvectors().col(keep[r]).transpose();
+  return R;
+}
+
+QuadraticEnergyCost::QuadraticEnergyCost(Eigen::MatrixXd R) : R_(std::move(R)) {
+  if (!R_.allFinite()) throw NonFiniteError("QuadraticEnergyCost: non-finite factor");
+  set_num_residuals(static_cast<int>(3 * R_.rows()));
+  std::vector<int32_t>& sizes = *mutable_parameter_block_sizes();
+  sizes.assign(static_cast<size_t>(R_.cols()), 3);
+}
+
+QuadraticEnergyCost* QuadraticEnergyCost::from_gram(const Eigen::MatrixXd& Q) {
+  return new QuadraticEnergyCost(psd_factor(Q));
+}
+
+bool QuadraticEnergyCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+  const Eigen::Index r = R_.rows(), N = R_.cols();
+  Eigen::MatrixX3d P(N, 3);
+  for (Eigen::Index I = 0; I < N; ++I)
+    for (int c = 0; c < 3; ++c) P(I, c) = parameters[I][c];
+  // residual 3k + c = (R P)(k, c): a row-major r x 3 matrix.
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> res(residuals, r, 3);
+  res.noalias() = R_ * P;
+  if (jacobians != nullptr) {
+    for (Eigen::Index I = 0; I < N; ++I) {
+      double* J = jacobians[I];
+      if (J == nullptr) continue;
+      // (3r x 3) row-major: d r[3k + c] / d P_I[d] = R(k, I) δ_cd.
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> Jm(J, 3 * r, 3);
+      Jm.setZero();
+      for (Eigen::Index k = 0; k < r; ++k)
+        for (int c = 0; c < 3; ++c) Jm(3 * k + c, c) = R_(k, I);
+    }
+  }
+  return true;
+}
+
+ceres::ResidualBlockId add_quadratic_energy(ceres::Problem& problem, const Eigen::MatrixXd& Q,
+                                            const std::vector<double*>& blocks) {
+  if (static_cast<Eigen::Index>(blocks.size()) != Q.rows())
+    throw SizeError("add_quadratic_energy: " + std::to_string(blocks.size()) + " parameter blocks for " +
+                    std::to_string(Q.rows()) + " control points");
+  return problem.AddResidualBlock(QuadraticEnergyCost::from_gram(Q), nullptr, blocks);
+}
 
 using testing::random_points;
 
