@@ -373,7 +373,12 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFacto
   while (!control.reached_target()) {
     if (!control.attempt()) {
       p.set(y);
-      return {control.h(), false, Status::NoConvergence, fold_message(control.h(), gram_singular)};
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.6g", control.h() == 0.0 ? 0.0 : control.h());
+      return {control.h(), false, Status::NoConvergence,
+              "continuation stopped at H ≈ " + std::string(buf) + " after max_continuation_steps = " +
+                  std::to_string(o.max_continuation_steps) + " attempts, before reaching H = " + std::to_string(Ht) +
+                  " (no fold was detected; raise max_continuation_steps)"};
     }
     const StepController::Step step = control.propose();
     const bool last = step.hn == Ht;

@@ -65,6 +65,9 @@ TEST(CmcSolver, StatusSaysWhyTheSolveEnded) {
   EXPECT_FALSE(limited.summary.converged);
   EXPECT_EQ(limited.summary.status, Status::NoConvergence);
   EXPECT_FALSE(limited.summary.message.empty());
+  // ... and its message says so, instead of the fold text of FORMATS.md.
+  EXPECT_EQ(limited.summary.message.find("no critical point"), std::string::npos) << limited.summary.message;
+  EXPECT_NE(limited.summary.message.find("max_continuation_steps"), std::string::npos) << limited.summary.message;
   EXPECT_GT(limited.H, 0.9 * fold);
   // V mode.
   CmcOptions v;
