@@ -118,8 +118,8 @@ BlendConfig blend_config_from_json(const json& j) {
     throw ParameterError("epsilon must be > 0 (got " + std::to_string(p.epsilon) + ")");
 
   if (j.contains("surfaces")) {
-    // The surfaces to blend as nets (tensor or bspline, parameters mapped onto [0,1]^2); seed 003
-    // §6 as read in NOTES.md: u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0),
+    // The surfaces to blend as nets (tensor or bspline, parameters mapped onto [0,1]^2); Pasadas–Rodríguez
+    // §6 as read in docs/errata.md: u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0),
     // u_y(x,1) = g_y(x,0), sampled at the nodes x_i = i/k.
     const json& sj = j["surfaces"];
     check_fields(sj, "surfaces", {"f", "g"}, {"f", "g"});

@@ -1,7 +1,7 @@
 #pragma once
 // Extremals of quadratic energies: the minimiser of E(P) = 1/2 Σ_c P_c^T Q P_c over the free
-// control points, the fixed ones prescribed (FORMATS.md problem "extremal"; seed 001 §2 states the
-// energies, NOTES.md "The minimisation claim ... is false when only the boundary is fixed").
+// control points, the fixed ones prescribed (FORMATS.md problem "extremal"; Arnal–Monterde–Ugail §2 state the
+// energies; docs/errata.md, explicit PDE solutions §2: their minimisation claim is false with only the boundary fixed).
 //
 // With f the free and b the fixed indices, the optimality condition ∂E/∂P_f = 0 is the reduced
 // symmetric system

@@ -1,5 +1,5 @@
 #pragma once
-// The uniformly loaded clamped rectangular plate (seed 000: Centella, Monterde, Moreno, Oset,
+// The uniformly loaded clamped rectangular plate (Centella, Monterde, Moreno, Oset,
 // "Two C¹-methods to generate Bézier surfaces from the boundary", §6 and its two tables;
 // FORMATS.md `bpde plate`).
 //
