@@ -1,5 +1,5 @@
 #pragma once
-// Small index helpers shared by solvers/bspline_pde and solvers/bspline_extremal (internal).
+// Small index helpers shared by solvers/bspline/bspline_pde and solvers/bspline/bspline_extremal (internal).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>

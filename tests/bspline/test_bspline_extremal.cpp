@@ -1,4 +1,4 @@
-// solvers/bspline_extremal against independent Bézier computations, exact polynomial
+// solvers/bspline/bspline_extremal against independent Bézier computations, exact polynomial
 // reproduction and finite differences of an independently assembled energy.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// solvers/bspline_pde: ranks (Sun–Zhu Examples 1-2, docs/errata.md), exact polynomial solutions on
+// solvers/bspline/bspline_pde: ranks (Sun–Zhu Examples 1-2, docs/errata.md), exact polynomial solutions on
 // single- and multi-span nets, incompatible data, degenerate operators, bad input.
 #include <gtest/gtest.h>
 
@@ -262,7 +262,7 @@ TEST(BSplinePde, CoonsOperatorGivesTheCoonsPatchOnMultiSpanNets) {
 TEST(BSplinePde, CoonsSolutionIsTheCoonsExtremal) {
   // Integration by parts: with clamped knots the free basis functions vanish on the boundary, so a
   // net with x_uuvv = 0 on every span (p, q >= 3) is stationary for 1/2 |x_uv|^2 - the PDE solution
-  // and the extremal (solvers/bspline_extremal) must coincide.
+  // and the extremal (solvers/bspline/bspline_extremal) must coincide.
   const BSplineNet data = random_net(4, 3, clamped(4, {0.3, 0.6}), clamped(3, {0.45}), 45);
   const BSplinePdeResult r = solve_bspline_pde(data, EnergySpec::coons());
   const BSplineExtremalResult e = solve_bspline_extremal(data, EnergySpec::coons());

@@ -44,7 +44,7 @@ TEST(CmcFunctional, ValueGradientHessianAgainstFiniteDifferences) {
   }
 }
 
-TEST(CmcFunctional, JacobianBlockOfNotes) {
+TEST(CmcFunctional, JacobianBlockOfEq11) {
   // dF_I/dP_L = C_IL Id - 2H [sum_K C_ILK P_K]_x for interior I, L (docs/errata.md).
   const int n = 5;
   const double H = 0.7;
