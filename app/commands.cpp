@@ -127,7 +127,7 @@ int cmd_blend(const std::string& config_path, const std::string& out_dir) {
 }
 
 int cmd_demo(const std::string& out_dir) {
-  // The main job: seed 004's Fig. 1 set-up. A unit circle split into three arcs bounds a
+  // The main job: the Fig. 1 set-up of Arnal–Lluch–Monterde (triangular CMC). A unit circle split into three arcs bounds a
   // degree-4 triangular net (the paper's degree: its ansatz uses P_112, P_121, P_211); the CMC critical point of D + 2HV at H = -1 on the branch from
   // the Dirichlet extremal (Newton with the exact Hessian), checked with CGAL.
   Job job{circle_three_arcs(4), FixedSet::Boundary, {}, 50};
@@ -138,7 +138,7 @@ int cmd_demo(const std::string& out_dir) {
   const int status = write_outcome(out_dir, job, out);
   const Json result = read_json_file(out_dir + "/result.json");
   const Json& r = result["report"];
-  std::printf("bpde demo: CMC approximation (seed 004 Fig. 1): circle in three arcs, triangular degree 4, H = -1\n");
+  std::printf("bpde demo: CMC approximation (Arnal-Lluch-Monterde Fig. 1): circle in three arcs, triangular degree 4, H = -1\n");
   std::printf("  converged           %s (%d Newton iterations, %d continuation steps)\n",
               r["converged"].get<bool>() ? "yes" : "no", r.value("iterations", 0), r.value("continuation_steps", 0));
   if (r.contains("message")) std::printf("  message             %s\n", r["message"].get<std::string>().c_str());

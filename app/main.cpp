@@ -54,12 +54,12 @@ int main(int argc, char** argv) {
   double aspect = 1.0;
   int degree = 0;
   std::string method;
-  auto* plate = app.add_subcommand("plate", "Clamped plate [0,1]x[0,a] under uniform load (seed 000 §6)");
+  auto* plate = app.add_subcommand("plate", "Clamped plate [0,1]x[0,a] under uniform load (Centella et al. §6)");
   plate->add_option("--aspect", aspect, "Aspect ratio a")->required();
   plate->add_option("--degree", degree, "Bidegree n")->required();
   plate->add_option("--method", method, "admissible-load or ritz")->required();
 
-  auto* blend = app.add_subcommand("blend", "Blending surface by smoothing PDE splines (seed 003)");
+  auto* blend = app.add_subcommand("blend", "Blending surface by smoothing PDE splines (Pasadas-Rodriguez)");
   blend->add_option("config", in, "CONFIG.json")->required();
   blend->add_option("--out", out, "Output directory")->required();
 

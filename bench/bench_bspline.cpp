@@ -1,4 +1,4 @@
-// B-spline routes (seed 002). A bicubic (biquintic for the PDE) net with s x s uniform spans (s = last token, the
+// B-spline routes (Sun–Zhu, B-spline Euler–Lagrange). A bicubic (biquintic for the PDE) net with s x s uniform spans (s = last token, the
 // "degree" slot of the route holds the span count) and a wavy boundary:
 //   BSplineExtremal/direct/<s>   solve_bspline_extremal: assemble the sparse Gram, factor, solve;
 //   BSplineExtremal/reuse/<s>    BSplineExtremalSolver built once, solve per iteration;

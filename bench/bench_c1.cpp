@@ -1,4 +1,4 @@
-// Seed 000 (C¹ methods and the clamped plate). Routes: Tetraharmonic/{explicit,lu}/<n>,
+// Centella–Monterde–Moreno–Oset (C¹ methods and the clamped plate). Routes: Tetraharmonic/{explicit,lu}/<n>,
 // BiharmonicLoad/lu/<n>, Plate/{ritz,admissible-load}/<n>.
 // The lu solvers build their solution operator once per degree (cached per process); these
 // routes time the steady state (docs/c1.md lists the one-time setup cost).

@@ -1,4 +1,4 @@
-// CMC solve time (seed 004): routes Cmc/<solver>/<n> for one solve of the triangular problem with
+// CMC solve time (Arnal–Lluch–Monterde, triangular CMC): routes Cmc/<solver>/<n> for one solve of the triangular problem with
 // sphere (inverse stereographic, conformal) boundary data at H = 1, and Cmc/dirichlet/<n> for the
 // Dirichlet extremal (the linear solve, H = 0) as the baseline. The per-degree setup (Gram and
 // volume quadrature tables) is cached by CmcFunctional and built before timing.

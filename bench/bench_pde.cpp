@@ -1,4 +1,4 @@
-// Seed 001 Table 1 (Arnal–Monterde–Ugail §7): biharmonic surface from a degree-n boundary, solve +
+// Table 1 of Arnal–Monterde–Ugail (explicit PDE solutions, §7): biharmonic surface from a degree-n boundary, solve +
 // evaluation on a 50x50 parametric mesh (TensorNet::evaluate_grid), n in {4,5,8,10,12,15,18,20}.
 //   Biharmonic/explicit/<n>      closed form (solvers/pde/pde_explicit.h) + evaluation
 //   Biharmonic/lu/<n>            the "lu" method (solvers/pde/pde_lu.h): build and solve the

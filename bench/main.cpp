@@ -1,6 +1,6 @@
 // bpde_bench: Google Benchmark program. Each bench/bench_*.cpp registers its routes; the route of
 // a benchmark is its own '/'-separated token and the degree is the last token (FORMATS.md).
-// `bpde_bench --table1` runs seed 001's Table 1 routes and prints them beside the paper
+// `bpde_bench --table1` runs the Table 1 routes (Arnal–Monterde–Ugail) and prints them beside the paper
 // (bench/table1_report.h); every other invocation is plain Google Benchmark.
 #include <benchmark/benchmark.h>
 

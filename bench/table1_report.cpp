@@ -14,7 +14,7 @@
 namespace bpde_bench {
 namespace {
 
-// Seed 001 (Arnal, Monterde, Ugail), Table 1: milliseconds on a 1.73 GHz laptop (2011).
+// Arnal, Monterde, Ugail (explicit PDE solutions), Table 1: milliseconds on a 1.73 GHz laptop (2011).
 struct PaperRow {
   int n;
   double explicit_ms, linear_ms;
@@ -82,7 +82,7 @@ int run_table1(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks(&collector);
   benchmark::Shutdown();
 
-  std::printf("\nSeed 001 Table 1: biharmonic, solve + 50x50 evaluation, CPU milliseconds\n");
+  std::printf("\nArnal-Monterde-Ugail Table 1: biharmonic, solve + 50x50 evaluation, CPU milliseconds\n");
   std::printf("(lu: the anti-diagonal block LU; lu-bernstein: the dense Bernstein system, solvers/pde/pde_lu.h)\n\n");
   std::printf("| n | paper explicit | paper linear system | explicit | lu | lu-bernstein | mould |"
               " lu / explicit | lu / mould | lu-bernstein / explicit | lu-bernstein / mould |"

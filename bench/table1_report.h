@@ -1,5 +1,5 @@
 #pragma once
-// `bpde_bench --table1`: run seed 001's Table 1 routes
+// `bpde_bench --table1`: run the Table 1 routes of Arnal–Monterde–Ugail
 // (Biharmonic/{explicit,lu,lu-bernstein,mould}/<n>) and print them beside the paper's milliseconds,
 // with the ratios and the two speed goals of the benchmark: every route >= 100x faster than the
 // paper's own time for it (explicit vs. the paper's explicit column, lu vs. its linear-system

@@ -1,7 +1,8 @@
 #pragma once
 // Boundary data of the papers' reference problems, built as Bézier nets: curve fitting, the
-// circle split into three arcs of seed 004 Fig. 1, and conformal sphere patches (inverse
-// stereographic projection), whose CMC approximations converge to the sphere (NOTES.md).
+// circle split into three arcs of Fig. 1 of Arnal–Lluch–Monterde (triangular CMC), and conformal
+// sphere patches (inverse stereographic projection), whose CMC approximations converge to the
+// sphere (docs/errata.md, triangular CMC §4).
 //
 // Conventions: tensor and triangular nets as in tensor/tensor_net.h and
 // triangular/triangular_net.h; only the boundary points (outer ring / some index 0) are set, the
@@ -90,7 +91,7 @@ inline Eigen::Vector3d planar_triangle(double u, double v) {
                          v - 0.07 * u * v, 0.0);
 }
 
-/// Unit circle split into three arcs (seed 004, Fig. 1): P_{n00} at angle 0, P_{0n0} at 2π/3,
+/// Unit circle split into three arcs (triangular CMC, Fig. 1): P_{n00} at angle 0, P_{0n0} at 2π/3,
 /// P_{00n} at 4π/3. Each edge is the arc parametrised by angle, fitted at degree n.
 inline TriangularNet circle_three_arcs(int n) {
   const double third = 2 * std::numbers::pi / 3;

@@ -1,5 +1,5 @@
 #pragma once
-// Bernstein operators in IEEE binary128 (GCC's __float128), for the seed-000 systems whose
+// Bernstein operators in IEEE binary128 (GCC's __float128), for the C¹-methods systems (Centella et al.) whose
 // exact coefficients must be formed beyond double precision (docs/c1.md: the admissible-load
 // and tetraharmonic systems lose all digits in double from degree ~17).
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // C = A * B for small dense row-major matrices: the inner kernel of tensor-patch evaluation on a
-// grid (TensorNet::evaluate_grid), where it carries the Table 1 benchmark (seed 001, §7: a 50 x 50
+// grid (TensorNet::evaluate_grid), where it carries the Table 1 benchmark (Arnal–Monterde–Ugail §7: a 50 x 50
 // evaluation after every solve).
 //
 //   A: r by k, row-major, leading dimension lda (>= k)

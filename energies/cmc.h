@@ -1,9 +1,9 @@
 #pragma once
-// The CMC functional of seed 004 (Arnal, Lluch, Monterde), Prop. 4 and eq. (11):
+// The CMC functional of Arnal, Lluch, Monterde (triangular CMC), Prop. 4 and eq. (11):
 //   D_H(x) = D(x) + 2H V(x),  D = 1/2 ∫ |x_u|^2 + |x_v|^2,  V = 1/3 ∫ <x_u ∧ x_v, x>,
 // on triangular nets (domain T = {u, v >= 0, u + v <= 1}) and on tensor nets ([0,1]^2).
 //
-// Gradient (eq. (11), exact; NOTES.md): for every control point P_I
+// Gradient (eq. (11), exact; docs/errata.md, triangular CMC eq. (11)): for every control point P_I
 //   F_I = dD_H/dP_I = sum_J C_IJ P_J + 2H dV/dP_I,
 // where for interior points dV/dP_I = ∫ B_I x_u ∧ x_v = 1/2 sum_JK C_IJK P_J ∧ P_K, so F_I is
 // eq. (11) "sum_J C_IJ P_J + H sum_JK C_IJK P_J ∧ P_K". Its Euler–Lagrange equation is

@@ -14,14 +14,15 @@
 //  coons                 1/2|x_uv|^2                                         [0,0,1,0,0]
 //  modified-biharmonic α 1/2(|x_uu|^2 + 2α²|x_uv|^2 + α⁴|x_vv|^2)           [1,0,2α²,0,α⁴]
 //  fourth-order [a..e]   1/2(a|x_uu|^2 + b<x_uu,x_uv> + c|x_uv|^2
-//                            + d<x_uv,x_vv> + e|x_vv|^2)  (seed 002)         [a,b,c,d,e]
-//  gnorm ρ,t             fourth-order [ρ², 2ρcos t, 1+ρ², 2ρcos t, 1]  (seed 001 eq. (1))
+//                            + d<x_uv,x_vv> + e|x_vv|^2)  (Sun–Zhu)         [a,b,c,d,e]
+//  gnorm ρ,t             fourth-order [ρ², 2ρcos t, 1+ρ², 2ρcos t, 1]  (Arnal–Monterde–Ugail eq. (1))
 //  gnorm G               fourth-order [|e1|², 2<e1,e2>, |e1|²+|e2|², 2<e1,e2>, |e2|²],
-//                        e1 = (g11, g21), e2 = (g12, g22) the columns of G (NOTES.md, seed 001 §2)
+//                        e1 = (g11, g21), e2 = (g12, g22) the columns of G
+//                        (docs/errata.md, explicit PDE solutions §2)
 //  operator [A..E]       for pde only: A∂⁴u + B∂³u∂v + C∂²u∂²v + D∂u∂³v + E∂⁴v; energy fourth-order [A..E]
 //
 // The operator [A..E] of a fourth-order energy means A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv +
-// E x_vvvv = 0 (seed 001 eq. (2), corrected as in NOTES.md).
+// E x_vvvv = 0 (Arnal–Monterde–Ugail eq. (2); docs/errata.md, explicit PDE solutions eq. (2)).
 #include <Eigen/Core>
 #include <array>
 #include <string>
@@ -81,7 +82,7 @@ class EnergySpec {
   double t() const { return t_; }
   const Eigen::Matrix2d& G() const { return G_; }
 
-  /// True when seed 001 gives a closed form for this operator: Coons, biharmonic,
+  /// True when Arnal–Monterde–Ugail give a closed form for this operator: Coons, biharmonic,
   /// laplacian-squared, modified biharmonic, G-norm, and any [A..E] proportional to a G-norm
   /// operator [ρ², 2ρcos t, 1+ρ², 2ρcos t, 1] (that is, B = D and C = A + E after scaling).
   bool has_explicit_solution() const;

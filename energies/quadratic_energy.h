@@ -7,8 +7,8 @@
 //   gradient  ∂E/∂P = Q P                         (N x 3, row I = ∂E/∂P_I),
 //   Hessian   ∂²E/∂P_{I,c}∂P_{J,d} = Q[I,J] δ_cd  (per coordinate Q; on the point-major vector
 //             (P_0x, P_0y, P_0z, P_1x, ...) it is kron(Q, I_3), see full_hessian()).
-// The energies are those of FORMATS.md ("ENERGY"); seed 001 eq. (1) (gnorm), seed 002 (fourth
-// order), NOTES.md (laplacian-squared vs biharmonic).
+// The energies are those of FORMATS.md ("ENERGY"); Arnal–Monterde–Ugail eq. (1) (gnorm),
+// Sun–Zhu (fourth order); docs/errata.md, explicit PDE solutions §2 (laplacian-squared vs biharmonic).
 #include <Eigen/Core>
 
 #include "energies/energy_spec.h"

@@ -11,7 +11,8 @@
 //
 // The same formula covers every FORMATS.md energy: dirichlet, second-order, biharmonic,
 // laplacian-squared (with its <x_uu, x_vv> term, which is not symmetric per term: hence the sym),
-// coons, modified-biharmonic, fourth-order (seed 002), gnorm (seed 001 eq. (1), NOTES.md reading).
+// coons, modified-biharmonic, fourth-order (Sun–Zhu), gnorm (Arnal–Monterde–Ugail eq. (1), read as in
+// docs/errata.md, explicit PDE solutions §2).
 //
 // Span scaling (for B-spline spans and other rectangles): if the patch is parametrised over
 // [u0,u0+hu] x [v0,v0+hv] by the affine map u = u0 + hu*s, v = v0 + hv*t of the reference square,

@@ -2,10 +2,10 @@
 // Exact Gram matrices of quadratic energies on triangular Bézier nets, and the Bernstein tables on
 // the triangle they are built from.
 //
-// Seed 004 (Arnal, Lluch, Monterde), Prop. 2, eqs. (2)–(4): the Dirichlet functional
+// Arnal, Lluch, Monterde (triangular CMC), Prop. 2, eqs. (2)–(4): the Dirichlet functional
 //   D(x) = 1/2 ∫_T |x_u|^2 + |x_v|^2 = 1/2 sum_c P_c^T C P_c,
 //   C_{I0 I} = [n!/I0!][n!/I!] / [(2n)!/(I0+I)!] * (a_1 + a_2 + 2 a_3 - b_13 - b_23),
-//   a_r  = I0^r I^r / ((I0^r + I^r)(I0^r + I^r - 1)),   0 when I0^r I^r = 0      (NOTES.md),
+//   a_r  = I0^r I^r / ((I0^r + I^r)(I0^r + I^r - 1)),   0 when I0^r I^r = 0      (docs/errata.md),
 //   b_rs = (I0^r I^s + I0^s I^r) / ((I0^r + I^r)(I0^s + I^s)), 0 when its numerator is 0.
 // The production route does not use the closed form: it builds every Gram from derivative nets
 // and the exact product integral on T (below); dirichlet_gram_closed_form is kept as the paper's
@@ -46,10 +46,11 @@ Eigen::MatrixXd triangular_derivative_integrals(int n, int au, int av, int bu, i
 Eigen::MatrixXd triangular_gram(int n, const std::vector<QuadraticTerm>& terms);
 Eigen::MatrixXd triangular_gram(int n, const EnergySpec& energy);
 
-/// Dirichlet Gram C of seed 004 eq. (2): C(I,J) = ∫_T (B_I)_u (B_J)_u + (B_I)_v (B_J)_v.
+/// Dirichlet Gram C of triangular CMC eq. (2): C(I,J) = ∫_T (B_I)_u (B_J)_u + (B_I)_v (B_J)_v.
 Eigen::MatrixXd triangular_dirichlet_gram(int n);
 
-/// The same matrix from the paper's closed form, eqs. (3)–(4) with the NOTES.md case split.
+/// The same matrix from the paper's closed form, eqs. (3)–(4), with the case split of
+/// docs/errata.md (triangular CMC eq. (2)–(4)).
 Eigen::MatrixXd dirichlet_gram_closed_form(int n);
 
 /// #uv by count(n) table of d^{du+dv} B_I^n / du^du dv^dv at the parameter points (rows (u,v)).

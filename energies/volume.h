@@ -1,21 +1,20 @@
 #pragma once
-// The cubic "volume" term of the CMC functional (seed 004, Prop. 3, eqs. (5)–(7), corrected as in
-// NOTES.md):
+// The cubic "volume" term of the CMC functional (Arnal, Lluch, Monterde, triangular CMC, Prop. 3,
+// eqs. (5)–(7), corrected as in docs/errata.md, triangular CMC eq. (5)–(6) and eq. (7)):
 //   V(x) = 1/3 ∫ <x_u ∧ x_v, x> du dv
 // = the algebraic volume of the cone from the origin over the patch.
 //
-// Closed form (Prop. 3 with the NOTES.md sign correction, d_13 enters with a minus sign):
+// Closed form (Prop. 3 with the sign correction: d_13 enters with a minus sign):
 //   C_IJK = ∫_T ((B_I)_u (B_J)_v - (B_I)_v (B_J)_u) B_K
 //         = [n!/I!][n!/J!][n!/K!] / [(3n)!/(I+J+K)!] * (d_12 + d_23 - d_13),
 //   d_rs  = (I^r J^s - J^r I^s) / ((I^r+J^r+K^r)(I^s+J^s+K^s))   (0 when the numerator is 0),
 //   V     = 1/6 sum_{I,J,K} C_IJK <P_I ∧ P_J, P_K>.
-// (Writing V = sum S_IJK x^1_I x^2_J x^3_K needs the cyclic average S of C, NOTES.md.)
+// (Writing V = sum S_IJK x^1_I x^2_J x^3_K needs the cyclic average S of C: docs/errata.md,
+// triangular CMC Prop. 3.)
 //
-// Production route: the integrand <x_u ∧ x_v, x> is a polynomial of total degree 3n-2 on the
-// triangle (bidegree (3n-1, 3m-1) on the square), so Gauss rules with ceil(3n/2) points per
-// direction integrate it, its gradient and its Hessian exactly. VolumeForm stores only the basis
-// tables at the nodes: 3 * #nodes * #points doubles (docs/cmc.md lists the memory per degree),
-// never the N^3 tensor C_IJK.
+// Production route: Gauss rules that integrate the polynomial integrand, its gradient and its
+// Hessian exactly; VolumeForm stores only the basis tables at the nodes, never the N^3 tensor
+// C_IJK (rule sizes and memory per degree: docs/cmc.md, "How V is computed").
 //
 // Gradient (exact, for every control point, boundary included):
 //   dV/dP_L = 1/3 ∫ (B_L)_u (x_v ∧ x) + (B_L)_v (x ∧ x_u) + B_L (x_u ∧ x_v).

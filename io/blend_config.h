@@ -1,5 +1,5 @@
 #pragma once
-// The blend config of FORMATS.md (`bpde blend CONFIG.json --out DIR`, seed 003):
+// The blend config of FORMATS.md (`bpde blend CONFIG.json --out DIR`, Pasadas–Rodríguez, smoothing PDE splines):
 //
 //   {"kind": "blend", "partition": [k, l], "a": a, "epsilon": eps,
 //    "edges": {"y0": {"value": [[x, y, z], ...], "dy": [[x, y, z], ...]},
@@ -11,7 +11,7 @@
 // - edges: value and ∂/∂y at the k+1 nodes x_i = i/k of y = 0 and y = 1 (all four required);
 //   or, instead of "edges", "surfaces": {"f": NET, "g": NET} with the two surfaces to blend as
 //   tensor or bspline nets (parameters mapped onto [0,1]²): the edges are then f(x,1), f_y(x,1)
-//   and g(x,0), g_y(x,0) at the nodes (seed 003 §6 as read in NOTES.md);
+//   and g(x,0), g_y(x,0) at the nodes (docs/errata.md, smoothing PDE splines §6);
 // - points / data: the approximation points A ⊂ [0,1]² and their values β; optional (default
 //   empty), equal lengths;
 // - samples: optional mesh resolution N (default 50, 1..4096).

@@ -201,10 +201,10 @@ void validate_combination(const Job& job, const std::string& src) {
       if (e.order() == 2 && fx != FixedSet::UBoundaries)
         fail("a second-order pde (" + e.name() + ") takes \"fixed\": \"u-boundaries\"");
       if (e.order() == 2 && job.problem.method == PdeMethod::Explicit)
-        fail("the second-order pde has no explicit method in seed 001; use \"method\": \"lu\"");
+        fail("the second-order pde has no explicit method (Arnal-Monterde-Ugail); use \"method\": \"lu\"");
       if (e.order() == 4 && job.problem.method == PdeMethod::Explicit && !e.has_explicit_solution())
         fail("operator " + e.name() +
-             " has no explicit solution (seed 001 covers Coons, biharmonic, laplacian-squared, modified "
+             " has no explicit solution (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified "
              "biharmonic and G-norm operators); use \"method\": \"lu\"");
       if (kind == "tensor") {
         const auto& t = std::get<TensorNet>(job.net);

@@ -1,7 +1,9 @@
 #pragma once
 // Extremals of quadratic energies: the minimiser of E(P) = 1/2 Σ_c P_c^T Q P_c over the free
-// control points, the fixed ones prescribed (FORMATS.md problem "extremal"; seed 001 §2 states the
-// energies, NOTES.md "The minimisation claim ... is false when only the boundary is fixed").
+// control points, the fixed ones prescribed (FORMATS.md problem "extremal"). The energies are
+// those of Arnal, Monterde, Ugail (explicit PDE solutions) §2 and Sun, Zhu (B-spline
+// Euler–Lagrange); with only the boundary fixed, the extremal is not the PDE solution
+// (docs/errata.md, explicit PDE solutions §2).
 //
 // With f the free and b the fixed indices, the optimality condition ∂E/∂P_f = 0 is the reduced
 // symmetric system
@@ -12,29 +14,16 @@
 //
 // ExtremalSolver factors once and precomputes the mould (#free x #fixed); each solve is then one
 // matrix product. Two ways to build it:
-//  - generic, from any Gram matrix Q and a fixed index list (tensor, triangular, B-spline nets).
-//    The reduced system is Jacobi-scaled to unit diagonal and Cholesky-factored; a reciprocal
-//    condition estimate below ExtremalOptions::singular_tolerance means singular, a failed
-//    factorisation indefinite (classified by a pivoted LDLT). Note: in the Bernstein basis Q_ff is exponentially
-//    ill-conditioned in the degree (about 1e15 at tensor degree 16, numerically singular from
-//    about 17), so at high degree this path refuses (ParameterError) rather than return garbage;
-//  - tensor, from (EnergySpec, n, m, FixedSet). Because the energy is a sum of Kronecker products
-//    and every fixed set is the complement of a tensor product of 1-D index ranges, the reduced
-//    system is assembled directly in a well-conditioned tensor basis φ_k(u) ψ_l(v) of the free
-//    space: φ_k = (t(1-t))^s C_k^(2s+1/2)(2t-1) (Gegenbauer, L2-orthonormal; s = 1 for boundary,
-//    2 for boundary+adjacent, 0 in v for u-boundaries), with the 1-D integrals by Gauss quadrature
-//    and the Bernstein coefficients of φ_k by the Gegenbauer recurrence in Bernstein form. Its
-//    condition number grows only polynomially, so the singularity test is meaningful at every
-//    degree (checked to 30) and the solve is backward stable in those coordinates.
+//  - generic, from any Gram matrix Q and a fixed index list (tensor, triangular, B-spline nets),
+//    factored in the Bernstein basis. Q_ff is exponentially ill-conditioned there, so at high
+//    degree this path refuses (ParameterError) rather than return garbage;
+//  - tensor, from (EnergySpec, n, m, FixedSet), assembled in a well-conditioned tensor basis of
+//    the free space, so the singularity test is meaningful at every degree.
+// Summary::residual is the residual of the reduced system in the solver's conditioned
+// coordinates (reduced_residual), not the Bernstein residual.
 //
-// Accuracy (measured against a 50-digit solve): the map X_b -> X_f itself is ill-conditioned in
-// Bernstein coordinates (|M|_inf ~ 1e6 at degree 20 for biharmonic), so the control points carry
-// an error of about eps * |M|_inf * |X_b| (1e-11 relative at n = 20); the surface is accurate to
-// ~1e-10 at n = 20, against ~1e-7 for a double Bernstein-basis solve. The Bernstein residual
-// |Q_f P| is NOT a useful convergence measure beyond degree ~16 (iterative refinement on it drives
-// it to 1e-16 while the net diverges); Summary::residual is therefore the residual of the reduced
-// system in the conditioned coordinates (reduced_residual), and the energy of the extremal is
-// evaluated there too (extremal_energy).
+// The bases, the conditioning and the measured accuracy (against a 50-digit solve):
+// docs/accuracy.md, "Extremals".
 #include <Eigen/Core>
 #include <memory>
 #include <string>

@@ -1,9 +1,9 @@
 #pragma once
-// Tensor-product B-spline surfaces (seed 002, Sun–Zhu), in the layout of FORMATS.md.
+// Tensor-product B-spline surfaces (Sun–Zhu, B-spline Euler–Lagrange), in the layout of FORMATS.md.
 //
 //   x(u,v) = sum_{i<nu} sum_{j<nv} N_{i,p}(u) N_{j,q}(v) P_ij,  P_ij at row i*nv + j,
 //   nu = len(U) - p - 1, nv = len(V) - q - 1; N_{i,p} has support [U_i, U_{i+p+1}] (standard
-//   indexing, NOTES.md). Domain [U_p, U_nu] x [V_q, V_nv].
+//   indexing, docs/errata.md). Domain [U_p, U_nu] x [V_q, V_nv].
 #include <Eigen/Core>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Exact operations on B-spline curves and tensor-product B-spline nets (seed 002, Sun–Zhu; the
+// Exact operations on B-spline curves and tensor-product B-spline nets (Sun–Zhu, B-spline Euler–Lagrange; the
 // algorithms are the standard ones of Piegl–Tiller, "The NURBS Book", ch. 5):
 //   - knot insertion (Boehm), one knot at a time, as a linear map on the control points;
 //   - Bézier extraction: the Bernstein coefficients of every knot span, obtained by inserting
@@ -7,7 +7,7 @@
 //   - the B-spline control points of a polynomial (blossoming), used to represent a Bézier patch
 //     exactly on any knot vector.
 //
-// Conventions: standard indexing (NOTES.md, seed 002). A curve of degree k over the knot vector K
+// Conventions: standard indexing (docs/errata.md, B-spline Euler–Lagrange). A curve of degree k over the knot vector K
 // (length n + k + 1) has n control points, the rows of an n x d matrix; N_{i,k} has support
 // [K_i, K_{i+k+1}]; the domain is [K_k, K_n]. Nets follow tensor/bspline_net.h (P_ij at row
 // i*nv + j, i along u). Every operation is exact in exact arithmetic and uses convex

@@ -4,7 +4,7 @@
 //   x(u,v) = sum_ij B_i^n(u) B_j^m(v) P_ij = sum_kl c_kl u^k v^l = sum_kl a_kl/(k! l!) u^k v^l.
 //
 // c and a are stored like the points: row k*(m+1) + l. The factorial-scaled a_kl are the
-// coefficients of seed 001 (Arnal-Monterde-Ugail, eq. (4)).
+// coefficients of Arnal–Monterde–Ugail (explicit PDE solutions, eq. (4)).
 //
 // Accuracy: the conversion matrices have entries up to ~3^n, so a Bernstein -> power -> Bernstein
 // round trip loses digits as the degree grows. docs/accuracy.md has the measured table
@@ -19,9 +19,9 @@ namespace bpde {
 Eigen::MatrixX3d to_power(const TensorNet& net);
 /// Net of degree (n,m) from monomial coefficients c_kl ((n+1)(m+1) by 3).
 TensorNet from_power(int n, int m, const Eigen::MatrixX3d& c);
-/// Seed 001's a_kl = k! l! c_kl.
+/// Arnal–Monterde–Ugail's a_kl = k! l! c_kl.
 Eigen::MatrixX3d to_factorial_power(const TensorNet& net);
-/// Net from seed 001's a_kl.
+/// Net from Arnal–Monterde–Ugail's a_kl.
 TensorNet from_factorial_power(int n, int m, const Eigen::MatrixX3d& a);
 
 /// (n+1) x (n+1) matrix F M: a = (F M) p maps Bernstein coefficients p of a degree-n curve to its

@@ -1,7 +1,7 @@
 #pragma once
 // Triangular Bézier patches.
 //
-// Conventions (FORMATS.md, NOTES.md):
+// Conventions (FORMATS.md, docs/errata.md):
 //   x(u,v) = sum_{|I|=n} P_I B_I^n(u,v,w),  B_I^n = n!/(i! j! k!) u^i v^j w^k,  w = 1 - u - v,
 //   on T = {u, v >= 0, u + v <= 1}. The first index belongs to u, the second to v, the third to w.
 //   Barycentric order of the points: i from n down to 0; for each i, j from n-i down to 0

@@ -1,5 +1,5 @@
 #pragma once
-// Seed 000 §5 (Centella–Monterde–Moreno–Oset, "Two C¹-methods to generate Bézier surfaces from
+// §5 of Centella–Monterde–Moreno–Oset, "Two C¹-methods to generate Bézier surfaces from
 // the boundary"): the C¹ boundary configurations of Figures IV–IX, as degree-(7,7) tensor nets
 // whose outer two rings (boundary, i or j in {0, n}, and adjacent, i or j in {1, n−1}) are set;
 // the interior is zero (the solvers ignore it).

@@ -1,4 +1,4 @@
-// 000-c1-configurations: seed 000 §5 (Centella–Monterde–Moreno–Oset), the cylindrical, spherical
+// 000-c1-configurations: Centella–Monterde–Moreno–Oset (C¹ methods) §5, the cylindrical, spherical
 // and arched C¹ boundary configurations of Figures IV–IX, solved by both C¹ methods at n = 7.
 //
 // Usage: example_000_c1_configurations [--write-jobs] [EXAMPLE_DIR [OUT_DIR]]

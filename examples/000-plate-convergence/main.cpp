@@ -1,4 +1,4 @@
-// 000-plate-convergence: seed 000 §6 (Centella–Monterde–Moreno–Oset), the uniformly loaded clamped
+// 000-plate-convergence: Centella–Monterde–Moreno–Oset (C¹ methods) §6, the uniformly loaded clamped
 // plate [0,1] x [0,a], p/D = 1: w at the centre for degrees n = 4..30, both methods
 // (admissible-load = the paper's, ritz = the Galerkin minimiser of ∫∫ (Δw)²/2 − w), for the square
 // and the paper's other aspect ratios, beside the paper's printed values and the literature.
@@ -15,11 +15,11 @@
 namespace {
 
 constexpr std::array<double, 5> kAspects = {1.0, 1.3, 1.5, 1.7, 2.0};
-// The paper's tables (seed 000 §6): n = 11 and n = 15 for every aspect; n = 7, 9 for the square.
+// The paper's tables (§6): n = 11 and n = 15 for every aspect; n = 7, 9 for the square.
 constexpr std::array<double, 5> kPaper11 = {0.00126654, 0.00191234, 0.00218658, 0.00234867, 0.00246161};
 constexpr std::array<double, 5> kPaper15 = {0.00126628, 0.00191027, 0.00219831, 0.00239123, 0.00254655};
 // Literature as printed in the paper: Bloor–Wilson ([2]) and Timoshenko. Timoshenko's 0.00254 at
-// a = 2 is a rounding slip (NOTES.md): the true value is about 0.002533.
+// a = 2 is a rounding slip (docs/errata.md, C¹ methods §6): the true value is about 0.002533.
 constexpr std::array<double, 5> kBloorWilson = {0.00126532, 0.00191168, 0.00219655, 0.00238207, 0.00253297};
 constexpr std::array<double, 5> kTimoshenko = {0.00126, 0.00191, 0.00220, 0.00238, 0.00254};
 

@@ -1,10 +1,10 @@
-// 001-pde-figures: seed 001 (Arnal–Monterde–Ugail) Figs. 1–4, solved from their job files.
+// 001-pde-figures: Arnal–Monterde–Ugail (explicit PDE solutions) Figs. 1–4, solved from their job files.
 //
 // Usage: example_001_pde_figures [EXAMPLE_DIR [OUT_DIR]]
 //   EXAMPLE_DIR defaults to examples/001-pde-figures, OUT_DIR to out/001-pde-figures.
 // For each job: the explicit solution (written to OUT_DIR/<job>/), the lu solution, their
 // largest control-point difference relative to the net's size, the PDE residual, and the
-// energy extremal with the same boundary (NOTES.md: it is a different surface with lower
+// energy extremal with the same boundary (docs/errata.md, explicit PDE solutions §2: it is a different surface with lower
 // energy). Prints a Markdown table (README.md holds its output).
 #include <cstdio>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// 002-bspline-examples: seed 002 (Sun–Zhu, "B-spline solutions of general Euler–Lagrange
+// 002-bspline-examples: Sun–Zhu ( "B-spline solutions of general Euler–Lagrange
 // equations") Examples 1 and 2 reproduced from their set-up, and the §5 special cases (Coons,
 // biharmonic, modified biharmonic), with the solver's ranks and residuals. Prints Markdown (the
 // README of this folder holds its output).
@@ -111,7 +111,7 @@ int main() {
         4, 1, 1, 4, 2, 4. / 3, 4, 3, 56. / 3, 4, 4, 5;
     const BSplineNet paper(3, 3, K, K, P);
     std::printf("- The paper's listed net: relative equation residual %.3g, pde_residual %.3g (a solution gives ~1e-16): "
-                "**it does not satisfy the PDE** (NOTES.md).\n",
+                "**it does not satisfy the PDE** (docs/errata.md).\n",
                 bspline_pde_equation_residual(paper, op), bspline_pde_residual(paper, op));
     const BSplinePdeResult r = solve_bspline_pde(paper, op, std::vector<int>{0, 1, 2, 3});
     report("Solver with the paper's prescribed P_00..P_03", r, op);

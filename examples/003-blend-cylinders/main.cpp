@@ -1,7 +1,7 @@
-// Seed 003 §6 (Pasadas–Rodríguez): blending the cylinders
+// §6 of Pasadas–Rodríguez (smoothing PDE splines): blending the cylinders
 //   f(x, y) = (2y - 1, 2 cos 2πx, 2 sin 2πx),   g(x, y) = (2y + 1, cos 2πx, sin 2πx)
 // by discrete smoothing PDE splines on the 8×4 BFS partition, for the four parameter sets of
-// Figure 2. Boundary data (NOTES.md): u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0),
+// Figure 2. Boundary data (docs/errata.md, smoothing PDE splines §6): u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0),
 // u_y(x,1) = g_y(x,0) at the nodes x_i = i/8; approximation points A = {(i/9, 1/2)}, β = ρh with
 // h(x, y) = (2y - 1, 0.5 cos 2πx, 0.5 sin 2πx).
 //

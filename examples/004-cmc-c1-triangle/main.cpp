@@ -1,4 +1,4 @@
-// 004-cmc-c1-triangle: seed 004 (Arnal–Lluch–Monterde) §5, Figs. 3–4 — the C¹ problem: the boundary
+// 004-cmc-c1-triangle: Arnal–Lluch–Monterde (triangular CMC) §5, Figs. 3–4 — the C¹ problem: the boundary
 // control points lie along a planar equilateral triangle and the next line of control points
 // ("three more lines", Fig. 3) is prescribed too (fixed = "boundary+adjacent"); the remaining
 // interior points solve eq. (11) for H = −2, −1.5, −1 (Fig. 4).

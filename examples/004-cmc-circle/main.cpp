@@ -1,4 +1,4 @@
-// 004-cmc-circle: seed 004 (Arnal–Lluch–Monterde) Fig. 1 — CMC critical points spanning the unit
+// 004-cmc-circle: Arnal–Lluch–Monterde (triangular CMC) Fig. 1 — CMC critical points spanning the unit
 // circle split into three arcs (boundaries/reference_boundaries.h: circle_three_arcs), H = −1.5, −1,
 // −0.5, at the paper's degree n = 4 and at n = 5, 6, 8, 10; and the fold of the H-branch per degree.
 //

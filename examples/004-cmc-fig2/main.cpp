@@ -1,4 +1,4 @@
-// 004-cmc-fig2: seed 004 (Arnal–Lluch–Monterde) Fig. 2, rebuilt from its description in §4:
+// 004-cmc-fig2: Arnal–Lluch–Monterde (triangular CMC) Fig. 2, rebuilt from its description in §4:
 //  - top: "boundary curves built in such a way that any associated patch would be isothermal at
 //    the corner points", H = −1, 0, 1. Our boundary: the edges of Enneper's surface
 //    E(s,t) = (s − s³/3 + st², t − t³/3 + ts², s² − t²) over (s,t) = c·(u − 1/3, v − 1/3), c = kScale.

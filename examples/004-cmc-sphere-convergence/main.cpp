@@ -1,6 +1,6 @@
-// 004-cmc-sphere-convergence: CMC critical points (seed 004, eq. (11)) with conformal boundary
+// 004-cmc-sphere-convergence: CMC critical points (triangular CMC, eq. (11)) with conformal boundary
 // data taken from the unit sphere (inverse stereographic projection; boundaries/reference_boundaries.h:
-// sphere_triangle, sphere_square) converge to the sphere as the degree grows (NOTES.md, seed 004).
+// sphere_triangle, sphere_square) converge to the sphere as the degree grows (docs/errata.md, triangular CMC §4).
 //
 // Usage: example_004_cmc_sphere_convergence [--write-jobs] [EXAMPLE_DIR [OUT_DIR]]
 //   EXAMPLE_DIR defaults to examples/004-cmc-sphere-convergence, OUT_DIR to

@@ -1,6 +1,6 @@
 #pragma once
 // The Bogner–Fox–Schmit (BFS) C¹ bicubic rectangle on a uniform k×l partition of Ω = [0,1]²
-// (seed 003 §5–6: "the BFS's rectangle of class C¹").
+// (Pasadas, Rodríguez, smoothing PDE splines §5–6: "the BFS's rectangle of class C¹").
 //
 // Nodes (x_i, y_j) = (i/k, j/l), 0 <= i <= k, 0 <= j <= l. Each node carries 4 degrees of freedom
 // d = 0..3: u, u_x, u_y, u_xy. Global index of dof d at node (i, j):
@@ -26,7 +26,7 @@ namespace bpde {
 std::array<double, 4> hermite_cubic(double t, int r);
 
 /// Coefficients of the symmetric bilinear form (u, v)_L = ∫ c_xx u_xx v_xx + c_xy u_xy v_xy +
-/// c_yy u_yy v_yy over Ω. Seed 003 §6 (NOTES.md): operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y gives
+/// c_yy u_yy v_yy over Ω. Smoothing PDE splines §6 (docs/errata.md): operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y gives
 /// c = (1, 2a, a²).
 struct SecondOrderForm {
   double c_xx = 1.0, c_xy = 2.0, c_yy = 1.0;
@@ -35,8 +35,8 @@ struct SecondOrderForm {
 
 class BfsSpace {
  public:
-  /// Largest k and l accepted (a k×l partition has 4(k+1)(l+1) dofs; 128×128 takes ~15 s with
-  /// the KKT LU and ~5 s by elimination on one core).
+  /// Largest k and l accepted (a k×l partition has 4(k+1)(l+1) dofs; solve times at the
+  /// largest partition: docs/blend.md).
   static constexpr int kMaxPartition = 128;
 
   /// Throws ParameterError unless 1 <= k, l <= kMaxPartition.

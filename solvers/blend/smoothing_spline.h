@@ -1,5 +1,5 @@
 #pragma once
-// Discrete smoothing PDE splines (seed 003: Pasadas, Rodríguez, "Blending surfaces by smoothing
+// Discrete smoothing PDE splines (Pasadas, Rodríguez, "Blending surfaces by smoothing
 // PDE splines", §3 eq. (6), §5 Definition 2, Theorem 6 / eq. (8), §6).
 //
 // Given a k×l partition of Ω = [0,1]², the space X_h of Bogner–Fox–Schmit C¹ bicubic fields
@@ -7,10 +7,10 @@
 // coordinates) minimises
 //     J(v) = Σ_i |v(a_i) - β_i|² + ε ( |v|_L² - 2 (f, v)_0 )                              (6)
 // over H_h = {v ∈ X_h : τ v = y}, where
-//   - (u, v)_L = ∫_Ω u_xx v_xx + 2a u_xy v_xy + a² u_yy v_yy   (NOTES.md: the splitting of the
-//     operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y that seed 003 §6 uses);
+//   - (u, v)_L = ∫_Ω u_xx v_xx + 2a u_xy v_xy + a² u_yy v_yy   (docs/errata.md: the splitting of
+//     the operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y that §6 uses);
 //   - τ v = (v(x_i, 0), v_y(x_i, 0), v(x_i, 1), v_y(x_i, 1)), x_i = i/k, i = 0..k: the boundary
-//     nodes are the partition's nodes on y = 0 and y = 1 (NOTES.md reading of §6; x is not
+//     nodes are the partition's nodes on y = 0 and y = 1 (docs/errata.md reading of §6; x is not
 //     periodic and the sides x = 0, x = 1 carry natural conditions);
 //   - A = {a_1..a_m} ⊂ Ω the approximation points, β their data (A may be empty);
 //   - f the load (0 unless given).
@@ -22,7 +22,7 @@
 // the constrained dofs (τ fixes dofs directly: u and u_y at the boundary nodes) and solves the
 // reduced SPD system C_ff α_f = F_f - C_fc y by sparse Cholesky (LDLᵀ).
 //
-// What the discrete spline reproduces (NOTES.md): with A = ∅ and f = 0, exactly the data of
+// What the discrete spline reproduces (docs/errata.md, smoothing PDE splines): with A = ∅ and f = 0, exactly the data of
 // U ∈ span{1, x, y, xy}; as ε → 0, σ(a_i) → β_i with an error linear in ε.
 #include <Eigen/Core>
 #include <functional>

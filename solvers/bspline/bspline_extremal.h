@@ -1,7 +1,7 @@
 #pragma once
 // Extremals of the quadratic energies of FORMATS.md on tensor-product B-spline nets
-// (seed 002, Sun–Zhu §2 and §5: the functionals L_{a,b,c} of eq. (1) and L_{a,b,c,d,e} of §2,
-// whose Euler–Lagrange equations are eqs. (2) and (4)). NOTES.md (seed 002): these extremals
+// (Sun–Zhu, B-spline Euler–Lagrange, §2 and §5: the functionals L_{a,b,c} of eq. (1) and L_{a,b,c,d,e} of §2,
+// whose Euler–Lagrange equations are eqs. (2) and (4)). docs/errata.md (B-spline Euler–Lagrange): these extremals
 // exist for any boundary, unlike the B-spline PDE solutions of solvers/bspline/bspline_pde.h.
 //
 // An energy is E(x) = ∫ over the knot domain of ½ Σ_t w_t <∂^{a_t} x, ∂^{b_t} x>

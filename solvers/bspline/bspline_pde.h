@@ -1,6 +1,7 @@
 #pragma once
 // B-spline solutions of the general second- and fourth-order Euler–Lagrange equations
-// (seed 002, Sun–Zhu, eqs. (2) and (4), Algorithms 1–2), corrected as in NOTES.md (seed 002):
+// (Sun, Zhu, "B-spline solutions of general Euler–Lagrange equations", eqs. (2) and (4),
+// Algorithms 1–2), corrected as in docs/errata.md (B-spline Euler–Lagrange):
 //
 //   second order:  a x_uu + b x_uv + c x_vv = 0                          (eq. (2))
 //   fourth order:  A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv + E x_vvvv = 0 (eq. (4))
@@ -8,26 +9,18 @@
 // The operator is the Euler–Lagrange operator of an EnergySpec (energies/energy_spec.h):
 // dirichlet -> (1,0,1), second-order [a,b,c] -> (a,b,c), any fourth-order energy -> its [A..E].
 //
-// Method. x is a tensor B-spline (tensor/bspline_net.h, standard indexing). Algorithms 1–2 ask
-// that Lx vanish identically on the domain; since x is a polynomial on every knot span, that is:
-// on every non-empty span [u_s, u_{s+1}] x [v_t, v_{t+1}], every Bernstein coefficient of Lx
-// (in local variables, at the common bidegree (max(p-k_u), max(q-k_v)) of the operator's terms)
-// vanishes. Those coefficients are linear in the control points:
-//   rows(span) = Σ_terms c · (E D_{k_u} C_u[s] / h_u^{k_u}) ⊗ (E D_{k_v} C_v[t] / h_v^{k_v}),
-// with C the Bézier extraction (tensor/bspline_ops.h), D the Bernstein derivative and E the
-// degree elevation operators (core/bernstein.h). This local basis is well conditioned; the
-// global monomial coefficients of the paper are not (NOTES.md). Each span's block of rows is
-// scaled to max |entry| = 1. The paper's equation counts (Lemmas 1–2) are not used: the rank is
-// computed (NOTES.md: Example 1 has rank 9, not 12; Example 2 rank 16, not 26).
+// x is a tensor B-spline (tensor/bspline_net.h, standard indexing), so Lx = 0 means: on every
+// non-empty knot span, every Bernstein coefficient of Lx (in local span variables) vanishes. The
+// equations are built span by span, and their rank is computed, never taken from the paper's
+// equation counts (how: docs/bspline.md, "PDE solutions").
 //
 // With the prescribed control points X_c moved to the right-hand side, A_f X_f = -A_c X_c is
-// compressed by Householder QR one u-span strip at a time (A itself is never formed) and
-// solved by an SVD (rank-revealing; singular values below rank_tolerance·σ_max count as zero):
+// solved by a rank-revealing SVD (singular values below rank_tolerance·σ_max count as zero):
 //   - inconsistent data (relative residual of the least-squares solution above
 //     consistency_tolerance): NO solution. The result is converged = false with a message, and
-//     its net is the input net unchanged (not a least-squares net; NOTES.md). On a multi-span net
-//     with A != 0 and E != 0 every solution is one global polynomial, so generic boundary data
-//     has no solution (e.g. 4 compatibility conditions for a biquintic net with 2 x 2 spans);
+//     its net is the input net unchanged (not a least-squares net). On a multi-span net with
+//     A != 0 and E != 0 every solution is one global polynomial, so generic boundary data have no
+//     solution (docs/errata.md, B-spline Euler–Lagrange, "Multi-span nets");
 //   - consistent data and full column rank: the unique solution;
 //   - consistent data with free parameters (degenerate operators such as x_uuuu = 0, or few fixed
 //     points): the member of the solution affine space that minimises the energy whose
@@ -53,9 +46,8 @@ struct BSplinePdeOptions {
   /// Singular values below rank_tolerance * (largest) count as zero. Default 1e-10.
   double rank_tolerance = 1e-10;
   /// Data are inconsistent when max|A_f X_f + A_c X_c| > consistency_tolerance *
-  /// max(|A_f||X_f| + |A_c||X_c|) (over all rows and coordinates). Default 1e-10: compatible
-  /// data rounded to doubles gives ~1e-16..1e-14; on a biquintic 2 x 2-span net, moving one
-  /// boundary point by 1e-6 of the data's size gives ~3e-9.
+  /// max(|A_f||X_f| + |A_c||X_c|) (over all rows and coordinates). Default 1e-10 (the values
+  /// that compatible and perturbed data give: docs/bspline.md).
   double consistency_tolerance = 1e-10;
   /// Throws ParameterError unless both tolerances are in (0, 1).
   void validate() const;

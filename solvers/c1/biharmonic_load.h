@@ -1,6 +1,6 @@
 #pragma once
-// The nonhomogeneous biharmonic method with an admissible load (seed 000: Centella, Monterde,
-// Moreno, Oset, "Two C¹-methods to generate Bézier surfaces from the boundary", §4, Theorems 2–3,
+// The nonhomogeneous biharmonic method with an admissible load (Centella, Monterde, Moreno, Oset,
+// "Two C¹-methods to generate Bézier surfaces from the boundary", §4, Theorems 2–3,
 // Proposition 2 and eq. (37) of Annex B).
 //
 // Conventions (FORMATS.md):
@@ -12,14 +12,10 @@
 //   min(i, n-i, j, n-j) <= 1. The interior = 2 <= i, j <= n-2, (n-3)^2 points.
 //
 // Theorem 3: for every outer-two-ring data of a degree (n,n) net, n >= 4, there is exactly one
-// x with those outer rings whose load net vanishes on the interior (the paper checks the
-// uniqueness lemma 9 symbolically for n <= 20; we compute with a linear solve and report the
-// residual). The solve is square ((n-3)^2 unknowns and equations), in the Bernstein basis (the
-// paper's power-basis formulation is far worse). Its condition grows with n (~1e6 at n = 12,
-// ~1e11 at n = 18), so the solution operator (interior = G * outer rings) is computed once per n
-// (cached, thread-safe) by a long-double LU refined twice with residuals in binary128 from exact
-// matrix entries: recovering an exact biharmonic polynomial is accurate to ~1e-14 (n = 12) and
-// ~1e-12 (n = 18) relative. A solve is then one (n-3)^2 x (8n-8) product.
+// x with those outer rings whose load net vanishes on the interior. The paper checks the
+// uniqueness lemma symbolically for n <= 20; bezierpde solves the square Bernstein system
+// ((n-3)^2 unknowns and equations) and reports the residual. How the solve works and how accurate
+// it is: docs/c1.md, "How the C¹ solvers work".
 #include <Eigen/Core>
 
 #include "solvers/summary.h"

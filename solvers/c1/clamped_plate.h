@@ -1,5 +1,5 @@
 #pragma once
-// The uniformly loaded clamped rectangular plate (seed 000: Centella, Monterde, Moreno, Oset,
+// The uniformly loaded clamped rectangular plate (Centella, Monterde, Moreno, Oset,
 // "Two C¹-methods to generate Bézier surfaces from the boundary", §6 and its two tables;
 // FORMATS.md `bpde plate`).
 //
@@ -9,18 +9,12 @@
 //   Δ² = ∂⁴_u + (2/a²) ∂²_u∂²_v + (1/a⁴) ∂⁴_v.
 // Methods:
 //   AdmissibleLoad (the paper's method, Theorem 3 with load 1): the degree-(n,n) Bernstein net of
-//     Δ²w equals 1 at 2 <= i,j <= n-2. Square system solved in the Bernstein basis (NOTES.md: the
-//     paper's power-basis solve has condition ~1e18 and corrupts its n = 15 column), restricted
-//     to the nets symmetric under i -> n-i and j -> n-j (the problem is, and the solution is
-//     unique). Reproduces every printed digit of the paper at n = 7, 9, 11.
+//     Δ²w equals 1 at 2 <= i,j <= n-2, solved in the Bernstein basis (the paper's power-basis
+//     solve corrupts its n = 15 column: docs/errata.md, C¹ methods §6).
 //   Ritz: w minimises J(w) = ∫∫_[0,1]x[0,a] ((Δw)²/2 - w) dx dy (Δ the physical Laplacian) over
-//     the same space. Basis: φ_k(u) φ_l(v) with φ_k'' = P_k(2u-1) (Legendre), k = 2..n-2, i.e.
-//     the doubly integrated Legendre polynomials, which vanish with their derivative at 0 and 1;
-//     ∫φ_k''φ_l'' is diagonal. Only even k, l (the symmetric modes; the odd ones decouple exactly
-//     and carry no load). Gauss–Legendre quadrature with n+2 points (exact). Cholesky solve.
-//     Converges to the literature value 0.00126532 (square).
-// Both are the exact value of their discrete problem to better than 1e-9 relative for
-// 4 <= n <= 30 (tests/c1 compares with 90-digit references).
+//     the same space, in the doubly integrated Legendre basis.
+// The bases, the symmetry reduction, the accuracy against 90-digit references and the tables
+// beside the paper's: docs/c1.md.
 #include <string>
 
 #include "solvers/summary.h"

@@ -1,6 +1,6 @@
 #pragma once
-// Tetraharmonic Bézier surfaces from C¹ boundary data (seed 000: Centella, Monterde, Moreno,
-// Oset, "Two C¹-methods to generate Bézier surfaces from the boundary", §3 Theorem 1, Annex A).
+// Tetraharmonic Bézier surfaces from C¹ boundary data (Centella, Monterde, Moreno, Oset, "Two
+// C¹-methods to generate Bézier surfaces from the boundary", §3 Theorem 1, Annex A).
 //
 // Conventions (FORMATS.md):
 //   x(u,v) = sum_{i,j=0..n} B_i^n(u) B_j^n(v) P_ij = sum a_ij/(i! j!) u^i v^j on [0,1]^2,
@@ -12,27 +12,16 @@
 //
 // Theorem 1: for n >= 4 there is exactly one polynomial of bidegree (n,n) with Δ⁴x = 0 and the
 // given outer two rings; the tetraharmonic polynomials of bidegree n form a space of dimension
-// 8n - 8 (§3; NOTES.md: holds for n >= 3).
+// 8n - 8 (§3; docs/errata.md, C¹ methods Theorem 1: holds for n >= 3).
 //
 // Methods:
-//   Explicit: the constructive proof of Annex A: a_0j, a_1j, a_i0, a_i1 from the data
-//     (eqs. (17), (18), (21), (22)); then for k = n, n-1, ..., 2 the 2x2 systems S^k, S_k
-//     (eqs. (19), (20), (23), (24)) give a_2k, a_3k, a_k2, a_k3, and Lemma 2's pentadiagonal
-//     (1,4,6,4,1) systems give the diagonal i + j = k + 3 (i, j >= 4); a_ij = 0 for
-//     i + j >= n + 4 (Remark 4). Works in the (factorial) power basis.
+//   Explicit: the constructive proof of Annex A (eqs. (17)–(24), Lemma 2, Remark 4), in the
+//     (factorial) power basis; it loses accuracy at high degree (see the converged flag below).
 //   LU (default): least squares of the (n+1)^2 Bernstein coefficients (at degree (n,n)) of Δ⁴x
-//     over the interior points. The data always admit an exact solution (Theorem 1), so the
-//     least-squares residual is zero up to rounding. The matrix is ill-conditioned
-//     (cond ~3e6 at n = 12, ~5e13 at n = 20), so the solution operator (interior = G * data) is
-//     computed by a long-double Householder QR refined with residuals evaluated in binary128 from
-//     exact entries; it is computed once per degree and cached (thread-safe; ~0.1 s at n = 12,
-//     ~1-2 s at n = 20). A solve is one (n-3)^2 x (8n-8) product; when its relative Δ⁴ residual
-//     exceeds 1e-12 (G * data cancels: a small solution from a large G, typically n >= 16), the
-//     solve is refined in binary128 with the cached QR (up to 3 steps, ~10-40 ms at n = 16-20),
-//     which brings the residual to ~1e-17 (tested to n = 24).
-//   Accuracy: the problem itself amplifies data rounding (the interior grows like ~1e9 x the data
-//     at n = 20, NOTES.md), so both methods recover an exact tetraharmonic polynomial to about
-//     1e-14 (n = 8), 1e-12 (n = 12), 1e-9 (n = 16), 1e-8 (n = 18) relative; see docs/c1.md.
+//     over the interior points, by a solution operator computed once per degree and cached
+//     (thread-safe). The data always admit an exact solution (Theorem 1).
+// The problem itself amplifies data rounding, so errors are relative to the solution's size.
+// How each method works, its accuracy and its timings: docs/c1.md, "How the C¹ solvers work".
 #include <Eigen/Core>
 #include <string>
 

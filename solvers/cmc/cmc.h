@@ -1,30 +1,23 @@
 #pragma once
-// Critical points of the CMC functional D_H = D + 2HV (seed 004, Arnal–Lluch–Monterde, eq. (11);
-// energies/cmc.h) over the free control points of a triangular or tensor net.
+// Critical points of the CMC functional D_H = D + 2HV (Arnal, Lluch, Monterde, "Triangular Bézier
+// approximations to constant mean curvature surfaces", eq. (11); energies/cmc.h) over the free
+// control points of a triangular or tensor net. Orientation and the sign of H: FORMATS.md and
+// docs/errata.md, "Conventions".
 //
 // What is solved (FORMATS.md, problem "cmc"):
 //  - H mode (options.V unset): the critical point of D_H on the branch continued from the
-//    Dirichlet extremal (H = 0, a linear solve) to the requested H, before the branch's first fold.
-//    Continuation in H with step control: predictor (tangent at H = 0, then secant), corrector =
-//    the chosen solver; a step is accepted when the corrector meets the tolerance, the Hessian
-//    of D_H over the free points is positive definite (on the branch from H = 0 the critical point
-//    is a strict local minimum until the first fold, where the Hessian becomes singular), and the
-//    corrector moved the predicted point by at most half the step (so no jump to another branch).
-//    Accepted steps with few corrector iterations double the next step; rejected ones halve it.
-//    When the step collapses (fold: singular Hessian, no convergence), the result has
-//    converged = false, message "no critical point on the branch from H = 0 beyond H ≈ <h>", and
-//    holds the last point of the branch (at H = h, result.H = h).
-//  - V mode (options.V set, solver nlopt only): minimise D subject to V = V0 (NLopt SLSQP, then a
-//    bordered Newton polish); the multiplier is reported as H = -<∇D,∇V>/(2 |∇V|^2) over the free
-//    points, so that ∇D + 2H∇V = 0.
+//    Dirichlet extremal (H = 0, a linear solve) to the requested H, before the branch's first fold
+//    (docs/errata.md, triangular CMC §2: D_H is unbounded below, so this is a critical point, not
+//    a minimum). When no branch point exists beyond some H ≈ h (fold: singular Hessian, no
+//    convergence), the result has converged = false, message "no critical point on the branch
+//    from H = 0 beyond H ≈ <h>", and holds the last point of the branch (at H = h, result.H = h).
+//  - V mode (options.V set, solver nlopt only): minimise D subject to V = V0; the multiplier is
+//    reported as H = -<∇D,∇V>/(2 |∇V|^2) over the free points, so that ∇D + 2H∇V = 0.
 //
-// Solvers (one interface, options.solver):
-//  - newton: Newton's method with the exact symmetric Hessian (Cholesky).
-//  - ceres:  Ceres Levenberg–Marquardt on the residuals F_I of eq. (11), one residual block per
-//            free control point with its analytic Jacobian (the rows of the Hessian).
-//  - nlopt:  NLopt LD_LBFGS on D_H in Cholesky-preconditioned variables (D_H has a local minimum
-//            on the branch); L-BFGS stalls at ~1e-9 relative (finite precision of D_H), so at most
-//            3 Newton steps polish the result to the tolerance (reported in the message).
+// Solvers (one interface, options.solver): newton (exact symmetric Hessian, Cholesky), ceres
+// (Levenberg–Marquardt on the residuals F_I of eq. (11)), nlopt (L-BFGS on D_H, polished by at most
+// 3 Newton steps). The continuation's step control and each solver's details: docs/cmc.md,
+// "Solver".
 //
 // converged = true means eq. (11) over the free points holds to options.tolerance (1e-11) relative
 // to the size of its terms (CmcFunctional::residual), and in V mode also |V - V0| <= tolerance *

@@ -1,5 +1,5 @@
 // Ceres corrector of the CMC continuation (solvers/cmc/cmc.h): Levenberg–Marquardt on the residuals
-// F_I of seed 004 eq. (11), one residual block per free control point, with analytic Jacobians
+// F_I of triangular CMC eq. (11), one residual block per free control point, with analytic Jacobians
 // (the 3x3 blocks of the exact Hessian of D_H). The blocks share one evaluation of F and of the
 // Hessian per parameter vector (Ceres runs single-threaded here).
 #include <ceres/ceres.h>

@@ -1,6 +1,6 @@
 #pragma once
 // Harmonic (and general second-order) tensor Bézier patches from the two u-boundaries
-// (FORMATS.md `"fixed": "u-boundaries"`; seed 001 §1 via Monterde–Ugail 2004, NOTES.md):
+// (FORMATS.md `"fixed": "u-boundaries"`; Arnal–Monterde–Ugail §1 via Monterde–Ugail 2004; docs/errata.md):
 //
 //   a x_uu + b x_uv + c x_vv = 0   ([a, b, c] = EnergySpec::second_order_coeffs(); dirichlet: Δx = 0)
 //

@@ -29,7 +29,7 @@ double cos_half_pi(int n) {
   s << "pde: method \"explicit\" has no closed form for the operator of \"" << op.name() << "\" [";
   const auto& c = op.operator_coeffs();
   for (int k = 0; k < 5; ++k) s << (k ? ", " : "") << c[static_cast<size_t>(k)];
-  s << "] (seed 001 covers Coons, biharmonic, laplacian-squared, modified biharmonic and G-norm operators); "
+  s << "] (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified biharmonic and G-norm operators); "
        "use method \"lu\"";
   throw UnsupportedProblem(s.str());
 }
@@ -56,7 +56,7 @@ OrthWeights orth_roots(double A, double C) {
 
 // Prop. 4 weights of every interior (k, l) with k + l <= N, K = floor(k/2), L = floor(l/2):
 //   G_{n} = x0^n (1 - q^{n+1}) / (1 - q);  w_col = G_{K-1} (-A)^L / G_{K+L-1},
-//   w_row = G_{L-1} (-E)^K / G_{K+L-1}  (E = 1), with G_{-1} = 0, G_0 = 1 (NOTES.md),
+//   w_row = G_{L-1} (-E)^K / G_{K+L-1}  (E = 1), with G_{-1} = 0, G_0 = 1 (docs/errata.md),
 // from tables of the powers (one std::pow per exponent, not per pair).
 void orth_weight_tables(const OrthWeights& w, double A, int N, Eigen::MatrixXd& wcol, Eigen::MatrixXd& wrow) {
   const int H = N / 2 + 1;
@@ -104,7 +104,7 @@ void PdeExplicitOptions::validate() const {
 
 ExplicitOperator classify_explicit_operator(const EnergySpec& op) {
   if (op.order() != 4)
-    throw UnsupportedProblem("pde: method \"explicit\" is for the fourth-order operators of seed 001; \"" + op.name() +
+    throw UnsupportedProblem("pde: method \"explicit\" is for the fourth-order operators of Arnal-Monterde-Ugail; \"" + op.name() +
                              "\" is second order (use fixed \"u-boundaries\" for the harmonic PDE, or method \"lu\")");
   if (op.kind() == EnergyKind::ModifiedBiharmonic && op.alpha() == 0.0)
     throw ParameterError(
@@ -308,7 +308,7 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
   const int n = data.n();
   if (data.m() != n) {
     std::ostringstream s;
-    s << "pde: method \"explicit\" needs a net of degree [n, n] (seed 001), got [" << data.n() << ", " << data.m()
+    s << "pde: method \"explicit\" needs a net of degree [n, n] (Arnal-Monterde-Ugail), got [" << data.n() << ", " << data.m()
       << "]; use method \"lu\"";
     throw DegreeError(s.str());
   }
@@ -364,7 +364,7 @@ PdeSolution solve_explicit_untimed(const TensorNet& data, const EnergySpec& op, 
   ExplicitOperator e = classify_explicit_operator(op);
   if (data.m() != data.n()) {
     std::ostringstream s;
-    s << "pde: method \"explicit\" needs a net of degree [n, n] (seed 001), got [" << data.n() << ", " << data.m()
+    s << "pde: method \"explicit\" needs a net of degree [n, n] (Arnal-Monterde-Ugail), got [" << data.n() << ", " << data.m()
       << "]; use method \"lu\"";
     throw DegreeError(s.str());
   }

@@ -1,40 +1,34 @@
 #pragma once
-// Explicit (closed-form) polynomial solutions of the fourth-order PDEs of seed 001
-// (Arnal, Monterde, Ugail, "Explicit polynomial solutions of fourth order linear elliptic PDEs for
-// boundary based smooth surface generation"), corrected as in NOTES.md.
+// Explicit (closed-form) polynomial solutions of the fourth-order PDEs of Arnal, Monterde, Ugail,
+// "Explicit polynomial solutions of fourth order linear elliptic PDEs for boundary based smooth
+// surface generation", with the corrections of docs/errata.md (explicit PDE solutions):
 //
 //   A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv + E x_vvvv = 0   (eq. (2); B, D on x_uuuv, x_uvvv)
 //
-// on a tensor net of degree (n, n) with the outer ring of control points prescribed. Route:
-//   1. boundary -> a_{i0}, a_{0j} (eq. (5)-(6)), with x = sum a_kl/(k! l!) u^k v^l (eq. (4));
-//   2. anti-diagonals s = k + l from n+1 down to 2 (a_kl = 0 for k + l > n+1): first a_{1,s-1},
-//      a_{s-1,1} from the edges u = 1 and v = 1 (eq. (7); the a_{i1} formula uses P_{ln}), then the
-//      interior a_kl (k, l >= 2) of the anti-diagonal in closed form:
+// on a tensor net of degree (n, n) with the outer ring of control points prescribed. Route, with
+// x = sum a_kl/(k! l!) u^k v^l (eq. (4)):
+//   1. boundary -> a_{i0}, a_{0j} (eq. (5)-(6));
+//   2. anti-diagonals s = k + l from n+1 down to 2 (a_kl = 0 for k + l > n+1): a_{1,s-1},
+//      a_{s-1,1} from the edges u = 1 and v = 1 (eq. (7); the a_{i1} formula uses P_{ln}), then
+//      the interior a_kl (k, l >= 2) in closed form:
 //      - Coons [0,0,C,0,0] (x_uuvv = 0, §5.2.1): a_kl = 0;
-//      - orthogonal (B = D = 0, C^2 >= 4AE > 0): Prop. 4 eq. (21) with G_{-1} = 0, G_0 = 1;
-//        double root (biharmonic §5.2.3, modified biharmonic §5.2.2 with the exponent ⌊k/2⌋):
-//          a_kl = K/(K+L) (-A/x0)^L a_{k+2L, l mod 2} + L/(K+L) (-E/x0)^K a_{k mod 2, 2K+l},
-//        K = ⌊k/2⌋, L = ⌊l/2⌋, x0 = C/2; simple roots x0 > x1 (the rho case §5.2.4), q = x1/x0:
-//          a_kl = (-A/x0)^L (1-q^K)/(1-q^{K+L}) a_{k+2L, l mod 2}
-//               + (-E/x0)^K (1-q^L)/(1-q^{K+L}) a_{k mod 2, 2K+l},
-//        evaluated with expm1 so that rho -> 1 (q -> 1) tends to the biharmonic formula without
-//        dividing by zero;
-//      - G-norm [rho^2, 2 rho cos t, 1 + rho^2, 2 rho cos t, 1] with cos t != 0: Lemma 1 (eq. (11)-(12))
-//        gives the fundamental sequences A_l, B_l, C_l, D_l; Prop. 2 (eq. (13)) the interior.
-//        Where eq. (12) is inaccurate (|sin t| or 1 + rho^4 + 2 rho^2 cos 2t below 1e-3) the
-//        sequences come from their defining recurrence instead. For rho > 1 the problem is solved
-//        transposed (u <-> v turns rho into 1/rho) so that no sequence grows. When M_s (Prop. 2) is
-//        below singular_tolerance relative to its terms, that anti-diagonal's linear system (9)
-//        (corrected: D a_{m-3,3}) is solved numerically; if it is singular the solution is not
-//        unique (e.g. rho = 1, t = 0: kernel u^2 v^2 (u - v)) and the Summary says so.
+//      - orthogonal (B = D = 0, C^2 >= 4AE > 0): Prop. 4 eq. (21) with G_{-1} = 0, G_0 = 1 (§5.1),
+//        covering biharmonic (§5.2.3), modified biharmonic (§5.2.2, exponent ⌊k/2⌋) and the
+//        rho case (§5.2.4);
+//      - G-norm [rho^2, 2 rho cos t, 1 + rho^2, 2 rho cos t, 1] with cos t != 0: Lemma 1
+//        (eq. (11)-(12)) and Prop. 2 (eq. (13)); an anti-diagonal whose M_s is below
+//        singular_tolerance is solved numerically from system (9) (corrected: D a_{m-3,3});
 //   3. back to Bernstein form (§6), via tensor/power_basis.h; the prescribed ring is copied exactly.
+// The formulas as implemented, and how the degenerate cases (rho -> 1, sin t -> 0, rho > 1) are
+// evaluated: docs/pde_accuracy.md, "How the solvers work".
 //
 // Accepted operators: those with EnergySpec::has_explicit_solution(), and also any [A..E]
 // proportional to the Coons operator [0,0,1,0,0] or to a modified biharmonic one [1,0,2a²,0,a⁴]
 // (a != 0). Anything else throws UnsupportedProblem suggesting method "lu" (solvers/pde/pde_lu.h).
+// A singular anti-diagonal system means the solution is not unique (e.g. rho = 1, t = 0: kernel
+// u^2 v^2 (u - v)): converged = false, and the Summary says so.
 //
-// Accuracy: the monomial coefficients a_kl are badly conditioned at high degree; measured errors
-// against exact solutions are in docs/pde_accuracy.md.
+// Measured errors against exact solutions: docs/pde_accuracy.md.
 #include <Eigen/Core>
 #include <string>
 
@@ -68,14 +62,14 @@ struct ExplicitOperator {
 /// operators without a closed form, and for second-order energies.
 ExplicitOperator classify_explicit_operator(const EnergySpec& op);
 
-/// Lemma 1 (seed 001 eq. (12)): the fundamental sequences of
+/// Lemma 1 (eq. (12)): the fundamental sequences of
 ///   rho^2 x_l + 2 rho cos t x_{l+1} + (1+rho^2) x_{l+2} + 2 rho cos t x_{l+3} + x_{l+4} = 0
 /// with initial values the unit vectors: row 0 = A_l, 1 = B_l, 2 = C_l, 3 = D_l, l = 0..N.
 /// closed_form = true uses eq. (12) (requires sin t != 0 and 1 + rho^4 + 2 rho^2 cos 2t != 0, else
 /// ParameterError); false runs the recurrence.
 Eigen::MatrixXd lemma1_sequences(double rho, double t, int N, bool closed_form);
 
-/// The factorial-scaled monomial coefficients a_kl (seed 001 eq. (4)) of the explicit solution,
+/// The factorial-scaled monomial coefficients a_kl (eq. (4)) of the explicit solution,
 /// (n+1)^2 x 3, row k*(n+1)+l. `summary` receives converged / message (not unique).
 Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const ExplicitOperator& op,
                                            const PdeExplicitOptions& options, Summary& summary);

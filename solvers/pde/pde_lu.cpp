@@ -275,8 +275,8 @@ PdeSolution not_unique(const TensorNet& data, const PdeStructure& st) {
 // ---- The square case n = m: block-triangular LU on the anti-diagonals -----------------------
 //
 // Unknowns: the factorial-scaled monomial coefficients a_kl of x = sum a_kl u^k v^l / (k! l!)
-// (seed 001 eq. (4)). d^p_u d^q_v shifts (k, l) by (p, q), so the coefficient of u^k' v^l' in L x is
-//   sum_j c_j a_{k'+4-j, l'+j} = 0                                    (seed 001 eq. (8)-(9))
+// (explicit PDE solutions eq. (4)). d^p_u d^q_v shifts (k, l) by (p, q), so the coefficient of u^k' v^l' in L x is
+//   sum_j c_j a_{k'+4-j, l'+j} = 0                                    (eq. (8)-(9), docs/errata.md)
 // and touches the anti-diagonal k + l = k' + l' + 4 only. The prescribed ring gives
 //   a_{k,0}, a_{0,l}  from the edges v = 0, u = 0                     (eq. (5)-(6))
 //   sum_k a_{k,l} / k! = e_l,  sum_l a_{k,l} / l! = f_k  from the edges u = 1, v = 1   (eq. (7))
@@ -444,7 +444,7 @@ struct AntiDiagonalUnknowns {
 // a_{0,s} and the edge rows are absent), so their blocks are homogeneous and a = 0 there unless
 // a block is rank deficient. For s >= n+4 the rows are the full convolution of the anti-diagonal
 // with (c_0..c_4), injective for c != 0: nothing to do. s = n+2, n+3 are truncated convolutions:
-// check their rank (e.g. the G-norm with rho = 1, t = 0 fails here, NOTES.md). Returns the first
+// check their rank (e.g. the G-norm with rho = 1, t = 0 fails here, docs/pde_accuracy.md). Returns the first
 // rank-deficient s, or 0 if both have full rank.
 template <class T>
 int rank_deficient_outer_block(const std::array<T, 5>& c, int n, T tol) {

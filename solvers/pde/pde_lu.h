@@ -1,58 +1,35 @@
 #pragma once
 // Polynomial solutions of linear homogeneous PDEs with prescribed boundary control points, by a
-// linear solve (the "lu" method of seed 001, Arnal–Monterde–Ugail §3 and §7 Table 1; the
-// Bernstein form below is also the engine of the harmonic PDE from u-boundaries,
-// solvers/pde/harmonic_pde.h).
+// linear solve: the "lu" method of Arnal, Monterde, Ugail, "Explicit polynomial solutions of
+// fourth order linear elliptic PDEs for boundary based smooth surface generation" (§3, §7
+// Table 1). The Bernstein form below is also the engine of the harmonic PDE from u-boundaries
+// (solvers/pde/harmonic_pde.h).
 //
 // Problem. x(u,v) = sum_{i<=n, j<=m} B_i^n(u) B_j^m(v) P_ij (FORMATS.md layout, row i*(m+1)+j).
 // Given the prescribed points (FixedSet::Boundary: the outer ring; FixedSet::UBoundaries: rows
 // i = 0 and i = n), find the free points such that L x = 0 with
-//   order 4: L = A d4u + B d3u dv + C d2u d2v + D du d3v + E d4v   (seed 001 eq. (2), NOTES.md)
+//   order 4: L = A d4u + B d3u dv + C d2u d2v + D du d3v + E d4v   (eq. (2); B and D multiply
+//            x_uuuv and x_uvvv: docs/errata.md, explicit PDE solutions eq. (2))
 //   order 2: L = a d2u + b du dv + c d2v                           (harmonic: [1,0,1])
 //
-// Two formulations of the same equations.
+// Two formulations of the same equations (how each works: docs/pde_accuracy.md, "How the
+// solvers work"):
+//  - solve_pde_lu, n = m and fixed = boundary: block-triangular elimination along the
+//    anti-diagonals k + l = s of the factorial-scaled monomial coefficients a_kl (eq. (4),
+//    (5)–(9)), O(n^3);
+//  - PdeMould, and solve_pde_lu for n != m: the least-squares system in the Bernstein basis,
+//    O(n^6), which the mould factors once per (operator, degree, fixed set).
 //
-// solve_pde_lu, square degrees (n = m, fixed = boundary): block-triangular LU on the anti-diagonals.
-// The unknowns are the factorial-scaled monomial coefficients a_kl of seed 001 eq. (4). L shifts
-// (k, l) by 4 in total degree, so the coefficient equations of L x (eq. (8)-(9)) on the anti-
-// diagonal k + l = s involve that anti-diagonal only; the edges u = 0, v = 0 give a_{k0}, a_{0l}
-// (eq. (5)-(6)) and the edges u = 1, v = 1 give a_{1,s-1}, a_{s-1,1} from the higher anti-diagonals
-// (eq. (7)). Taking s = 2n down to 2, each block is a banded Toeplitz system (bandwidth 2 + 2,
-// entries c_j) solved by Gaussian elimination with partial pivoting; the two truncated blocks
-// s = n+2, n+3 get complete pivoting; s >= n+4 are full convolutions, injective, so zero. A pivot
-// below rank_tolerance (entries scaled to max |c_j| = 1) is a rank-deficient block: the solution
-// is not unique. Nothing is factored ahead: each call builds and solves every block, O(n^3) in
-// all. The monomial coefficients cancel ~3^n-fold when summed to Bernstein form, so the edge
-// conversions, the blocks and the edge part of the way back run in long double (2^-64); the
-// interior part of the way back (k, l >= 2) uses the cached double conversion. This is not the
-// dense monomial system of NOTES.md (which fails from n ~ 12 in double): the block order keeps
-// every step local. Accuracy (docs/pde_accuracy.md): at or below the data-rounding floor up to
-// n = 20, and ~1e-19 * 3^n for well-conditioned operators (Coons).
+// Outcomes. Uniqueness and compatibility are decided structurally, from the small monomial
+// blocks of the anti-diagonals (analyse_pde_structure). The solution is not unique: converged =
+// false, the data returned unchanged. The data violate a compatibility condition (relative
+// tolerance PdeLuOptions::compatibility_tolerance; for example the harmonic PDE from
+// u-boundaries at even n, docs/errata.md): converged = false, the least-squares net returned.
+// Bad input throws the typed errors named at each function.
 //
-// PdeMould, and solve_pde_lu for n != m: the Bernstein system. The unknowns are the free control
-// points. The equations are the Bernstein coefficients of L x at bidegree (n, m): each term
-// d^{du,dv} x is a Bernstein net of bidegree (n-du, m-dv), elevated exactly to (n, m). L x = 0 iff
-// all (n+1)(m+1) coefficients vanish, so the system K_FF x_F = -K_FB x_B is consistent and
-// overdetermined; it is solved in the least-squares sense by column-pivoted Householder QR of the
-// column-equilibrated K_FF. K is built and factored in long double: its condition number reaches
-// ~1e16 at n = 20, so a double solve loses every digit there, while the long double solve stays
-// near the floor set by rounding the data to double (docs/pde_accuracy.md). It is O(n^6) (147 ms
-// at n = 20): the mould pays it once per (operator, degree) and then solves by one product.
-//
-// Uniqueness and compatibility (Bernstein route) are decided structurally, not from the
-// (ill-conditioned) Bernstein matrix: in the monomial basis the system is block triangular along
-// the anti-diagonals k + l = s (seed 001 eq. (8)–(9)); each block is a small matrix of the
-// coefficients [A..E] (entries O(1)), whose rank is reliable. A rank-deficient block means the
-// solution is not unique (for example the G-norm operator with rho = 1, t = 0 has the kernel
-// u^2 v^2 (u - v)); a block with more equations than its rank whose left null space meets the data
-// gives one linear compatibility condition on the data (for example the harmonic PDE from
-// u-boundaries at even n, NOTES.md). The conditions are then taken, as functionals of the
-// prescribed points, from the left null space of the Bernstein matrix, and the data are accepted
-// when each holds to a relative tolerance.
-//
-// Conditioning (NOTES.md): the solution amplifies boundary data by up to ~1e13 at n = 20 for
-// generic boundaries; errors are meaningful relative to the solution's own size.
-// docs/pde_accuracy.md has the measured errors against exact solutions.
+// The solution amplifies boundary data (docs/errata.md, explicit PDE solutions, "Conditioning"),
+// so errors are meaningful relative to the solution's own size. Measured errors against exact
+// solutions and timings: docs/pde_accuracy.md.
 #include <Eigen/Core>
 #include <string>
 #include <vector>

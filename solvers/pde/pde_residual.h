@@ -13,7 +13,7 @@
 // and is 0) reads rounding noise / rounding noise = O(1). Where the terms are not negligible the
 // value is exactly the FORMATS.md ratio. It is 0 when everything vanishes.
 //
-// Operators (energies/energy_spec.h, seed 001 eq. (2) as corrected in NOTES.md):
+// Operators (energies/energy_spec.h, Arnal–Monterde–Ugail eq. (2), docs/errata.md):
 //   order 4: A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv + E x_vvvv   ([A..E] = operator_coeffs())
 //   order 2: a x_uu + b x_uv + c x_vv                                ([a,b,c] = second_order_coeffs();
 //            the Euler–Lagrange operator is minus this, which does not change the residual)

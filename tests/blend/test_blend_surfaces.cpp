@@ -1,5 +1,5 @@
-// The "surfaces" form of the blend config: edges taken from two nets (seed 003 §6 as read in
-// NOTES.md: u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0), u_y(x,1) = g_y(x,0)).
+// The "surfaces" form of the blend config: edges taken from two nets (smoothing PDE splines §6 as read in
+// docs/errata.md: u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0), u_y(x,1) = g_y(x,0)).
 #include <gtest/gtest.h>
 
 #include "core/errors.h"

@@ -1,4 +1,4 @@
-// Tests of the discrete smoothing PDE spline (seed 003; solvers/blend/smoothing_spline.h).
+// Tests of the discrete smoothing PDE spline (Pasadas–Rodríguez; solvers/blend/smoothing_spline.h).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -40,7 +40,7 @@ SmoothingSplineProblem problem_from(int k, int l, double a, double eps,
   return p;
 }
 
-/// Seed 003 §6: cylinders f and g, blend from f's edge y = 1 to g's edge y = 0 (NOTES.md),
+/// Smoothing PDE splines §6: cylinders f and g, blend from f's edge y = 1 to g's edge y = 0 (docs/errata.md),
 /// optionally with the nine points (i/9, 0.5) and data h(i/9, 0.5).
 SmoothingSplineProblem cylinders(double a, double eps, bool with_points) {
   SmoothingSplineProblem p;
@@ -133,7 +133,7 @@ TEST(SmoothingSpline, AffineDataAtPointsIsStillReproduced) {
 
 TEST(SmoothingSpline, BicubicSolutionsOfThePdeAreNotReproduced) {
   // U = (x^3, x^2 y, 0) satisfies ∂⁴_x + 2a∂²_x∂²_y + a²∂⁴_y U = 0 and lies in the space, but
-  // (NOTES.md) the spline beats it: the natural conditions on x = 0, 1 and the free ∂x, ∂xy at
+  // (docs/errata.md) the spline beats it: the natural conditions on x = 0, 1 and the free ∂x, ∂xy at
   // the boundary nodes give a strictly smaller energy.
   auto U = [](double x, double y) { return Eigen::Vector3d(x * x * x, x * x * y, 0); };
   auto Uy = [](double x, double) { return Eigen::Vector3d(0, x * x, 0); };

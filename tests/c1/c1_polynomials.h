@@ -1,5 +1,5 @@
 #pragma once
-// Exact polynomial test surfaces for the seed-000 tests: products zbar^a z^b with z = (u-u0) + i(v-v0),
+// Exact polynomial test surfaces for the C¹-methods tests (Centella et al.): products zbar^a z^b with z = (u-u0) + i(v-v0),
 // as monomial coefficient tables, turned into degree-(n,n) nets.
 #include <complex>
 #include <vector>

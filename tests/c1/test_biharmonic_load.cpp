@@ -1,4 +1,4 @@
-// The nonhomogeneous biharmonic method (seed 000 §4, Theorems 2-3, Prop. 2 / eq. (37)).
+// The nonhomogeneous biharmonic method (Centella et al. §4, Theorems 2-3, Prop. 2 / eq. (37)).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Clamped plate (seed 000 §6): paper tables, high-precision references, independent full-space solves.
+// Clamped plate (Centella et al. §6): paper tables, high-precision references, independent full-space solves.
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
@@ -176,7 +176,7 @@ TEST(ClampedPlate, PaperTablesAdmissibleLoad) {
   }
 }
 
-// NOTES.md: the paper's n = 15 column is corrupted by round-off; the exact value differs from
+// docs/errata.md: the paper's n = 15 column is corrupted by round-off; the exact value differs from
 // it in the 5th-6th significant digit. Check that we are NOT equal to it (and equal to the exact).
 TEST(ClampedPlate, PaperColumn15IsRoundOff) {
   const double printed[] = {0.00126628, 0.00191027, 0.00219831, 0.00239123, 0.00254655};
@@ -201,7 +201,7 @@ TEST(ClampedPlate, BothMethodsMatchHighPrecisionReference) {
 }
 
 TEST(ClampedPlate, RitzConvergesToLiterature) {
-  // Literature (Bloor-Wilson / Timoshenko, NOTES.md): 0.00126532 for the square; ~0.002533 at 2.0.
+  // Literature (Bloor-Wilson / Timoshenko, docs/errata.md): 0.00126532 for the square; ~0.002533 at 2.0.
   EXPECT_NEAR(plate(30, 1.0, kRitz).center_deflection, 0.00126532, 5e-9);
   EXPECT_NEAR(plate(30, 2.0, kRitz).center_deflection, 0.00253297, 2e-8);
   EXPECT_NEAR(plate(30, 1.5, kRitz).center_deflection, 0.00219655, 5e-8);

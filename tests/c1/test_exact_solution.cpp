@@ -1,4 +1,4 @@
-// Seed 000 §4.1: the exact biharmonic solution f(u,v) = u cos(u) e^v on [0,1]^2, approximated
+// Centella et al. §4.1: the exact biharmonic solution f(u,v) = u cos(u) e^v on [0,1]^2, approximated
 // from degree-7 C¹ boundary data by both C¹ methods. The paper reports max |x - f| = 2.499e-6
 // (admissible load) and 9.108e-6 (tetraharmonic). This test prints our numbers (docs/c1.md)
 // and checks they are of that order.

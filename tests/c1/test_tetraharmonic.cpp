@@ -1,4 +1,4 @@
-// Tetraharmonic surfaces (seed 000, Theorem 1 and Annex A).
+// Tetraharmonic surfaces (Centella et al., Theorem 1 and Annex A).
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
@@ -51,8 +51,8 @@ TEST(Tetraharmonic, ExactPolynomialIsTetraharmonic) {
 
 TEST(Tetraharmonic, RecoversExactPolynomialBothMethods) {
   // Relative tolerances (max point error / max point): the explicit recursion works in the
-  // power basis (NOTES.md) and loses about a digit per degree.
-  // Observed (docs/c1.md) times ~5-10; both grow with the amplification of the data (NOTES.md).
+  // power basis (docs/c1.md) and loses about a digit per degree.
+  // Observed (docs/c1.md) times ~5-10; both grow with the amplification of the data (docs/c1.md).
   const double tol_lu[] = {0, 0, 0, 0, 1e-15, 1e-14, 1e-14, 1e-13, 1e-13, 3e-13, 1e-12, 1e-12, 1e-11, 3e-11, 1e-10, 5e-10, 3e-9};
   const double tol_ex[] = {0, 0, 0, 0, 1e-14, 1e-14, 1e-14, 2e-13, 1e-12, 3e-12, 1e-11, 3e-11, 5e-11, 1e-10, 1e-9, 5e-9, 5e-9};
   for (int n = 4; n <= 16; ++n) {

@@ -1,4 +1,4 @@
-// The closed-form volume V = 1/3 int <x_u ^ x_v, x> (energies/volume, seed 004 eq. (5)-(6) as
+// The closed-form volume V = 1/3 int <x_u ^ x_v, x> (energies/volume, triangular CMC eq. (5)-(6) as
 // corrected) against the CGAL unit's cone volume of the sampled mesh as the sampling refines:
 // the mesh value converges to V at second order in the sample spacing.
 #include <gtest/gtest.h>

@@ -125,7 +125,7 @@ TEST(Cli, SolvePdeAndExtremalWriteReports) {
 
 TEST(Cli, HarmonicEvenDegreeIncompatibleDataExitsOne) {
   // degree 2, u-boundaries: rows i = 0 and i = 2 given; a harmonic bidegree-(2,2) patch has
-  // 2n+1 = 5 dimensions against 6 data values, so generic data are incompatible (NOTES.md).
+  // 2n+1 = 5 dimensions against 6 data values, so generic data are incompatible (docs/errata.md).
   const std::string job = R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,1],[0,1,0],[0.5,0,0],[0.5,0.5,0],[0.5,1,0],[1,0,0],[1,0.5,0.3],[1,1,2]]},
     "fixed": "u-boundaries", "problem": {"kind": "pde", "operator": {"name": "dirichlet"}}})";
   const fs::path out = tmpdir() / "harm";
@@ -181,7 +181,7 @@ TEST(Cli, PlateReproducesThePaperAndTetraharmonicJobsRun) {
   CmdResult r = run("plate --aspect 1 --degree 11 --method admissible-load");
   ASSERT_EQ(r.status, 0) << r.err;
   const double w = std::stod(r.out.substr(r.out.find("\"center_deflection\":") + 20));
-  EXPECT_NEAR(w, 0.00126654, 5e-9);  // seed 000, n = 11, square: every printed digit
+  EXPECT_NEAR(w, 0.00126654, 5e-9);  // Centella et al., n = 11, square: every printed digit
   expect_bad_input("plate --aspect 1 --degree 3 --method ritz", "degree");
   expect_bad_input("plate --aspect 1 --degree 8 --method fem", "method");
   // C1 data from z = u^2 v^2 (degree 4, tetraharmonic and biharmonic-load jobs)
@@ -220,7 +220,7 @@ TEST(Cli, BSplineJobs) {
   CmdResult r = run("solve " + write("bs_ext.json", "{\"net\": " + net + R"(, "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}})").string() +
                     " --out " + (tmpdir() / "bs_ext").string());
   EXPECT_EQ(r.status, 0) << r.err;
-  // generic data on a multi-span net admit no spline solution of the biharmonic PDE (NOTES.md): exit 1
+  // generic data on a multi-span net admit no spline solution of the biharmonic PDE (docs/errata.md): exit 1
   r = run("solve " + write("bs_pde.json", "{\"net\": " + net + R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})").string() +
           " --out " + (tmpdir() / "bs_pde").string());
   EXPECT_EQ(r.status, 1) << r.err;

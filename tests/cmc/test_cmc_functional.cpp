@@ -1,4 +1,4 @@
-// D_H = D + 2HV (seed 004 Prop. 4, eq. (11)): value, gradient and Hessian.
+// D_H = D + 2HV (triangular CMC Prop. 4, eq. (11)): value, gradient and Hessian.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -44,8 +44,8 @@ TEST(CmcFunctional, ValueGradientHessianAgainstFiniteDifferences) {
   }
 }
 
-TEST(CmcFunctional, JacobianBlockOfNotes) {
-  // dF_I/dP_L = C_IL Id - 2H [sum_K C_ILK P_K]_x for interior I, L (NOTES.md).
+TEST(CmcFunctional, JacobianBlockOfEq11) {
+  // dF_I/dP_L = C_IL Id - 2H [sum_K C_ILK P_K]_x for interior I, L (docs/errata.md).
   const int n = 5;
   const double H = 0.7;
   const CmcFunctional f = CmcFunctional::triangular(n);

@@ -1,4 +1,4 @@
-// CMC solver (seed 004): continuation from the Dirichlet extremal, three solvers, fold, sphere
+// CMC solver (Arnal–Lluch–Monterde): continuation from the Dirichlet extremal, three solvers, fold, sphere
 // convergence with conformal boundary data, bad input.
 #include <gtest/gtest.h>
 
@@ -226,7 +226,7 @@ TEST(CmcSolver, TensorConvergesToTheSphereWithConformalData) {
 }
 
 TEST(CmcSolver, FoldIsAsymmetricForANonPlanarBoundary) {
-  // NOTES.md: the reachable H range is not symmetric for a non-planar boundary, but it is for a
+  // docs/errata.md: the reachable H range is not symmetric for a non-planar boundary, but it is for a
   // planar one (H -> -H mirrors the surface).
   auto fold = [](const TriangularNet& d, double H) {
     const auto r = solve_cmc(d, opts(H));
@@ -295,7 +295,7 @@ TEST(CmcSolver, BadInput) {
 }
 
 TEST(CmcSolver, PaperFigure1Setup) {
-  // Circle split in three arcs, degree 4 (seed 004 Fig. 1), H = -0.5, -1, -1.5: report what the
+  // Circle split in three arcs, degree 4 (triangular CMC Fig. 1), H = -0.5, -1, -1.5: report what the
   // branch from H = 0 gives (docs/cmc.md). H < 0 bulges to +z.
   const TriangularNet data = testing::circle_three_arcs(4);
   for (double H : {-0.5, -1.0, -1.5}) {

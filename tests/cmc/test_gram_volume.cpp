@@ -1,4 +1,4 @@
-// Triangular Gram matrices (seed 004 eqs. (2)-(4)) and the volume form (eqs. (5)-(7), corrected)
+// Triangular Gram matrices (triangular CMC eqs. (2)-(4)) and the volume form (eqs. (5)-(7), corrected)
 // against exact Bernstein integration, closed forms and independent quadrature.
 #include <gtest/gtest.h>
 
@@ -133,7 +133,7 @@ TEST(Volume, ClosedFormCorrectedEq5MatchesQuadrature) {
 }
 
 TEST(Volume, PrintedSignOfD13IsWrong) {
-  // With + d_13 as printed in eq. (5), V of a generic net is wrong (NOTES.md erratum).
+  // With + d_13 as printed in eq. (5), V of a generic net is wrong (docs/errata.md).
   const int n = 3;
   const auto I = triangular_multi_indices(n);
   const Eigen::MatrixX3d P = testing::random_points(TriangularNet::count(n), 4);
@@ -161,7 +161,7 @@ TEST(Volume, PrintedSignOfD13IsWrong) {
 TEST(Volume, CoordinateFormNeedsTheCyclicAverage) {
   // Prop. 3 writes V = sum S_IJK x^1_I x^2_J x^3_K. With S the cyclic average of C it is exact and
   // S has Lemma 1's symmetries; with S = C it is off by a boundary-dependent constant, which
-  // vanishes when the boundary lies in z = 0 (NOTES.md).
+  // vanishes when the boundary lies in z = 0 (docs/errata.md).
   const int n = 3;
   const auto I = triangular_multi_indices(n);
   const size_t N = I.size();

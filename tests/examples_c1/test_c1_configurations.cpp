@@ -1,4 +1,4 @@
-// examples/000-c1-configurations (seed 000 §5, Figs. IV–IX): the job files run through run_job,
+// examples/000-c1-configurations (Centella et al. §5, Figs. IV–IX): the job files run through run_job,
 // exactly as `bpde solve` runs them, and the facts README.md states about them.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// examples/000-plate-convergence (seed 000 §6): the facts its README states, from the library
+// examples/000-plate-convergence (Centella et al. §6): the facts its README states, from the library
 // function behind `bpde plate`. The 90-digit references for every (n, a) are checked in tests/c1.
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ TEST(PlateConvergence, PaperValuesAtDegrees7_9_11) {
     EXPECT_NEAR(plate(kAspects[k], 11, M::AdmissibleLoad), kPaper11[k], 5e-9) << "a = " << kAspects[k];
 }
 
-// n = 15: the paper's column is round-off corrupted (NOTES.md); ours is within 1e-4 relative of
+// n = 15: the paper's column is round-off corrupted (docs/errata.md); ours is within 1e-4 relative of
 // it but not equal to it at every aspect.
 TEST(PlateConvergence, PaperColumn15IsCloseButNotExact) {
   int differ = 0;

@@ -1,4 +1,4 @@
-// The seed-004 example jobs (examples/004-cmc-*) run through read_job_file / run_job, the path of
+// The triangular CMC example jobs (examples/004-cmc-*) run through read_job_file / run_job, the path of
 // `bpde solve`: they converge (or stop at the documented fold), and their key numbers hold against
 // independent truths (Enneper's surface, the sphere, symmetries) and the values in the READMEs.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Extremals of quadratic energies against independent truths: polynomial reproduction (bilinear,
-// harmonic and biharmonic polynomials), NOTES.md (laplacian-squared vs biharmonic), energy
+// harmonic and biharmonic polynomials), docs/errata.md (laplacian-squared vs biharmonic), energy
 // minimality against perturbations, mould vs factored vs generic Bernstein path, and the errors.
 #include <gtest/gtest.h>
 
@@ -117,7 +117,7 @@ TEST(Extremal, BiharmonicPolynomialWithC1DataIsTheExtremalOfBothFourthOrderEnerg
 }
 
 TEST(Extremal, LaplacianSquaredAndBiharmonicDifferWithOnlyTheBoundaryFixed) {
-  // NOTES.md: with C0 data the two functionals have different extremals, and neither is the
+  // docs/errata.md: with C0 data the two functionals have different extremals, and neither is the
   // biharmonic polynomial the data came from; the extremal has lower energy than that polynomial.
   const int n = 6;
   const TensorNet truth = graph_net(n, n, {{4, 0, 1.0}, {0, 4, -1.0}, {3, 1, 1.0}, {1, 3, -2.0}});

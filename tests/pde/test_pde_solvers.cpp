@@ -1,4 +1,4 @@
-// Seed 001 PDE solvers: explicit closed forms vs the Bernstein linear solve vs exact solutions.
+// Arnal–Monterde–Ugail PDE solvers: explicit closed forms vs the Bernstein linear solve vs exact solutions.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,7 +93,7 @@ TEST(PdeExplicitAndLu, RecoverExactSolutionsFromTheirBoundary) {
 }
 
 TEST(PdeExplicitAndLu, AgreeOnGenericBoundaries) {
-  // Generic data: solutions are amplified (NOTES.md), compare relative to the solution's size.
+  // Generic data: solutions are amplified (docs/errata.md), compare relative to the solution's size.
   for (const OpCase& c : operator_cases()) {
     for (int n : {4, 5, 7, 9, 11, 13}) {
       const TensorNet data = random_net(n, n, 77u + n);
@@ -121,7 +121,7 @@ TEST(PdeExplicitAndLu, SmallDegrees) {
 }
 
 TensorNet coons_patch(const TensorNet& d) {
-  // NOTES.md: x = (1-u)x(0,v) + u x(1,v) + (1-v)x(u,0) + v x(u,1) - bilinear corners, at degree n.
+  // docs/errata.md: x = (1-u)x(0,v) + u x(1,v) + (1-v)x(u,0) + v x(u,1) - bilinear corners, at degree n.
   const int n = d.n(), m = d.m();
   TensorNet out(n, m);
   for (int i = 0; i <= n; ++i)
@@ -319,7 +319,7 @@ TEST(PdeExplicit, Lemma1ClosedFormMatchesItsRecurrence) {
 }
 
 TEST(PdeExplicit, ModifiedBiharmonicExponentIsFloorKOver2) {
-  // NOTES.md: (-alpha^2)^{floor(k/2)}, not floor(l/2); the printed version is wrong from n = 7.
+  // docs/errata.md: (-alpha^2)^{floor(k/2)}, not floor(l/2); the printed version is wrong from n = 7.
   // Exact recovery above already covers it; here check directly that n = 7 and 8 are exact with
   // alpha far from 1 (where the two exponents differ most).
   for (int n : {7, 8}) {
