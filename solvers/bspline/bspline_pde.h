@@ -61,15 +61,16 @@ struct BSplinePdeOptions {
 };
 
 /// The FORMATS.md "pde" problem on B-spline nets (method "lu" only): a fourth-order operator with
-/// "boundary" data, a second-order one with "u-boundaries". No minimum degree beyond the
-/// operator's own (bspline_pde_equations).
+/// "boundary" or "boundary+adjacent" data (the prescribed points go to the right-hand side, the
+/// ranks are computed: any prescribed set works), a second-order one with "u-boundaries". No
+/// minimum degree beyond the operator's own (bspline_pde_equations).
 inline SolverRequirements bspline_pde_requirements(const EnergySpec& op) {
   SolverRequirements r;
   r.problem = "problem \"pde\"";
   r.nets = {NetKind::BSpline};
   if (op.order() == 4) {
-    r.fixed = {FixedSet::Boundary};
-    r.fixed_reason = "a fourth-order pde (" + op.name() + ") takes \"fixed\": \"boundary\"";
+    r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent};
+    r.fixed_reason = "a fourth-order pde (" + op.name() + ") on a bspline net takes \"fixed\": \"boundary\" or \"boundary+adjacent\"";
   } else {
     r.fixed = {FixedSet::UBoundaries};
     r.fixed_reason = "a second-order pde (" + op.name() + ") takes \"fixed\": \"u-boundaries\"";

@@ -288,3 +288,60 @@ TEST(Cli, OutOfMemoryExitsThreeAndWritesNothing) {
   EXPECT_EQ(err, "internal error: out of memory\n");
   EXPECT_FALSE(fs::exists(out / "result.json"));
 }
+
+namespace {
+// Control points of x = (u, v, u^2 - v^2) on the B-spline basis of degree p with knots K in both
+// directions: the Greville abscissae for u and the blossom of u^2, sum_{j<k} t_j t_k / C(p, 2),
+// over each basis function's interior knots t_{i+1..i+p} (Marsden's identity).
+std::string bspline_polynomial_net(int p, const std::vector<double>& K, std::vector<double>& z) {
+  const int n = static_cast<int>(K.size()) - p - 1;
+  std::vector<double> g(n), s(n);
+  for (int i = 0; i < n; ++i) {
+    double sum = 0, pairs = 0;
+    for (int j = 1; j <= p; ++j) {
+      sum += K[i + j];
+      for (int k = j + 1; k <= p; ++k) pairs += K[i + j] * K[i + k];
+    }
+    g[i] = sum / p;
+    s[i] = pairs / (p * (p - 1) / 2.0);
+  }
+  std::ostringstream knots, pts;
+  knots.precision(17);
+  pts.precision(17);
+  for (size_t k = 0; k < K.size(); ++k) knots << (k ? "," : "") << K[k];
+  z.clear();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      z.push_back(s[i] - s[j]);
+      pts << (i + j == 0 ? "" : ",") << "[" << g[i] << "," << g[j] << "," << s[i] - s[j] << "]";
+    }
+  return R"({"type": "bspline", "degree": [)" + std::to_string(p) + ", " + std::to_string(p) + R"(], "knots": [[)" +
+         knots.str() + "],[" + knots.str() + R"(]], "points": [)" + pts.str() + "]}";
+}
+}  // namespace
+
+TEST(Cli, BSplinePdeTakesBoundaryAdjacentData) {
+  // Biquintic, 2 x 2 spans: the outer two rings of a global biharmonic polynomial prescribed, the
+  // inner 3 x 3 control points solved for; the answer is the polynomial itself.
+  std::vector<double> z;
+  const std::string net = bspline_polynomial_net(5, {0, 0, 0, 0, 0, 0, 0.5, 1, 1, 1, 1, 1, 1}, z);
+  const fs::path out = tmpdir() / "bs_pde_c1";
+  const CmdResult r = run("solve " +
+                          write("bs_pde_c1.json", "{\"net\": " + net +
+                                                      R"(, "fixed": "boundary+adjacent", "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})")
+                              .string() +
+                          " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(out / "result.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const bpde::Json res = bpde::Json::parse(text.str());
+  const bpde::Json& rep = res["report"];
+  EXPECT_EQ(rep["converged"], true);
+  for (const char* key : {"rank", "equations", "free_parameters", "compatibility_conditions", "pde_residual"})
+    EXPECT_TRUE(rep.contains(key)) << key;
+  EXPECT_EQ(rep["free_parameters"], 0);
+  const bpde::Json& P = res["net"]["points"];
+  ASSERT_EQ(P.size(), z.size());
+  for (size_t k = 0; k < z.size(); ++k) EXPECT_NEAR(P[k][2].get<double>(), z[k], 1e-10) << k;
+}
