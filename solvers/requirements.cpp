@@ -49,7 +49,23 @@ bool degree_depends_on_fixed_set(const SolverRequirements& r, NetKind k) {
   return false;
 }
 
-std::string pair(int n, int m) { return "[" + std::to_string(n) + ", " + std::to_string(m) + "]"; }
+// "[n, m]" (appended piecewise: GCC 12 warns falsely (-Wrestrict) on "[" + std::string).
+std::string pair(int n, int m) {
+  std::string s = "[";
+  s += std::to_string(n);
+  s += ", ";
+  s += std::to_string(m);
+  s += ']';
+  return s;
+}
+
+// "\"boundary\"".
+std::string quoted(FixedSet f) {
+  std::string s = "\"";
+  s += to_string(f);
+  s += '"';
+  return s;
+}
 
 }  // namespace
 
@@ -68,7 +84,7 @@ void check_requirements(const SolverRequirements& r, const NetShape& net, FixedS
     unsupported(!r.fixed_reason.empty()
                     ? r.fixed_reason
                     : r.problem + " takes \"fixed\": " +
-                          alternatives(r.fixed, [](FixedSet f) { return "\"" + to_string(f) + "\""; }));
+                          alternatives(r.fixed, quoted));
   if (!method.empty() && std::find(r.methods.begin(), r.methods.end(), method) == r.methods.end())
     unsupported(!r.method_reason.empty()
                     ? r.method_reason

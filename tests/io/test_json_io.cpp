@@ -170,6 +170,34 @@ TEST(JsonIo, JobsAreRefusedWithTheirMessages) {
   EXPECT_EQ(message(job(t23, {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}})), "accepted");
 }
 
+// check_requirements' own messages, for requirements that give no reason of their own.
+TEST(JsonIo, RequirementsWithoutReasonsListWhatTheyTake) {
+  SolverRequirements r;
+  r.problem = "problem \"x\"";
+  r.nets = {NetKind::Tensor, NetKind::BSpline};
+  r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent};
+  r.methods = {"a", "b", "c"};
+  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 3}};
+  auto message = [&](NetShape s, FixedSet f, const std::string& method) {
+    try {
+      check_requirements(r, s, f, method, "w");
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message({NetKind::Triangular, 4, 4}, FixedSet::Boundary, ""),
+            "w: problem \"x\" needs a tensor or bspline net, not a triangular net");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 4}, FixedSet::UBoundaries, ""),
+            "w: problem \"x\" takes \"fixed\": \"boundary\" or \"boundary+adjacent\"");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 4}, FixedSet::Boundary, "d"), "w: problem \"x\" has no method \"d\" (expected a, b or c)");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 2}, FixedSet::Boundary, "a"), "w: problem \"x\" needs degrees >= 3, got [4, 2]");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 3}, FixedSet::Boundary, "a"), "accepted");
+  EXPECT_EQ(message({NetKind::Tensor, 1, 1}, FixedSet::BoundaryAdjacent, ""), "accepted");  // no minimum given
+  EXPECT_THROW(check_requirements(r, {NetKind::Tensor, 2, 2}, FixedSet::Boundary, "", "w"), DegreeError);
+  EXPECT_THROW(check_requirements(r, {NetKind::Tensor, 4, 4}, FixedSet::UBoundaries, "", "w"), UnsupportedProblem);
+}
+
 TEST(JsonIo, EnergiesAndSingularG) {
   const EnergySpec g = energy_from_json({{"name", "gnorm"}, {"G", {{1, 2}, {0, 1}}}}, "e", false);
   // columns e1 = (1, 0), e2 = (2, 1): [|e1|^2, 2<e1,e2>, |e1|^2+|e2|^2, 2<e1,e2>, |e2|^2] = [1, 4, 6, 4, 5]
