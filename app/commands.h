@@ -1,7 +1,7 @@
 #pragma once
-// The subcommands of `bpde`: each parses its input with io/, calls the library and writes.
+// The subcommands of `bpde`: each parses its input with io/, runs it through jobs/ and writes.
 // They return the process exit status (0 solved, 1 valid input without a solution) and let
-// InvalidInput (exit 2) propagate to main.
+// exceptions propagate to main (InvalidInput: exit 2; internal errors: exit 3).
 #include <optional>
 #include <string>
 

@@ -2,14 +2,14 @@
 //
 // Exit status: 0 solved; 1 valid input without a solution (result.json still written, with
 // "converged": false and a message); 2 bad input (one line `error: ...` on stderr, nothing
-// written).
+// written); 3 internal failure: out of memory or a broken invariant (one line
+// `internal error: ...` on stderr; jobs/exit_status.h).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
-#include <new>
 
 #include "app/commands.h"
-#include "core/errors.h"
+#include "jobs/exit_status.h"
 
 namespace {
 
@@ -87,15 +87,11 @@ int main(int argc, char** argv) {
     if (*plate) return cmd_plate(aspect, degree, method);
     if (*blend) return cmd_blend(in, out);
     if (*demo) return cmd_demo(demo_out);
-  } catch (const bpde::InvalidInput& e) {
-    std::fprintf(stderr, "error: %s\n", one_line(e.what()).c_str());
-    return 2;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "error: out of memory\n");
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: internal error: %s\n", one_line(e.what()).c_str());
-    return 1;
+  } catch (...) {
+    // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.
+    const bpde::ErrorExit x = bpde::error_exit(std::current_exception());
+    std::fputs(x.line.c_str(), stderr);
+    return x.code;
   }
   return 2;
 }

@@ -6,7 +6,8 @@
 // singular parameter matrix, ...) derive from bpde::InvalidInput; the command maps them to one
 // line `error: ...` and exit status 2. A valid request that has no solution (a fold in a
 // continuation, no convergence, incompatible data) is NOT an exception: solvers report it in their
-// Summary (converged = false, message), and the command exits 1.
+// Summary (converged = false, message), and the command exits 1. A broken invariant is an
+// InternalError (exit status 3).
 #include <stdexcept>
 #include <string>
 
@@ -67,6 +68,14 @@ class ParameterError : public InvalidInput {
 class UnsupportedProblem : public InvalidInput {
  public:
   using InvalidInput::InvalidInput;
+};
+
+/// A broken invariant of the library: a failure that is not the input's fault (for example a
+/// Summary whose status and `converged` disagree). NOT an InvalidInput: the command maps it, like
+/// out-of-memory, to one line `internal error: ...` and exit status 3.
+class InternalError : public Error {
+ public:
+  using Error::Error;
 };
 
 }  // namespace bpde

@@ -154,85 +154,9 @@ Problem problem_from_json(const Json& j, const std::string& path) {
   return p;
 }
 
-void validate_combination(const Job& job, const std::string& src) {
-  const std::string kind = net_kind(job.net);
-  const ProblemKind pk = job.problem.kind;
-  const FixedSet fx = job.fixed;
-  const std::string what = "problem \"" + to_string(pk) + "\"";
-  auto fail = [&](const std::string& msg) { throw UnsupportedProblem(src + ": " + msg); };
-  auto degree_fail = [&](const std::string& msg) { throw DegreeError(src + ": " + msg); };
-
-  if (kind == "triangular" && fx == FixedSet::UBoundaries)
-    fail("fixed \"u-boundaries\" is only defined for tensor nets");
-
-  // Minimum degrees for surfaces from boundary data (FORMATS.md problem table).
-  auto min_degree_check = [&]() {
-    if (kind == "tensor" || kind == "bspline") {
-      int n, m;
-      if (kind == "tensor") {
-        n = std::get<TensorNet>(job.net).n();
-        m = std::get<TensorNet>(job.net).m();
-      } else {
-        n = std::get<BSplineNet>(job.net).p();
-        m = std::get<BSplineNet>(job.net).q();
-      }
-      const int need = fx == FixedSet::BoundaryAdjacent ? 4 : 2;
-      if (n < need || m < need)
-        degree_fail(what + " on a " + kind + " net with " + to_string(fx) + " data needs degrees >= " +
-                    std::to_string(need) + ", got [" + std::to_string(n) + ", " + std::to_string(m) + "]");
-    } else {
-      const int n = std::get<TriangularNet>(job.net).n();
-      const int need = fx == FixedSet::BoundaryAdjacent ? 6 : 3;
-      if (n < need)
-        degree_fail(what + " on a triangular net with " + to_string(fx) + " data needs degree >= " +
-                    std::to_string(need) + ", got " + std::to_string(n));
-    }
-  };
-
-  switch (pk) {
-    case ProblemKind::Extremal: min_degree_check(); break;
-    case ProblemKind::Pde: {
-      const EnergySpec& e = *job.problem.energy;
-      if (kind == "triangular") fail("problem \"pde\" needs a tensor or bspline net, not a triangular net");
-      if (kind == "bspline" && job.problem.method == PdeMethod::Explicit)
-        fail("problem \"pde\" on a bspline net has no explicit method; use \"method\": \"lu\"");
-      if (e.order() == 4 && fx != FixedSet::Boundary)
-        fail("a fourth-order pde (" + e.name() + ") takes \"fixed\": \"boundary\"");
-      if (e.order() == 2 && fx != FixedSet::UBoundaries)
-        fail("a second-order pde (" + e.name() + ") takes \"fixed\": \"u-boundaries\"");
-      if (e.order() == 2 && job.problem.method == PdeMethod::Explicit)
-        fail("the second-order pde has no explicit method (Arnal-Monterde-Ugail); use \"method\": \"lu\"");
-      if (e.order() == 4 && job.problem.method == PdeMethod::Explicit && !e.has_explicit_solution())
-        fail("operator " + e.name() +
-             " has no explicit solution (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified "
-             "biharmonic and G-norm operators); use \"method\": \"lu\"");
-      if (kind == "tensor") {
-        const auto& t = std::get<TensorNet>(job.net);
-        if (t.n() < 2 || t.m() < 2)
-          degree_fail("problem \"pde\" needs degrees >= 2, got [" + std::to_string(t.n()) + ", " + std::to_string(t.m()) + "]");
-      }
-      break;
-    }
-    case ProblemKind::Tetraharmonic:
-    case ProblemKind::BiharmonicLoad: {
-      if (kind != "tensor") fail(what + " needs a tensor net, not a " + kind + " net");
-      if (fx != FixedSet::BoundaryAdjacent) fail(what + " takes C1 data: \"fixed\": \"boundary+adjacent\"");
-      const auto& t = std::get<TensorNet>(job.net);
-      if (t.n() != t.m()) degree_fail(what + " needs n = m, got [" + std::to_string(t.n()) + ", " + std::to_string(t.m()) + "]");
-      if (t.n() < 4) degree_fail(what + " needs n = m >= 4, got " + std::to_string(t.n()));
-      break;
-    }
-    case ProblemKind::CmcH:
-    case ProblemKind::CmcV:
-      if (kind == "bspline") fail("problem \"cmc\" needs a triangular or tensor net, not a bspline net");
-      min_degree_check();
-      break;
-  }
-}
-
 }  // namespace
 
-Job job_from_json(const Json& j, const std::string& source) {
+Job parse_job(const Json& j, const std::string& source) {
   using namespace json_read;
   check_keys(j, source, {"net", "fixed", "problem", "samples"});
   Job job{net_from_json(field(j, source, "net"), source + ".net"), FixedSet::Boundary, {}, 50};
@@ -244,10 +168,9 @@ Job job_from_json(const Json& j, const std::string& source) {
       throw ParameterError(source + ".samples: must be in 1.." + std::to_string(kMaxSamples) + ", got " +
                            std::to_string(job.samples));
   }
-  validate_combination(job, source);
   return job;
 }
 
-Job read_job_file(const std::string& path) { return job_from_json(read_json_file(path), path); }
+Job parse_job_file(const std::string& path) { return parse_job(read_json_file(path), path); }
 
 }  // namespace bpde

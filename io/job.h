@@ -1,6 +1,7 @@
 #pragma once
-// Jobs of `bpde solve` (FORMATS.md "Jobs"): parsed and validated completely before anything runs,
-// so that bad input (exit 2) never leaves files behind.
+// Jobs of `bpde solve` (FORMATS.md "Jobs"): the file format. The job layer (jobs/run_job.h) adds
+// the validation against the solvers' requirements, so that bad input (exit 2) is rejected before
+// anything runs and never leaves files behind.
 #include <optional>
 #include <string>
 
@@ -42,10 +43,11 @@ EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_o
 /// The `--energy` argument of `bpde energy`: a bare name or an ENERGY JSON object.
 EnergySpec energy_from_argument(const std::string& arg);
 
-/// Parse and validate a whole job: the net, the fixed set, the problem, and their combination
-/// (net kinds, fixed sets and minimum degrees of the FORMATS.md problem table). Throws
-/// InvalidInput subclasses naming the JSON path.
-Job job_from_json(const Json& j, const std::string& source = "job");
-Job read_job_file(const std::string& path);
+/// Parse a whole job: the net, the fixed set, the problem (each field strictly, as FORMATS.md
+/// says). Throws InvalidInput subclasses naming the JSON path. Whether the solvers take the
+/// combination of net, fixed set and problem is checked by the job layer against the solvers'
+/// requirements: use job_from_json / read_job_file of jobs/run_job.h, which parse and validate.
+Job parse_job(const Json& j, const std::string& source = "job");
+Job parse_job_file(const std::string& path);
 
 }  // namespace bpde

@@ -1,8 +1,10 @@
-// Dispatch of a validated job to the library's solvers (FORMATS.md problem table), and the
-// report each one writes. The combination of net, fixed set and problem was already checked by
-// io/job.cpp; the solvers check their own preconditions again and throw InvalidInput.
-#include <chrono>
+// The problem table of the job layer: for each problem kind and net kind, the solver that runs it
+// and that solver's requirements (declared next to its Options, solvers/requirements.h). The same
+// table validates a job when it is read (validate_job) and dispatches it (run_job); the solvers
+// check their own preconditions again and throw InvalidInput. Also the report each solver writes.
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "jobs/run_job.h"
 
@@ -26,6 +28,7 @@
 #include "solvers/pde/pde_explicit.h"
 #include "solvers/pde/pde_lu.h"
 #include "solvers/pde/pde_residual.h"
+#include "solvers/requirements.h"
 
 namespace bpde {
 namespace {
@@ -76,27 +79,29 @@ Json base_report(const Job& job, const Summary& s) {
   return r;
 }
 
+// The outcome of a solve with its base report; the status is checked against the Summary contract.
+SolveOutcome outcome(const Job& job, Net net, const Summary& s) {
+  const Status status = checked_status(s);
+  return SolveOutcome{std::move(net), base_report(job, s), Json::object(), status == Status::Converged, status};
+}
+
 // Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 SolveOutcome tensor_extremal(const Job& job, const TensorNet& net) {
   const EnergySpec& e = *job.problem.energy;
   const ExtremalResult r = solve_extremal(net, e, job.fixed);
-  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["energy"] = finite_or_null(r.energy);
   out.report["energy_name"] = e.name();
   if (e.order() == 4 || e.order() == 2) out.report["pde_residual"] = finite_or_null(pde_residual(r.net, e, job.samples));
   return out;
 }
 
-SolveOutcome tensor_pde(const Job& job, const TensorNet& net) {
+// The tensor PDE solvers share their report.
+SolveOutcome tensor_pde_outcome(const Job& job, const PdeSolution& sol) {
   const EnergySpec& e = *job.problem.energy;
-  PdeSolution sol = [&]() {
-    if (job.fixed == FixedSet::UBoundaries) return solve_harmonic_pde(net, e);
-    if (job.problem.method == PdeMethod::Explicit) return solve_pde_explicit(net, e);
-    return solve_pde_lu(net, e);
-  }();
-  SolveOutcome out{sol.net, base_report(job, sol.summary), Json::object(), sol.summary.converged};
+  SolveOutcome out = outcome(job, sol.net, sol.summary);
   out.report["method"] = to_string(job.problem.method);
   out.report["energy"] = finite_or_null(energy_value(sol.net, e));
   out.report["energy_name"] = e.name();
@@ -104,18 +109,31 @@ SolveOutcome tensor_pde(const Job& job, const TensorNet& net) {
   return out;
 }
 
+SolveOutcome harmonic(const Job& job, const TensorNet& net) {
+  return tensor_pde_outcome(job, solve_harmonic_pde(net, *job.problem.energy));
+}
+SolveOutcome pde_explicit(const Job& job, const TensorNet& net) {
+  return tensor_pde_outcome(job, solve_pde_explicit(net, *job.problem.energy));
+}
+SolveOutcome pde_lu(const Job& job, const TensorNet& net) {
+  return tensor_pde_outcome(job, solve_pde_lu(net, *job.problem.energy));
+}
+
 SolveOutcome triangular_extremal(const Job& job, const TriangularNet& net) {
   const EnergySpec& e = *job.problem.energy;
-  const auto t0 = std::chrono::steady_clock::now();
-  const ExtremalSolver solver(triangular_gram(net.n(), e), net.fixed_indices(job.fixed));
   Summary s;
-  const TriangularNet x(net.n(), solver.solve(net.points()));
-  s.residual = solver.reduced_residual(net.points());
-  s.converged = s.residual <= 1e-11;
-  if (!s.converged) s.message = "optimality residual " + std::to_string(s.residual) + " above 1e-11";
-  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  SolveOutcome out{x, base_report(job, s), Json::object(), s.converged};
-  out.report["energy"] = finite_or_null(solver.extremal_energy(net.points()));
+  std::optional<ExtremalSolver> solver;
+  std::optional<TriangularNet> x;
+  {
+    ScopedTimer timer(s.seconds);
+    solver.emplace(triangular_gram(net.n(), e), net.fixed_indices(job.fixed));
+    x.emplace(net.n(), solver->solve(net.points()));
+    s.residual = solver->reduced_residual(net.points());
+  }
+  s.finish(s.residual <= kConvergenceTolerance, Status::NumericalLimit,
+           [&] { return "optimality residual " + std::to_string(s.residual) + " above 1e-11"; });
+  SolveOutcome out = outcome(job, *x, s);
+  out.report["energy"] = finite_or_null(solver->extremal_energy(net.points()));
   out.report["energy_name"] = e.name();
   return out;
 }
@@ -130,7 +148,7 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   else
     o.H = job.problem.H;
   const CmcResult<NetT> r = solve_cmc(net, o);
-  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["solver"] = to_string(o.solver);
   out.report["energy"] = finite_or_null(r.DH);
   out.report["D"] = finite_or_null(r.D);
@@ -152,7 +170,7 @@ SolveOutcome tetraharmonic(const Job& job, const TensorNet& net) {
   o.method = job.problem.method == PdeMethod::Explicit ? TetraharmonicOptions::Method::Explicit
                                                         : TetraharmonicOptions::Method::LU;
   const TetraharmonicResult r = solve_tetraharmonic(net, o);
-  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["method"] = to_string(job.problem.method);
   out.report["energy"] = nullptr;
   out.report["pde_residual"] = finite_or_null(pde_residual(r.net, tetraharmonic_terms(), job.samples));
@@ -161,7 +179,7 @@ SolveOutcome tetraharmonic(const Job& job, const TensorNet& net) {
 
 SolveOutcome biharmonic_load(const Job& job, const TensorNet& net) {
   const BiharmonicLoadResult r = solve_biharmonic_load(net);
-  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["energy"] = nullptr;
   out.extra["load"] = net_to_json(r.load);
   return out;
@@ -172,7 +190,7 @@ SolveOutcome bspline_extremal(const Job& job, const BSplineNet& net) {
   BSplineExtremalOptions o;
   o.fixed = job.fixed;
   const BSplineExtremalResult r = solve_bspline_extremal(net, e, o);
-  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["energy"] = finite_or_null(r.energy);
   out.report["energy_name"] = e.name();
   out.report["pde_residual"] = finite_or_null(bspline_pde_residual(r.net, e, job.samples));
@@ -184,7 +202,7 @@ SolveOutcome bspline_pde(const Job& job, const BSplineNet& net) {
   BSplinePdeOptions o;
   o.fixed = job.fixed;
   const BSplinePdeResult r = solve_bspline_pde(net, e, o);
-  SolveOutcome out{r.net, base_report(job, r.summary), Json::object(), r.summary.converged};
+  SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["method"] = "lu";
   out.report["energy"] = finite_or_null(r.energy);
   out.report["energy_name"] = e.name();
@@ -197,29 +215,118 @@ SolveOutcome bspline_pde(const Job& job, const BSplineNet& net) {
   return out;
 }
 
+// ---------------------------------------------------------------- the problem table
+
+// A solver as the job layer runs it: its requirements for this problem and the run function.
+struct Solver {
+  SolverRequirements requirements;
+  SolveOutcome (*run)(const Job&);
+};
+
+template <class NetT, SolveOutcome (*F)(const Job&, const NetT&)>
+SolveOutcome on(const Job& job) {
+  return F(job, std::get<NetT>(job.net));
+}
+
+// One row per problem kind and net kind. `select` picks the solver from the problem (operator
+// order, method): the same choice for validation and for the run.
+struct Route {
+  ProblemKind problem;
+  NetKind net;
+  Solver (*select)(const Problem&);
+};
+
+Solver select_tensor_pde(const Problem& p) {
+  const EnergySpec& e = *p.energy;
+  if (e.order() == 2) return {harmonic_pde_requirements(e), on<TensorNet, harmonic>};
+  if (p.method == PdeMethod::Explicit) return {pde_explicit_requirements(e), on<TensorNet, pde_explicit>};
+  return {pde_lu_requirements(e), on<TensorNet, pde_lu>};
+}
+
+const Route kRoutes[] = {
+    {ProblemKind::Extremal, NetKind::Tensor,
+     [](const Problem&) { return Solver{extremal_requirements(), on<TensorNet, tensor_extremal>}; }},
+    {ProblemKind::Extremal, NetKind::Triangular,
+     [](const Problem&) { return Solver{extremal_requirements(), on<TriangularNet, triangular_extremal>}; }},
+    {ProblemKind::Extremal, NetKind::BSpline,
+     [](const Problem&) { return Solver{bspline_extremal_requirements(), on<BSplineNet, bspline_extremal>}; }},
+    {ProblemKind::Pde, NetKind::Tensor, select_tensor_pde},
+    {ProblemKind::Pde, NetKind::BSpline,
+     [](const Problem& p) { return Solver{bspline_pde_requirements(*p.energy), on<BSplineNet, bspline_pde>}; }},
+    {ProblemKind::Tetraharmonic, NetKind::Tensor,
+     [](const Problem&) { return Solver{tetraharmonic_requirements(), on<TensorNet, tetraharmonic>}; }},
+    {ProblemKind::BiharmonicLoad, NetKind::Tensor,
+     [](const Problem&) { return Solver{biharmonic_load_requirements(), on<TensorNet, biharmonic_load>}; }},
+    {ProblemKind::CmcH, NetKind::Triangular,
+     [](const Problem&) { return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>}; }},
+    {ProblemKind::CmcH, NetKind::Tensor,
+     [](const Problem&) { return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>}; }},
+    {ProblemKind::CmcV, NetKind::Triangular,
+     [](const Problem&) { return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>}; }},
+    {ProblemKind::CmcV, NetKind::Tensor,
+     [](const Problem&) { return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>}; }},
+};
+
+// The method name a problem chooses ("" when it has no choice of method).
+std::string method_name(const Problem& p) {
+  switch (p.kind) {
+    case ProblemKind::Pde:
+    case ProblemKind::Tetraharmonic: return to_string(p.method);
+    case ProblemKind::CmcH:
+    case ProblemKind::CmcV: return to_string(p.solver);
+    case ProblemKind::Extremal:
+    case ProblemKind::BiharmonicLoad: return "";
+  }
+  return "";
+}
+
+// The solver of the job, its requirements checked.
+Solver checked_solver(const Job& job, const std::string& where) {
+  const NetShape shape = net_shape(job.net);
+  SolverRequirements no_solver;  // the problem's net kinds, for the message when none fits
+  no_solver.problem = "problem \"" + to_string(job.problem.kind) + "\"";
+  for (const Route& r : kRoutes) {
+    if (r.problem != job.problem.kind) continue;
+    if (r.net == shape.kind) {
+      Solver s = r.select(job.problem);
+      check_requirements(s.requirements, shape, job.fixed, method_name(job.problem), where);
+      return s;
+    }
+    no_solver.nets.push_back(r.net);
+  }
+  check_requirements(no_solver, shape, job.fixed, "", where);  // throws UnsupportedProblem
+  throw InternalError("job: no solver for problem \"" + to_string(job.problem.kind) + "\"");
+}
+
 }  // namespace
 
-SolveOutcome run_job(const Job& job) {
-  const ProblemKind k = job.problem.kind;
-  const bool is_cmc = k == ProblemKind::CmcH || k == ProblemKind::CmcV;
-  if (const auto* t = std::get_if<TensorNet>(&job.net)) {
-    if (k == ProblemKind::Extremal) return tensor_extremal(job, *t);
-    if (k == ProblemKind::Pde) return tensor_pde(job, *t);
-    if (is_cmc) return cmc(job, *t);
-    if (k == ProblemKind::Tetraharmonic) return tetraharmonic(job, *t);
-    if (k == ProblemKind::BiharmonicLoad) return biharmonic_load(job, *t);
-  }
-  if (const auto* t = std::get_if<TriangularNet>(&job.net)) {
-    if (k == ProblemKind::Extremal) return triangular_extremal(job, *t);
-    if (is_cmc) return cmc(job, *t);
-  }
-  if (const auto* b = std::get_if<BSplineNet>(&job.net)) {
-    if (k == ProblemKind::Extremal) return bspline_extremal(job, *b);
-    if (k == ProblemKind::Pde) return bspline_pde(job, *b);
-  }
-  throw UnsupportedProblem("problem \"" + to_string(k) + "\" on a " + net_kind(job.net) +
-                           " net: this solver is not available in this build yet");
+NetShape net_shape(const Net& net) {
+  if (const auto* t = std::get_if<TensorNet>(&net)) return {NetKind::Tensor, t->n(), t->m()};
+  if (const auto* t = std::get_if<TriangularNet>(&net)) return {NetKind::Triangular, t->n(), t->n()};
+  const auto& b = std::get<BSplineNet>(net);
+  return {NetKind::BSpline, b.p(), b.q()};
 }
+
+void validate_job(const Job& job, const std::string& where) { checked_solver(job, where); }
+
+Job job_from_json(const Json& j, const std::string& source) {
+  Job job = parse_job(j, source);
+  validate_job(job, source);
+  return job;
+}
+
+Job read_job_file(const std::string& path) { return job_from_json(read_json_file(path), path); }
+
+Status checked_status(const Summary& s) {
+  if (s.converged != (s.status == Status::Converged)) {
+    // Every solver sets both through Summary::set_converged / set_failed: a disagreement is a bug.
+    throw InternalError(std::string("solver summary: status \"") + to_string(s.status) + "\" with converged = " +
+                        (s.converged ? "true" : "false"));
+  }
+  return s.status;
+}
+
+SolveOutcome run_job(const Job& job) { return checked_solver(job, "job").run(job); }
 
 void make_output_dir(const std::string& dir) {
   std::error_code ec;
@@ -237,8 +344,8 @@ Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }
 
 // result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
 // statistics and the CGAL figures unless the solver already set them.
-int write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                 const Json& extra, bool converged) {
+WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
+                           const Json& extra, Status status) {
   if (!report.contains("mean_curvature")) report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
   if (!report.contains("check")) report["check"] = check_report(mesh);
   Json result = {{"net", net_to_json(net)}, {"report", report}};
@@ -246,12 +353,16 @@ int write_result(const std::string& dir, const Net& net, const TriangleMesh& mes
   make_output_dir(dir);
   write_json_file(dir + "/result.json", result);
   write_surface_files(dir, net, mesh);
-  return converged ? 0 : 1;
+  return {std::move(result), exit_code(status)};
+}
+
+WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out) {
+  const TriangleMesh mesh = sample_net(out.net, job.samples);
+  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status);
 }
 
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {
-  const TriangleMesh mesh = sample_net(out.net, job.samples);
-  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.converged);
+  return write_job_result(dir, job, out).exit_code;
 }
 
 }  // namespace bpde

@@ -1,28 +1,55 @@
 #pragma once
-// Run a validated job (FORMATS.md "Jobs") and write its results: the library entry point behind
+// Run a job (FORMATS.md "Jobs") and write its results: the library entry point behind
 // `bpde solve`, usable from C++ directly.
 //
 //   bpde::Job job = bpde::read_job_file("job.json");    // throws InvalidInput on bad input
 //   bpde::SolveOutcome out = bpde::run_job(job);         // no files written
 //   int status = bpde::write_outcome("out/dir", job, out); // 0 solved, 1 no solution
+//
+// One table (jobs/run_job.cpp) maps each problem kind and net kind to the solver that runs it and
+// to that solver's requirements (solvers/requirements.h, declared next to each solver's Options).
+// The same table validates a job when it is read and dispatches it when it runs.
 #include <string>
 
 #include "core/mesh.h"
 #include "io/job.h"
+#include "solvers/requirements.h"
+#include "solvers/summary.h"
 
 namespace bpde {
 
+/// Parse (io/job.h) and validate (validate_job) a job. Throws InvalidInput subclasses naming the
+/// JSON path or the file; nothing has run when it throws.
+Job job_from_json(const Json& j, const std::string& source = "job");
+Job read_job_file(const std::string& path);
+
+/// Check the combination of net, fixed set and problem against the requirements of the solver
+/// that would run it (UnsupportedProblem, DegreeError; messages start with `where: `).
+void validate_job(const Job& job, const std::string& where = "job");
+
+/// The kind and degrees of a net.
+NetShape net_shape(const Net& net);
+
 /// What a solve produced: the net, the report object (FORMATS.md "Results"), extra top-level
-/// result fields (e.g. {"load": NET} for biharmonic-load) and whether it converged.
+/// result fields (e.g. {"load": NET} for biharmonic-load) and how it ended.
 struct SolveOutcome {
   Net net;
   Json report = Json::object();
   Json extra = Json::object();
+  /// status == Status::Converged (the exit code follows it).
   bool converged = true;
+  Status status = Status::Converged;
 };
 
-/// Run a validated job. Throws InvalidInput for problems the solvers reject; a valid problem
-/// without a solution returns converged = false with report["message"].
+/// The status of a solver's Summary, checked against its contract (solvers/summary.h): a
+/// Converged status with converged = false, or the reverse, is a broken invariant (InternalError).
+Status checked_status(const Summary& s);
+
+/// The exit code of the command for a status: 0 for Converged, else 1 (FORMATS.md).
+inline int exit_code(Status s) { return s == Status::Converged ? 0 : 1; }
+
+/// Validate (validate_job) and run a job. Throws InvalidInput for problems the solvers reject; a
+/// valid problem without a solution returns a non-Converged status with report["message"].
 SolveOutcome run_job(const Job& job);
 
 /// Mean-curvature statistics {min, max, mean, count} of a sampled net, away from the corners
@@ -35,12 +62,20 @@ Json check_report(const TriangleMesh& mesh);
 /// Create DIR with its parents (FileError if that fails).
 void make_output_dir(const std::string& dir);
 
+/// What was written: the whole result.json object and the exit code.
+struct WrittenResult {
+  Json result;
+  int exit_code = 0;
+};
+
 /// Write DIR/result.json and surface.obj, surface.ply, net.obj (DIR created with its parents).
-/// The report gains `mean_curvature` and `check` unless already present. Returns 0 if converged,
-/// else 1.
-int write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                 const Json& extra, bool converged);
+/// The report gains `mean_curvature` and `check` unless already present. The exit code is
+/// exit_code(status).
+WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
+                           const Json& extra, Status status);
 /// write_result for a job's outcome, sampled at job.samples.
+WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out);
+/// write_job_result's exit code: 0 if converged, else 1.
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out);
 
 }  // namespace bpde

@@ -32,6 +32,7 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -50,6 +51,20 @@ struct ExtremalOptions {
   /// Throws ParameterError naming the bad field.
   void validate() const;
 };
+
+/// The FORMATS.md "extremal" problem on tensor nets (the tensor constructor) and triangular nets
+/// (the generic constructor with the triangular Gram matrix): any fixed set the net defines;
+/// tensor n, m >= 2 with C0 data and >= 4 with C1 data, triangular n >= 3 and >= 6.
+inline SolverRequirements extremal_requirements() {
+  SolverRequirements r;
+  r.problem = "problem \"extremal\"";
+  r.nets = {NetKind::Tensor, NetKind::Triangular};
+  r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
+  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 2},     {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4},
+                   {NetKind::Tensor, FixedSet::UBoundaries, 2},  {NetKind::Triangular, FixedSet::Boundary, 3},
+                   {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6}};
+  return r;
+}
 
 class ExtremalSolver {
  public:

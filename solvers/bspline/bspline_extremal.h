@@ -26,6 +26,7 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/bspline_net.h"
 
 namespace bpde {
@@ -50,6 +51,19 @@ struct BSplineExtremalOptions {
   /// Throws ParameterError if tolerance is not in (0, 1).
   void validate() const;
 };
+
+/// The FORMATS.md "extremal" problem on B-spline nets: any fixed set; degrees p, q >= 2 with C0
+/// data and >= 4 with C1 data.
+inline SolverRequirements bspline_extremal_requirements() {
+  SolverRequirements r;
+  r.problem = "problem \"extremal\"";
+  r.nets = {NetKind::BSpline};
+  r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
+  r.min_degrees = {{NetKind::BSpline, FixedSet::Boundary, 2},
+                   {NetKind::BSpline, FixedSet::BoundaryAdjacent, 4},
+                   {NetKind::BSpline, FixedSet::UBoundaries, 2}};
+  return r;
+}
 
 struct BSplineExtremalResult {
   BSplineNet net;   ///< the input net with its free points replaced by the extremal's

@@ -33,6 +33,7 @@
 #include "energies/energy_spec.h"
 #include "solvers/pde/pde_residual.h"
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/bspline_net.h"
 
 namespace bpde {
@@ -52,6 +53,26 @@ struct BSplinePdeOptions {
   /// Throws ParameterError unless both tolerances are in (0, 1).
   void validate() const;
 };
+
+/// The FORMATS.md "pde" problem on B-spline nets (method "lu" only): a fourth-order operator with
+/// "boundary" or "boundary+adjacent" data (the prescribed points go to the right-hand side, the
+/// ranks are computed: any prescribed set works), a second-order one with "u-boundaries". No
+/// minimum degree beyond the operator's own (bspline_pde_equations).
+inline SolverRequirements bspline_pde_requirements(const EnergySpec& op) {
+  SolverRequirements r;
+  r.problem = "problem \"pde\"";
+  r.nets = {NetKind::BSpline};
+  if (op.order() == 4) {
+    r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent};
+    r.fixed_reason = "a fourth-order pde (" + op.name() + ") on a bspline net takes \"fixed\": \"boundary\" or \"boundary+adjacent\"";
+  } else {
+    r.fixed = {FixedSet::UBoundaries};
+    r.fixed_reason = "a second-order pde (" + op.name() + ") takes \"fixed\": \"u-boundaries\"";
+  }
+  r.methods = {"lu"};
+  r.method_reason = "problem \"pde\" on a bspline net has no explicit method; use \"method\": \"lu\"";
+  return r;
+}
 
 struct BSplinePdeResult {
   BSplineNet net;               ///< the solution (or the input net unchanged when converged = false)

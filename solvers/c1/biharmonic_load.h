@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -38,6 +39,18 @@ struct BiharmonicLoadOptions {
   /// No tunable parameter today; kept for the uniform solver interface.
   void validate() const {}
 };
+
+/// The FORMATS.md "biharmonic-load" problem: tensor nets, C1 data, n = m >= 4.
+inline SolverRequirements biharmonic_load_requirements() {
+  SolverRequirements r;
+  r.problem = "problem \"biharmonic-load\"";
+  r.nets = {NetKind::Tensor};
+  r.fixed = {FixedSet::BoundaryAdjacent};
+  r.fixed_reason = r.problem + " takes C1 data: \"fixed\": \"boundary+adjacent\"";
+  r.square = true;
+  r.min_degrees = {{NetKind::Tensor, FixedSet::BoundaryAdjacent, 4}};
+  return r;
+}
 
 struct BiharmonicLoadResult {
   TensorNet net;   ///< degree (n,n); outer two rings copied from the data

@@ -26,6 +26,7 @@
 #include <string>
 
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -35,6 +36,19 @@ struct TetraharmonicOptions {
   Method method = Method::LU;  ///< default LU (FORMATS.md "method" defaults to "lu")
   void validate() const;       ///< throws ParameterError for a method value out of the enum
 };
+
+/// The FORMATS.md "tetraharmonic" problem: tensor nets, C1 data, n = m >= 4; methods explicit, lu.
+inline SolverRequirements tetraharmonic_requirements() {
+  SolverRequirements r;
+  r.problem = "problem \"tetraharmonic\"";
+  r.nets = {NetKind::Tensor};
+  r.fixed = {FixedSet::BoundaryAdjacent};
+  r.fixed_reason = r.problem + " takes C1 data: \"fixed\": \"boundary+adjacent\"";
+  r.square = true;
+  r.min_degrees = {{NetKind::Tensor, FixedSet::BoundaryAdjacent, 4}};
+  r.methods = {"explicit", "lu"};
+  return r;
+}
 
 /// "explicit" or "lu" -> Method; anything else throws ParameterError naming the value.
 TetraharmonicOptions::Method parse_tetraharmonic_method(const std::string& name);

@@ -33,6 +33,7 @@
 
 #include "core/fixed_set.h"
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/tensor_net.h"
 #include "triangular/triangular_net.h"
 
@@ -57,6 +58,21 @@ struct CmcOptions {
   /// UnsupportedProblem (V mode with a solver other than nlopt).
   void validate() const;
 };
+
+/// The FORMATS.md "cmc" problem: triangular or tensor nets, any fixed set the net defines;
+/// triangular n >= 3 with C0 data and >= 6 with C1 data, tensor n, m >= 2 and >= 4; solvers
+/// newton, ceres, nlopt (the V form: nlopt only, CmcOptions::validate).
+inline SolverRequirements cmc_requirements() {
+  SolverRequirements r;
+  r.problem = "problem \"cmc\"";
+  r.nets = {NetKind::Triangular, NetKind::Tensor};
+  r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
+  r.min_degrees = {{NetKind::Triangular, FixedSet::Boundary, 3}, {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6},
+                   {NetKind::Tensor, FixedSet::Boundary, 2},     {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4},
+                   {NetKind::Tensor, FixedSet::UBoundaries, 2}};
+  r.methods = {"newton", "ceres", "nlopt"};
+  return r;
+}
 
 template <class Net>
 struct CmcResult {

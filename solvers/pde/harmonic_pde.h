@@ -18,9 +18,28 @@
 // FixedSet::UBoundaries); use a PdeMould directly to solve many data sets of one degree.
 #include "energies/energy_spec.h"
 #include "solvers/pde/pde_lu.h"
+#include "solvers/requirements.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
+
+/// The FORMATS.md "pde" problem for a second-order operator on tensor nets (method "lu" only):
+/// "u-boundaries" data, degrees n, m >= 2.
+inline SolverRequirements harmonic_pde_requirements(const EnergySpec& op) {
+  SolverRequirements r;
+  r.problem = "problem \"pde\"";
+  r.nets = {NetKind::Tensor};
+  if (op.order() == 2) {
+    r.fixed = {FixedSet::UBoundaries};
+    r.fixed_reason = "a second-order pde (" + op.name() + ") takes \"fixed\": \"u-boundaries\"";
+  } else {
+    r.fixed_reason = "a fourth-order pde (" + op.name() + ") takes \"fixed\": \"boundary\"";
+  }
+  r.min_degrees = {{NetKind::Tensor, FixedSet::UBoundaries, 2}};
+  r.methods = {"lu"};
+  r.method_reason = "the second-order pde has no explicit method (Arnal-Monterde-Ugail); use \"method\": \"lu\"";
+  return r;
+}
 
 /// Solve a x_uu + b x_uv + c x_vv = 0 from rows i = 0 and i = n of `data` (its other points are
 /// ignored). `op` must be second order (dirichlet or second-order; else UnsupportedProblem) with

@@ -35,6 +35,7 @@
 #include "energies/energy_spec.h"
 #include "solvers/pde/pde_lu.h"  // PdeSolution
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -48,6 +49,30 @@ struct PdeExplicitOptions {
   /// Throws ParameterError unless both are finite and in (0, 1).
   void validate() const;
 };
+
+/// The FORMATS.md "pde" problem with method "explicit": tensor nets with n = m >= 2, a
+/// fourth-order operator with a closed form (EnergySpec::has_explicit_solution) and "boundary"
+/// data; for other operators the method is refused with a message suggesting "lu".
+inline SolverRequirements pde_explicit_requirements(const EnergySpec& op) {
+  SolverRequirements r;
+  r.problem = "problem \"pde\"";
+  r.nets = {NetKind::Tensor};
+  if (op.order() == 4) {
+    r.fixed = {FixedSet::Boundary};
+    r.fixed_reason = "a fourth-order pde (" + op.name() + ") takes \"fixed\": \"boundary\"";
+  } else {
+    r.fixed_reason = "a second-order pde (" + op.name() + ") takes \"fixed\": \"u-boundaries\"";
+  }
+  r.square = true;
+  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 2}};
+  if (op.order() == 4 && op.has_explicit_solution())
+    r.methods = {"explicit"};
+  else
+    r.method_reason = "operator " + op.name() +
+                      " has no explicit solution (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified "
+                      "biharmonic and G-norm operators); use \"method\": \"lu\"";
+  return r;
+}
 
 /// Which closed form applies, and its normalised parameters.
 struct ExplicitOperator {

@@ -38,6 +38,7 @@
 #include "energies/energy_spec.h"
 #include "solvers/pde/pde_residual.h"
 #include "solvers/summary.h"
+#include "solvers/requirements.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -58,6 +59,23 @@ struct PdeLuOptions {
   /// Throws ParameterError unless both tolerances are finite and in (0, 1).
   void validate() const;
 };
+
+/// The FORMATS.md "pde" problem with method "lu" on tensor nets (solve_pde_lu): a fourth-order
+/// operator with "boundary" data, degrees n, m >= 2. (Second-order operators: harmonic_pde.h.)
+inline SolverRequirements pde_lu_requirements(const EnergySpec& op) {
+  SolverRequirements r;
+  r.problem = "problem \"pde\"";
+  r.nets = {NetKind::Tensor};
+  if (op.order() == 4) {
+    r.fixed = {FixedSet::Boundary};
+    r.fixed_reason = "a fourth-order pde (" + op.name() + ") takes \"fixed\": \"boundary\"";
+  } else {
+    r.fixed_reason = "a second-order pde (" + op.name() + ") takes \"fixed\": \"u-boundaries\"";
+  }
+  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 2}};
+  r.methods = {"lu"};
+  return r;
+}
 
 /// A net and how it was obtained.
 struct PdeSolution {

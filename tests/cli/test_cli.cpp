@@ -7,8 +7,15 @@
 #include <unistd.h>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
+
+#include "core/errors.h"
+#include "jobs/exit_status.h"
+#include "jobs/run_job.h"
 
 namespace fs = std::filesystem;
 
@@ -232,4 +239,109 @@ TEST(Cli, BSplineJobs) {
   expect_bad_input("solve " + write("bs_exp.json", "{\"net\": " + net + R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}, "method": "explicit"}})").string() +
                        " --out " + (tmpdir() / "bs_exp").string(),
                    "explicit");
+}
+
+TEST(Cli, InternalFailuresExitThreeWithOneLine) {
+  // The mapping main applies to what escapes a command (jobs/exit_status.h, FORMATS.md exit 3).
+  static_assert(!std::is_base_of_v<bpde::InvalidInput, bpde::InternalError>, "a broken invariant is not bad input");
+  auto exit_of = [](auto e) { return bpde::error_exit(std::make_exception_ptr(e)); };
+  bpde::ErrorExit x = exit_of(bpde::InternalError("summary: status \"converged\" with converged = false"));
+  EXPECT_EQ(x.code, 3);
+  EXPECT_EQ(x.line, "internal error: summary: status \"converged\" with converged = false\n");
+  x = exit_of(std::bad_alloc());
+  EXPECT_EQ(x.code, 3);
+  EXPECT_EQ(x.line, "internal error: out of memory\n");
+  x = exit_of(std::runtime_error("two\nlines"));
+  EXPECT_EQ(x.code, 3);
+  EXPECT_EQ(x.line, "internal error: two lines\n");
+  x = exit_of(42);
+  EXPECT_EQ(x.code, 3);
+  EXPECT_EQ(x.line, "internal error: unknown exception\n");
+  x = exit_of(bpde::DegreeError("job: needs degrees >= 2"));
+  EXPECT_EQ(x.code, 2);
+  EXPECT_EQ(x.line, "error: job: needs degrees >= 2\n");
+
+  // A Summary that breaks its contract is an internal error, never exit 1.
+  bpde::Summary s;
+  s.set_converged();
+  s.converged = false;
+  EXPECT_THROW(bpde::checked_status(s), bpde::InternalError);
+  s.set_failed(bpde::Status::Fold, "no critical point on the branch from H = 0 beyond H = -1.5");
+  EXPECT_EQ(bpde::checked_status(s), bpde::Status::Fold);
+  EXPECT_EQ(bpde::exit_code(bpde::Status::Fold), 1);
+  EXPECT_EQ(bpde::exit_code(bpde::Status::Converged), 0);
+}
+
+TEST(Cli, OutOfMemoryExitsThreeAndWritesNothing) {
+  // A valid job whose surface files need ~1 GB (4M samples), under a 400 MB address-space limit.
+  const std::string job = std::string(R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,1],[0,1,0],[0.5,0,0],[0.5,0.5,0],[0.5,1,0],[1,0,0],[1,0.5,0.3],[1,1,2]]},
+    "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}, "samples": 2000})");
+  const fs::path out = tmpdir() / "oom";
+  const fs::path o = tmpdir() / "oom_stdout", e = tmpdir() / "oom_stderr";
+  const std::string cmd = "sh -c 'ulimit -v 400000 && exec " + std::string(BPDE_BINARY) + " solve " +
+                          write("oom.json", job).string() + " --out " + out.string() + "' >" + o.string() + " 2>" +
+                          e.string();
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc)) << "the command must not crash";
+  EXPECT_EQ(WEXITSTATUS(rc), 3);
+  const std::string err = slurp_file(e);
+  EXPECT_EQ(err, "internal error: out of memory\n");
+  EXPECT_FALSE(fs::exists(out / "result.json"));
+}
+
+namespace {
+// Control points of x = (u, v, u^2 - v^2) on the B-spline basis of degree p with knots K in both
+// directions: the Greville abscissae for u and the blossom of u^2, sum_{j<k} t_j t_k / C(p, 2),
+// over each basis function's interior knots t_{i+1..i+p} (Marsden's identity).
+std::string bspline_polynomial_net(int p, const std::vector<double>& K, std::vector<double>& z) {
+  const int n = static_cast<int>(K.size()) - p - 1;
+  std::vector<double> g(n), s(n);
+  for (int i = 0; i < n; ++i) {
+    double sum = 0, pairs = 0;
+    for (int j = 1; j <= p; ++j) {
+      sum += K[i + j];
+      for (int k = j + 1; k <= p; ++k) pairs += K[i + j] * K[i + k];
+    }
+    g[i] = sum / p;
+    s[i] = pairs / (p * (p - 1) / 2.0);
+  }
+  std::ostringstream knots, pts;
+  knots.precision(17);
+  pts.precision(17);
+  for (size_t k = 0; k < K.size(); ++k) knots << (k ? "," : "") << K[k];
+  z.clear();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      z.push_back(s[i] - s[j]);
+      pts << (i + j == 0 ? "" : ",") << "[" << g[i] << "," << g[j] << "," << s[i] - s[j] << "]";
+    }
+  return R"({"type": "bspline", "degree": [)" + std::to_string(p) + ", " + std::to_string(p) + R"(], "knots": [[)" +
+         knots.str() + "],[" + knots.str() + R"(]], "points": [)" + pts.str() + "]}";
+}
+}  // namespace
+
+TEST(Cli, BSplinePdeTakesBoundaryAdjacentData) {
+  // Biquintic, 2 x 2 spans: the outer two rings of a global biharmonic polynomial prescribed, the
+  // inner 3 x 3 control points solved for; the answer is the polynomial itself.
+  std::vector<double> z;
+  const std::string net = bspline_polynomial_net(5, {0, 0, 0, 0, 0, 0, 0.5, 1, 1, 1, 1, 1, 1}, z);
+  const fs::path out = tmpdir() / "bs_pde_c1";
+  const CmdResult r = run("solve " +
+                          write("bs_pde_c1.json", "{\"net\": " + net +
+                                                      R"(, "fixed": "boundary+adjacent", "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})")
+                              .string() +
+                          " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(out / "result.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const bpde::Json res = bpde::Json::parse(text.str());
+  const bpde::Json& rep = res["report"];
+  EXPECT_EQ(rep["converged"], true);
+  for (const char* key : {"rank", "equations", "free_parameters", "compatibility_conditions", "pde_residual"})
+    EXPECT_TRUE(rep.contains(key)) << key;
+  EXPECT_EQ(rep["free_parameters"], 0);
+  const bpde::Json& P = res["net"]["points"];
+  ASSERT_EQ(P.size(), z.size());
+  for (size_t k = 0; k < z.size(); ++k) EXPECT_NEAR(P[k][2].get<double>(), z[k], 1e-10) << k;
 }

@@ -1,9 +1,11 @@
-// io/json_io and io/job: round trips and every kind of bad input as typed exceptions.
+// io/json_io and io/job (with the job layer's validation, jobs/run_job.h): round trips and every
+// kind of bad input as typed exceptions.
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
 #include "io/job.h"
 #include "io/json_io.h"
+#include "jobs/run_job.h"
 
 using namespace bpde;
 
@@ -128,6 +130,72 @@ TEST(JsonIo, JobsValidateTheProblemTable) {
   EXPECT_THROW(job_from_json(job(tri(4), {{"kind", "cmc"}, {"H", "big"}})), ParseError);
   const Job v = job_from_json(job(tri(4), {{"kind", "cmc"}, {"V", 0.25}}));
   EXPECT_EQ(v.problem.solver, CmcSolver::NLopt);
+}
+
+// The job layer's validation (jobs/run_job.h, solvers/requirements.h): whole messages, as they
+// were before the solvers' requirements became one registry.
+TEST(JsonIo, JobsAreRefusedWithTheirMessages) {
+  auto message = [](const Json& j) {
+    try {
+      job_from_json(j);
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const Json bih = {{"kind", "extremal"}, {"energy", {{"name", "biharmonic"}}}};
+  EXPECT_EQ(message(job(tensor22(), bih, "boundary+adjacent")),
+            "job: problem \"extremal\" on a tensor net with boundary+adjacent data needs degrees >= 4, got [2, 2]");
+  EXPECT_EQ(message(job(tri(2), bih)), "job: problem \"extremal\" on a triangular net with boundary data needs degree >= 3, got 2");
+  EXPECT_EQ(message(job(tri(4), bih, "u-boundaries")), "job: fixed \"u-boundaries\" is only defined for tensor nets");
+  EXPECT_EQ(message(job(tri(4), {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}})),
+            "job: problem \"pde\" needs a tensor or bspline net, not a triangular net");
+  EXPECT_EQ(message(job(tri(4), {{"kind", "tetraharmonic"}}, "boundary+adjacent")),
+            "job: problem \"tetraharmonic\" needs a tensor net, not a triangular net");
+  EXPECT_EQ(message(job(tensor22(), {{"kind", "tetraharmonic"}}, "boundary+adjacent")),
+            "job: problem \"tetraharmonic\" needs n = m >= 4, got 2");
+  EXPECT_EQ(message(job(tensor22(), {{"kind", "biharmonic-load"}})),
+            "job: problem \"biharmonic-load\" takes C1 data: \"fixed\": \"boundary+adjacent\"");
+  EXPECT_EQ(message(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "dirichlet"}}}})),
+            "job: a second-order pde (dirichlet) takes \"fixed\": \"u-boundaries\"");
+  EXPECT_EQ(message(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "dirichlet"}}}, {"method", "explicit"}}, "u-boundaries")),
+            "job: the second-order pde has no explicit method (Arnal-Monterde-Ugail); use \"method\": \"lu\"");
+  EXPECT_EQ(message(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}}, "u-boundaries")),
+            "job: a fourth-order pde (biharmonic) takes \"fixed\": \"boundary\"");
+  // explicit needs n = m: refused when the job is read, before anything runs
+  Json t23 = {{"type", "tensor"}, {"degree", {2, 3}}, {"points", Json::array()}};
+  for (int i = 0; i < 12; ++i) t23["points"].push_back({i * 0.1, 0.2, 0.3});
+  EXPECT_EQ(message(job(t23, {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}, {"method", "explicit"}})),
+            "job: problem \"pde\" needs n = m, got [2, 3]");
+  EXPECT_EQ(message(job(t23, {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}})), "accepted");
+}
+
+// check_requirements' own messages, for requirements that give no reason of their own.
+TEST(JsonIo, RequirementsWithoutReasonsListWhatTheyTake) {
+  SolverRequirements r;
+  r.problem = "problem \"x\"";
+  r.nets = {NetKind::Tensor, NetKind::BSpline};
+  r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent};
+  r.methods = {"a", "b", "c"};
+  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 3}};
+  auto message = [&](NetShape s, FixedSet f, const std::string& method) {
+    try {
+      check_requirements(r, s, f, method, "w");
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message({NetKind::Triangular, 4, 4}, FixedSet::Boundary, ""),
+            "w: problem \"x\" needs a tensor or bspline net, not a triangular net");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 4}, FixedSet::UBoundaries, ""),
+            "w: problem \"x\" takes \"fixed\": \"boundary\" or \"boundary+adjacent\"");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 4}, FixedSet::Boundary, "d"), "w: problem \"x\" has no method \"d\" (expected a, b or c)");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 2}, FixedSet::Boundary, "a"), "w: problem \"x\" needs degrees >= 3, got [4, 2]");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 3}, FixedSet::Boundary, "a"), "accepted");
+  EXPECT_EQ(message({NetKind::Tensor, 1, 1}, FixedSet::BoundaryAdjacent, ""), "accepted");  // no minimum given
+  EXPECT_THROW(check_requirements(r, {NetKind::Tensor, 2, 2}, FixedSet::Boundary, "", "w"), DegreeError);
+  EXPECT_THROW(check_requirements(r, {NetKind::Tensor, 4, 4}, FixedSet::UBoundaries, "", "w"), UnsupportedProblem);
 }
 
 TEST(JsonIo, EnergiesAndSingularG) {

@@ -1,0 +1,27 @@
+#include "jobs/run_blend.h"
+
+#include "jobs/run_job.h"
+#include "solvers/blend/smoothing_spline.h"
+
+namespace bpde {
+
+BlendOutcome run_blend(const BlendConfig& config) {
+  const SmoothingSplineResult r = solve_smoothing_spline(config.problem);
+  BlendOutcome out{r.spline.to_bspline_net(), r.spline.sample(config.samples), Json::object(),
+                   checked_status(r.summary)};
+  out.report = {{"problem", "blend"},
+                {"energy", r.functional},
+                {"data_misfit", r.data_misfit},
+                {"L_energy", r.energy},
+                {"max_data_error", r.max_data_error},
+                {"converged", r.summary.converged},
+                {"seconds", r.summary.seconds}};
+  if (!r.summary.message.empty()) out.report["message"] = r.summary.message;
+  return out;
+}
+
+int write_blend_outcome(const std::string& dir, const BlendConfig& config, const BlendOutcome& out) {
+  return write_result(dir, Net(out.net), out.mesh, config.samples, out.report, Json::object(), out.status).exit_code;
+}
+
+}  // namespace bpde

@@ -1,0 +1,33 @@
+#include "jobs/run_plate.h"
+
+#include <cmath>
+
+#include "core/errors.h"
+#include "jobs/run_job.h"
+#include "solvers/c1/clamped_plate.h"
+
+namespace bpde {
+
+PlateOutcome run_plate(double aspect, int degree, const std::string& method) {
+  if (!std::isfinite(aspect) || !(aspect > 0)) throw ParameterError("--aspect must be a finite number > 0");
+  if (method != "admissible-load" && method != "ritz")
+    throw ParseError("--method must be admissible-load or ritz, got \"" + method + "\"");
+  ClampedPlateOptions o;
+  o.aspect = aspect;
+  o.degree = degree;
+  o.method = parse_plate_method(method);
+  const ClampedPlateResult r = solve_clamped_plate(o);
+  PlateOutcome out;
+  out.status = checked_status(r.summary);
+  out.report = {{"center_deflection", r.center_deflection},
+                {"energy", r.energy},
+                {"aspect", aspect},
+                {"degree", degree},
+                {"method", method},
+                {"converged", r.summary.converged},
+                {"seconds", r.summary.seconds}};
+  if (!r.summary.message.empty()) out.report["message"] = r.summary.message;
+  return out;
+}
+
+}  // namespace bpde
