@@ -1,6 +1,11 @@
 #pragma once
 // Which control points a problem prescribes (FORMATS.md, job field "fixed").
+#include <Eigen/Core>
+#include <cmath>
 #include <string>
+#include <vector>
+
+#include "core/errors.h"
 
 namespace bpde {
 
@@ -17,6 +22,27 @@ inline std::string to_string(FixedSet f) {
     case FixedSet::UBoundaries: return "u-boundaries";
   }
   return "?";
+}
+
+/// Throws NonFiniteError "<who>: prescribed point r (i = .., j = ..) is not finite" for the first
+/// row r of `rows` of P with a NaN or infinite coordinate. `columns` > 0 names the tensor indices
+/// (i = r / columns, j = r % columns); 0 names the row alone. Solvers call it on their prescribed
+/// points, which net constructors check but `points()` lets a caller overwrite. A row outside P
+/// is a SizeError.
+inline void require_finite_rows(const Eigen::MatrixX3d& P, const std::vector<int>& rows, const std::string& who,
+                                int columns = 0) {
+  for (int r : rows) {
+    if (r < 0 || r >= P.rows())
+      throw SizeError(who + ": prescribed point " + std::to_string(r) + " is not one of the " +
+                      std::to_string(P.rows()) + " control points");
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(P(r, c))) {
+        std::string where = "point " + std::to_string(r);
+        if (columns > 0)
+          where += " (i = " + std::to_string(r / columns) + ", j = " + std::to_string(r % columns) + ")";
+        throw NonFiniteError(who + ": prescribed " + where + " is not finite");
+      }
+  }
 }
 
 }  // namespace bpde

@@ -195,6 +195,7 @@ BSplineExtremalResult BSplineExtremalSolver::Impl::solve(const BSplineNet& data)
 BSplineExtremalResult solve_bspline_extremal(const BSplineNet& data, const EnergySpec& energy,
                                              const std::vector<int>& fixed, const BSplineExtremalOptions& options) {
   options.validate();
+  require_finite_rows(data.points(), fixed, "bspline extremal", data.nv());
   return detail::timed([&] {
     BSplineExtremalSolver solver(data.p(), data.q(), data.knots_u(), data.knots_v(), energy, fixed, options.tolerance);
     return solver.solve(data);

@@ -401,6 +401,7 @@ void solve_into(const BSplineNet& data, const EnergySpec& op, const std::vector<
 BSplinePdeResult solve_bspline_pde(const BSplineNet& data, const EnergySpec& op, const std::vector<int>& fixed,
                                    const BSplinePdeOptions& options) {
   options.validate();
+  require_finite_rows(data.points(), fixed, "bspline pde", data.nv());
   BSplinePdeResult out{data, {}, 0, 0, 0, 0, 0, false, 0.0};
   {
     ScopedTimer timer(out.summary.seconds);

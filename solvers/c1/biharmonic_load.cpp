@@ -31,15 +31,6 @@ void check_square_degree(const TensorNet& net, int min_degree, const char* who) 
                       std::to_string(net.n()));
 }
 
-void check_finite(const TensorNet& net, const std::vector<int>& rows, const char* who) {
-  for (int r : rows)
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(net.points()(r, c)))
-        throw NonFiniteError(std::string(who) + ": point " + std::to_string(r) + " (i = " +
-                             std::to_string(r / (net.m() + 1)) + ", j = " + std::to_string(r % (net.m() + 1)) +
-                             ") is not finite");
-}
-
 std::vector<int> interior_indices(int n) {
   std::vector<int> idx;
   for (int i = 2; i <= n - 2; ++i)
@@ -158,7 +149,7 @@ BiharmonicLoadResult solve_biharmonic_load_untimed(const TensorNet& data) {
   check_square_degree(data, 4, "biharmonic-load");
   const int n = data.n();
   const auto solver = load_solver(n);
-  check_finite(data, solver->fixed, "biharmonic-load data");
+  require_finite_rows(data.points(), solver->fixed, "biharmonic-load data", data.m() + 1);
 
   Eigen::MatrixXd xf(solver->fixed.size(), 3);
   for (size_t r = 0; r < solver->fixed.size(); ++r) xf.row(static_cast<Eigen::Index>(r)) = data.points().row(solver->fixed[r]);
@@ -216,7 +207,7 @@ TensorNet complete_admissible_load(const TensorNet& load) {
   for (int i = 1; i < n; ++i)
     for (int j = 1; j < n; ++j) inner.push_back(i * (n + 1) + j);
   const std::vector<int> ring = load.boundary_indices();
-  check_finite(load, inner, "complete_admissible_load");
+  require_finite_rows(load.points(), inner, "complete_admissible_load", load.m() + 1);
   const Eigen::MatrixXd Op = bilaplacian_operator(n, 1.0, 2.0, 1.0);
   // Unknowns: x at inner indices (x's boundary ring is 0 by Corollary 1), then R at the ring.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(N, N);

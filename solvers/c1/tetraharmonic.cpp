@@ -31,12 +31,8 @@ void check_data(const TensorNet& data) {
                       std::to_string(data.m()) + "]");
   if (data.n() < 4)
     throw DegreeError("tetraharmonic: needs degree n >= 4 (Theorem 1), got " + std::to_string(data.n()));
-  for (int r : data.fixed_indices(FixedSet::BoundaryAdjacent))
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(data.points()(r, c)))
-        throw NonFiniteError("tetraharmonic data: point " + std::to_string(r) + " (i = " +
-                             std::to_string(r / (data.n() + 1)) + ", j = " + std::to_string(r % (data.n() + 1)) +
-                             ") is not finite");
+  require_finite_rows(data.points(), data.fixed_indices(FixedSet::BoundaryAdjacent), "tetraharmonic data",
+                      data.m() + 1);
 }
 
 

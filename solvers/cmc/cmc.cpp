@@ -415,9 +415,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     check_degree(data, o.fixed);
     const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
     CmcProblem p{functional_for(data), data.free_indices(o.fixed), data.points()};
-    for (int r : fixed_idx)
-      if (!p.P.row(r).allFinite())
-        throw NonFiniteError("cmc: prescribed control point " + std::to_string(r) + " is not finite");
+    require_finite_rows(p.P, fixed_idx, "cmc");
     for (int r : p.free) p.P.row(r).setZero();
     const DirichletFactor dir = dirichlet_solve(p, fixed_idx);
     const Outcome out = o.V           ? volume_solve(p, o, dir.L, res.summary)

@@ -410,6 +410,7 @@ PdeSolution solve_explicit_untimed(const TensorNet& data, const EnergySpec& op, 
 }  // namespace
 
 PdeSolution solve_pde_explicit(const TensorNet& data, const EnergySpec& op, const PdeExplicitOptions& options) {
+  require_finite_rows(data.points(), data.fixed_indices(FixedSet::Boundary), "pde explicit", data.m() + 1);
   PdeSolution out;
   {
     ScopedTimer timer(out.summary.seconds);

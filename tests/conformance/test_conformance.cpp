@@ -75,7 +75,7 @@ Eigen::MatrixX3d polynomial_points(int n, int m) {
 
 TensorNet polynomial_net(int n, int m) { return TensorNet(n, m, polynomial_points(n, m)); }
 TensorNet random_net(int n, int m, unsigned seed) {
-  return TensorNet(n, m, testutil::random_points((n + 1) * (m + 1), seed));
+  return TensorNet(n, m, bpde::testing::random_points((n + 1) * (m + 1), seed));
 }
 
 // `net` with a NaN in its first prescribed point.
@@ -100,7 +100,7 @@ BSplineNet polynomial_bspline(int p) { return BSplineNet(p, p, clamped(p), clamp
 // Biquintic, 2 x 2 spans, generic data: the biharmonic PDE has no spline solution.
 BSplineNet generic_bspline() {
   const std::vector<double> K = {0, 0, 0, 0, 0, 0, 0.5, 1, 1, 1, 1, 1, 1};
-  return BSplineNet(5, 5, K, K, testutil::random_points(49, 7));
+  return BSplineNet(5, 5, K, K, bpde::testing::random_points(49, 7));
 }
 
 SmoothingSplineProblem blend_problem() {
