@@ -47,12 +47,12 @@ namespace cmc_detail {
 
 Eigen::VectorXd CmcProblem::get() const {
   Eigen::VectorXd y(3 * k());
-  for (int a = 0; a < k(); ++a) y.segment<3>(3 * a) = P.row(free[static_cast<size_t>(a)]).transpose();
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(y.data(), k(), 3) = P(free, Eigen::all);
   return y;
 }
 
 void CmcProblem::set(const Eigen::VectorXd& y) {
-  for (int a = 0; a < k(); ++a) P.row(free[static_cast<size_t>(a)]) = y.segment<3>(3 * a).transpose();
+  P(free, Eigen::all) = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(y.data(), k(), 3);
 }
 
 Eigen::VectorXd CmcProblem::gradient(double H) const {
@@ -119,7 +119,7 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
     if (slow && fresh && it >= 2 && st.residual > prev_r) return st;  // Newton itself diverges
     if (!fac || slow) {
       fac = std::make_unique<SymFactor>(p.hessian(H));
-      st.pd = fac->pd ? 1 : 0;
+      st.pd = fac->positive_definite() ? 1 : 0;
       fresh = true;
     } else {
       fresh = false;
@@ -180,20 +180,14 @@ struct DirichletFactor {
 DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
   const Eigen::MatrixXd& C = p.f->gram();
   const int k = p.k();
-  const int nf = static_cast<int>(fixed_idx.size());
-  Eigen::MatrixXd Cff(k, k), Cfx(k, nf);
-  Eigen::MatrixX3d Px(nf, 3);
-  for (int a = 0; a < k; ++a) {
-    for (int b = 0; b < k; ++b) Cff(a, b) = C(p.free[static_cast<size_t>(a)], p.free[static_cast<size_t>(b)]);
-    for (int b = 0; b < nf; ++b) Cfx(a, b) = C(p.free[static_cast<size_t>(a)], fixed_idx[static_cast<size_t>(b)]);
-  }
-  for (int b = 0; b < nf; ++b) Px.row(b) = p.P.row(fixed_idx[static_cast<size_t>(b)]);
+  const Eigen::MatrixXd Cff = C(p.free, p.free), Cfx = C(p.free, fixed_idx);
+  const Eigen::MatrixX3d Px = p.P(fixed_idx, Eigen::all);
   DirichletFactor f;
   f.gram = std::make_unique<SymFactor>(Cff);
   const Eigen::MatrixX3d Y = -f.gram->solve(Cfx * Px);
-  for (int a = 0; a < k; ++a) p.P.row(p.free[static_cast<size_t>(a)]) = Y.row(a);
-  if (f.gram->use_llt) {
-    f.L = f.gram->llt.matrixL();
+  p.P(p.free, Eigen::all) = Y;
+  if (f.gram->cholesky()) {
+    f.L = f.gram->matrixL();
   } else {
     const double d = k ? Cff.diagonal().cwiseAbs().maxCoeff() : 1.0;
     for (double shift = 1e-14; shift < 1e-2; shift *= 10) {
@@ -298,7 +292,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
   while (h != Ht) {
     if (++attempts > o.max_continuation_steps) {
       p.set(y);
-      return finish(h, false, fold_message(h, !dir.gram->use_llt));
+      return finish(h, false, fold_message(h, !dir.gram->cholesky()));
     }
     double s = step;
     if (std::abs(Ht - h) <= std::abs(s) * (1 + 1e-12)) s = Ht - h;
@@ -326,7 +320,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
       // continuation goes on, its Cholesky factor also gives the tangent dY/dH = -J^{-1} 2 dV/dY.
       if (hn != Ht || st.pd != 1) {
         const SymFactor fac(p.hessian(hn));
-        accept = fac.pd;
+        accept = fac.positive_definite();
         if (accept && hn != Ht) next_tangent = -2.0 * fac.solve(p.volume_gradient());
       }
     }
@@ -340,7 +334,7 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     } else {
       p.set(y);
       step = s / 2;
-      if (std::abs(step) < o.min_step * std::max(1.0, std::abs(h))) return finish(h, false, fold_message(h, !dir.gram->use_llt));
+      if (std::abs(step) < o.min_step * std::max(1.0, std::abs(h))) return finish(h, false, fold_message(h, !dir.gram->cholesky()));
     }
   }
   std::string msg = "reached H = " + std::to_string(Ht) + " in " +
