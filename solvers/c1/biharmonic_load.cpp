@@ -199,15 +199,13 @@ TensorNet complete_admissible_load(const TensorNet& load) {
   const Eigen::MatrixXd Op = bilaplacian_operator(n, 1.0, 2.0, 1.0);
   // Unknowns: x at inner indices (x's boundary ring is 0 by Corollary 1), then R at the ring.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(N, N);
-  for (int r = 0; r < N; ++r)
-    for (size_t c = 0; c < inner.size(); ++c) A(r, static_cast<Eigen::Index>(c)) = Op(r, inner[c]);
+  A.leftCols(static_cast<Eigen::Index>(inner.size())) = Op(Eigen::all, inner);
   for (size_t c = 0; c < ring.size(); ++c) A(ring[c], static_cast<Eigen::Index>(inner.size() + c)) = -1.0;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(N, 3);
-  for (int r : inner) rhs.row(r) = load.points().row(r);
+  rhs(inner, Eigen::all) = load.points()(inner, Eigen::all);
   const Eigen::MatrixXd sol = Eigen::PartialPivLU<Eigen::MatrixXd>(A).solve(rhs);
   TensorNet out = load;
-  for (size_t c = 0; c < ring.size(); ++c)
-    out.points().row(ring[c]) = sol.row(static_cast<Eigen::Index>(inner.size() + c));
+  out.points()(ring, Eigen::all) = sol.middleRows(static_cast<Eigen::Index>(inner.size()), static_cast<Eigen::Index>(ring.size()));
   return out;
 }
 

@@ -323,7 +323,7 @@ TetraharmonicResult solve_tetraharmonic(const TensorNet& data, const Tetraharmon
     const Eigen::MatrixXd xf = data.points()(s->fixed, Eigen::all);
     const Eigen::MatrixXd xi = s->G * xf;
     net.points()(s->interior, Eigen::all) = xi;
-    for (int r : fixed) net.points().row(r) = data.points().row(r);
+    net.points()(fixed, Eigen::all) = data.points()(fixed, Eigen::all);
     // Per-solve refinement where G * data cancels (a small solution from a large G): residual
     // of the net in binary128, correction by the cached long-double QR, up to 3 steps.
     if (relative_residual(net) > 1e-12) {
@@ -349,7 +349,7 @@ TetraharmonicResult solve_tetraharmonic(const TensorNet& data, const Tetraharmon
       }
     }
   }
-  for (int r : fixed) net.points().row(r) = data.points().row(r);
+  net.points()(fixed, Eigen::all) = data.points()(fixed, Eigen::all);
 
   TetraharmonicResult result{net, {}};
   result.summary.residual = relative_residual(net);
