@@ -6,49 +6,11 @@
 #include <mutex>
 #include <vector>
 
+#include "core/bernstein_ops.h"
+#include "core/binomial.h"
 #include "core/errors.h"
 
 namespace bpde {
-namespace {
-
-constexpr int kTable = 1024;
-
-const std::vector<double>& pascal() {
-  static const std::vector<double> table = [] {
-    std::vector<double> t(static_cast<size_t>(kTable + 1) * (kTable + 1), 0.0);
-    for (int n = 0; n <= kTable; ++n) {
-      t[static_cast<size_t>(n) * (kTable + 1)] = 1.0;
-      for (int k = 1; k <= n; ++k) {
-        const double a = t[static_cast<size_t>(n - 1) * (kTable + 1) + k - 1];
-        const double b = (k <= n - 1) ? t[static_cast<size_t>(n - 1) * (kTable + 1) + k] : 0.0;
-        t[static_cast<size_t>(n) * (kTable + 1) + k] = a + b;
-      }
-    }
-    return t;
-  }();
-  return table;
-}
-
-}  // namespace
-
-double binomial(int n, int k) {
-  if (k < 0 || n < 0 || k > n) return 0.0;
-  if (n > kTable) throw DegreeError("binomial: n = " + std::to_string(n) + " exceeds the table");
-  return pascal()[static_cast<size_t>(n) * (kTable + 1) + k];
-}
-
-double factorial(int n) {
-  // The same left-to-right products as the plain loop, tabulated (171! overflows to inf).
-  static const std::array<double, 171> table = [] {
-    std::array<double, 171> t{};
-    t[0] = 1.0;
-    for (int i = 1; i <= 170; ++i) t[static_cast<size_t>(i)] = i == 1 ? 1.0 : t[static_cast<size_t>(i - 1)] * i;
-    return t;
-  }();
-  if (n < 0) return 1.0;
-  if (n > 170) return std::numeric_limits<double>::infinity();
-  return table[static_cast<size_t>(n)];
-}
 
 void bernstein_values(int n, double t, double* out) {
   const double s = 1.0 - t;
@@ -98,24 +60,12 @@ Eigen::MatrixXd bernstein_table(int n, const Eigen::VectorXd& t, int d) {
 
 Eigen::MatrixXd bernstein_derivative_operator(int n, int d) {
   if (d < 0 || d > n) throw DegreeError("bernstein_derivative_operator: need 0 <= d <= n");
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(n - d + 1, n + 1);
-  const double scale = factorial(n) / factorial(n - d);
-  for (int j = 0; j <= n - d; ++j)
-    for (int k = 0; k <= d; ++k) {
-      const double sign = ((d - k) % 2 == 0) ? 1.0 : -1.0;
-      D(j, j + k) = scale * sign * binomial(d, k);
-    }
-  return D;
+  return rm_to_matrix<double>(derivative_operator_rm<double>(n, d), n - d + 1, n + 1);
 }
 
 Eigen::MatrixXd bernstein_elevation_operator(int n, int r) {
   if (n < 0 || r < 0) throw DegreeError("bernstein_elevation_operator: negative degree");
-  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n + r + 1, n + 1);
-  // B_i^n = sum_j C(n,i) C(r,j-i) / C(n+r,j) B_j^{n+r}
-  for (int i = 0; i <= n; ++i)
-    for (int j = i; j <= i + r; ++j)
-      E(j, i) = binomial(n, i) * binomial(r, j - i) / binomial(n + r, j);
-  return E;
+  return rm_to_matrix<double>(elevation_operator_rm<double>(n, r), n + r + 1, n + 1);
 }
 
 Eigen::MatrixXd bernstein_product_integrals(int n, int m) {

@@ -7,7 +7,7 @@
 // of an (n+1) x k matrix, one column per coordinate).
 //
 // These are the building blocks that every net (tensor/, triangular/) and every energy
-// (energies/) reuses; the binomial table lives here and nowhere else.
+// (energies/) reuses. Binomials: core/binomial.h; other precisions: core/bernstein_ops.h.
 #include <Eigen/Core>
 
 namespace bpde {
@@ -15,8 +15,8 @@ namespace bpde {
 /// Largest degree accepted in files and by the net constructors (FORMATS.md: 1 <= degree <= 64).
 inline constexpr int kMaxDegree = 64;
 
-/// Binomial coefficient C(n, k) as a double (0 if k < 0 or k > n). Exact for n <= 56; relative
-/// accuracy ~1e-16 up to n = 1000 (Pascal's triangle in double, positive additions only).
+/// binomial<double>(n, k) of core/binomial.h (0 if k < 0 or k > n): exact for n <= 56, relative
+/// error below n ulp up to n = 1024 (Pascal's triangle in double, positive additions only).
 double binomial(int n, int k);
 
 /// n! as a double (exact for n <= 22).

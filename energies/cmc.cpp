@@ -2,13 +2,12 @@
 
 #include <cmath>
 #include <limits>
-#include <map>
-#include <mutex>
 #include <string>
 #include <utility>
 
 #include "core/bernstein.h"
 #include "core/errors.h"
+#include "core/keyed_cache.h"
 #include "core/kron.h"
 #include "energies/triangular_gram.h"
 #include "tensor/tensor_net.h"
@@ -18,6 +17,9 @@ namespace bpde {
 namespace {
 
 // kron(A, B) for the tensor index i*(m+1) + j.
+
+// Functionals kept by cached_triangular and cached_tensor (each; least recently used evicted).
+constexpr std::size_t kFunctionalCacheSize = 16;
 
 }  // namespace
 
@@ -42,25 +44,13 @@ CmcFunctional CmcFunctional::tensor(int n, int m) {
 }
 
 std::shared_ptr<const CmcFunctional> CmcFunctional::cached_triangular(int n) {
-  static std::mutex mu;
-  static std::map<int, std::shared_ptr<const CmcFunctional>> cache;
-  std::lock_guard<std::mutex> lock(mu);
-  auto it = cache.find(n);
-  if (it != cache.end()) return it->second;
-  auto p = std::make_shared<const CmcFunctional>(triangular(n));
-  cache.emplace(n, p);
-  return p;
+  static KeyedCache<int, CmcFunctional> cache(kFunctionalCacheSize);
+  return cache.get(n, [](int d) { return triangular(d); });
 }
 
 std::shared_ptr<const CmcFunctional> CmcFunctional::cached_tensor(int n, int m) {
-  static std::mutex mu;
-  static std::map<std::pair<int, int>, std::shared_ptr<const CmcFunctional>> cache;
-  std::lock_guard<std::mutex> lock(mu);
-  auto it = cache.find({n, m});
-  if (it != cache.end()) return it->second;
-  auto p = std::make_shared<const CmcFunctional>(tensor(n, m));
-  cache.emplace(std::make_pair(n, m), p);
-  return p;
+  static KeyedCache<std::pair<int, int>, CmcFunctional> cache(kFunctionalCacheSize);
+  return cache.get({n, m}, [](const std::pair<int, int>& d) { return tensor(d.first, d.second); });
 }
 
 std::size_t CmcFunctional::memory_bytes() const {
@@ -108,8 +98,7 @@ Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double 
                                               const std::vector<int>& idx) const {
   if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
   const Eigen::MatrixX3d CP = times(gram_, P);
-  Eigen::MatrixX3d G(static_cast<Eigen::Index>(idx.size()), 3);
-  for (size_t a = 0; a < idx.size(); ++a) G.row(static_cast<Eigen::Index>(a)) = CP.row(idx[a]);
+  Eigen::MatrixX3d G = CP(idx, Eigen::all);
   if (H != 0.0) G += 2.0 * H * volume_.gradient_rows(P, idx);
   return G;
 }
@@ -119,11 +108,7 @@ double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::v
   if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   const Eigen::MatrixX3d CP = times(gram_, P), CS = times(abs_gram_, P.cwiseAbs());
-  Eigen::MatrixX3d F(k, 3), S(k, 3);
-  for (Eigen::Index a = 0; a < k; ++a) {
-    F.row(a) = CP.row(idx[static_cast<size_t>(a)]);
-    S.row(a) = CS.row(idx[static_cast<size_t>(a)]);
-  }
+  Eigen::MatrixX3d F = CP(idx, Eigen::all), S = CS(idx, Eigen::all);
   if (H != 0.0) {
     Eigen::MatrixX3d GV, SV;
     volume_.gradient_rows_and_scale(P, idx, &GV, &SV);

@@ -34,7 +34,7 @@ class CmcFunctional {
   static CmcFunctional triangular(int n);
   /// Degree-(n,m) tensor nets.
   static CmcFunctional tensor(int n, int m);
-  /// Shared, cached instances (built once per degree, thread-safe).
+  /// Shared, cached instances (thread-safe; the 16 most recently used degrees are kept).
   static std::shared_ptr<const CmcFunctional> cached_triangular(int n);
   static std::shared_ptr<const CmcFunctional> cached_tensor(int n, int m);
 

@@ -4,19 +4,12 @@
 #include <string>
 
 #include "core/bernstein.h"
+#include "core/binomial.h"
 #include "core/errors.h"
+#include "triangular/triangular_net.h"
 
 namespace bpde {
 namespace {
-
-int tri_count(int n) { return (n + 1) * (n + 2) / 2; }
-int tri_index(int n, int i, int j) {
-  const int s = n - i;
-  return s * (s + 1) / 2 + (s - j);
-}
-
-// n! / (i! j! k!) with i + j + k = n, as C(n,i) C(n-i,j).
-double multinomial(int n, int i, int j) { return binomial(n, i) * binomial(n - i, j); }
 
 void check_degree(int n, const char* who) {
   if (n < 1 || n > kMaxDegree)
@@ -26,11 +19,11 @@ void check_degree(int n, const char* who) {
 
 // One derivative step: count(n-1) by count(n), d/du (dir = 0) or d/dv (dir = 1).
 Eigen::MatrixXd derivative_step(int n, int dir) {
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(tri_count(n - 1), tri_count(n));
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(TriangularNet::count(n - 1), TriangularNet::count(n));
   for (const auto& J : triangular_multi_indices(n - 1)) {
-    const int r = tri_index(n - 1, J[0], J[1]);
-    const int plus = dir == 0 ? tri_index(n, J[0] + 1, J[1]) : tri_index(n, J[0], J[1] + 1);
-    const int minus = tri_index(n, J[0], J[1]);  // J + e3
+    const int r = TriangularNet::index(n - 1, J[0], J[1]);
+    const int plus = dir == 0 ? TriangularNet::index(n, J[0] + 1, J[1]) : TriangularNet::index(n, J[0], J[1] + 1);
+    const int minus = TriangularNet::index(n, J[0], J[1]);  // J + e3
     D(r, plus) += n;
     D(r, minus) -= n;
   }
@@ -41,7 +34,7 @@ Eigen::MatrixXd derivative_step(int n, int dir) {
 
 std::vector<std::array<int, 3>> triangular_multi_indices(int n) {
   std::vector<std::array<int, 3>> out;
-  out.reserve(static_cast<size_t>(tri_count(n)));
+  out.reserve(static_cast<size_t>(TriangularNet::count(n)));
   for (int i = n; i >= 0; --i)
     for (int j = n - i; j >= 0; --j) out.push_back({i, j, n - i - j});
   return out;
@@ -49,8 +42,8 @@ std::vector<std::array<int, 3>> triangular_multi_indices(int n) {
 
 Eigen::MatrixXd triangular_derivative_operator(int n, int du, int dv) {
   if (du < 0 || dv < 0) throw ParameterError("triangular_derivative_operator: negative order");
-  if (du + dv > n) return Eigen::MatrixXd::Zero(0, tri_count(n));
-  Eigen::MatrixXd D = Eigen::MatrixXd::Identity(tri_count(n), tri_count(n));
+  if (du + dv > n) return Eigen::MatrixXd::Zero(0, TriangularNet::count(n));
+  Eigen::MatrixXd D = Eigen::MatrixXd::Identity(TriangularNet::count(n), TriangularNet::count(n));
   int deg = n;
   for (int a = 0; a < du; ++a, --deg) D = derivative_step(deg, 0) * D;
   for (int a = 0; a < dv; ++a, --deg) D = derivative_step(deg, 1) * D;
@@ -60,7 +53,7 @@ Eigen::MatrixXd triangular_derivative_operator(int n, int du, int dv) {
 Eigen::MatrixXd triangular_product_integrals(int p, int q) {
   const auto Ip = triangular_multi_indices(p);
   const auto Iq = triangular_multi_indices(q);
-  Eigen::MatrixXd M(tri_count(p), tri_count(q));
+  Eigen::MatrixXd M(TriangularNet::count(p), TriangularNet::count(q));
   const double area = 1.0 / ((p + q + 1.0) * (p + q + 2.0));
   for (size_t a = 0; a < Ip.size(); ++a)
     for (size_t b = 0; b < Iq.size(); ++b) {
@@ -74,7 +67,7 @@ Eigen::MatrixXd triangular_product_integrals(int p, int q) {
 }
 
 Eigen::MatrixXd triangular_derivative_integrals(int n, int au, int av, int bu, int bv) {
-  if (au + av > n || bu + bv > n) return Eigen::MatrixXd::Zero(tri_count(n), tri_count(n));
+  if (au + av > n || bu + bv > n) return Eigen::MatrixXd::Zero(TriangularNet::count(n), TriangularNet::count(n));
   const Eigen::MatrixXd Da = triangular_derivative_operator(n, au, av);
   const Eigen::MatrixXd Db = triangular_derivative_operator(n, bu, bv);
   return Da.transpose() * triangular_product_integrals(n - au - av, n - bu - bv) * Db;
@@ -82,7 +75,7 @@ Eigen::MatrixXd triangular_derivative_integrals(int n, int au, int av, int bu, i
 
 Eigen::MatrixXd triangular_gram(int n, const std::vector<QuadraticTerm>& terms) {
   check_degree(n, "triangular_gram");
-  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(tri_count(n), tri_count(n));
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(TriangularNet::count(n), TriangularNet::count(n));
   for (const auto& t : terms) {
     if (!std::isfinite(t.w)) throw NonFiniteError("triangular_gram: non-finite term weight");
     if (t.w == 0.0) continue;
@@ -103,7 +96,7 @@ Eigen::MatrixXd triangular_dirichlet_gram(int n) {
 Eigen::MatrixXd dirichlet_gram_closed_form(int n) {
   check_degree(n, "dirichlet_gram_closed_form");
   const auto I = triangular_multi_indices(n);
-  const int N = tri_count(n);
+  const int N = TriangularNet::count(n);
   Eigen::MatrixXd C(N, N);
   for (int a = 0; a < N; ++a)
     for (int b = 0; b < N; ++b) {
@@ -129,10 +122,10 @@ Eigen::MatrixXd dirichlet_gram_closed_form(int n) {
 Eigen::MatrixXd triangular_basis_table(int n, const Eigen::MatrixX2d& uv, int du, int dv) {
   check_degree(n, "triangular_basis_table");
   const int d = du + dv;
-  if (d > n) return Eigen::MatrixXd::Zero(uv.rows(), tri_count(n));
+  if (d > n) return Eigen::MatrixXd::Zero(uv.rows(), TriangularNet::count(n));
   const int m = n - d;
   const auto I = triangular_multi_indices(m);
-  Eigen::MatrixXd T(uv.rows(), tri_count(m));
+  Eigen::MatrixXd T(uv.rows(), TriangularNet::count(m));
   for (Eigen::Index s = 0; s < uv.rows(); ++s) {
     const double u = uv(s, 0), v = uv(s, 1), w = 1.0 - u - v;
     for (size_t r = 0; r < I.size(); ++r) {

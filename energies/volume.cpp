@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/bernstein.h"
+#include "core/binomial.h"
 #include "core/errors.h"
 #include "core/quadrature.h"
 #include "energies/triangular_gram.h"
@@ -22,8 +23,6 @@ Eigen::MatrixX3d cross_rows(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b
   c.col(2) = a.col(0).cwiseProduct(b.col(1)) - a.col(1).cwiseProduct(b.col(0));
   return c;
 }
-
-double multinomial(int n, int i, int j) { return binomial(n, i) * binomial(n - i, j); }
 
 // A * P for a 3-column P as three matrix-vector products (no GEMM packing of the large A).
 Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
@@ -205,19 +204,15 @@ Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& 
     const auto all = triangular_multi_indices(n);
     for (Eigen::Index a = 0; a < k; ++a) J[static_cast<size_t>(a)] = all[static_cast<size_t>(idx[static_cast<size_t>(a)])];
   }
-  auto tidx = [](int d, int i, int j) {
-    const int s = d - i;
-    return s * (s + 1) / 2 + (s - j);
-  };
   // Contribution n * beta(I, L - e_r) * W(I + L - e_r) (zero if L_r = 0).
   auto term = [&](const std::array<int, 3>& I, const std::array<int, 3>& L, int r,
                   const Eigen::MatrixX3d& W) -> Eigen::Vector3d {
     if (L[static_cast<size_t>(r)] == 0) return Eigen::Vector3d::Zero();
     std::array<int, 3> Lr = L;
     --Lr[static_cast<size_t>(r)];
-    const double beta = mult_n_(tidx(n, I[0], I[1])) * mult_n1_(tidx(n - 1, Lr[0], Lr[1])) /
-                        mult_2n1_(tidx(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1]));
-    return n * beta * W.row(tidx(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1])).transpose();
+    const double beta = mult_n_(TriangularNet::index(n, I[0], I[1])) * mult_n1_(TriangularNet::index(n - 1, Lr[0], Lr[1])) /
+                        mult_2n1_(TriangularNet::index(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1]));
+    return n * beta * W.row(TriangularNet::index(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1])).transpose();
   };
   Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
   for (Eigen::Index a = 0; a < k; ++a)
@@ -282,24 +277,20 @@ Eigen::MatrixXd VolumeForm::hessian_interior_tensor(const Eigen::MatrixX3d& P,
 void VolumeForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx,
                                          Eigen::MatrixX3d* G, Eigen::MatrixX3d* S) const {
   check(P);
-  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   if (all_interior(idx)) {
     const Eigen::MatrixX3d N = cross_rows(times(Bu_, P), times(Bv_, P));
-    Eigen::MatrixXd Bs(B_.rows(), k);
-    for (Eigen::Index a = 0; a < k; ++a) Bs.col(a) = B_.col(idx[static_cast<size_t>(a)]);
+    const Eigen::MatrixXd Bs = B_(Eigen::all, idx);
     if (G) *G = times_t(Bs, w_.asDiagonal() * N);  // Bernstein values are >= 0 on the domain
     if (S) *S = times_t(Bs, w_.asDiagonal() * N.cwiseAbs());
     return;
   }
   if (G) {
     const Eigen::MatrixX3d F = gradient(P);
-    G->resize(k, 3);
-    for (Eigen::Index a = 0; a < k; ++a) G->row(a) = F.row(idx[static_cast<size_t>(a)]);
+    *G = F(idx, Eigen::all);
   }
   if (S) {
     const Eigen::MatrixX3d F = gradient_scale(P);
-    S->resize(k, 3);
-    for (Eigen::Index a = 0; a < k; ++a) S->row(a) = F.row(idx[static_cast<size_t>(a)]);
+    *S = F(idx, Eigen::all);
   }
 }
 

@@ -3,33 +3,27 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
-#include <list>
-#include <mutex>
 #include <sstream>
 #include <utility>
 
 #include "core/bernstein.h"
+#include "core/bernstein_ops.h"
 #include "core/errors.h"
+#include "core/keyed_cache.h"
 #include "core/quadrature.h"
+#include "core/symmetric_factor.h"
 #include "energies/tensor_gram.h"
 
 namespace bpde {
 
 struct ExtremalSolver::Factor {
-  Eigen::LLT<Eigen::MatrixXd> llt;  // blocked Cholesky of the unit-diagonal reduced matrix
+  SymmetricFactor<double> sym;  // blocked Cholesky of the unit-diagonal reduced matrix
 };
 
 namespace {
 
 using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-using LVector = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
-
-long double lbinomial(int n, int k) {
-  if (k < 0 || k > n) return 0.0L;
-  long double r = 1.0L;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
+using LVector = VecLD;
 
 // ---------------------------------------------------------------------------------------------
 // A well-conditioned basis of the 1-D free space {polynomials of degree <= n vanishing to order s
@@ -60,18 +54,6 @@ LVector times_x(const LVector& f) {
     const long double tf = (i >= 1) ? i * f(i - 1) : 0.0L;               // (d+1) t f
     const long double sf = (i <= d) ? (d + 1 - i) * f(i) : 0.0L;         // (d+1) (1-t) f
     g(i) = (tf - sf) / (d + 1);
-  }
-  return g;
-}
-
-// Degree elevation by r: c'_j = Σ_i C(d,i) C(r,j-i) / C(d+r,j) c_i.
-LVector elevate(const LVector& f, int r) {
-  if (r == 0) return f;
-  const int d = static_cast<int>(f.size()) - 1;
-  LVector g = LVector::Zero(d + r + 1);
-  for (int j = 0; j <= d + r; ++j) {
-    const long double den = lbinomial(d + r, j);
-    for (int i = std::max(0, j - r); i <= std::min(d, j); ++i) g(j) += lbinomial(d, i) * lbinomial(r, j - i) / den * f(i);
   }
   return g;
 }
@@ -154,7 +136,7 @@ Eigen::MatrixXd basis_bernstein_coefficients(int n, int s, int K, const Eigen::V
     Ck.push_back(c);
     // times (t(1-t))^s: h_i = c_{i-s} C(k, i-s) / C(k+2s, i).
     LVector h = LVector::Zero(k + 2 * s + 1);
-    for (int i = s; i <= k + s; ++i) h(i) = c(i - s) * lbinomial(k, i - s) / lbinomial(k + 2 * s, i);
+    for (int i = s; i <= k + s; ++i) h(i) = c(i - s) * binomial<long double>(k, i - s) / binomial<long double>(k + 2 * s, i);
     const LVector full = elevate(h, n - k - 2 * s);
     T.col(k) = (static_cast<long double>(norm(k)) * full.segment(s, K)).cast<double>();
   }
@@ -186,14 +168,6 @@ void add_kron(Eigen::MatrixXd& out, double c, const Eigen::MatrixXd& A, const Ei
       const double a = c * A(i, k);
       if (a != 0.0) out.block(i * br, k * bc, br, bc).noalias() += a * B;
     }
-}
-
-Eigen::MatrixXd submatrix(const Eigen::MatrixXd& Q, const std::vector<int>& rows, const std::vector<int>& cols) {
-  Eigen::MatrixXd S(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
-  for (size_t c = 0; c < cols.size(); ++c)
-    for (size_t r = 0; r < rows.size(); ++r)
-      S(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = Q(rows[r], cols[c]);
-  return S;
 }
 
 void check_min_degree(int n, int m, FixedSet fixed) {
@@ -240,7 +214,7 @@ ExtremalSolver::ExtremalSolver(const Eigen::MatrixXd& Q, std::vector<int> fixed,
   for (int I = 0; I < N_; ++I)
     if (!is_fixed[static_cast<size_t>(I)]) free_.push_back(I);
   if (free_.empty()) throw ParameterError("extremal: no free control point");
-  factor(submatrix(Q, free_, free_), submatrix(Q, free_, fixed_), options, "extremal");
+  factor(Q(free_, free_), Q(free_, fixed_), options, "extremal");
 }
 
 ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet fixed, const ExtremalOptions& options) {
@@ -257,7 +231,7 @@ ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet 
   int dmax = 0;
   for (const auto& t : terms) dmax = std::max({dmax, t.au, t.av, t.bu, t.bv});
   if (!options.conditioned_basis || terms.empty()) {
-    factor(submatrix(Q_, free_, free_), submatrix(Q_, free_, fixed_), options, what);
+    factor(Q_(free_, free_), Q_(free_, fixed_), options, what);
     return;
   }
   // Free set = {su..n-su} x {sv..m-sv}.
@@ -305,17 +279,10 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   auto f = std::make_shared<Factor>();
   // Cholesky (blocked, fast). Failure means indefinite or singular (a pivoted LDLT says which);
   // success with a reciprocal condition estimate below the tolerance means numerically singular.
-  f->llt.compute(A_ff_);
-  double dmin = 0.0, rcond = 0.0;
-  bool ok = f->llt.info() == Eigen::Success && f->llt.matrixLLT().diagonal().allFinite();
-  if (ok) {
-    rcond = f->llt.rcond();
-    ok = rcond > options.singular_tolerance;
-    dmin = rcond;
-  } else {
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(A_ff_);
-    dmin = ldlt.vectorD().minCoeff();
-  }
+  f->sym.compute(A_ff_);
+  const double rcond = f->sym.rcond();
+  const bool ok = f->sym.cholesky() && rcond > options.singular_tolerance;
+  const double dmin = f->sym.cholesky() ? rcond : f->sym.min_pivot();
   if (!ok) {
     std::ostringstream s;
     s << what << ": the reduced system Q_ff is "
@@ -327,7 +294,7 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
     throw ParameterError(s.str());
   }
   factor_ = f;
-  mould_ = apply_basis(f->llt.solve(-A_fb_));
+  mould_ = apply_basis(f->sym.solve(-A_fb_));
 }
 
 Eigen::MatrixXd ExtremalSolver::apply_basis(const Eigen::MatrixXd& Y) const {
@@ -352,21 +319,19 @@ void ExtremalSolver::check_rows(Eigen::Index rows) const {
 
 Eigen::MatrixX3d ExtremalSolver::solve(const Eigen::MatrixX3d& points) const {
   check_rows(points.rows());
-  Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
-  for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
+  const Eigen::MatrixX3d Xb = points(fixed_, Eigen::all);
   const Eigen::MatrixX3d Xf = mould_ * Xb;
   Eigen::MatrixX3d out = points;
-  for (size_t a = 0; a < free_.size(); ++a) out.row(free_[a]) = Xf.row(static_cast<Eigen::Index>(a));
+  out(free_, Eigen::all) = Xf;
   return out;
 }
 
 Eigen::MatrixX3d ExtremalSolver::solve_factored(const Eigen::MatrixX3d& points) const {
   check_rows(points.rows());
-  Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
-  for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
-  const Eigen::MatrixXd Xf = apply_basis(factor_->llt.solve(-(A_fb_ * Xb)));
+  const Eigen::MatrixX3d Xb = points(fixed_, Eigen::all);
+  const Eigen::MatrixXd Xf = apply_basis(factor_->sym.solve(-(A_fb_ * Xb)));
   Eigen::MatrixX3d out = points;
-  for (size_t a = 0; a < free_.size(); ++a) out.row(free_[a]) = Xf.row(static_cast<Eigen::Index>(a));
+  out(free_, Eigen::all) = Xf;
   return out;
 }
 
@@ -390,10 +355,9 @@ double ExtremalSolver::optimality_residual(const Eigen::MatrixX3d& points) const
 
 double ExtremalSolver::reduced_residual(const Eigen::MatrixX3d& points) const {
   check_rows(points.rows());
-  Eigen::MatrixX3d Xb(static_cast<Eigen::Index>(fixed_.size()), 3);
-  for (size_t c = 0; c < fixed_.size(); ++c) Xb.row(static_cast<Eigen::Index>(c)) = points.row(fixed_[c]);
+  const Eigen::MatrixX3d Xb = points(fixed_, Eigen::all);
   const Eigen::MatrixXd rhs = A_fb_ * Xb;
-  const Eigen::MatrixXd Y = factor_->llt.solve(-rhs);
+  const Eigen::MatrixXd Y = factor_->sym.solve(-rhs);
   const Eigen::MatrixXd r = A_ff_ * Y + rhs;
   const Eigen::MatrixXd size = A_ff_.cwiseAbs() * Y.cwiseAbs() + A_fb_.cwiseAbs() * Xb.cwiseAbs();
   double out = 0.0;
@@ -405,12 +369,10 @@ double ExtremalSolver::reduced_residual(const Eigen::MatrixX3d& points) const {
 
 double ExtremalSolver::extremal_energy(const Eigen::MatrixX3d& points) const {
   check_rows(points.rows());
-  const Eigen::Index nb = static_cast<Eigen::Index>(fixed_.size());
-  Eigen::MatrixX3d Xb(nb, 3);
-  for (Eigen::Index c = 0; c < nb; ++c) Xb.row(c) = points.row(fixed_[static_cast<size_t>(c)]);
-  const Eigen::MatrixXd Qbb = submatrix(Q_, fixed_, fixed_);
+  const Eigen::MatrixX3d Xb = points(fixed_, Eigen::all);
+  const Eigen::MatrixXd Qbb = Q_(fixed_, fixed_);
   const Eigen::MatrixXd rhs = A_fb_ * Xb;
-  const Eigen::MatrixXd Y = factor_->llt.solve(-rhs);
+  const Eigen::MatrixXd Y = factor_->sym.solve(-rhs);
   return 0.5 * (Y.cwiseProduct(A_ff_ * Y).sum() + 2.0 * Y.cwiseProduct(rhs).sum() + Xb.cwiseProduct(Qbb * Xb).sum());
 }
 
@@ -425,21 +387,10 @@ std::shared_ptr<const ExtremalSolver> ExtremalSolver::cached(const EnergySpec& e
   key << n << ' ' << m << ' ' << static_cast<int>(fixed) << ' ' << std::hexfloat << options.singular_tolerance << ' '
       << options.conditioned_basis;
   for (const auto& t : energy.terms()) key << " (" << t.au << t.av << t.bu << t.bv << ' ' << t.w << ')';
-  static std::mutex mutex;
-  static std::list<std::pair<std::string, std::shared_ptr<const ExtremalSolver>>> cache;  // most recent first
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    for (auto it = cache.begin(); it != cache.end(); ++it)
-      if (it->first == key.str()) {
-        cache.splice(cache.begin(), cache, it);
-        return cache.front().second;
-      }
-  }
-  auto solver = std::make_shared<const ExtremalSolver>(energy, n, m, fixed, options);
-  std::lock_guard<std::mutex> lock(mutex);
-  cache.emplace_front(key.str(), solver);
-  if (cache.size() > 32) cache.pop_back();
-  return solver;
+  static KeyedCache<std::string, ExtremalSolver> cache(32);
+  return cache.get(key.str(), [&](const std::string&) {
+    return std::make_shared<const ExtremalSolver>(energy, n, m, fixed, options);
+  });
 }
 
 namespace {

@@ -2,7 +2,7 @@
 
 #include "core/bernstein.h"
 #include "core/errors.h"
-#include "core/per_degree.h"
+#include "core/keyed_cache.h"
 #include "core/row_major_product.h"
 
 #include <string>
@@ -33,8 +33,8 @@ struct Conversions {
 // Per degree, built once (thread-safe) and kept: these matrices are on the path of every explicit
 // PDE solve and of the lu route (solvers/pde/pde_lu.h).
 const Conversions& conversions(int n) {
-  static PerDegree<Conversions> cache;
-  return cache.get(
+  static DegreeCache<Conversions> cache;  // holds every degree: the reference stays valid
+  return *cache.get(
       n,
       [](int d) {
         Eigen::MatrixXd to = bernstein_to_power_matrix(d), from = power_to_bernstein_matrix(d);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/bernstein.h"
+#include "core/binomial.h"
 #include "core/errors.h"
 
 namespace bpde {
@@ -123,7 +124,7 @@ Eigen::MatrixXd TriangularNet::basis_matrix(int n, const Eigen::MatrixX2d& uv) {
   std::vector<double> pu(static_cast<size_t>(n + 1)), pv(static_cast<size_t>(n + 1)), pw(static_cast<size_t>(n + 1));
   std::vector<double> coef(static_cast<size_t>(count(n)));
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n - i; ++j) coef[static_cast<size_t>(index(n, i, j))] = binomial(n, i) * binomial(n - i, j);
+    for (int j = 0; j <= n - i; ++j) coef[static_cast<size_t>(index(n, i, j))] = multinomial(n, i, j);
   for (Eigen::Index s = 0; s < uv.rows(); ++s) {
     const double u = uv(s, 0), v = uv(s, 1), w = 1.0 - u - v;
     pu[0] = pv[0] = pw[0] = 1.0;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/fixed_set.h"
 #include "solvers/summary.h"
 
 namespace bpde::detail {
@@ -20,16 +21,7 @@ inline std::vector<int> complement_indices(int N, const std::vector<int>& fixed,
     if (k > 0 && fixed[k] <= fixed[k - 1])
       throw ParameterError(who + ": fixed indices must be strictly increasing (index " + std::to_string(k) + ")");
   }
-  std::vector<int> out;
-  size_t k = 0;
-  for (int r = 0; r < N; ++r) {
-    if (k < fixed.size() && fixed[k] == r) {
-      ++k;
-      continue;
-    }
-    out.push_back(r);
-  }
-  return out;
+  return bpde::complement_indices(fixed, N);
 }
 
 /// A(rows, cols) of a sparse matrix.
@@ -49,22 +41,14 @@ inline Eigen::SparseMatrix<double> sparse_submatrix(const Eigen::SparseMatrix<do
   return S;
 }
 
-inline Eigen::MatrixXd gather_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) {
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(idx.size()), 3);
-  for (size_t k = 0; k < idx.size(); ++k) out.row(static_cast<Eigen::Index>(k)) = P.row(idx[k]);
-  return out;
-}
+inline Eigen::MatrixXd gather_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) { return P(idx, Eigen::all); }
 
 inline void scatter_rows(Eigen::MatrixX3d& P, const std::vector<int>& idx, const Eigen::MatrixXd& X) {
-  for (size_t k = 0; k < idx.size(); ++k) P.row(idx[k]) = X.row(static_cast<Eigen::Index>(k));
+  P(idx, Eigen::all) = X;
 }
 
 /// Columns idx of a dense matrix.
-inline Eigen::MatrixXd gather_cols(const Eigen::MatrixXd& A, const std::vector<int>& idx) {
-  Eigen::MatrixXd out(A.rows(), static_cast<Eigen::Index>(idx.size()));
-  for (size_t k = 0; k < idx.size(); ++k) out.col(static_cast<Eigen::Index>(k)) = A.col(idx[k]);
-  return out;
-}
+inline Eigen::MatrixXd gather_cols(const Eigen::MatrixXd& A, const std::vector<int>& idx) { return A(Eigen::all, idx); }
 
 /// f() (a result with a Summary `summary`) with the wall time of the call in summary.seconds.
 template <class F>

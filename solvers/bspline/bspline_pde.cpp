@@ -365,8 +365,8 @@ void solve_into(const BSplineNet& data, const EnergySpec& op, const std::vector<
 
   auto residual_of = [&](const Eigen::MatrixXd& X) {
     Eigen::MatrixXd full(N, 3);
-    for (int k = 0; k < nf; ++k) full.row(free[static_cast<size_t>(k)]) = X.row(k);
-    for (size_t k = 0; k < fixed.size(); ++k) full.row(fixed[k]) = Xc.row(static_cast<Eigen::Index>(k));
+    full(free, Eigen::all) = X;
+    full(fixed, Eigen::all) = Xc;
     return sys.residual(full);
   };
   double res = residual_of(Xf);

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "core/bernstein.h"
+#include "core/bernstein_ops.h"
 #include "core/errors.h"
+#include "core/keyed_cache.h"
 #include "core/kron.h"
-#include "core/per_degree.h"
-#include "core/quad_bernstein.h"
 #include "solvers/c1/refine_mould.h"
 #include "tensor/power_basis.h"
 
@@ -54,7 +54,7 @@ struct LoadSolver {
 // The interior system is ill-conditioned in n (cond ~1e6 at n = 12, ~1e11 at n = 18), so G is
 // computed with a long-double LU and refined (2 steps up to n ~ 20) with residuals evaluated in binary128 from
 // exact matrix entries.
-using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+using MatL = MatLD;
 
 
 std::shared_ptr<const LoadSolver> build_load_solver(int n) {
@@ -63,7 +63,7 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
   s->fixed = TensorNet(n, n).fixed_indices(FixedSet::BoundaryAdjacent);
   const int n1 = n + 1, N = n1 * n1;
   const int ni = static_cast<int>(s->interior.size()), nf = static_cast<int>(s->fixed.size());
-  const std::vector<quad> T4 = qderivative_at_degree(n, 4), T2 = qderivative_at_degree(n, 2);
+  const std::vector<quad> T4 = derivative_at_degree_rm<quad>(n, 4), T2 = derivative_at_degree_rm<quad>(n, 2);
   auto t4 = [&](int i, int k) { return T4[static_cast<size_t>(i * n1 + k)]; };
   auto t2 = [&](int i, int k) { return T2[static_cast<size_t>(i * n1 + k)]; };
   // (Op X)(i,j) = sum_k T4(i,k) X(k,j) + 2 sum_kl T2(i,k) T2(j,l) X(k,l) + sum_l T4(j,l) X(i,l).
@@ -87,9 +87,7 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
       [&](const MatL& cur) {
         MatL R(ni, nf);
         for (int c = 0; c < nf; ++c) {
-          std::fill(X.begin(), X.end(), quad(0));
-          for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = cur(r, c);
-          X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
+          mould_column(cur, c, s->interior, s->fixed, X);
           // Y = T2 X T2^T (then the other terms entrywise on the interior rows).
           std::vector<quad> XT(static_cast<size_t>(N), 0);
           for (int i = 0; i <= n; ++i)
@@ -118,7 +116,7 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
 }
 
 std::shared_ptr<const LoadSolver> load_solver(int n) {
-  static PerDegree<std::shared_ptr<const LoadSolver>> cache;
+  static DegreeCache<LoadSolver> cache;
   return cache.get(n, build_load_solver, "load solver");
 }
 
@@ -126,8 +124,7 @@ std::shared_ptr<const LoadSolver> load_solver(int n) {
 
 Eigen::MatrixXd derivative_at_degree(int n, int d) {
   if (n < 1 || d < 0) throw DegreeError("derivative_at_degree: needs n >= 1 and d >= 0");
-  if (d > n) return Eigen::MatrixXd::Zero(n + 1, n + 1);
-  return bernstein_elevation_operator(n - d, d) * bernstein_derivative_operator(n, d);
+  return derivative_at_degree_matrix<double>(n, d);  // core/bernstein_ops.h
 }
 
 TensorNet bilaplacian_load_net(const TensorNet& net, double c40, double c22, double c04) {
@@ -151,14 +148,12 @@ BiharmonicLoadResult solve_biharmonic_load_untimed(const TensorNet& data) {
   const auto solver = load_solver(n);
   require_finite_rows(data.points(), solver->fixed, "biharmonic-load data", data.m() + 1);
 
-  Eigen::MatrixXd xf(solver->fixed.size(), 3);
-  for (size_t r = 0; r < solver->fixed.size(); ++r) xf.row(static_cast<Eigen::Index>(r)) = data.points().row(solver->fixed[r]);
+  const Eigen::MatrixXd xf = data.points()(solver->fixed, Eigen::all);
   const Eigen::MatrixXd xi = solver->G * xf;
 
   TensorNet net(n, n);
-  for (size_t r = 0; r < solver->fixed.size(); ++r) net.points().row(solver->fixed[r]) = xf.row(static_cast<Eigen::Index>(r));
-  for (size_t r = 0; r < solver->interior.size(); ++r)
-    net.points().row(solver->interior[r]) = xi.row(static_cast<Eigen::Index>(r));
+  net.points()(solver->fixed, Eigen::all) = xf;
+  net.points()(solver->interior, Eigen::all) = xi;
 
   BiharmonicLoadResult result{net, bilaplacian_load_net(net), {}};
   // Residual: the interior of the load net against the same sums in absolute values
@@ -211,15 +206,13 @@ TensorNet complete_admissible_load(const TensorNet& load) {
   const Eigen::MatrixXd Op = bilaplacian_operator(n, 1.0, 2.0, 1.0);
   // Unknowns: x at inner indices (x's boundary ring is 0 by Corollary 1), then R at the ring.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(N, N);
-  for (int r = 0; r < N; ++r)
-    for (size_t c = 0; c < inner.size(); ++c) A(r, static_cast<Eigen::Index>(c)) = Op(r, inner[c]);
+  A.leftCols(static_cast<Eigen::Index>(inner.size())) = Op(Eigen::all, inner);
   for (size_t c = 0; c < ring.size(); ++c) A(ring[c], static_cast<Eigen::Index>(inner.size() + c)) = -1.0;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(N, 3);
-  for (int r : inner) rhs.row(r) = load.points().row(r);
+  rhs(inner, Eigen::all) = load.points()(inner, Eigen::all);
   const Eigen::MatrixXd sol = Eigen::PartialPivLU<Eigen::MatrixXd>(A).solve(rhs);
   TensorNet out = load;
-  for (size_t c = 0; c < ring.size(); ++c)
-    out.points().row(ring[c]) = sol.row(static_cast<Eigen::Index>(inner.size() + c));
+  out.points()(ring, Eigen::all) = sol.middleRows(static_cast<Eigen::Index>(inner.size()), static_cast<Eigen::Index>(ring.size()));
   return out;
 }
 

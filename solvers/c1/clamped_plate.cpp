@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/bernstein.h"
+#include "core/bernstein_ops.h"
 #include "core/errors.h"
 #include "core/kron.h"
-#include "core/quad_bernstein.h"
 #include "core/quadrature.h"
 #include "solvers/c1/biharmonic_load.h"
 
@@ -236,7 +236,7 @@ SymmetricPlateSystem plate_system(int n, double a) {
   sys.L = sys.h - 1;
   sys.N = sys.L * sys.L;  // fundamental domain 2..h in each direction
   const int h = sys.h, L = sys.L, N = sys.N;
-  const std::vector<quad> T4 = qderivative_at_degree(n, 4), T2 = qderivative_at_degree(n, 2);
+  const std::vector<quad> T4 = derivative_at_degree_rm<quad>(n, 4), T2 = derivative_at_degree_rm<quad>(n, 2);
   auto t4 = [&](int i, int k) { return T4[static_cast<size_t>(i * (n + 1) + k)]; };
   auto t2 = [&](int i, int k) { return T2[static_cast<size_t>(i * (n + 1) + k)]; };
   const quad qa = a, c2 = 2 / (qa * qa), c4 = 1 / (qa * qa * qa * qa);
@@ -262,8 +262,8 @@ SymmetricPlateSystem plate_system(int n, double a) {
 // overwrites A). x must hold N ones on entry. False if the system is singular.
 bool solve_refined(std::vector<quad>& A, int N, std::vector<quad>& x, int& iterations) {
   bool ok = true;
-  using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
-  using VecL = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
+  using MatL = MatLD;
+  using VecL = VecLD;
   MatL Ad(N, N);
   for (int r = 0; r < N; ++r)
     for (int c = 0; c < N; ++c) Ad(r, c) = static_cast<long double>(A[static_cast<size_t>(r * N + c)]);
@@ -307,7 +307,7 @@ ClampedPlateResult admissible_load(int n, double a) {
     for (int j = 2; j <= n - 2; ++j) {
       const quad xij = x[static_cast<size_t>(sys.pos(i, j))];
       W(i, j) = static_cast<double>(xij);
-      w += qbinom(n, i) * qbinom(n, j) * half_n * half_n * xij;
+      w += binomial<quad>(n, i) * binomial<quad>(n, j) * half_n * half_n * xij;
     }
   out.center_deflection = static_cast<double>(w);
   out.energy = plate_energy(W, a);

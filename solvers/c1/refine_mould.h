@@ -8,10 +8,21 @@
 // contracting: the condition number is beyond ~1e19 and G is kept as it is), or after max_steps.
 // Used by solvers/c1/biharmonic_load.cpp and solvers/c1/tetraharmonic.cpp.
 #include <Eigen/Core>
+#include <algorithm>
+#include <vector>
+
+#include "core/scalar_types.h"
 
 namespace bpde {
 
-using MatLD = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+/// The binary128 net of column c of the mould (X has one entry per control point): G(:, c) on the
+/// interior rows, 1 at the fixed row fixed[c], 0 elsewhere. Its residual is column c of R.
+inline void mould_column(const MatLD& G, int c, const std::vector<int>& interior, const std::vector<int>& fixed,
+                         std::vector<quad>& X) {
+  std::fill(X.begin(), X.end(), quad(0));
+  for (size_t r = 0; r < interior.size(); ++r) X[static_cast<size_t>(interior[r])] = G(static_cast<Eigen::Index>(r), c);
+  X[static_cast<size_t>(fixed[static_cast<size_t>(c)])] = 1;
+}
 
 /// residual(G) -> MatLD, correct(R) -> MatLD (same shape as G).
 template <class Residual, class Correct>

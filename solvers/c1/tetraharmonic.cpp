@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "core/bernstein.h"
+#include "core/bernstein_ops.h"
 #include "core/errors.h"
+#include "core/keyed_cache.h"
 #include "core/kron.h"
-#include "core/per_degree.h"
-#include "core/quad_bernstein.h"
 #include "solvers/c1/biharmonic_load.h"
 #include "solvers/c1/refine_mould.h"
 #include "tensor/power_basis.h"
@@ -40,7 +40,7 @@ void check_data(const TensorNet& data) {
 // The Bernstein least-squares matrix is ill-conditioned (cond(A_I) ~ 3e6 at n = 12, 3e10 at
 // n = 16, 5e13 at n = 20), so a double QR loses up to 1e-3 relative in G. We factor in long double
 // (64-bit mantissa) and refine G with residuals computed in binary128 from exact matrix entries.
-using MatL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+using MatL = MatLD;
 
 
 struct LuSolver {
@@ -85,10 +85,10 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
   s->interior = shape.free_indices(FixedSet::BoundaryAdjacent);
   const int n1 = n + 1, N = n1 * n1, ni = static_cast<int>(s->interior.size()), nf = static_cast<int>(s->fixed.size());
   std::vector<std::vector<quad>> T(9);
-  for (int d = 0; d <= 8; d += 2) T[static_cast<size_t>(d)] = qderivative_at_degree(n, d);
+  for (int d = 0; d <= 8; d += 2) T[static_cast<size_t>(d)] = derivative_at_degree_rm<quad>(n, d);
   // Operator columns in long double: column (k,l) of sum_t C_t T_{8-2t} (x) T_{2t} is
   // sum_t C_t T_{8-2t}(:,k) T_{2t}(:,l)^T.
-  auto column = [&](int k, int l, Eigen::Ref<Eigen::Matrix<long double, Eigen::Dynamic, 1>> out) {
+  auto column = [&](int k, int l, Eigen::Ref<VecLD> out) {
     out.setZero();
     for (int t = 0; t <= 4; ++t) {
       const auto& A = T[static_cast<size_t>(8 - 2 * t)];
@@ -115,9 +115,7 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
       [&](const MatL& cur) {
         MatL R(N, nf);
         for (int c = 0; c < nf; ++c) {
-          std::fill(X.begin(), X.end(), quad(0));
-          for (int r = 0; r < ni; ++r) X[static_cast<size_t>(s->interior[static_cast<size_t>(r)])] = cur(r, c);
-          X[static_cast<size_t>(s->fixed[static_cast<size_t>(c)])] = 1;
+          mould_column(cur, c, s->interior, s->fixed, X);
           apply_operator(T, n, X, Y);
           for (int r = 0; r < N; ++r) R(r, c) = static_cast<long double>(Y[static_cast<size_t>(r)]);
         }
@@ -130,7 +128,7 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
 }
 
 std::shared_ptr<const LuSolver> lu_solver(int n) {
-  static PerDegree<std::shared_ptr<const LuSolver>> cache;
+  static DegreeCache<LuSolver> cache;
   return cache.get(n, build_lu_solver, "lu solver");
 }
 
@@ -340,9 +338,9 @@ void refine_lu_solution(const LuSolver& s, int n, TensorNet& net) {
     for (int r = 0; r < N; ++r) xq[static_cast<size_t>(r)] = net.points()(r, c);
     for (int step = 0; step < 3; ++step) {
       apply_operator(s.T, n, xq, Y);
-      Eigen::Matrix<long double, Eigen::Dynamic, 1> res(N);
+      VecLD res(N);
       for (int r = 0; r < N; ++r) res(r) = static_cast<long double>(Y[static_cast<size_t>(r)]);
-      const Eigen::Matrix<long double, Eigen::Dynamic, 1> d = s.qr->solve(res);
+      const VecLD d = s.qr->solve(res);
       long double dmax = 0, xmax = 0;
       for (size_t r = 0; r < s.interior.size(); ++r) {
         xq[static_cast<size_t>(s.interior[r])] -= static_cast<quad>(d(static_cast<Eigen::Index>(r)));

@@ -47,12 +47,12 @@ namespace cmc_detail {
 
 Eigen::VectorXd CmcProblem::get() const {
   Eigen::VectorXd y(3 * k());
-  for (int a = 0; a < k(); ++a) y.segment<3>(3 * a) = P.row(free[static_cast<size_t>(a)]).transpose();
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(y.data(), k(), 3) = P(free, Eigen::all);
   return y;
 }
 
 void CmcProblem::set(const Eigen::VectorXd& y) {
-  for (int a = 0; a < k(); ++a) P.row(free[static_cast<size_t>(a)]) = y.segment<3>(3 * a).transpose();
+  P(free, Eigen::all) = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(y.data(), k(), 3);
 }
 
 Eigen::VectorXd CmcProblem::gradient(double H) const {
@@ -119,7 +119,7 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
     if (slow && fresh && it >= 2 && st.residual > prev_r) return st;  // Newton itself diverges
     if (!fac || slow) {
       fac = std::make_unique<SymFactor>(p.hessian(H));
-      st.pd = fac->pd ? 1 : 0;
+      st.pd = fac->positive_definite() ? 1 : 0;
       fresh = true;
     } else {
       fresh = false;
@@ -180,20 +180,14 @@ struct DirichletFactor {
 DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
   const Eigen::MatrixXd& C = p.f->gram();
   const int k = p.k();
-  const int nf = static_cast<int>(fixed_idx.size());
-  Eigen::MatrixXd Cff(k, k), Cfx(k, nf);
-  Eigen::MatrixX3d Px(nf, 3);
-  for (int a = 0; a < k; ++a) {
-    for (int b = 0; b < k; ++b) Cff(a, b) = C(p.free[static_cast<size_t>(a)], p.free[static_cast<size_t>(b)]);
-    for (int b = 0; b < nf; ++b) Cfx(a, b) = C(p.free[static_cast<size_t>(a)], fixed_idx[static_cast<size_t>(b)]);
-  }
-  for (int b = 0; b < nf; ++b) Px.row(b) = p.P.row(fixed_idx[static_cast<size_t>(b)]);
+  const Eigen::MatrixXd Cff = C(p.free, p.free), Cfx = C(p.free, fixed_idx);
+  const Eigen::MatrixX3d Px = p.P(fixed_idx, Eigen::all);
   DirichletFactor f;
   f.gram = std::make_unique<SymFactor>(Cff);
   const Eigen::MatrixX3d Y = -f.gram->solve(Cfx * Px);
-  for (int a = 0; a < k; ++a) p.P.row(p.free[static_cast<size_t>(a)]) = Y.row(a);
-  if (f.gram->use_llt) {
-    f.L = f.gram->llt.matrixL();
+  p.P(p.free, Eigen::all) = Y;
+  if (f.gram->cholesky()) {
+    f.L = f.gram->matrixL();
   } else {
     const double d = k ? Cff.diagonal().cwiseAbs().maxCoeff() : 1.0;
     for (double shift = 1e-14; shift < 1e-2; shift *= 10) {
@@ -355,8 +349,8 @@ bool on_branch(const Eigen::VectorXd& y, const Eigen::VectorXd& pred, const Eige
 bool strict_minimum(const CmcProblem& p, double H, bool last, int corrector_pd, Eigen::VectorXd& next_tangent) {
   if (last && corrector_pd == 1) return true;
   const SymFactor fac(p.hessian(H));
-  if (fac.pd && !last) next_tangent = -2.0 * fac.solve(p.volume_gradient());
-  return fac.pd;
+  if (fac.positive_definite() && !last) next_tangent = -2.0 * fac.solve(p.volume_gradient());
+  return fac.positive_definite();
 }
 
 // H mode, H != 0: continuation from the Dirichlet extremal in p.P to o.H. Predictor: the tangent;
@@ -365,7 +359,7 @@ bool strict_minimum(const CmcProblem& p, double H, bool last, int corrector_pd, 
 Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFactor& dir,
                         const std::vector<int>& fixed_idx, Summary& summary, int& continuation_steps) {
   const double Ht = o.H;
-  const bool gram_singular = !dir.gram->use_llt;
+  const bool gram_singular = !dir.gram->cholesky();
   Eigen::VectorXd tangent = initial_tangent(p, *dir.gram);
   Eigen::VectorXd y = p.get();
   StepController control(Ht, first_step(Ht, p.P, fixed_idx), o);

@@ -2,11 +2,11 @@
 // Internal to solvers/cmc/*.cpp: the CMC problem over the free control points, and the correctors.
 // The free unknowns form a vector y of length 3k, y(3a + c) = P(free[a], c).
 #include <Eigen/Core>
-#include <Eigen/Cholesky>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "core/symmetric_factor.h"
 #include "energies/cmc.h"
 #include "solvers/cmc/cmc.h"
 
@@ -34,30 +34,9 @@ struct CmcProblem {
   double value(double H) const { return f->value(P, H); }
 };
 
-/// Symmetric factorisation that decides positive definiteness robustly against rounding: Cholesky
-/// when it succeeds, otherwise pivoted LDL^T with every pivot >= -1e-10 max|pivot| counted as
-/// positive (the Bernstein Gram's smallest eigenvalues reach rounding level from degree ~18 on
-/// tensor nets, ~26 on triangular nets; the pivots are then rounding noise).
-struct SymFactor {
-  Eigen::LLT<Eigen::MatrixXd> llt;
-  Eigen::LDLT<Eigen::MatrixXd> ldlt;
-  bool use_llt = false, pd = false;
-  explicit SymFactor(const Eigen::MatrixXd& J) : llt(J) {
-    use_llt = llt.info() == Eigen::Success;
-    if (use_llt) {
-      pd = true;
-      return;
-    }
-    ldlt.compute(J);
-    const Eigen::VectorXd d = ldlt.vectorD();
-    const double mx = d.size() ? d.cwiseAbs().maxCoeff() : 0.0;
-    pd = ldlt.info() == Eigen::Success && mx > 0 && d.minCoeff() >= -1e-10 * mx;
-  }
-  template <class M>
-  Eigen::MatrixXd solve(const M& b) const {
-    return use_llt ? Eigen::MatrixXd(llt.solve(b)) : Eigen::MatrixXd(ldlt.solve(b));
-  }
-};
+/// Cholesky, else pivoted LDL^T with every pivot >= -1e-10 max|pivot| counted as positive
+/// (core/symmetric_factor.h).
+using SymFactor = SymmetricFactor<double>;
 
 /// Outcome of one corrector run at fixed H, starting from problem.P.
 struct CorrectorStats {

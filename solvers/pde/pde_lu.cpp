@@ -8,8 +8,9 @@
 #include <string>
 
 #include "core/bernstein.h"
+#include "core/bernstein_ops.h"
 #include "core/errors.h"
-#include "core/per_degree.h"
+#include "core/keyed_cache.h"
 #include "core/row_major_product.h"
 #include "tensor/power_basis.h"
 
@@ -130,42 +131,15 @@ namespace {
 // double matrix built from exact-in-long-double binomials keeps the error near the data-rounding
 // floor (docs/pde_accuracy.md).
 using LD = long double;
-using MatL = Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic>;
-using VecL = Eigen::Matrix<LD, Eigen::Dynamic, 1>;
-
-LD binomial_ld(int n, int k) {
-  if (k < 0 || k > n) return 0;
-  LD r = 1;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
-
-// (n-d+1) x (n+1): Bernstein coefficients of the d-th derivative, elevated back to degree n:
-// (n+1) x (n+1) in total.
-MatL derivative_elevated_ld(int n, int d) {
-  MatL D = MatL::Identity(n + 1, n + 1);
-  for (int q = 0; q < d; ++q) {
-    const int k = n - q;
-    MatL S = MatL::Zero(k, k + 1);
-    for (int i = 0; i < k; ++i) {
-      S(i, i) = -k;
-      S(i, i + 1) = k;
-    }
-    D = (S * D).eval();
-  }
-  const int nd = n - d;
-  MatL E = MatL::Zero(n + 1, nd + 1);
-  for (int i = 0; i <= nd; ++i)
-    for (int j = i; j <= i + d; ++j) E(j, i) = binomial_ld(nd, i) * binomial_ld(d, j - i) / binomial_ld(n, j);
-  return E * D;
-}
+using MatL = MatLD;
+using VecL = VecLD;
 
 MatL bernstein_matrix_ld(const std::vector<PdeTerm>& terms, int n, int m) {
   const int N = (n + 1) * (m + 1);
   MatL K = MatL::Zero(N, N);
   for (const PdeTerm& t : terms) {
     if (t.du > n || t.dv > m || t.c == 0.0) continue;
-    const MatL Au = derivative_elevated_ld(n, t.du), Av = derivative_elevated_ld(m, t.dv);
+    const MatL Au = derivative_at_degree_matrix<LD>(n, t.du), Av = derivative_at_degree_matrix<LD>(m, t.dv);
     for (int i = 0; i <= n; ++i)
       for (int k = 0; k <= n; ++k) {
         const LD a = static_cast<LD>(t.c) * Au(i, k);
@@ -184,18 +158,6 @@ struct Split {
 Split split_indices(int n, int m, FixedSet fixed) {
   TensorNet shape(n, m);
   return {shape.fixed_indices(fixed), shape.free_indices(fixed)};
-}
-
-MatL columns(const MatL& K, const std::vector<int>& idx) {
-  MatL out(K.rows(), static_cast<Eigen::Index>(idx.size()));
-  for (size_t q = 0; q < idx.size(); ++q) out.col(static_cast<Eigen::Index>(q)) = K.col(idx[q]);
-  return out;
-}
-
-Eigen::MatrixXd rows_of(const Eigen::MatrixX3d& P, const std::vector<int>& idx) {
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(idx.size()), 3);
-  for (size_t q = 0; q < idx.size(); ++q) out.row(static_cast<Eigen::Index>(q)) = P.row(idx[q]);
-  return out;
 }
 
 void check_problem(const EnergySpec& op, FixedSet fixed) {
@@ -249,7 +211,7 @@ double violation(const Eigen::MatrixXd& W, const Eigen::MatrixXd& XB) {
 PdeSolution finish(const TensorNet& data, int n, int m, const Split& sp, const Eigen::MatrixXd& XF, double viol,
                    double tol, const PdeStructure& st) {
   PdeSolution out{TensorNet(n, m, data.points()), Summary{}};
-  for (size_t q = 0; q < sp.free.size(); ++q) out.net.points().row(sp.free[q]) = XF.row(static_cast<Eigen::Index>(q));
+  out.net.points()(sp.free, Eigen::all) = XF;
   out.summary.residual = viol;
   if (!XF.allFinite()) {
     out.net = data;
@@ -304,12 +266,7 @@ PdeSolution not_unique(const TensorNet& data, const PdeStructure& st) {
 template <class T>
 void factorial_power_conversions(int n, std::vector<T>& to, std::vector<T>& from) {
   const int N = n + 1;
-  std::vector<T> C(static_cast<size_t>(N * N), T(0));  // Pascal's triangle, exact in T
-  auto c = [&](int i, int k) -> T& { return C[static_cast<size_t>(i * N + k)]; };
-  for (int i = 0; i <= n; ++i) {
-    c(i, 0) = 1;
-    for (int k = 1; k <= i; ++k) c(i, k) = c(i - 1, k - 1) + (k < i ? c(i - 1, k) : T(0));
-  }
+  auto c = [](int i, int k) { return binomial<T>(i, k); };  // exact in T
   to.assign(static_cast<size_t>(N * N), T(0));
   from.assign(static_cast<size_t>(N * N), T(0));
   T fact = 1;
@@ -379,8 +336,9 @@ struct ConversionTables {
 
 template <class T>
 const ConversionTables<T>& conversion_tables(int n) {
-  static PerDegree<ConversionTables<T>> cache;
-  return cache.get(n, [](int d) {
+  // A DegreeCache never evicts: the reference stays valid for the life of the program.
+  static DegreeCache<ConversionTables<T>> cache;
+  return *cache.get(n, [](int d) {
     ConversionTables<T> t;
     factorial_power_conversions<T>(d, t.to, t.from);
     return t;
@@ -644,7 +602,7 @@ PdeMould::PdeMould(const EnergySpec& op, int n, int m, FixedSet fixed, const Pde
   free_idx_ = sp.free;
   if (!structure_.unique) return;
   const MatL K = bernstein_matrix_ld(pde_operator_terms(op), n, m);
-  const MatL KFF = columns(K, free_idx_), KFB = columns(K, fixed_idx_);
+  const MatL KFF = K(Eigen::all, free_idx_), KFB = K(Eigen::all, fixed_idx_);
   if (free_idx_.empty()) {
     S_.resize(0, static_cast<Eigen::Index>(fixed_idx_.size()));
     // No unknowns: the conditions are L x = 0 itself, K_FB x_B = 0.
@@ -661,15 +619,15 @@ void PdeMould::apply(const TensorNet& data, TensorNet& out) const {
   if (!structure_.unique) throw UnsupportedProblem("pde mould: " + structure_.diagnosis);
   if (data.n() != n_ || data.m() != m_ || out.n() != n_ || out.m() != m_)
     throw DegreeError("pde mould: apply needs nets of the mould's degree");
-  const Eigen::MatrixXd XB = rows_of(data.points(), fixed_idx_);
+  const Eigen::MatrixXd XB = data.points()(fixed_idx_, Eigen::all);
   const Eigen::MatrixXd XF = mould_product(S_, XB);
-  for (size_t q = 0; q < fixed_idx_.size(); ++q) out.points().row(fixed_idx_[q]) = XB.row(static_cast<Eigen::Index>(q));
-  for (size_t q = 0; q < free_idx_.size(); ++q) out.points().row(free_idx_[q]) = XF.row(static_cast<Eigen::Index>(q));
+  out.points()(fixed_idx_, Eigen::all) = XB;
+  out.points()(free_idx_, Eigen::all) = XF;
 }
 
 double PdeMould::compatibility_violation(const TensorNet& data) const {
   if (W_.rows() == 0) return 0.0;
-  return violation(W_, rows_of(data.points(), fixed_idx_));
+  return violation(W_, data.points()(fixed_idx_, Eigen::all));
 }
 
 PdeSolution PdeMould::solve(const TensorNet& data) const {
@@ -720,13 +678,13 @@ PdeSolution solve_bernstein(const TensorNet& data, const EnergySpec& op, const P
   if (!st.unique) return not_unique(data, st);
   const Split sp = split_indices(n, m, FixedSet::Boundary);
   const MatL K = bernstein_matrix_ld(pde_operator_terms(op), n, m);
-  const MatL KFB = columns(K, sp.fixed);
-  const Eigen::MatrixXd XB = rows_of(data.points(), sp.fixed);
+  const MatL KFB = K(Eigen::all, sp.fixed);
+  const Eigen::MatrixXd XB = data.points()(sp.fixed, Eigen::all);
   Eigen::MatrixXd XF(static_cast<Eigen::Index>(sp.free.size()), 3);
   double viol = 0;
   if (!sp.free.empty()) {
     ScaledQR f;
-    factor(columns(K, sp.free), f);
+    factor(K(Eigen::all, sp.free), f);
     XF = (f.scale.cwiseInverse().asDiagonal() * f.qr.solve(MatL(-(KFB * XB.cast<LD>())))).cast<double>();
     if (st.conditions > 0) viol = violation(compatibility_rows(f, KFB, st.conditions), XB);
   } else if (st.conditions > 0) {
