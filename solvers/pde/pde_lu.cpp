@@ -643,7 +643,7 @@ PdeSolution PdeMould::solve(const TensorNet& data) const {
     if (!structure_.unique) {
       out = not_unique(data, structure_);
     } else {
-      const Eigen::MatrixXd XB = rows_of(data.points(), fixed_idx_);
+      const Eigen::MatrixXd XB = data.points()(fixed_idx_, Eigen::all);
       const Eigen::MatrixXd XF = mould_product(S_, XB);
       const double viol = W_.rows() ? violation(W_, XB) : 0.0;
       out = finish(data, n_, m_, {fixed_idx_, free_idx_}, XF, viol, options_.compatibility_tolerance, structure_);
