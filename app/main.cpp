@@ -11,16 +11,6 @@
 #include "app/commands.h"
 #include "jobs/exit_status.h"
 
-namespace {
-
-// One line: newlines in messages would break the contract.
-std::string one_line(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)"};
@@ -74,7 +64,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "error: %s (see bpde --help)\n", one_line(e.what()).c_str());
+    std::fprintf(stderr, "error: %s (see bpde --help)\n", bpde::one_line(e.what()).c_str());
     return 2;
   }
 

@@ -6,16 +6,11 @@
 
 namespace bpde {
 
-namespace {
-
-// One line: newlines in messages would break the contract.
 std::string one_line(std::string s) {
   for (char& c : s)
     if (c == '\n' || c == '\r') c = ' ';
   return s;
 }
-
-}  // namespace
 
 ErrorExit error_exit(const std::exception_ptr& e) {
   try {

@@ -15,6 +15,9 @@ struct ErrorExit {
   std::string line;  ///< one line for stderr, ending in '\n' (newlines of the message replaced)
 };
 
+/// `s` with its newlines replaced by spaces: a message fit for the one stderr line of the contract.
+std::string one_line(std::string s);
+
 /// The exit code and stderr line for an exception (usually std::current_exception()).
 ErrorExit error_exit(const std::exception_ptr& e);
 

@@ -96,4 +96,18 @@ class ScopedTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
+/// f() (a result with a Summary member `summary`) with the wall time of the call in
+/// summary.seconds, also when the result is returned by value:
+///   return timed_solve([&] { return solve_untimed(data, options); });
+template <class F>
+auto timed_solve(const F& f) {
+  double seconds = 0.0;
+  auto r = [&] {
+    ScopedTimer timer(seconds);
+    return f();
+  }();
+  r.summary.seconds = seconds;
+  return r;
+}
+
 }  // namespace bpde

@@ -30,18 +30,6 @@ void require_edge(const Eigen::MatrixX3d& M, int k, const std::string& name) {
   require_finite(M, name);
 }
 
-// f() (a SmoothingSplineResult) with the wall time of the call in summary.seconds.
-template <class F>
-SmoothingSplineResult timed(const F& f) {
-  double seconds = 0.0;
-  SmoothingSplineResult r = [&] {
-    ScopedTimer timer(seconds);
-    return f();
-  }();
-  r.summary.seconds = seconds;
-  return r;
-}
-
 std::string sci(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2e", v);
@@ -477,12 +465,12 @@ SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplinePr
 }
 
 SmoothingSplineResult SmoothingSplineSolver::solve(const SmoothingSplineProblem& problem) const {
-  return timed([&] { return impl_->solve(problem); });
+  return timed_solve([&] { return impl_->solve(problem); });
 }
 
 SmoothingSplineResult solve_smoothing_spline(const SmoothingSplineProblem& problem,
                                              const SmoothingSplineOptions& options) {
-  return timed([&] {
+  return timed_solve([&] {
     SmoothingSplineSolver solver(problem, options);
     return solver.solve(problem);
   });

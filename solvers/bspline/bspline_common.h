@@ -50,16 +50,4 @@ inline void scatter_rows(Eigen::MatrixX3d& P, const std::vector<int>& idx, const
 /// Columns idx of a dense matrix.
 inline Eigen::MatrixXd gather_cols(const Eigen::MatrixXd& A, const std::vector<int>& idx) { return A(Eigen::all, idx); }
 
-/// f() (a result with a Summary `summary`) with the wall time of the call in summary.seconds.
-template <class F>
-auto timed(const F& f) {
-  double seconds = 0.0;
-  auto r = [&] {
-    ScopedTimer timer(seconds);
-    return f();
-  }();
-  r.summary.seconds = seconds;
-  return r;
-}
-
 }  // namespace bpde::detail

@@ -130,7 +130,7 @@ const std::vector<int>& BSplineExtremalSolver::fixed() const { return impl_->fix
 const std::vector<int>& BSplineExtremalSolver::free() const { return impl_->free; }
 
 BSplineExtremalResult BSplineExtremalSolver::solve(const BSplineNet& data) const {
-  return detail::timed([&] { return impl_->solve(data); });
+  return timed_solve([&] { return impl_->solve(data); });
 }
 
 BSplineExtremalResult BSplineExtremalSolver::Impl::solve(const BSplineNet& data) const {
@@ -196,7 +196,7 @@ BSplineExtremalResult solve_bspline_extremal(const BSplineNet& data, const Energ
                                              const std::vector<int>& fixed, const BSplineExtremalOptions& options) {
   options.validate();
   require_finite_rows(data.points(), fixed, "bspline extremal", data.nv());
-  return detail::timed([&] {
+  return timed_solve([&] {
     BSplineExtremalSolver solver(data.p(), data.q(), data.knots_u(), data.knots_v(), energy, fixed, options.tolerance);
     return solver.solve(data);
   });

@@ -54,17 +54,9 @@ struct PdeExplicitOptions {
 /// fourth-order operator with a closed form (EnergySpec::has_explicit_solution) and "boundary"
 /// data; for other operators the method is refused with a message suggesting "lu".
 inline SolverRequirements pde_explicit_requirements(const EnergySpec& op) {
-  SolverRequirements r;
-  r.problem = "problem \"pde\"";
-  r.nets = {NetKind::Tensor};
-  if (op.order() == 4) {
-    r.fixed = {FixedSet::Boundary};
-    r.fixed_reason = "a fourth-order pde (" + op.name() + ") takes \"fixed\": \"boundary\"";
-  } else {
-    r.fixed_reason = "a second-order pde (" + op.name() + ") takes \"fixed\": \"u-boundaries\"";
-  }
+  SolverRequirements r = pde_lu_requirements(op);
+  r.methods.clear();
   r.square = true;
-  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 2}};
   if (op.order() == 4 && op.has_explicit_solution())
     r.methods = {"explicit"};
   else
