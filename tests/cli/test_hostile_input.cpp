@@ -115,7 +115,7 @@ TEST(HostileInput, HugeAndOverflowingKnotsAreBadInput) {
                                job_with_net(bspline_net(knots), R"({"kind": "extremal", "energy": {"name": "dirichlet"}})"));
     expect_bad_input("solve " + job.string() + " --out " + out.string(), out, "too large");
   }
-  // Badly scaled although every number is moderate: a domain of 1e-12 at 1e6, a span of 1e-15.
+  // Badly scaled although every number is moderate: a domain of 1e-6 at 1e6, a span of 1e-15.
   expect_bad_input("sample " + write("knots_res.json", bspline_net("[1e6, 1e6, 1000000.000001, 1000000.000001]")).string() +
                        " --out " + out.string(),
                    out, "badly scaled");
