@@ -80,6 +80,13 @@ EnergySpec EnergySpec::gnorm(double rho, double t) {
   require_finite(rho, "rho");
   require_finite(t, "t");
   if (!(rho > 0)) throw ParameterError("gnorm: rho must be > 0 (rho = |e1|/|e2|)");
+  if (!std::isfinite(rho * rho) || !(rho * rho > 0))
+    throw NonFiniteError("gnorm: rho^2 overflows or underflows (rho = |e1|/|e2|)");
+  // e1 = rho (cos t, sin t), e2 = (1, 0) up to a rotation: det G = rho sin t, |G|_F^2 = rho^2 + 1.
+  // The same relative test as gnorm(G): singular when |rho sin t| <= 1e-12 (rho^2 + 1), which
+  // takes in t = 0 and t = pi (sin(pi) = 1.2e-16 in double) and every t within ~1e-12 of k pi.
+  if (!(std::abs(rho * std::sin(t)) > 1e-12 * (rho * rho + 1)))
+    throw ParameterError("gnorm: G is singular (sin t = 0: e1 is parallel to e2); the G-norm needs an invertible G");
   EnergySpec e;
   e.kind_ = EnergyKind::GNormRhoT;
   e.rho_ = rho;

@@ -53,7 +53,9 @@ enum class EnergyKind {
 class EnergySpec {
  public:
   /// Constructors validate their parameters: every number finite (NonFiniteError); for a G
-  /// matrix, |det G| > 1e-12 * |G|_F^2 (ParameterError "singular G"); rho > 0 (ParameterError).
+  /// matrix, |det G| > 1e-12 * |G|_F^2 (ParameterError "singular G"); rho > 0 (ParameterError);
+  /// for (rho, t) the same relative test, |rho sin t| > 1e-12 (rho^2 + 1) (ParameterError "singular
+  /// G": t = 0, pi, ... make e1 parallel to e2).
   static EnergySpec dirichlet();
   static EnergySpec second_order(double a, double b, double c);
   static EnergySpec biharmonic();

@@ -53,12 +53,28 @@ std::string clean_nlohmann(const std::string& what) {
   return p == std::string::npos ? what : what.substr(p + 2);
 }
 
+// Thrown by the parse callback when arrays/objects nest deeper than kMaxJsonDepth.
+struct TooDeep {};
+
 }  // namespace
 
 Json parse_json(const std::string& text, const std::string& source) {
+  if (text.size() > kMaxJsonBytes)
+    throw FileError(source + ": input is larger than the limit of " + std::to_string(kMaxJsonBytes >> 20) + " MiB");
   Json j;
+  // The depth is bounded while parsing: the parser itself is iterative, but every reader that
+  // walks or prints a value (dump(), the destructor, the strict readers) recurses per level.
+  const Json::parser_callback_t depth_limit = [](int depth, Json::parse_event_t event, Json&) {
+    if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) &&
+        depth >= kMaxJsonDepth)
+      throw TooDeep{};
+    return true;
+  };
   try {
-    j = Json::parse(text);
+    j = Json::parse(text, depth_limit);
+  } catch (const TooDeep&) {
+    throw ParseError(source + ": arrays and objects nest deeper than the limit of " + std::to_string(kMaxJsonDepth) +
+                     " levels");
   } catch (const nlohmann::json::exception& e) {
     throw ParseError(source + ": malformed JSON: " + clean_nlohmann(e.what()));
   }
@@ -71,10 +87,15 @@ Json parse_json(const std::string& text, const std::string& source) {
 Json read_json_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError("cannot read file '" + path + "' (missing or unreadable)");
-  std::ostringstream s;
-  s << in.rdbuf();
+  // Read at most kMaxJsonBytes + 1 bytes: endless input (/dev/zero, a pipe) stops at the limit.
+  std::string text;
+  std::vector<char> chunk(1 << 16);
+  while (in && text.size() <= kMaxJsonBytes) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    text.append(chunk.data(), static_cast<size_t>(in.gcount()));
+  }
   if (in.bad()) throw FileError("cannot read file '" + path + "'");
-  return parse_json(s.str(), path);
+  return parse_json(text, path);
 }
 
 void write_json_file(const std::string& path, const Json& j) {
@@ -176,7 +197,11 @@ int degree_value(const Json& j, const std::string& path) {
 
 std::array<int, 2> degree_pair(const Json& j, const std::string& path) {
   if (!j.is_array() || j.size() != 2)
-    throw ParseError(path + ": expected [n, m], got " + j.dump().substr(0, 40));
+    // Not j.dump(): it recurses once per nesting level, and blend configs reach this reader
+    // through their own parser (no depth limit there).
+    throw ParseError(path + ": expected [n, m], got " +
+                     (j.is_structured() ? std::string(j.type_name()) + " of " + std::to_string(j.size()) + " elements"
+                                        : j.dump().substr(0, 40)));
   return {degree_value(j[0], path + "[0]"), degree_value(j[1], path + "[1]")};
 }
 

@@ -20,9 +20,17 @@ using Json = nlohmann::json;
 /// Any net of FORMATS.md.
 using Net = std::variant<TensorNet, TriangularNet, BSplineNet>;
 
-/// Parse JSON text; `source` names it in errors (a file name). Throws ParseError.
+/// Input limits of every JSON reader (docs/FORMATS.md "Limits"): a file or text of more than
+/// kMaxJsonBytes bytes is refused (FileError), and arrays/objects nested more than kMaxJsonDepth
+/// levels deep (ParseError). Both are bad input (exit 2).
+inline constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;  // 64 MiB
+inline constexpr int kMaxJsonDepth = 256;
+
+/// Parse JSON text; `source` names it in errors (a file name). Throws ParseError, or FileError
+/// when the text exceeds kMaxJsonBytes.
 Json parse_json(const std::string& text, const std::string& source);
-/// Read and parse a file. Throws FileError (missing, unreadable) or ParseError.
+/// Read and parse a file (at most kMaxJsonBytes + 1 bytes are read, so endless input such as
+/// /dev/zero stops there). Throws FileError (missing, unreadable, too large) or ParseError.
 Json read_json_file(const std::string& path);
 /// Write `j` to a file (pretty-printed, full double precision). Throws FileError.
 void write_json_file(const std::string& path, const Json& j);

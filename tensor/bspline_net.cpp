@@ -33,10 +33,39 @@ void check_knots(int k, const std::vector<double>& K, const char* dir) {
   if (!(K[static_cast<size_t>(k)] < K[static_cast<size_t>(count)]))
     throw ParameterError("bspline: empty domain in " + d + ": knot[" + std::to_string(k) + "] == knot[" +
                          std::to_string(count) + "]");
+  // Scale (BSplineNet::kMaxKnotMagnitude, kMinDomainResolution, kMinSpanRatio): every width
+  // computed from the knots (spans, the domain, the whole vector) is then finite and non-zero
+  // where it is not an exact multiple knot, so no parameter derived from them is inf or NaN.
+  double big = 0.0;
+  for (size_t i = 0; i < K.size(); ++i) {
+    if (std::abs(K[i]) > BSplineNet::kMaxKnotMagnitude)
+      throw ParameterError("bspline: knot " + d + "[" + std::to_string(i) + "] is too large (|knot| must be <= 1e50)");
+    big = std::max(big, std::abs(K[i]));
+  }
+  const double domain = K[static_cast<size_t>(count)] - K[static_cast<size_t>(k)];
+  if (!(domain >= BSplineNet::kMinDomainResolution * big) || !(domain >= BSplineNet::kMinDomainWidth))
+    throw ParameterError("bspline: the domain of " + d + " [knot[" + std::to_string(k) + "], knot[" +
+                         std::to_string(count) + "]] is badly scaled: its width must be >= 1e-50 and >= 1e-8 "
+                         "times the largest |knot|");
+  const double total = K.back() - K.front();
+  for (size_t i = 1; i < K.size(); ++i) {
+    const double h = K[i] - K[i - 1];
+    if (h > 0 && !(h >= BSplineNet::kMinSpanRatio * total))
+      throw ParameterError("bspline: knot span " + d + "[" + std::to_string(i - 1) + "].." + d + "[" +
+                           std::to_string(i) + "] is badly scaled: a non-zero span must be >= 1e-12 times "
+                           "knot.back() - knot.front()");
+  }
+}
+
+// The parameters are finite here (checked by the callers): clamp() and the comparisons below let
+// a NaN through, and a NaN would give the span count, one past the last basis function.
+void require_finite_parameter(double t, const char* what) {
+  if (!std::isfinite(t)) throw NonFiniteError(std::string("bspline: ") + what + " parameter is not finite");
 }
 
 // Span index s with K[s] <= t < K[s+1], clamped to [k, count-1] (Piegl–Tiller A2.1).
 int find_span(int k, const std::vector<double>& K, double t) {
+  require_finite_parameter(t, "a");
   const int count = static_cast<int>(K.size()) - k - 1;
   if (t >= K[static_cast<size_t>(count)]) {
     int s = count - 1;
@@ -48,8 +77,9 @@ int find_span(int k, const std::vector<double>& K, double t) {
     while (s < count - 1 && K[static_cast<size_t>(s + 1)] == K[static_cast<size_t>(k)]) ++s;
     return s;
   }
+  // K[k] < t < K[count]: the first knot > t is in K[k+1..count], so k <= span <= count - 1.
   const auto it = std::upper_bound(K.begin() + k, K.begin() + count + 1, t);
-  return static_cast<int>(it - K.begin()) - 1;
+  return std::clamp(static_cast<int>(it - K.begin()) - 1, k, count - 1);
 }
 
 // Non-zero basis functions and derivatives up to order nd at t (Piegl–Tiller A2.3):
@@ -127,6 +157,7 @@ Eigen::MatrixXd BSplineNet::basis_table(int k, const std::vector<double>& K, con
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(t.size(), count);
   if (d > k) return T;
   for (Eigen::Index s = 0; s < t.size(); ++s) {
+    require_finite_parameter(t(s), "a basis_table");
     const double x = std::clamp(t(s), K[static_cast<size_t>(k)], K[static_cast<size_t>(count)]);
     const int span = find_span(k, K, x);
     const Eigen::MatrixXd D = ders_basis(span, x, k, d, K);
@@ -154,6 +185,7 @@ namespace {
 // de Boor's algorithm on the control points ctrl(0..count-1) of one direction (degree k, knots K).
 Eigen::Vector3d de_boor(int k, const std::vector<double>& K, const std::vector<Eigen::Vector3d>& ctrl, double t) {
   const int count = static_cast<int>(K.size()) - k - 1;
+  require_finite_parameter(t, "a de Boor");
   t = std::clamp(t, K[static_cast<size_t>(k)], K[static_cast<size_t>(count)]);
   const int s = find_span(k, K, t);
   std::vector<Eigen::Vector3d> d(static_cast<size_t>(k + 1));

@@ -15,10 +15,24 @@ namespace bpde {
 
 class BSplineNet {
  public:
+  /// Scale rule of a knot vector K of degree k (count = len(K) - k - 1), checked with the other
+  /// knot checks (ParameterError naming the knot or span):
+  ///   |K_i| <= kMaxKnotMagnitude;
+  ///   domain width K[count] - K[k] >= kMinDomainWidth and >= kMinDomainResolution * max |K_i|
+  ///     (the domain holds at least ~1e8 distinct doubles);
+  ///   every non-zero span K[i+1] - K[i] >= kMinSpanRatio * (K.back() - K.front()).
+  /// Every width and parameter computed from such knots is finite (a span of ±1e308 overflowed to
+  /// inf and gave NaN parameters), and the fundamental forms, which scale like width^-4, stay
+  /// inside double's range.
+  static constexpr double kMaxKnotMagnitude = 1e50;
+  static constexpr double kMinDomainWidth = 1e-50;
+  static constexpr double kMinDomainResolution = 1e-8;
+  static constexpr double kMinSpanRatio = 1e-12;
+
   /// Validates (typed exceptions of core/errors.h): degrees 1..kMaxDegree (DegreeError); finite,
   /// non-decreasing knots with multiplicity <= degree + 1, at least degree + 1 control points per
-  /// direction and a non-empty domain (ParameterError / SizeError); point count nu*nv (SizeError);
-  /// finite coordinates (NonFiniteError).
+  /// direction and a non-empty domain (ParameterError / SizeError), well scaled (the rule above,
+  /// ParameterError); point count nu*nv (SizeError); finite coordinates (NonFiniteError).
   BSplineNet(int p, int q, std::vector<double> U, std::vector<double> V, Eigen::MatrixX3d points);
 
   int p() const { return p_; }
@@ -36,7 +50,8 @@ class BSplineNet {
   double v_min() const { return V_[static_cast<size_t>(q_)]; }
   double v_max() const { return V_[static_cast<size_t>(nv())]; }
 
-  /// Derivative of order (du, dv) at (u, v) in the knot domain (clamped to it).
+  /// Derivative of order (du, dv) at (u, v) in the knot domain (clamped to it; NonFiniteError for
+  /// a non-finite u or v).
   Eigen::Vector3d derivative(double u, double v, int du, int dv) const;
   Eigen::Vector3d evaluate(double u, double v) const { return derivative(u, v, 0, 0); }
   /// x(u,v) by de Boor's algorithm (corner cutting in v on each of the p+1 active rows, then in
@@ -50,7 +65,8 @@ class BSplineNet {
   static void validate_knots(int k, const std::vector<double>& K, const char* dir);
 
   /// #t by n_basis table of the d-th derivatives of the basis functions (Piegl–Tiller A2.3) of
-  /// one direction: knots K, degree k.
+  /// one direction: knots K, degree k. Parameters are clamped to the domain; a non-finite
+  /// parameter throws NonFiniteError (it has no span).
   static Eigen::MatrixXd basis_table(int k, const std::vector<double>& K, const Eigen::VectorXd& t, int d = 0);
 
   /// Indices (i, j) with min(i, nu-1-i, j, nv-1-j) == r.

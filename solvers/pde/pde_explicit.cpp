@@ -9,6 +9,7 @@
 #include "core/bernstein.h"
 #include "core/errors.h"
 #include "core/row_major_product.h"
+#include "solvers/pde/pde_residual.h"
 #include "tensor/power_basis.h"
 
 namespace bpde {
@@ -400,6 +401,7 @@ PdeSolution solve_explicit_untimed(const TensorNet& data, const EnergySpec& op, 
       out.summary.set_failed(Status::NumericalLimit, "the explicit solution overflowed double precision");
     } else {
       out.net = std::move(sol);
+      check_pde_degree_limit(n, n, "explicit", out.summary);
     }
   } else {
     out.summary.message += "; the data are returned unchanged";

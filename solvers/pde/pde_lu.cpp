@@ -664,6 +664,7 @@ PdeSolution solve_antidiagonal(const TensorNet& data, const EnergySpec& op, cons
   if (antidiagonal_solve<LD>(data, operator_coefficients(op), options.rank_tolerance, sol, status, why)) {
     out.net = std::move(sol);
     out.summary.set_converged();
+    check_pde_degree_limit(n, n, "lu", out.summary);
   } else {
     out.summary.set_failed(status, why + "; the data are returned unchanged");
   }
@@ -690,7 +691,9 @@ PdeSolution solve_bernstein(const TensorNet& data, const EnergySpec& op, const P
   } else if (st.conditions > 0) {
     viol = violation(conditions_without_unknowns(KFB, st.conditions), XB);
   }
-  return finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st);
+  PdeSolution out = finish(data, n, m, sp, XF, viol, options.compatibility_tolerance, st);
+  check_pde_degree_limit(n, m, "lu", out.summary);
+  return out;
 }
 
 }  // namespace

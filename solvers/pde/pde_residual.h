@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "energies/energy_spec.h"
+#include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -41,5 +42,19 @@ double pde_residual(const TensorNet& net, const EnergySpec& op, int samples = 50
 
 /// The same quantity for an operator given as terms.
 double pde_residual(const TensorNet& net, const std::vector<PdeTerm>& terms, int samples = 50);
+
+/// The highest degree (per direction) at which the tensor PDE solvers (`explicit`, `lu`) deliver
+/// the solution in double precision (docs/pde_accuracy.md, "Numerical limit"): rounding the
+/// prescribed ring to double alone moves the interior by the data-rounding floor, 6.4e-3 of the
+/// solution at n = 20 and ~30x more per degree above, so past 20 no digit of the interior is
+/// determined by double data (the two methods then differ by O(1) on generic data, and
+/// pde_residual is no longer small).
+inline constexpr int kMaxPdeDegree = 20;
+
+/// The check behind `converged` of the tensor PDE solvers: if `summary` says converged but the
+/// degree (n, m) exceeds kMaxPdeDegree, set Status::NumericalLimit with a message naming the limit,
+/// the degree and the method (the computed net is kept). Measured, not guessed: see
+/// docs/pde_accuracy.md.
+void check_pde_degree_limit(int n, int m, const char* method, Summary& summary);
 
 }  // namespace bpde

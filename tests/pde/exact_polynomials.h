@@ -118,6 +118,13 @@ inline double floor_tolerance(double floor) { return 50 * floor + 1e-14; }
 // Roots of the common operators (mu with sum_j c_j mu^j = 0, one of each conjugate pair).
 inline std::vector<Root> biharmonic_roots() { return {{cld(0, 1), true}}; }
 inline std::vector<Root> modified_biharmonic_roots(double alpha) { return {{cld(0, 1.0L / alpha), true}}; }
+/// The G-norm operator [rho^2, 2 rho cos t, 1+rho^2, 2 rho cos t, 1] as an `operator` energy: the
+/// same coefficients as EnergySpec::gnorm(rho, t), also for the degenerate t = 0, pi (e1 parallel
+/// to e2), which EnergySpec::gnorm refuses as a singular G but which stays a valid PDE operator.
+inline EnergySpec gnorm_operator(double rho, double t) {
+  const double bc = 2 * rho * std::cos(t);
+  return EnergySpec::pde_operator({rho * rho, bc, 1 + rho * rho, bc, 1});
+}
 /// G-norm [rho^2, 2 rho cos t, 1+rho^2, 2 rho cos t, 1]: (1 + mu^2)(rho^2 + 2 rho cos t mu + mu^2).
 inline std::vector<Root> gnorm_roots(double rho, double t) {
   const cld r2 = -static_cast<long double>(rho) * std::exp(cld(0, t));

@@ -29,7 +29,7 @@ std::vector<Case> cases() {
       {"biharmonic", EnergySpec::biharmonic(), biharmonic_roots()},
       {"modified-biharmonic a=0.7", EnergySpec::modified_biharmonic(0.7), modified_biharmonic_roots(0.7)},
       {"gnorm rho=0.6 t=1.1", EnergySpec::gnorm(0.6, 1.1), gnorm_roots(0.6, 1.1)},
-      {"gnorm rho=2 t=0", EnergySpec::gnorm(2.0, 0.0), gnorm_roots(2.0, 0.0)},
+      {"gnorm rho=2 t=0", gnorm_operator(2.0, 0.0), gnorm_roots(2.0, 0.0)},
   };
 }
 

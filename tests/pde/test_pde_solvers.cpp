@@ -162,7 +162,7 @@ TEST(PdeExplicit, DegenerateParametersGiveFiniteAnswersEqualToLu) {
                                  {0.7, 1e-9},  {1.4, kPi - 1e-9}, {1.0, kPi / 2 - 1e-7},   {1.0 - 1e-7, kPi / 2 + 1e-6},
                                  {3.0, 0.3},   {0.3, 2.9}};
   for (const P& p : params) {
-    const EnergySpec op = EnergySpec::gnorm(p.rho, p.t);
+    const EnergySpec op = gnorm_operator(p.rho, p.t);  // t = 0, pi: a singular G, a valid operator
     for (int n : {4, 7, 10}) {
       const TensorNet data = random_net(n, n, 900u + n);
       const PdeSolution e = solve_pde_explicit(data, op);
@@ -183,7 +183,7 @@ TEST(PdeExplicit, DegenerateParametersGiveFiniteAnswersEqualToLu) {
 TEST(PdeExplicitAndLu, RhoOneNonOrthogonalIsNotUnique) {
   // rho = 1, t = 0: L = (d_u^2 + d_v^2)(d_u + d_v)^2 kills u^2 v^2 (u - v), which vanishes on the
   // boundary ring from n = 4 on: no unique solution. Both methods must say so, not return noise.
-  const EnergySpec op = EnergySpec::gnorm(1.0, 0.0);
+  const EnergySpec op = gnorm_operator(1.0, 0.0);
   for (int n : {4, 6}) {
     const TensorNet data = random_net(n, n, 3);
     const PdeSolution e = solve_pde_explicit(data, op);
@@ -337,7 +337,7 @@ TEST(PdeLu, BlockRankDecisionsMatchTheStructureAnalysis) {
   int singular = 0, unique = 0;
   for (double t : {0.0, kPi / 6, kPi / 4, kPi / 3, kPi / 2, 2.0})
     for (int n = 4; n <= 14; ++n) {
-      const EnergySpec op = EnergySpec::gnorm(1.0, t);
+      const EnergySpec op = gnorm_operator(1.0, t);
       const auto& c = op.operator_coeffs();
       const PdeStructure st = analyse_pde_structure({c[0], c[1], c[2], c[3], c[4]}, n, n, FixedSet::Boundary);
       const PdeSolution l = solve_pde_lu(random_net(n, n, 9u + n), op);
