@@ -11,7 +11,6 @@
 #include "app/commands.h"
 #include "jobs/exit_status.h"
 
-
 int main(int argc, char** argv) {
   CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)"};
   app.require_subcommand(1);
@@ -20,7 +19,8 @@ int main(int argc, char** argv) {
   std::string in, out;
   int samples = 50;
 
-  auto* solve = app.add_subcommand("solve", "Solve a job (FORMATS.md \"Jobs\") and write DIR/result.json + surface files");
+  auto* solve =
+      app.add_subcommand("solve", "Solve a job (FORMATS.md \"Jobs\") and write DIR/result.json + surface files");
   solve->add_option("job", in, "JOB.json")->required();
   solve->add_option("--out", out, "Output directory (created if missing)")->required();
 

@@ -1,5 +1,5 @@
-// B-spline routes (Sun–Zhu, B-spline Euler–Lagrange). A bicubic (biquintic for the PDE) net with s x s uniform spans (s = last token, the
-// "degree" slot of the route holds the span count) and a wavy boundary:
+// B-spline routes (Sun–Zhu, B-spline Euler–Lagrange). A bicubic (biquintic for the PDE) net with s x s uniform spans (s
+// = last token, the "degree" slot of the route holds the span count) and a wavy boundary:
 //   BSplineExtremal/direct/<s>   solve_bspline_extremal: assemble the sparse Gram, factor, solve;
 //   BSplineExtremal/reuse/<s>    BSplineExtremalSolver built once, solve per iteration;
 //   BSplinePde/lu/<s>            solve_bspline_pde (span-wise Bernstein equations, rank-revealing),
@@ -29,13 +29,14 @@ bpde::BSplineNet wavy(int spans, int p = 3) {
 
 void Direct(benchmark::State& state) {
   const auto net = wavy(static_cast<int>(state.range(0)));
-  for (auto _ : state) benchmark::DoNotOptimize(bpde::solve_bspline_extremal(net, bpde::EnergySpec::biharmonic()).energy);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(bpde::solve_bspline_extremal(net, bpde::EnergySpec::biharmonic()).energy);
 }
 
 void Reuse(benchmark::State& state) {
   const auto net = wavy(static_cast<int>(state.range(0)));
-  const bpde::BSplineExtremalSolver solver(net.p(), net.q(), net.knots_u(), net.knots_v(), bpde::EnergySpec::biharmonic(),
-                                           net.fixed_indices(bpde::FixedSet::Boundary));
+  const bpde::BSplineExtremalSolver solver(net.p(), net.q(), net.knots_u(), net.knots_v(),
+                                           bpde::EnergySpec::biharmonic(), net.fixed_indices(bpde::FixedSet::Boundary));
   for (auto _ : state) benchmark::DoNotOptimize(solver.solve(net).energy);
 }
 

@@ -53,10 +53,25 @@ void BM_PlateAdmissible(benchmark::State& s) { plate(s, ClampedPlateOptions::Met
 BENCHMARK(BM_TetraExplicit)->Name("Tetraharmonic/explicit")->DenseRange(7, 20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_TetraLu)->Name("Tetraharmonic/lu")->DenseRange(7, 20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BiharmonicLoad)->Name("BiharmonicLoad/lu")->DenseRange(7, 20)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_PlateRitz)->Name("Plate/ritz")->Arg(7)->Arg(9)->Arg(11)->Arg(15)->Arg(20)->Arg(25)->Arg(30)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PlateRitz)
+    ->Name("Plate/ritz")
+    ->Arg(7)
+    ->Arg(9)
+    ->Arg(11)
+    ->Arg(15)
+    ->Arg(20)
+    ->Arg(25)
+    ->Arg(30)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PlateAdmissible)
     ->Name("Plate/admissible-load")
-    ->Arg(7)->Arg(9)->Arg(11)->Arg(15)->Arg(20)->Arg(25)->Arg(30)
+    ->Arg(7)
+    ->Arg(9)
+    ->Arg(11)
+    ->Arg(15)
+    ->Arg(20)
+    ->Arg(25)
+    ->Arg(30)
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

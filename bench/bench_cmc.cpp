@@ -1,12 +1,12 @@
-// CMC solve time (Arnal–Lluch–Monterde, triangular CMC): routes Cmc/<solver>/<n> for one solve of the triangular problem with
-// sphere (inverse stereographic, conformal) boundary data at H = 1, and Cmc/dirichlet/<n> for the
+// CMC solve time (Arnal–Lluch–Monterde, triangular CMC): routes Cmc/<solver>/<n> for one solve of the triangular
+// problem with sphere (inverse stereographic, conformal) boundary data at H = 1, and Cmc/dirichlet/<n> for the
 // Dirichlet extremal (the linear solve, H = 0) as the baseline. The per-degree setup (Gram and
 // volume quadrature tables) is cached by CmcFunctional and built before timing.
 #include <benchmark/benchmark.h>
 
+#include "boundaries/reference_boundaries.h"
 #include "energies/cmc.h"
 #include "solvers/cmc/cmc.h"
-#include "boundaries/reference_boundaries.h"
 
 namespace {
 

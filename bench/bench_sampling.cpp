@@ -71,4 +71,9 @@ void TriangularCasteljau(benchmark::State& state) {
 BENCHMARK(TensorGrid)->Name("Sample/tensor-grid")->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(TensorCasteljau)->Name("Sample/tensor-casteljau")->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(TriangularBasis)->Name("Sample/triangular-basis")->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);
-BENCHMARK(TriangularCasteljau)->Name("Sample/triangular-casteljau")->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);
+BENCHMARK(TriangularCasteljau)
+    ->Name("Sample/triangular-casteljau")
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Unit(benchmark::kMicrosecond);

@@ -19,15 +19,19 @@ struct PaperRow {
   int n;
   double explicit_ms, linear_ms;
 };
-constexpr PaperRow kPaper[] = {{4, 0.78, 1.12},  {5, 0.93, 1.94},   {8, 1.11, 2.83},   {10, 1.87, 3.12},
+constexpr PaperRow kPaper[] = {{4, 0.78, 1.12},   {5, 0.93, 1.94},   {8, 1.11, 2.83},    {10, 1.87, 3.12},
                                {12, 4.89, 11.11}, {15, 8.48, 15.49}, {18, 11.41, 22.91}, {20, 15.42, 28.75}};
 
 double to_ms(double t, benchmark::TimeUnit u) {
   switch (u) {
-    case benchmark::kNanosecond: return t * 1e-6;
-    case benchmark::kMicrosecond: return t * 1e-3;
-    case benchmark::kMillisecond: return t;
-    case benchmark::kSecond: return t * 1e3;
+    case benchmark::kNanosecond:
+      return t * 1e-6;
+    case benchmark::kMicrosecond:
+      return t * 1e-3;
+    case benchmark::kMillisecond:
+      return t;
+    case benchmark::kSecond:
+      return t * 1e3;
   }
   return t;
 }
@@ -84,9 +88,10 @@ int run_table1(int argc, char** argv) {
 
   std::printf("\nArnal-Monterde-Ugail Table 1: biharmonic, solve + 50x50 evaluation, CPU milliseconds\n");
   std::printf("(lu: the anti-diagonal block LU; lu-bernstein: the dense Bernstein system, solvers/pde/pde_lu.h)\n\n");
-  std::printf("| n | paper explicit | paper linear system | explicit | lu | lu-bernstein | mould |"
-              " lu / explicit | lu / mould | lu-bernstein / explicit | lu-bernstein / mould |"
-              " paper / explicit | paper / lu | paper / mould |\n");
+  std::printf(
+      "| n | paper explicit | paper linear system | explicit | lu | lu-bernstein | mould |"
+      " lu / explicit | lu / mould | lu-bernstein / explicit | lu-bernstein / mould |"
+      " paper / explicit | paper / lu | paper / mould |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   bool ratio_lu = true, ratio_dense = true, paper_goal = true, complete = true, have_dense = true;
   for (const PaperRow& p : kPaper) {

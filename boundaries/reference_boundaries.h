@@ -77,18 +77,13 @@ inline Eigen::Vector3d inverse_stereographic(double s, double t) {
 }
 
 /// The sphere patch over the triangle: (s, t) = (u - 1/3, v - 1/3) (a translation: conformal).
-inline Eigen::Vector3d sphere_triangle(double u, double v) {
-  return inverse_stereographic(u - 1.0 / 3, v - 1.0 / 3);
-}
-inline Eigen::Vector3d sphere_square(double u, double v) {
-  return inverse_stereographic(u - 0.5, v - 0.5);
-}
+inline Eigen::Vector3d sphere_triangle(double u, double v) { return inverse_stereographic(u - 1.0 / 3, v - 1.0 / 3); }
+inline Eigen::Vector3d sphere_square(double u, double v) { return inverse_stereographic(u - 0.5, v - 0.5); }
 
 /// Planar boundary in z = 0: the reference triangle with a wiggle in the plane, corners
 /// P_{00n} = (0,0) -> P_{n00} = (1,0) -> P_{0n0} = (0,1) counter-clockwise.
 inline Eigen::Vector3d planar_triangle(double u, double v) {
-  return Eigen::Vector3d(u + 0.1 * u * v * (1 - u - v) + 0.05 * std::sin(3 * v) * u * (1 - u),
-                         v - 0.07 * u * v, 0.0);
+  return Eigen::Vector3d(u + 0.1 * u * v * (1 - u - v) + 0.05 * std::sin(3 * v) * u * (1 - u), v - 0.07 * u * v, 0.0);
 }
 
 /// Unit circle split into three arcs (triangular CMC, Fig. 1): P_{n00} at angle 0, P_{0n0} at 2π/3,

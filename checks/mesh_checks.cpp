@@ -58,8 +58,8 @@ int find_root(std::vector<int>& parent, int i) {
 /// Union of the points closer than tol (spatial hash). Only points inside the box [lo, hi]
 /// (the referenced vertices' bounding box) take part; the others stay alone. Returns for each
 /// input vertex the index of its representative (the smallest index of its cluster).
-std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double tol,
-                                  const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double tol, const Eigen::Vector3d& lo,
+                                  const Eigen::Vector3d& hi) {
   const int n = static_cast<int>(p.size());
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
@@ -96,8 +96,7 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
       }
     for (int mask = 0; mask < 8; ++mask) {
       if (cell == 0 && mask) break;
-      const std::array<std::int64_t, 3> key{c[0] + ((mask & 1) ? side[0] : 0),
-                                            c[1] + ((mask & 2) ? side[1] : 0),
+      const std::array<std::int64_t, 3> key{c[0] + ((mask & 1) ? side[0] : 0), c[1] + ((mask & 2) ? side[1] : 0),
                                             c[2] + ((mask & 4) ? side[2] : 0)};
       auto it = grid.find(key);
       if (it == grid.end()) continue;
@@ -161,8 +160,7 @@ bool faces_intersect(const Tri& h, const Tri& g, const std::vector<Point>& P) {
 }
 
 int count_self_intersections(const std::vector<Tri>& tris, const std::vector<Point>& P) {
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int,
-                                                        CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
   std::vector<Box> boxes;
   boxes.reserve(tris.size());
   for (std::size_t f = 0; f < tris.size(); ++f) {
@@ -187,8 +185,7 @@ using Edge = std::pair<int, int>;
 struct EdgeMap {
   std::unordered_map<std::uint64_t, int> count;
   static std::uint64_t key(int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-           static_cast<std::uint32_t>(b);
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
   }
   int find(int a, int b) const {
     auto it = count.find(key(a, b));
@@ -248,15 +245,12 @@ bool is_closed_manifold(const std::vector<Tri>& tris, const EdgeMap& de, int num
   return true;
 }
 
-double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  return a.dot(b.cross(c));
-}
+double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) { return a.dot(b.cross(c)); }
 
 /// Volume of the soup closed by planar caps over its boundary loops, or empty when the boundary
 /// is not a set of disjoint planar loops or the soup is not closed up to them.
 std::optional<double> capped_volume(const std::vector<Tri>& tris, const EdgeMap& de,
-                                    const std::vector<Eigen::Vector3d>& X, const Eigen::Vector3d& o,
-                                    bool closed) {
+                                    const std::vector<Eigen::Vector3d>& X, const Eigen::Vector3d& o, bool closed) {
   if (tris.empty()) return std::nullopt;
   double vol = 0;
   for (const auto& t : tris) vol += det3(X[t[0]] - o, X[t[1]] - o, X[t[2]] - o);
@@ -324,21 +318,18 @@ std::optional<double> capped_volume(const std::vector<Tri>& tris, const EdgeMap&
 
 MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vector<int>& triangles) {
   if (vertices.size() % 3 != 0)
-    throw SizeError("mesh check: vertices has " + std::to_string(vertices.size()) +
-                    " numbers, not a multiple of 3");
+    throw SizeError("mesh check: vertices has " + std::to_string(vertices.size()) + " numbers, not a multiple of 3");
   if (triangles.size() % 3 != 0)
-    throw SizeError("mesh check: triangles has " + std::to_string(triangles.size()) +
-                    " indices, not a multiple of 3");
+    throw SizeError("mesh check: triangles has " + std::to_string(triangles.size()) + " indices, not a multiple of 3");
   const int nv = static_cast<int>(vertices.size() / 3);
   for (std::size_t i = 0; i < vertices.size(); ++i)
     if (!std::isfinite(vertices[i]))
-      throw NonFiniteError("mesh check: vertex " + std::to_string(i / 3) + " coordinate " +
-                           std::to_string(i % 3) + " is not finite");
+      throw NonFiniteError("mesh check: vertex " + std::to_string(i / 3) + " coordinate " + std::to_string(i % 3) +
+                           " is not finite");
   for (std::size_t i = 0; i < triangles.size(); ++i)
     if (triangles[i] < 0 || triangles[i] >= nv)
-      throw SizeError("mesh check: triangle " + std::to_string(i / 3) + " index " +
-                      std::to_string(triangles[i]) + " is out of range [0, " + std::to_string(nv) +
-                      ")");
+      throw SizeError("mesh check: triangle " + std::to_string(i / 3) + " index " + std::to_string(triangles[i]) +
+                      " is out of range [0, " + std::to_string(nv) + ")");
 
   MeshCheckReport report;
   const std::size_t nf = triangles.size() / 3;
@@ -384,8 +375,7 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
   std::vector<Tri> tris;
   tris.reserve(nf);
   for (std::size_t f = 0; f < nf; ++f) {
-    Tri t{newid[rep[triangles[3 * f]]], newid[rep[triangles[3 * f + 1]]],
-          newid[rep[triangles[3 * f + 2]]]};
+    Tri t{newid[rep[triangles[3 * f]]], newid[rep[triangles[3 * f + 1]]], newid[rep[triangles[3 * f + 2]]]};
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || CGAL::collinear(P[t[0]], P[t[1]], P[t[2]])) {
       ++report.degenerate_triangles;
       continue;

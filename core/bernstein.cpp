@@ -71,8 +71,7 @@ Eigen::MatrixXd bernstein_elevation_operator(int n, int r) {
 Eigen::MatrixXd bernstein_product_integrals(int n, int m) {
   Eigen::MatrixXd G(n + 1, m + 1);
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= m; ++j)
-      G(i, j) = binomial(n, i) * binomial(m, j) / ((n + m + 1) * binomial(n + m, i + j));
+    for (int j = 0; j <= m; ++j) G(i, j) = binomial(n, i) * binomial(m, j) / ((n + m + 1) * binomial(n + m, i + j));
   return G;
 }
 
@@ -85,8 +84,7 @@ Eigen::MatrixXd bernstein_derivative_integrals(int n, int a, int b) {
 Eigen::MatrixXd bernstein_to_power_matrix(int n) {
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
   for (int k = 0; k <= n; ++k)
-    for (int i = 0; i <= k; ++i)
-      M(k, i) = (((k - i) % 2 == 0) ? 1.0 : -1.0) * binomial(n, k) * binomial(k, i);
+    for (int i = 0; i <= k; ++i) M(k, i) = (((k - i) % 2 == 0) ? 1.0 : -1.0) * binomial(n, k) * binomial(k, i);
   return M;
 }
 

@@ -72,7 +72,7 @@ std::vector<T> derivative_at_degree_rm(int n, int d) {
 /// A row-major table as a (column-major) Eigen matrix (T = double or long double).
 template <class T>
 Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> rm_to_matrix(const std::vector<T>& a, Eigen::Index rows,
-                                                               Eigen::Index cols) {
+                                                              Eigen::Index cols) {
   return Eigen::Map<const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(a.data(), rows, cols);
 }
 

@@ -14,8 +14,7 @@ namespace bpde {
 struct SurfaceJet {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   Eigen::Vector3d xu = Eigen::Vector3d::Zero(), xv = Eigen::Vector3d::Zero();
-  Eigen::Vector3d xuu = Eigen::Vector3d::Zero(), xuv = Eigen::Vector3d::Zero(),
-                  xvv = Eigen::Vector3d::Zero();
+  Eigen::Vector3d xuu = Eigen::Vector3d::Zero(), xuv = Eigen::Vector3d::Zero(), xvv = Eigen::Vector3d::Zero();
 };
 
 /// Differential geometry at one point. When the parametrisation is singular there

@@ -17,9 +17,12 @@ enum class FixedSet {
 
 inline std::string to_string(FixedSet f) {
   switch (f) {
-    case FixedSet::Boundary: return "boundary";
-    case FixedSet::BoundaryAdjacent: return "boundary+adjacent";
-    case FixedSet::UBoundaries: return "u-boundaries";
+    case FixedSet::Boundary:
+      return "boundary";
+    case FixedSet::BoundaryAdjacent:
+      return "boundary+adjacent";
+    case FixedSet::UBoundaries:
+      return "u-boundaries";
   }
   return "?";
 }
@@ -38,8 +41,7 @@ inline void require_finite_rows(const Eigen::MatrixX3d& P, const std::vector<int
     for (int c = 0; c < 3; ++c)
       if (!std::isfinite(P(r, c))) {
         std::string where = "point " + std::to_string(r);
-        if (columns > 0)
-          where += " (i = " + std::to_string(r / columns) + ", j = " + std::to_string(r % columns) + ")";
+        if (columns > 0) where += " (i = " + std::to_string(r / columns) + ", j = " + std::to_string(r % columns) + ")";
         throw NonFiniteError(who + ": prescribed " + where + " is not finite");
       }
   }

@@ -8,8 +8,8 @@
 //   C: r by w, row-major, leading dimension ldc (>= w); overwritten
 //
 // Method. Rows of C are accumulated in registers over k (C(a, :) = sum_i A(a, i) B(i, :)), two
-// rows and 24 columns at a time, then 4 columns, then the last 1-3 columns with masked loads. On x86-64 CPUs with AVX2 and FMA (checked once at run
-// time, so the library stays portable to any x86-64) the accumulation uses 256-bit fused
+// rows and 24 columns at a time, then 4 columns, then the last 1-3 columns with masked loads. On x86-64 CPUs with AVX2
+// and FMA (checked once at run time, so the library stays portable to any x86-64) the accumulation uses 256-bit fused
 // multiply-adds; elsewhere the same loop runs in portable C++. Both paths sum in the same order
 // (i = 0..k-1 for every entry), so results differ only by the rounding of fused versus separate
 // multiply-add.

@@ -73,8 +73,7 @@ Eigen::MatrixX3d CmcFunctional::gradient(const Eigen::MatrixX3d& P, double H) co
   return G;
 }
 
-Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H,
-                                       const std::vector<int>& idx) const {
+Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx) const {
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
   if (H != 0.0) Hs = 2.0 * H * volume_.hessian(P, idx);
@@ -94,8 +93,7 @@ Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
 }
 }  // namespace
 
-Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double H,
-                                              const std::vector<int>& idx) const {
+Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx) const {
   if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
   const Eigen::MatrixX3d CP = times(gram_, P);
   Eigen::MatrixX3d G = CP(idx, Eigen::all);
@@ -103,8 +101,8 @@ Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double 
   return G;
 }
 
-double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx,
-                               Eigen::MatrixX3d* Fout, double* scale) const {
+double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx, Eigen::MatrixX3d* Fout,
+                               double* scale) const {
   if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   const Eigen::MatrixX3d CP = times(gram_, P), CS = times(abs_gram_, P.cwiseAbs());
@@ -148,8 +146,7 @@ namespace {
 
 void check_sampling(int N, double margin) {
   if (N < 1) throw ParameterError("mean_curvature_stats: samples must be >= 1");
-  if (!(margin >= 0.0 && margin < 0.5))
-    throw ParameterError("mean_curvature_stats: corner_margin must be in [0, 0.5)");
+  if (!(margin >= 0.0 && margin < 0.5)) throw ParameterError("mean_curvature_stats: corner_margin must be in [0, 0.5)");
 }
 
 void accumulate(MeanCurvatureStats& s, const FundamentalForms& g, double& sum) {

@@ -61,8 +61,8 @@ class CmcFunctional {
   /// the denominator being the size of the terms of F: S_I = ∫ B_I |x_u ∧ x_v| (componentwise) for
   /// interior points (VolumeForm::gradient_scale_rows).
   /// When F is given it receives gradient_rows(P, H, idx); when scale is given, the denominator.
-  double residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx,
-                  Eigen::MatrixX3d* F = nullptr, double* scale = nullptr) const;
+  double residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx, Eigen::MatrixX3d* F = nullptr,
+                  double* scale = nullptr) const;
 
  private:
   Eigen::MatrixXd gram_, abs_gram_;
@@ -86,9 +86,7 @@ struct MeanCurvatureStats {
   double min = 0, max = 0, mean = 0;
   int count = 0;
 };
-MeanCurvatureStats mean_curvature_stats(const TriangularNet& net, int N = 50,
-                                        double corner_margin = 0.1);
-MeanCurvatureStats mean_curvature_stats(const TensorNet& net, int N = 50,
-                                        double corner_margin = 0.1);
+MeanCurvatureStats mean_curvature_stats(const TriangularNet& net, int N = 50, double corner_margin = 0.1);
+MeanCurvatureStats mean_curvature_stats(const TensorNet& net, int N = 50, double corner_margin = 0.1);
 
 }  // namespace bpde

@@ -120,23 +120,30 @@ EnergySpec EnergySpec::pde_operator(const std::array<double, 5>& c) {
 
 std::string EnergySpec::name() const {
   switch (kind_) {
-    case EnergyKind::Dirichlet: return "dirichlet";
-    case EnergyKind::SecondOrder: return "second-order";
-    case EnergyKind::Biharmonic: return "biharmonic";
-    case EnergyKind::LaplacianSquared: return "laplacian-squared";
-    case EnergyKind::Coons: return "coons";
-    case EnergyKind::ModifiedBiharmonic: return "modified-biharmonic";
-    case EnergyKind::FourthOrder: return "fourth-order";
+    case EnergyKind::Dirichlet:
+      return "dirichlet";
+    case EnergyKind::SecondOrder:
+      return "second-order";
+    case EnergyKind::Biharmonic:
+      return "biharmonic";
+    case EnergyKind::LaplacianSquared:
+      return "laplacian-squared";
+    case EnergyKind::Coons:
+      return "coons";
+    case EnergyKind::ModifiedBiharmonic:
+      return "modified-biharmonic";
+    case EnergyKind::FourthOrder:
+      return "fourth-order";
     case EnergyKind::GNormRhoT:
-    case EnergyKind::GNormMatrix: return "gnorm";
-    case EnergyKind::Operator: return "operator";
+    case EnergyKind::GNormMatrix:
+      return "gnorm";
+    case EnergyKind::Operator:
+      return "operator";
   }
   return "?";
 }
 
-int EnergySpec::order() const {
-  return (kind_ == EnergyKind::Dirichlet || kind_ == EnergyKind::SecondOrder) ? 2 : 4;
-}
+int EnergySpec::order() const { return (kind_ == EnergyKind::Dirichlet || kind_ == EnergyKind::SecondOrder) ? 2 : 4; }
 
 std::vector<QuadraticTerm> EnergySpec::terms() const {
   std::vector<QuadraticTerm> t;
@@ -167,13 +174,15 @@ std::vector<QuadraticTerm> EnergySpec::terms() const {
 bool EnergySpec::has_explicit_solution() const {
   switch (kind_) {
     case EnergyKind::Dirichlet:
-    case EnergyKind::SecondOrder: return false;
+    case EnergyKind::SecondOrder:
+      return false;
     case EnergyKind::Biharmonic:
     case EnergyKind::LaplacianSquared:
     case EnergyKind::Coons:
     case EnergyKind::ModifiedBiharmonic:
     case EnergyKind::GNormRhoT:
-    case EnergyKind::GNormMatrix: return true;
+    case EnergyKind::GNormMatrix:
+      return true;
     case EnergyKind::FourthOrder:
     case EnergyKind::Operator: {
       const auto& c = c4_;

@@ -9,8 +9,8 @@ namespace bpde {
 
 QuadraticEnergy::QuadraticEnergy(Eigen::MatrixXd Q) : Q_(std::move(Q)) {
   if (Q_.rows() != Q_.cols())
-    throw SizeError("QuadraticEnergy: Gram matrix is " + std::to_string(Q_.rows()) + " x " +
-                    std::to_string(Q_.cols()) + ", not square");
+    throw SizeError("QuadraticEnergy: Gram matrix is " + std::to_string(Q_.rows()) + " x " + std::to_string(Q_.cols()) +
+                    ", not square");
   if (!Q_.allFinite()) throw NonFiniteError("QuadraticEnergy: Gram matrix has a non-finite entry");
 }
 

@@ -13,8 +13,8 @@ namespace {
 
 void check_degree(int n, const char* which) {
   if (n < 1 || n > kMaxDegree)
-    throw DegreeError(std::string("tensor_gram: degree ") + which + " = " + std::to_string(n) +
-                      " is outside 1.." + std::to_string(kMaxDegree));
+    throw DegreeError(std::string("tensor_gram: degree ") + which + " = " + std::to_string(n) + " is outside 1.." +
+                      std::to_string(kMaxDegree));
 }
 
 // 1-D derivative integrals, computed once per (a, b) pair within one Gram assembly.
@@ -64,8 +64,6 @@ Eigen::MatrixXd tensor_gram(int n, int m, const std::vector<QuadraticTerm>& term
   return Q;
 }
 
-Eigen::MatrixXd tensor_gram(const EnergySpec& energy, int n, int m) {
-  return tensor_gram(n, m, energy.terms());
-}
+Eigen::MatrixXd tensor_gram(const EnergySpec& energy, int n, int m) { return tensor_gram(n, m, energy.terms()); }
 
 }  // namespace bpde

@@ -34,7 +34,6 @@ Eigen::MatrixXd tensor_gram(const EnergySpec& energy, int n, int m);
 /// Same from an explicit list of terms, over the rectangle of side lengths hu, hv (see the header
 /// comment; hu, hv > 0 and finite, ParameterError otherwise). Terms with negative derivative
 /// orders throw ParameterError; non-finite weights throw NonFiniteError.
-Eigen::MatrixXd tensor_gram(int n, int m, const std::vector<QuadraticTerm>& terms, double hu = 1.0,
-                            double hv = 1.0);
+Eigen::MatrixXd tensor_gram(int n, int m, const std::vector<QuadraticTerm>& terms, double hu = 1.0, double hv = 1.0);
 
 }  // namespace bpde

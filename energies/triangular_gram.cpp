@@ -13,8 +13,8 @@ namespace {
 
 void check_degree(int n, const char* who) {
   if (n < 1 || n > kMaxDegree)
-    throw DegreeError(std::string(who) + ": triangular degree " + std::to_string(n) +
-                      " is outside 1.." + std::to_string(kMaxDegree));
+    throw DegreeError(std::string(who) + ": triangular degree " + std::to_string(n) + " is outside 1.." +
+                      std::to_string(kMaxDegree));
 }
 
 // One derivative step: count(n-1) by count(n), d/du (dir = 0) or d/dv (dir = 1).
@@ -60,8 +60,7 @@ Eigen::MatrixXd triangular_product_integrals(int p, int q) {
       const auto& J = Ip[a];
       const auto& K = Iq[b];
       M(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
-          multinomial(p, J[0], J[1]) * multinomial(q, K[0], K[1]) /
-          multinomial(p + q, J[0] + K[0], J[1] + K[1]) * area;
+          multinomial(p, J[0], J[1]) * multinomial(q, K[0], K[1]) / multinomial(p + q, J[0] + K[0], J[1] + K[1]) * area;
     }
   return M;
 }
@@ -85,13 +84,9 @@ Eigen::MatrixXd triangular_gram(int n, const std::vector<QuadraticTerm>& terms) 
   return Q;
 }
 
-Eigen::MatrixXd triangular_gram(int n, const EnergySpec& energy) {
-  return triangular_gram(n, energy.terms());
-}
+Eigen::MatrixXd triangular_gram(int n, const EnergySpec& energy) { return triangular_gram(n, energy.terms()); }
 
-Eigen::MatrixXd triangular_dirichlet_gram(int n) {
-  return triangular_gram(n, EnergySpec::dirichlet().terms());
-}
+Eigen::MatrixXd triangular_dirichlet_gram(int n) { return triangular_gram(n, EnergySpec::dirichlet().terms()); }
 
 Eigen::MatrixXd dirichlet_gram_closed_form(int n) {
   check_degree(n, "dirichlet_gram_closed_form");
@@ -130,8 +125,8 @@ Eigen::MatrixXd triangular_basis_table(int n, const Eigen::MatrixX2d& uv, int du
     const double u = uv(s, 0), v = uv(s, 1), w = 1.0 - u - v;
     for (size_t r = 0; r < I.size(); ++r) {
       const auto& J = I[r];
-      T(s, static_cast<Eigen::Index>(r)) = multinomial(m, J[0], J[1]) * std::pow(u, J[0]) *
-                                           std::pow(v, J[1]) * std::pow(w, J[2]);
+      T(s, static_cast<Eigen::Index>(r)) =
+          multinomial(m, J[0], J[1]) * std::pow(u, J[0]) * std::pow(v, J[1]) * std::pow(w, J[2]);
     }
   }
   if (d == 0) return T;

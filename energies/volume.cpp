@@ -73,8 +73,8 @@ VolumeForm VolumeForm::triangular(int n) {
 
 VolumeForm VolumeForm::tensor(int n, int m) {
   if (n < 1 || n > kMaxDegree || m < 1 || m > kMaxDegree)
-    throw DegreeError("VolumeForm: tensor degree (" + std::to_string(n) + ", " +
-                      std::to_string(m) + ") is outside 1.." + std::to_string(kMaxDegree));
+    throw DegreeError("VolumeForm: tensor degree (" + std::to_string(n) + ", " + std::to_string(m) +
+                      ") is outside 1.." + std::to_string(kMaxDegree));
   // Bidegree (3n-1, 3m-1): Gauss-Legendre with q points is exact to degree 2q-1.
   const QuadratureRule1D gu = gauss_legendre01((3 * n + 1) / 2);
   const QuadratureRule1D gv = gauss_legendre01((3 * m + 1) / 2);
@@ -103,8 +103,7 @@ VolumeForm VolumeForm::tensor(int n, int m) {
   f.m_ = m;
   f.interior_.resize(static_cast<size_t>(N));
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= m; ++j)
-      f.interior_[static_cast<size_t>(i * (m + 1) + j)] = (i > 0 && i < n && j > 0 && j < m);
+    for (int j = 0; j <= m; ++j) f.interior_[static_cast<size_t>(i * (m + 1) + j)] = (i > 0 && i < n && j > 0 && j < m);
   f.Mu1_ = bernstein_product_integrals(2 * n, n - 1);
   f.Mv1_ = bernstein_product_integrals(2 * m - 1, m);
   f.Mu2_ = bernstein_product_integrals(2 * n - 1, n);
@@ -113,10 +112,10 @@ VolumeForm VolumeForm::tensor(int n, int m) {
 }
 
 std::size_t VolumeForm::memory_bytes() const {
-  return sizeof(double) * static_cast<std::size_t>(w_.size() + B_.size() + Bu_.size() + Bv_.size() +
-                                                   Du_.size() + Dv_.size() + Mt_.size() +
-                                                   mult_n_.size() + mult_n1_.size() + mult_2n1_.size() +
-                                                   Mu1_.size() + Mv1_.size() + Mu2_.size() + Mv2_.size()) +
+  return sizeof(double) *
+             static_cast<std::size_t>(w_.size() + B_.size() + Bu_.size() + Bv_.size() + Du_.size() + Dv_.size() +
+                                      Mt_.size() + mult_n_.size() + mult_n1_.size() + mult_2n1_.size() + Mu1_.size() +
+                                      Mv1_.size() + Mu2_.size() + Mv2_.size()) +
          interior_.size();
 }
 
@@ -155,9 +154,7 @@ Eigen::MatrixX3d VolumeForm::gradient_scale(const Eigen::MatrixX3d& P) const {
   const Eigen::MatrixX3d a = w_.asDiagonal() * cross_rows(Xv, X).cwiseAbs();
   const Eigen::MatrixX3d b = w_.asDiagonal() * cross_rows(X, Xu).cwiseAbs();
   const Eigen::MatrixX3d c = w_.asDiagonal() * cross_rows(Xu, Xv).cwiseAbs();
-  return (Bu_.cwiseAbs().transpose() * a + Bv_.cwiseAbs().transpose() * b +
-          B_.cwiseAbs().transpose() * c) /
-         3.0;
+  return (Bu_.cwiseAbs().transpose() * a + Bv_.cwiseAbs().transpose() * b + B_.cwiseAbs().transpose() * c) / 3.0;
 }
 
 bool VolumeForm::all_interior(const std::vector<int>& idx) const {
@@ -170,8 +167,7 @@ bool VolumeForm::all_interior(const std::vector<int>& idx) const {
 
 Eigen::MatrixXd VolumeForm::hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
   check(P);
-  if (all_interior(idx))
-    return triangular_ ? hessian_interior_triangular(P, idx) : hessian_interior_tensor(P, idx);
+  if (all_interior(idx)) return triangular_ ? hessian_interior_triangular(P, idx) : hessian_interior_tensor(P, idx);
   return hessian_quadrature(P, idx);
 }
 
@@ -189,8 +185,7 @@ inline void put_cross(Eigen::MatrixXd& Hs, Eigen::Index I, Eigen::Index L, const
 
 }  // namespace
 
-Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& P,
-                                                        const std::vector<int>& idx) const {
+Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
   // a_IL = ∫ B_I (B_L)_v x_u - ∫ B_I (B_L)_u x_v, with
   //   B_I^n (B_L^n)_v = n [beta(I, L-e2) B^{2n-1}_{I+L-e2} - beta(I, L-e3) B^{2n-1}_{I+L-e3}],
   //   beta(I, J) = mult(n, I) mult(n-1, J) / mult(2n-1, I+J)   (B_I^n B_J^{n-1} = beta B_{I+J}^{2n-1}),
@@ -202,7 +197,8 @@ Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& 
   std::vector<std::array<int, 3>> J(static_cast<size_t>(k));
   {
     const auto all = triangular_multi_indices(n);
-    for (Eigen::Index a = 0; a < k; ++a) J[static_cast<size_t>(a)] = all[static_cast<size_t>(idx[static_cast<size_t>(a)])];
+    for (Eigen::Index a = 0; a < k; ++a)
+      J[static_cast<size_t>(a)] = all[static_cast<size_t>(idx[static_cast<size_t>(a)])];
   }
   // Contribution n * beta(I, L - e_r) * W(I + L - e_r) (zero if L_r = 0).
   auto term = [&](const std::array<int, 3>& I, const std::array<int, 3>& L, int r,
@@ -210,7 +206,8 @@ Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& 
     if (L[static_cast<size_t>(r)] == 0) return Eigen::Vector3d::Zero();
     std::array<int, 3> Lr = L;
     --Lr[static_cast<size_t>(r)];
-    const double beta = mult_n_(TriangularNet::index(n, I[0], I[1])) * mult_n1_(TriangularNet::index(n - 1, Lr[0], Lr[1])) /
+    const double beta = mult_n_(TriangularNet::index(n, I[0], I[1])) *
+                        mult_n1_(TriangularNet::index(n - 1, Lr[0], Lr[1])) /
                         mult_2n1_(TriangularNet::index(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1]));
     return n * beta * W.row(TriangularNet::index(2 * n - 1, I[0] + Lr[0], I[1] + Lr[1])).transpose();
   };
@@ -226,8 +223,7 @@ Eigen::MatrixXd VolumeForm::hessian_interior_triangular(const Eigen::MatrixX3d& 
   return Hs;
 }
 
-Eigen::MatrixXd VolumeForm::hessian_interior_tensor(const Eigen::MatrixX3d& P,
-                                                    const std::vector<int>& idx) const {
+Eigen::MatrixXd VolumeForm::hessian_interior_tensor(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
   // I = (i,j), L = (k,l).  a_IL = ∫ B_I (B_L)_v x_u - ∫ B_I (B_L)_u x_v with
   //   B_I (B_L)_v = g_n(i,k) B^{2n}_{i+k}(u) * m [h_m(j,l-1) B^{2m-1}_{j+l-1}(v) - h_m(j,l) B^{2m-1}_{j+l}(v)],
   //   g_n(i,k) = C(n,i)C(n,k)/C(2n,i+k),  h_m(j,l) = C(m,j)C(m-1,l)/C(2m-1,j+l),
@@ -274,8 +270,8 @@ Eigen::MatrixXd VolumeForm::hessian_interior_tensor(const Eigen::MatrixX3d& P,
   return Hs;
 }
 
-void VolumeForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                                         Eigen::MatrixX3d* G, Eigen::MatrixX3d* S) const {
+void VolumeForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
+                                         Eigen::MatrixX3d* S) const {
   check(P);
   if (all_interior(idx)) {
     const Eigen::MatrixX3d N = cross_rows(times(Bu_, P), times(Bv_, P));
@@ -300,8 +296,7 @@ Eigen::MatrixX3d VolumeForm::gradient_rows(const Eigen::MatrixX3d& P, const std:
   return G;
 }
 
-Eigen::MatrixX3d VolumeForm::gradient_scale_rows(const Eigen::MatrixX3d& P,
-                                                 const std::vector<int>& idx) const {
+Eigen::MatrixX3d VolumeForm::gradient_scale_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
   Eigen::MatrixX3d S;
   gradient_rows_and_scale(P, idx, nullptr, &S);
   return S;
@@ -342,13 +337,9 @@ Eigen::MatrixXd VolumeForm::hessian_quadrature(const Eigen::MatrixX3d& P, const 
   return Hs;
 }
 
-double volume(const TriangularNet& net) {
-  return VolumeForm::triangular(net.n()).value(net.points());
-}
+double volume(const TriangularNet& net) { return VolumeForm::triangular(net.n()).value(net.points()); }
 
-double volume(const TensorNet& net) {
-  return VolumeForm::tensor(net.n(), net.m()).value(net.points());
-}
+double volume(const TensorNet& net) { return VolumeForm::tensor(net.n(), net.m()).value(net.points()); }
 
 double volume_coefficient(int n, const std::array<int, 3>& I, const std::array<int, 3>& J,
                           const std::array<int, 3>& K) {
@@ -359,8 +350,8 @@ double volume_coefficient(int n, const std::array<int, 3>& I, const std::array<i
     if (num == 0.0) return 0.0;
     return num / (static_cast<double>(S[r]) * S[s]);
   };
-  const double ratio = multinomial(n, I[0], I[1]) * multinomial(n, J[0], J[1]) *
-                       multinomial(n, K[0], K[1]) / multinomial(3 * n, S[0], S[1]);
+  const double ratio = multinomial(n, I[0], I[1]) * multinomial(n, J[0], J[1]) * multinomial(n, K[0], K[1]) /
+                       multinomial(3 * n, S[0], S[1]);
   return ratio * (d(0, 1) + d(1, 2) - d(0, 2));
 }
 
@@ -374,8 +365,8 @@ double volume_closed_form(int n, const Eigen::MatrixX3d& P) {
       if (a == b) continue;  // C_IIK = 0
       const Eigen::Vector3d cr = P.row(a).transpose().cross(P.row(b).transpose());
       for (Eigen::Index c = 0; c < N; ++c) {
-        const double C = volume_coefficient(n, I[static_cast<size_t>(a)], I[static_cast<size_t>(b)],
-                                            I[static_cast<size_t>(c)]);
+        const double C =
+            volume_coefficient(n, I[static_cast<size_t>(a)], I[static_cast<size_t>(b)], I[static_cast<size_t>(c)]);
         V += C * cr.dot(P.row(c).transpose());
       }
     }

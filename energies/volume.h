@@ -73,8 +73,8 @@ class VolumeForm {
   /// points, the rows of gradient_scale() otherwise.
   Eigen::MatrixX3d gradient_scale_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
   /// gradient_rows and gradient_scale_rows in one pass (either pointer may be null).
-  void gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                               Eigen::MatrixX3d* G, Eigen::MatrixX3d* S) const;
+  void gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
+                               Eigen::MatrixX3d* S) const;
   /// True when B_I vanishes on the boundary of the domain (triangular: every index >= 1;
   /// tensor: 1 <= i <= n-1 and 1 <= j <= m-1).
   bool interior(int I) const { return interior_[static_cast<std::size_t>(I)] != 0; }
@@ -108,8 +108,7 @@ double volume(const TriangularNet& net);
 double volume(const TensorNet& net);
 
 /// C_IJK of the corrected eqs. (5)–(6) for a degree-n triangular net.
-double volume_coefficient(int n, const std::array<int, 3>& I, const std::array<int, 3>& J,
-                          const std::array<int, 3>& K);
+double volume_coefficient(int n, const std::array<int, 3>& I, const std::array<int, 3>& J, const std::array<int, 3>& K);
 
 /// V = 1/6 sum C_IJK <P_I ∧ P_J, P_K> from the closed form, with C_IJK computed on the fly
 /// (O(N^3) time, O(N) memory). For cross-checks; the quadrature route is faster.

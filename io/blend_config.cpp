@@ -21,16 +21,14 @@ std::string type_name(const json& j) { return j.type_name(); }
 void check_fields(const json& j, const std::string& where, const std::set<std::string>& allowed,
                   const std::set<std::string>& required) {
   if (!j.is_object())
-    throw ParseError((where.empty() ? std::string("the blend config") : where) +
-                     " must be a JSON object, not " + type_name(j));
+    throw ParseError((where.empty() ? std::string("the blend config") : where) + " must be a JSON object, not " +
+                     type_name(j));
   for (const auto& [key, value] : j.items()) {
     (void)value;
-    if (!allowed.count(key))
-      throw ParseError("unknown field `" + (where.empty() ? key : where + "." + key) + "`");
+    if (!allowed.count(key)) throw ParseError("unknown field `" + (where.empty() ? key : where + "." + key) + "`");
   }
   for (const auto& key : required)
-    if (!j.contains(key))
-      throw ParseError("missing field `" + (where.empty() ? key : where + "." + key) + "`");
+    if (!j.contains(key)) throw ParseError("missing field `" + (where.empty() ? key : where + "." + key) + "`");
 }
 
 double number(const json& j, const std::string& where) {
@@ -61,11 +59,10 @@ Eigen::MatrixXd rows(const json& j, int width, const std::string& where) {
   for (std::size_t r = 0; r < j.size(); ++r) {
     const std::string w = where + "[" + std::to_string(r) + "]";
     const json& row = j[r];
-    if (!row.is_array()) throw ParseError(w + " must be an array of " + std::to_string(width) +
-                                          " numbers, not " + type_name(row));
+    if (!row.is_array())
+      throw ParseError(w + " must be an array of " + std::to_string(width) + " numbers, not " + type_name(row));
     if (row.size() != static_cast<std::size_t>(width))
-      throw SizeError(w + " has " + std::to_string(row.size()) + " numbers, expected " +
-                      std::to_string(width));
+      throw SizeError(w + " has " + std::to_string(row.size()) + " numbers, expected " + std::to_string(width));
     for (int c = 0; c < width; ++c)
       M(static_cast<Eigen::Index>(r), c) = number(row[c], w + "[" + std::to_string(c) + "]");
   }
@@ -75,8 +72,8 @@ Eigen::MatrixXd rows(const json& j, int width, const std::string& where) {
 Eigen::MatrixX3d edge_array(const json& j, int k, const std::string& where) {
   Eigen::MatrixX3d M = rows(j, 3, where);
   if (M.rows() != k + 1)
-    throw SizeError(where + " has " + std::to_string(M.rows()) + " points, expected k+1 = " +
-                    std::to_string(k + 1) + " (one per node x_i = i/k)");
+    throw SizeError(where + " has " + std::to_string(M.rows()) + " points, expected k+1 = " + std::to_string(k + 1) +
+                    " (one per node x_i = i/k)");
   return M;
 }
 
@@ -112,8 +109,7 @@ void read_coefficients(const json& j, SmoothingSplineProblem& p) {
 
 // The value and y-derivative of a net (tensor or bspline, parameters mapped onto [0,1]^2) along
 // the line y at the nodes x_i = i/k.
-void sample_edge(const json& nj, const std::string& w, int k, double y, Eigen::MatrixX3d& value,
-                 Eigen::MatrixX3d& dy) {
+void sample_edge(const json& nj, const std::string& w, int k, double y, Eigen::MatrixX3d& value, Eigen::MatrixX3d& dy) {
   const Net net = net_from_json(nj, w);
   value.resize(k + 1, 3);
   dy.resize(k + 1, 3);

@@ -8,12 +8,17 @@ namespace bpde {
 
 std::string to_string(ProblemKind k) {
   switch (k) {
-    case ProblemKind::Extremal: return "extremal";
-    case ProblemKind::Pde: return "pde";
-    case ProblemKind::Tetraharmonic: return "tetraharmonic";
-    case ProblemKind::BiharmonicLoad: return "biharmonic-load";
+    case ProblemKind::Extremal:
+      return "extremal";
+    case ProblemKind::Pde:
+      return "pde";
+    case ProblemKind::Tetraharmonic:
+      return "tetraharmonic";
+    case ProblemKind::BiharmonicLoad:
+      return "biharmonic-load";
     case ProblemKind::CmcH:
-    case ProblemKind::CmcV: return "cmc";
+    case ProblemKind::CmcV:
+      return "cmc";
   }
   return "?";
 }

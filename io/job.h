@@ -22,10 +22,10 @@ struct Problem {
   ProblemKind kind = ProblemKind::Extremal;
   /// extremal: the energy; pde: the operator (its Euler–Lagrange operator).
   std::optional<EnergySpec> energy;
-  PdeMethod method = PdeMethod::Lu;                ///< pde, tetraharmonic (default lu)
-  CmcSolver solver = CmcSolver::Newton;            ///< cmc (default newton)
-  double H = 0.0;                                  ///< cmc with "H"
-  double V = 0.0;                                  ///< cmc with "V"
+  PdeMethod method = PdeMethod::Lu;      ///< pde, tetraharmonic (default lu)
+  CmcSolver solver = CmcSolver::Newton;  ///< cmc (default newton)
+  double H = 0.0;                        ///< cmc with "H"
+  double V = 0.0;                        ///< cmc with "V"
 };
 
 struct Job {

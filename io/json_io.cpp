@@ -208,7 +208,8 @@ std::array<int, 2> degree_pair(const Json& j, const std::string& path) {
 void check_count(const Json& pts, const std::string& path, size_t want, const std::string& what) {
   if (!pts.is_array()) throw ParseError(path + ": expected an array of [x, y, z], got " + std::string(pts.type_name()));
   if (pts.size() != want)
-    throw SizeError(path + ": " + what + " needs " + std::to_string(want) + " points, got " + std::to_string(pts.size()));
+    throw SizeError(path + ": " + what + " needs " + std::to_string(want) + " points, got " +
+                    std::to_string(pts.size()));
 }
 
 }  // namespace
@@ -283,9 +284,12 @@ Json net_to_json(const Net& net) {
 
 std::string net_kind(const Net& net) {
   switch (net.index()) {
-    case 0: return "tensor";
-    case 1: return "triangular";
-    default: return "bspline";
+    case 0:
+      return "tensor";
+    case 1:
+      return "triangular";
+    default:
+      return "bspline";
   }
 }
 

@@ -42,7 +42,7 @@ void require_object(const Json& j, const std::string& path);
 void check_keys(const Json& j, const std::string& path, std::initializer_list<const char*> allowed);
 const Json& field(const Json& j, const std::string& path, const char* key);  // required
 double number(const Json& j, const std::string& path);                       // finite number
-int integer(const Json& j, const std::string& path);                          // integral number
+int integer(const Json& j, const std::string& path);                         // integral number
 std::string string(const Json& j, const std::string& path);
 bool boolean(const Json& j, const std::string& path);
 /// An array of `len` numbers (len < 0: any length).

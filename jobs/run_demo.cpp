@@ -40,7 +40,9 @@ double number_or_nan(const Json& j) { return j.is_number() ? j.get<double>() : N
 
 std::string demo_summary(const Json& r, const std::string& out_dir) {
   std::string s;
-  append(s, "bpde demo: CMC approximation (Arnal-Lluch-Monterde Fig. 1): circle in three arcs, triangular degree 4, H = -1\n");
+  append(s,
+         "bpde demo: CMC approximation (Arnal-Lluch-Monterde Fig. 1): circle in three arcs, triangular degree 4, H = "
+         "-1\n");
   append(s, "  converged           %s (%d Newton iterations, %d continuation steps)\n",
          r["converged"].get<bool>() ? "yes" : "no", r.value("iterations", 0), r.value("continuation_steps", 0));
   if (r.contains("message")) append(s, "  message             %s\n", r["message"].get<std::string>().c_str());

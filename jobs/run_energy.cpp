@@ -15,8 +15,7 @@ namespace {
 
 // Energies of nets with huge coordinates overflow; say so instead of printing null.
 double finite_energy(double x, const char* what) {
-  if (!std::isfinite(x))
-    throw NonFiniteError(std::string(what) + " overflows: the net's coordinates are too large");
+  if (!std::isfinite(x)) throw NonFiniteError(std::string(what) + " overflows: the net's coordinates are too large");
   return x;
 }
 
@@ -45,7 +44,8 @@ Json energy_report(const Net& net, const std::string& energy, std::optional<doub
   }
   if (const auto* b = std::get_if<BSplineNet>(&net))
     return Json{{"energy", finite_energy(bspline_energy(*b, spec), "the energy")}};
-  throw UnsupportedProblem("energy " + spec.name() + " on a " + net_kind(net) + " net is not available in this build yet");
+  throw UnsupportedProblem("energy " + spec.name() + " on a " + net_kind(net) +
+                           " net is not available in this build yet");
 }
 
 }  // namespace bpde

@@ -12,17 +12,17 @@
 #include <filesystem>
 
 #include "checks/mesh_checks.h"
-#include "io/mesh_io.h"
 #include "core/errors.h"
 #include "energies/cmc.h"
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
-#include "solvers/c1/biharmonic_load.h"
+#include "io/mesh_io.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
-#include "solvers/cmc/cmc.h"
+#include "solvers/c1/biharmonic_load.h"
 #include "solvers/c1/tetraharmonic.h"
+#include "solvers/cmc/cmc.h"
 #include "solvers/extremal.h"
 #include "solvers/pde/harmonic_pde.h"
 #include "solvers/pde/pde_explicit.h"
@@ -32,7 +32,6 @@
 
 namespace bpde {
 namespace {
-
 
 Json check_report_impl(const TriangleMesh& mesh) {
   std::vector<double> V(static_cast<size_t>(mesh.V.rows()) * 3);
@@ -94,7 +93,8 @@ SolveOutcome tensor_extremal(const Job& job, const TensorNet& net) {
   SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["energy"] = finite_or_null(r.energy);
   out.report["energy_name"] = e.name();
-  if (e.order() == 4 || e.order() == 2) out.report["pde_residual"] = finite_or_null(pde_residual(r.net, e, job.samples));
+  if (e.order() == 4 || e.order() == 2)
+    out.report["pde_residual"] = finite_or_null(pde_residual(r.net, e, job.samples));
   return out;
 }
 
@@ -161,14 +161,12 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
 }
 
 // Δ⁴ = (∂²u + ∂²v)⁴ as PDE terms {du, dv, coefficient} for the residual report.
-std::vector<PdeTerm> tetraharmonic_terms() {
-  return {{8, 0, 1.0}, {6, 2, 4.0}, {4, 4, 6.0}, {2, 6, 4.0}, {0, 8, 1.0}};
-}
+std::vector<PdeTerm> tetraharmonic_terms() { return {{8, 0, 1.0}, {6, 2, 4.0}, {4, 4, 6.0}, {2, 6, 4.0}, {0, 8, 1.0}}; }
 
 SolveOutcome tetraharmonic(const Job& job, const TensorNet& net) {
   TetraharmonicOptions o;
   o.method = job.problem.method == PdeMethod::Explicit ? TetraharmonicOptions::Method::Explicit
-                                                        : TetraharmonicOptions::Method::LU;
+                                                       : TetraharmonicOptions::Method::LU;
   const TetraharmonicResult r = solve_tetraharmonic(net, o);
   SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["method"] = to_string(job.problem.method);
@@ -245,37 +243,60 @@ Solver select_tensor_pde(const Problem& p) {
 
 const Route kRoutes[] = {
     {ProblemKind::Extremal, NetKind::Tensor,
-     [](const Problem&) { return Solver{extremal_requirements(), on<TensorNet, tensor_extremal>}; }},
+     [](const Problem&) {
+       return Solver{extremal_requirements(), on<TensorNet, tensor_extremal>};
+     }},
     {ProblemKind::Extremal, NetKind::Triangular,
-     [](const Problem&) { return Solver{extremal_requirements(), on<TriangularNet, triangular_extremal>}; }},
+     [](const Problem&) {
+       return Solver{extremal_requirements(), on<TriangularNet, triangular_extremal>};
+     }},
     {ProblemKind::Extremal, NetKind::BSpline,
-     [](const Problem&) { return Solver{bspline_extremal_requirements(), on<BSplineNet, bspline_extremal>}; }},
+     [](const Problem&) {
+       return Solver{bspline_extremal_requirements(), on<BSplineNet, bspline_extremal>};
+     }},
     {ProblemKind::Pde, NetKind::Tensor, select_tensor_pde},
     {ProblemKind::Pde, NetKind::BSpline,
-     [](const Problem& p) { return Solver{bspline_pde_requirements(*p.energy), on<BSplineNet, bspline_pde>}; }},
+     [](const Problem& p) {
+       return Solver{bspline_pde_requirements(*p.energy), on<BSplineNet, bspline_pde>};
+     }},
     {ProblemKind::Tetraharmonic, NetKind::Tensor,
-     [](const Problem&) { return Solver{tetraharmonic_requirements(), on<TensorNet, tetraharmonic>}; }},
+     [](const Problem&) {
+       return Solver{tetraharmonic_requirements(), on<TensorNet, tetraharmonic>};
+     }},
     {ProblemKind::BiharmonicLoad, NetKind::Tensor,
-     [](const Problem&) { return Solver{biharmonic_load_requirements(), on<TensorNet, biharmonic_load>}; }},
+     [](const Problem&) {
+       return Solver{biharmonic_load_requirements(), on<TensorNet, biharmonic_load>};
+     }},
     {ProblemKind::CmcH, NetKind::Triangular,
-     [](const Problem&) { return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>}; }},
+     [](const Problem&) {
+       return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>};
+     }},
     {ProblemKind::CmcH, NetKind::Tensor,
-     [](const Problem&) { return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>}; }},
+     [](const Problem&) {
+       return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>};
+     }},
     {ProblemKind::CmcV, NetKind::Triangular,
-     [](const Problem&) { return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>}; }},
+     [](const Problem&) {
+       return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>};
+     }},
     {ProblemKind::CmcV, NetKind::Tensor,
-     [](const Problem&) { return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>}; }},
+     [](const Problem&) {
+       return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>};
+     }},
 };
 
 // The method name a problem chooses ("" when it has no choice of method).
 std::string method_name(const Problem& p) {
   switch (p.kind) {
     case ProblemKind::Pde:
-    case ProblemKind::Tetraharmonic: return to_string(p.method);
+    case ProblemKind::Tetraharmonic:
+      return to_string(p.method);
     case ProblemKind::CmcH:
-    case ProblemKind::CmcV: return to_string(p.solver);
+    case ProblemKind::CmcV:
+      return to_string(p.solver);
     case ProblemKind::Extremal:
-    case ProblemKind::BiharmonicLoad: return "";
+    case ProblemKind::BiharmonicLoad:
+      return "";
   }
   return "";
 }
@@ -320,8 +341,8 @@ Job read_job_file(const std::string& path) { return job_from_json(read_json_file
 Status checked_status(const Summary& s) {
   if (s.converged != (s.status == Status::Converged)) {
     // Every solver sets both through Summary::set_converged / set_failed: a disagreement is a bug.
-    throw InternalError(std::string("solver summary: status \"") + to_string(s.status) + "\" with converged = " +
-                        (s.converged ? "true" : "false"));
+    throw InternalError(std::string("solver summary: status \"") + to_string(s.status) +
+                        "\" with converged = " + (s.converged ? "true" : "false"));
   }
   return s.status;
 }

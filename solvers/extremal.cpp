@@ -51,8 +51,8 @@ LVector times_x(const LVector& f) {
   const int d = static_cast<int>(f.size()) - 1;
   LVector g = LVector::Zero(d + 2);
   for (int i = 0; i <= d + 1; ++i) {
-    const long double tf = (i >= 1) ? i * f(i - 1) : 0.0L;               // (d+1) t f
-    const long double sf = (i <= d) ? (d + 1 - i) * f(i) : 0.0L;         // (d+1) (1-t) f
+    const long double tf = (i >= 1) ? i * f(i - 1) : 0.0L;        // (d+1) t f
+    const long double sf = (i <= d) ? (d + 1 - i) * f(i) : 0.0L;  // (d+1) (1-t) f
     g(i) = (tf - sf) / (d + 1);
   }
   return g;
@@ -92,13 +92,15 @@ std::vector<Eigen::MatrixXd> basis_derivatives_at_nodes(const QuadratureRule1D& 
       gegenbauer_values(K, lam + e, x, vals.data());
       double f = 1.0;
       for (int z = 0; z < e; ++z) f *= 4.0 * (lam + z);
-      for (int k = e; k < K; ++k) P[static_cast<size_t>(e)][static_cast<size_t>(k)] = f * vals[static_cast<size_t>(k - e)];
+      for (int k = e; k < K; ++k)
+        P[static_cast<size_t>(e)][static_cast<size_t>(k)] = f * vals[static_cast<size_t>(k - e)];
     }
     for (int d = 0; d <= dmax; ++d)
       for (int r = 0; r <= d; ++r) {
         const double gd = binomial(d, r) * weight_derivative(g, s, r, t);
         if (gd == 0.0) continue;
-        for (int k = 0; k < K; ++k) Phi[static_cast<size_t>(d)](gi, k) += gd * P[static_cast<size_t>(d - r)][static_cast<size_t>(k)];
+        for (int k = 0; k < K; ++k)
+          Phi[static_cast<size_t>(d)](gi, k) += gd * P[static_cast<size_t>(d - r)][static_cast<size_t>(k)];
       }
   }
   return Phi;
@@ -112,8 +114,10 @@ void basis_integrals(const std::vector<Eigen::MatrixXd>& Phi, const QuadratureRu
   b.C = b.A;
   for (int a = 0; a <= dmax; ++a)
     for (int c = 0; c <= dmax; ++c) {
-      b.A[static_cast<size_t>(a)][static_cast<size_t>(c)] = Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Phi[static_cast<size_t>(c)];
-      b.C[static_cast<size_t>(a)][static_cast<size_t>(c)] = Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Bern[static_cast<size_t>(c)];
+      b.A[static_cast<size_t>(a)][static_cast<size_t>(c)] =
+          Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Phi[static_cast<size_t>(c)];
+      b.C[static_cast<size_t>(a)][static_cast<size_t>(c)] =
+          Phi[static_cast<size_t>(a)].transpose() * rule.w.asDiagonal() * Bern[static_cast<size_t>(c)];
     }
 }
 
@@ -131,12 +135,14 @@ Eigen::MatrixXd basis_bernstein_coefficients(int n, int s, int K, const Eigen::V
       c = 2.0L * llam * times_x(Ck[0]);
     } else {
       c = (2.0L * (k + llam - 1) * times_x(Ck[static_cast<size_t>(k - 1)]) -
-           (k + 2 * llam - 2) * elevate(Ck[static_cast<size_t>(k - 2)], 2)) / static_cast<long double>(k);
+           (k + 2 * llam - 2) * elevate(Ck[static_cast<size_t>(k - 2)], 2)) /
+          static_cast<long double>(k);
     }
     Ck.push_back(c);
     // times (t(1-t))^s: h_i = c_{i-s} C(k, i-s) / C(k+2s, i).
     LVector h = LVector::Zero(k + 2 * s + 1);
-    for (int i = s; i <= k + s; ++i) h(i) = c(i - s) * binomial<long double>(k, i - s) / binomial<long double>(k + 2 * s, i);
+    for (int i = s; i <= k + s; ++i)
+      h(i) = c(i - s) * binomial<long double>(k, i - s) / binomial<long double>(k + 2 * s, i);
     const LVector full = elevate(h, n - k - 2 * s);
     T.col(k) = (static_cast<long double>(norm(k)) * full.segment(s, K)).cast<double>();
   }
@@ -226,8 +232,8 @@ ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet 
   N_ = static_cast<int>(Q_.rows());
   fixed_ = shape.fixed_indices(fixed);
   free_ = shape.free_indices(fixed);
-  const std::string what = "extremal (" + energy.name() + ", degree (" + std::to_string(n) + ", " +
-                           std::to_string(m) + "), " + to_string(fixed) + ")";
+  const std::string what = "extremal (" + energy.name() + ", degree (" + std::to_string(n) + ", " + std::to_string(m) +
+                           "), " + to_string(fixed) + ")";
   int dmax = 0;
   for (const auto& t : terms) dmax = std::max({dmax, t.au, t.av, t.bu, t.bv});
   if (!options.conditioned_basis || terms.empty()) {
@@ -239,7 +245,8 @@ ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet 
   const int sv = (fixed == FixedSet::BoundaryAdjacent) ? 2 : (fixed == FixedSet::UBoundaries ? 0 : 1);
   const Basis1D bu = make_basis(n, su, dmax), bv = make_basis(m, sv, dmax);
   const Eigen::Index nf = static_cast<Eigen::Index>(bu.K) * bv.K;
-  if (nf != static_cast<Eigen::Index>(free_.size())) throw Error("extremal: internal error (free set is not a tensor product)");
+  if (nf != static_cast<Eigen::Index>(free_.size()))
+    throw Error("extremal: internal error (free set is not a tensor product)");
   Eigen::MatrixXd Aff = Eigen::MatrixXd::Zero(nf, nf);
   Eigen::MatrixXd Afb = Eigen::MatrixXd::Zero(nf, static_cast<Eigen::Index>(fixed_.size()));
   for (const auto& t : terms) {
@@ -268,8 +275,8 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   for (Eigen::Index a = 0; a < nf; ++a)
     if (!(d(a) > 0.0)) {
       std::ostringstream s;
-      s << what << ": the reduced system is " << (d(a) < 0 ? "indefinite" : "singular")
-        << " (a free direction has " << (d(a) < 0 ? "negative" : "zero")
+      s << what << ": the reduced system is " << (d(a) < 0 ? "indefinite" : "singular") << " (a free direction has "
+        << (d(a) < 0 ? "negative" : "zero")
         << " energy); the energy does not determine the free control points for this fixed set";
       throw ParameterError(s.str());
     }

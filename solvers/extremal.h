@@ -31,8 +31,8 @@
 
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -60,8 +60,10 @@ inline SolverRequirements extremal_requirements() {
   r.problem = "problem \"extremal\"";
   r.nets = {NetKind::Tensor, NetKind::Triangular};
   r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
-  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 2},     {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4},
-                   {NetKind::Tensor, FixedSet::UBoundaries, 2},  {NetKind::Triangular, FixedSet::Boundary, 3},
+  r.min_degrees = {{NetKind::Tensor, FixedSet::Boundary, 2},
+                   {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4},
+                   {NetKind::Tensor, FixedSet::UBoundaries, 2},
+                   {NetKind::Triangular, FixedSet::Boundary, 3},
                    {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6}};
   return r;
 }
@@ -77,8 +79,7 @@ class ExtremalSolver {
   /// Tensor nets of degree (n,m) with the prescribed set `fixed`. Throws DegreeError below the
   /// FORMATS.md minimum degrees (n, m >= 2 for boundary, >= 4 for boundary+adjacent, n >= 2 for
   /// u-boundaries), ParameterError for a singular or indefinite reduced system.
-  ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet fixed,
-                 const ExtremalOptions& options = {});
+  ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet fixed, const ExtremalOptions& options = {});
 
   /// A shared solver from a process-wide cache (thread-safe; the cache keeps the 32 most recent).
   static std::shared_ptr<const ExtremalSolver> cached(const EnergySpec& energy, int n, int m, FixedSet fixed,

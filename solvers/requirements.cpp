@@ -8,9 +8,12 @@ namespace bpde {
 
 const char* to_string(NetKind k) {
   switch (k) {
-    case NetKind::Tensor: return "tensor";
-    case NetKind::Triangular: return "triangular";
-    case NetKind::BSpline: return "bspline";
+    case NetKind::Tensor:
+      return "tensor";
+    case NetKind::Triangular:
+      return "triangular";
+    case NetKind::BSpline:
+      return "bspline";
   }
   return "?";
 }
@@ -81,15 +84,12 @@ void check_requirements(const SolverRequirements& r, const NetShape& net, FixedS
     unsupported(r.problem + " needs a " + alternatives(r.nets, [](NetKind k) { return std::string(to_string(k)); }) +
                 " net, not a " + kind + " net");
   if (!r.takes(fixed))
-    unsupported(!r.fixed_reason.empty()
-                    ? r.fixed_reason
-                    : r.problem + " takes \"fixed\": " +
-                          alternatives(r.fixed, quoted));
+    unsupported(!r.fixed_reason.empty() ? r.fixed_reason
+                                        : r.problem + " takes \"fixed\": " + alternatives(r.fixed, quoted));
   if (!method.empty() && std::find(r.methods.begin(), r.methods.end(), method) == r.methods.end())
-    unsupported(!r.method_reason.empty()
-                    ? r.method_reason
-                    : r.problem + " has no method \"" + method + "\" (expected " +
-                          alternatives(r.methods, [](const std::string& s) { return s; }) + ")");
+    unsupported(!r.method_reason.empty() ? r.method_reason
+                                         : r.problem + " has no method \"" + method + "\" (expected " +
+                                               alternatives(r.methods, [](const std::string& s) { return s; }) + ")");
 
   const bool triangular = net.kind == NetKind::Triangular;
   if (r.square && !triangular && net.n != net.m) degree(r.problem + " needs n = m, got " + pair(net.n, net.m));

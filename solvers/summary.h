@@ -30,12 +30,18 @@ enum class Status {
 /// "converged", "not-unique", "incompatible", "fold", "no-convergence", "numerical-limit".
 inline const char* to_string(Status s) {
   switch (s) {
-    case Status::Converged: return "converged";
-    case Status::NotUnique: return "not-unique";
-    case Status::Incompatible: return "incompatible";
-    case Status::Fold: return "fold";
-    case Status::NoConvergence: return "no-convergence";
-    case Status::NumericalLimit: return "numerical-limit";
+    case Status::Converged:
+      return "converged";
+    case Status::NotUnique:
+      return "not-unique";
+    case Status::Incompatible:
+      return "incompatible";
+    case Status::Fold:
+      return "fold";
+    case Status::NoConvergence:
+      return "no-convergence";
+    case Status::NumericalLimit:
+      return "numerical-limit";
   }
   return "unknown";
 }
@@ -87,9 +93,7 @@ class ScopedTimer {
   ScopedTimer& operator=(const ScopedTimer&) = delete;
   ~ScopedTimer() { seconds_ = elapsed(); }
   /// Seconds since construction.
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
  private:
   double& seconds_;

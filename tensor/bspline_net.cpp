@@ -13,7 +13,8 @@ namespace {
 void check_knots(int k, const std::vector<double>& K, const char* dir) {
   const std::string d(dir);
   if (k < 1 || k > kMaxDegree)
-    throw DegreeError("bspline: degree " + d + " = " + std::to_string(k) + " is outside 1.." + std::to_string(kMaxDegree));
+    throw DegreeError("bspline: degree " + d + " = " + std::to_string(k) + " is outside 1.." +
+                      std::to_string(kMaxDegree));
   for (size_t i = 0; i < K.size(); ++i)
     if (!std::isfinite(K[i])) throw NonFiniteError("bspline: knot " + d + "[" + std::to_string(i) + "] is not finite");
   const int count = static_cast<int>(K.size()) - k - 1;
@@ -45,14 +46,16 @@ void check_knots(int k, const std::vector<double>& K, const char* dir) {
   const double domain = K[static_cast<size_t>(count)] - K[static_cast<size_t>(k)];
   if (!(domain >= BSplineNet::kMinDomainResolution * big) || !(domain >= BSplineNet::kMinDomainWidth))
     throw ParameterError("bspline: the domain of " + d + " [knot[" + std::to_string(k) + "], knot[" +
-                         std::to_string(count) + "]] is badly scaled: its width must be >= 1e-50 and >= 1e-8 "
+                         std::to_string(count) +
+                         "]] is badly scaled: its width must be >= 1e-50 and >= 1e-8 "
                          "times the largest |knot|");
   const double total = K.back() - K.front();
   for (size_t i = 1; i < K.size(); ++i) {
     const double h = K[i] - K[i - 1];
     if (h > 0 && !(h >= BSplineNet::kMinSpanRatio * total))
       throw ParameterError("bspline: knot span " + d + "[" + std::to_string(i - 1) + "].." + d + "[" +
-                           std::to_string(i) + "] is badly scaled: a non-zero span must be >= 1e-12 times "
+                           std::to_string(i) +
+                           "] is badly scaled: a non-zero span must be >= 1e-12 times "
                            "knot.back() - knot.front()");
   }
 }
@@ -141,8 +144,9 @@ BSplineNet::BSplineNet(int p, int q, std::vector<double> U, std::vector<double> 
   check_knots(p_, U_, "u");
   check_knots(q_, V_, "v");
   if (points_.rows() != size())
-    throw SizeError("bspline net with " + std::to_string(nu()) + " x " + std::to_string(nv()) + " control points needs " +
-                    std::to_string(size()) + " points, got " + std::to_string(points_.rows()));
+    throw SizeError("bspline net with " + std::to_string(nu()) + " x " + std::to_string(nv()) +
+                    " control points needs " + std::to_string(size()) + " points, got " +
+                    std::to_string(points_.rows()));
   for (Eigen::Index r = 0; r < points_.rows(); ++r)
     for (int c = 0; c < 3; ++c)
       if (!std::isfinite(points_(r, c)))
@@ -254,7 +258,7 @@ TriangleMesh sample_mesh(const BSplineNet& net, int N) {
     using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     for (int c = 0; c < 3; ++c) {
       const Eigen::Map<const RowMat, 0, Eigen::OuterStride<>> Pc(net.points().col(c).data(), net.nu(), net.nv(),
-                                                                  Eigen::OuterStride<>(net.nv()));
+                                                                 Eigen::OuterStride<>(net.nv()));
       Eigen::Map<RowMat>(out.col(c).data(), N + 1, N + 1) = Bu * (Pc * Bv.transpose());
     }
     return out;

@@ -12,9 +12,7 @@ namespace {
 
 int count_of(int k, const std::vector<double>& K) { return static_cast<int>(K.size()) - k - 1; }
 
-int multiplicity(const std::vector<double>& K, double t) {
-  return static_cast<int>(std::count(K.begin(), K.end(), t));
-}
+int multiplicity(const std::vector<double>& K, double t) { return static_cast<int>(std::count(K.begin(), K.end(), t)); }
 
 // One insertion of t (already validated) into knots K and rows P; returns the new points and
 // updates K in place.
@@ -59,8 +57,8 @@ void check_insertion(int k, const std::vector<double>& K, double t, int times) {
 KnotRefinement insert_knot(int k, const std::vector<double>& K, const Eigen::MatrixXd& P, double t, int times) {
   BSplineNet::validate_knots(k, K, "of the curve");
   if (P.rows() != count_of(k, K))
-    throw SizeError("knot insertion: " + std::to_string(K.size()) + " knots of degree " + std::to_string(k) +
-                    " need " + std::to_string(count_of(k, K)) + " control points, got " + std::to_string(P.rows()));
+    throw SizeError("knot insertion: " + std::to_string(K.size()) + " knots of degree " + std::to_string(k) + " need " +
+                    std::to_string(count_of(k, K)) + " control points, got " + std::to_string(P.rows()));
   if (!P.allFinite()) throw NonFiniteError("knot insertion: a control point is not finite");
   check_insertion(k, K, t, times);
   KnotRefinement out{K, P};
@@ -104,7 +102,8 @@ BezierExtraction bezier_extraction(int k, const std::vector<double>& K) {
   const int n = count_of(k, K);
   BezierExtraction ex;
   for (int i = k; i <= n; ++i)
-    if (ex.breaks.empty() || K[static_cast<size_t>(i)] > ex.breaks.back()) ex.breaks.push_back(K[static_cast<size_t>(i)]);
+    if (ex.breaks.empty() || K[static_cast<size_t>(i)] > ex.breaks.back())
+      ex.breaks.push_back(K[static_cast<size_t>(i)]);
   // Insert every break up to multiplicity k (the ends too: an unclamped knot vector then has
   // Bernstein pieces on its first and last spans as well).
   std::vector<double> extra;
@@ -145,7 +144,8 @@ std::vector<BezierPatch> bezier_patches(const BSplineNet& net) {
       b.sv = sv;
       b.net = TensorNet(net.p(), net.q());
       for (int c = 0; c < 3; ++c) {
-        const RowMat B = eu.C[static_cast<size_t>(su)] * Pc[static_cast<size_t>(c)] * ev.C[static_cast<size_t>(sv)].transpose();
+        const RowMat B =
+            eu.C[static_cast<size_t>(su)] * Pc[static_cast<size_t>(c)] * ev.C[static_cast<size_t>(sv)].transpose();
         for (int i = 0; i <= net.p(); ++i)
           for (int j = 0; j <= net.q(); ++j) b.net.points()(b.net.index(i, j), c) = B(i, j);
       }
@@ -163,7 +163,7 @@ Eigen::MatrixXd polynomial_to_bspline_matrix(int d, double t0, double t1, int k,
                       std::to_string(k));
   const int n = count_of(k, K);
   const Eigen::MatrixXd E = bernstein_elevation_operator(d, k - d);  // (k+1) x (d+1)
-  Eigen::MatrixXd W(n, k + 1);                                        // blossom weights at degree k
+  Eigen::MatrixXd W(n, k + 1);                                       // blossom weights at degree k
   for (int i = 0; i < n; ++i) {
     Eigen::MatrixXd c = Eigen::MatrixXd::Identity(k + 1, k + 1);  // column r: coefficients of B_r^k
     for (int r = 1; r <= k; ++r) {

@@ -12,8 +12,8 @@ namespace {
 
 // Apply (Mu kron Mv) to each coordinate of a row-major (n+1)(m+1) layout: out_c = Mu X_c Mv^T,
 // two small row-major products per coordinate (core/row_major_product.h).
-Eigen::MatrixX3d apply_tensor(const Eigen::MatrixXd& Mu, const Eigen::MatrixXd& Mv, const Eigen::MatrixX3d& X,
-                              int n, int m) {
+Eigen::MatrixX3d apply_tensor(const Eigen::MatrixXd& Mu, const Eigen::MatrixXd& Mv, const Eigen::MatrixX3d& X, int n,
+                              int m) {
   Eigen::MatrixX3d out(X.rows(), 3);
   using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   const RowMat MuR = Mu;  // (n+1) x (n+1) row-major

@@ -14,8 +14,8 @@ namespace {
 
 void check_degree(int d, const char* what) {
   if (d < 1 || d > kMaxDegree)
-    throw DegreeError(std::string("tensor net: degree ") + what + " = " + std::to_string(d) +
-                      " is outside 1.." + std::to_string(kMaxDegree));
+    throw DegreeError(std::string("tensor net: degree ") + what + " = " + std::to_string(d) + " is outside 1.." +
+                      std::to_string(kMaxDegree));
 }
 
 // de Casteljau on the rows of a (deg+1) x 3 block (in place on a copy).
@@ -23,7 +23,8 @@ Eigen::Vector3d casteljau(std::vector<Eigen::Vector3d>& b, double t) {
   const int deg = static_cast<int>(b.size()) - 1;
   const double s = 1.0 - t;
   for (int r = 1; r <= deg; ++r)
-    for (int i = 0; i <= deg - r; ++i) b[static_cast<size_t>(i)] = s * b[static_cast<size_t>(i)] + t * b[static_cast<size_t>(i) + 1];
+    for (int i = 0; i <= deg - r; ++i)
+      b[static_cast<size_t>(i)] = s * b[static_cast<size_t>(i)] + t * b[static_cast<size_t>(i) + 1];
   return b[0];
 }
 
@@ -118,8 +119,7 @@ TensorNet TensorNet::elevated(int dn, int dm) const {
   return out;
 }
 
-Eigen::MatrixX3d TensorNet::evaluate_grid(const Eigen::VectorXd& us, const Eigen::VectorXd& vs, int du,
-                                          int dv) const {
+Eigen::MatrixX3d TensorNet::evaluate_grid(const Eigen::VectorXd& us, const Eigen::VectorXd& vs, int du, int dv) const {
   Eigen::MatrixX3d out(us.size() * vs.size(), 3);
   if (du > n_ || dv > m_) {
     out.setZero();
@@ -132,7 +132,8 @@ Eigen::MatrixX3d TensorNet::evaluate_grid(const Eigen::VectorXd& us, const Eigen
   const int nu = static_cast<int>(us.size()), nv = static_cast<int>(vs.size());
   const Eigen::MatrixXd BvT = bernstein_table(m_, vs, dv);  // #vs x (m+1) column-major = (m+1) x #vs row-major
   // #us x (n+1), row-major; the usual square grid (us = vs, same degree and order) reuses BvT.
-  const RowMat Bu = (n_ == m_ && du == dv && us.size() == vs.size() && us == vs) ? RowMat(BvT) : RowMat(bernstein_table(n_, us, du));
+  const RowMat Bu =
+      (n_ == m_ && du == dv && us.size() == vs.size() && us == vs) ? RowMat(BvT) : RowMat(bernstein_table(n_, us, du));
   RowMat T(n_ + 1, nv);
   for (int c = 0; c < 3; ++c) {
     // Points are stored row-major by (i, j): column c is P_c, (n+1) x (m+1) row-major.
@@ -157,9 +158,15 @@ std::vector<int> TensorNet::fixed_indices(FixedSet fixed) const {
       const int d = std::min({i, n_ - i, j, m_ - j});
       bool take = false;
       switch (fixed) {
-        case FixedSet::Boundary: take = d == 0; break;
-        case FixedSet::BoundaryAdjacent: take = d <= 1; break;
-        case FixedSet::UBoundaries: take = (i == 0 || i == n_); break;
+        case FixedSet::Boundary:
+          take = d == 0;
+          break;
+        case FixedSet::BoundaryAdjacent:
+          take = d <= 1;
+          break;
+        case FixedSet::UBoundaries:
+          take = (i == 0 || i == n_);
+          break;
       }
       if (take) out.push_back(index(i, j));
     }

@@ -53,8 +53,7 @@ class TensorNet {
 
   /// Values (or derivatives of order (du,dv)) on the grid us x vs, using one Bernstein table per
   /// direction and two small matrix products per coordinate. Row a*#vs + b is (us(a), vs(b)).
-  Eigen::MatrixX3d evaluate_grid(const Eigen::VectorXd& us, const Eigen::VectorXd& vs, int du = 0,
-                                 int dv = 0) const;
+  Eigen::MatrixX3d evaluate_grid(const Eigen::VectorXd& us, const Eigen::VectorXd& vs, int du = 0, int dv = 0) const;
 
   /// Indices of the ring at distance r from the border: points with min(i, n-i, j, m-j) == r.
   std::vector<int> ring_indices(int r) const;

@@ -46,9 +46,9 @@ namespace c1ex {
 inline constexpr int kDegree = 7;
 
 struct Configuration {
-  std::string name;    ///< file stem, e.g. "arch-fig7"
-  std::string figure;  ///< the paper's figure
-  bpde::TensorNet net; ///< outer two rings set, interior zero
+  std::string name;     ///< file stem, e.g. "arch-fig7"
+  std::string figure;   ///< the paper's figure
+  bpde::TensorNet net;  ///< outer two rings set, interior zero
 };
 
 inline double ck(int k, int n) { return -std::cos(std::numbers::pi * k / n); }

@@ -43,8 +43,10 @@ LoadStats load_stats(const bpde::TensorNet& load) {
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j) {
       const double a = load.point(i, j).norm();
-      if (c1ex::in_outer_rings(i, j, n)) s.rings = std::max(s.rings, a);
-      else s.interior = std::max(s.interior, a);
+      if (c1ex::in_outer_rings(i, j, n))
+        s.rings = std::max(s.rings, a);
+      else
+        s.interior = std::max(s.interior, a);
     }
   return s;
 }
@@ -65,11 +67,14 @@ void sensitivity() {
   const int n = c1ex::kDegree;
   constexpr double pi = std::numbers::pi;
   std::printf("\n### Fig. VI: which piece of the sphere (paper: 0.00822637 / 0.0141973)\n\n");
-  std::printf("| piece (degree-7 Chebyshev–Lobatto interpolant, outer two rings) | data | biharmonic-load | tetraharmonic |\n|---|---|---|---|\n");
+  std::printf(
+      "| piece (degree-7 Chebyshev–Lobatto interpolant, outer two rings) | data | biharmonic-load | tetraharmonic "
+      "|\n|---|---|---|---|\n");
   auto sphere_row = [&](const char* name, auto f) {
     const bpde::TensorNet full = c1ex::interpolate_tensor(n, f);
     std::printf("| %s | %.1e | %.5f | %.5f |\n", name, sphere_distance(full),
-                sphere_distance(bpde::solve_biharmonic_load(full).net), sphere_distance(bpde::solve_tetraharmonic(full).net));
+                sphere_distance(bpde::solve_biharmonic_load(full).net),
+                sphere_distance(bpde::solve_tetraharmonic(full).net));
   };
   for (double a : {0.45, 0.5, 0.52}) {
     char name[96];
@@ -89,7 +94,9 @@ void sensitivity() {
   });
 
   std::printf("\n### Fig. IX row 3: the outward shift δ of the adjacent ring\n\n");
-  std::printf("| adjacent ring | self-int biharmonic-load | self-int tetraharmonic | z(½,½) biharmonic-load | z(½,½) tetraharmonic |\n|---|---|---|---|---|\n");
+  std::printf(
+      "| adjacent ring | self-int biharmonic-load | self-int tetraharmonic | z(½,½) biharmonic-load | z(½,½) "
+      "tetraharmonic |\n|---|---|---|---|---|\n");
   for (double d : {-0.1, -0.25, -0.5}) {
     const bpde::TensorNet data = c1ex::arch2_with_shift(n, d);
     const auto bl = bpde::solve_biharmonic_load(data).net;
@@ -104,10 +111,22 @@ void sensitivity() {
       if (c1ex::on_boundary(i, j, n)) return ref.point(i, j);
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       int count = 0;
-      if (j == 1) { sum += ref.point(i, 0) + Eigen::Vector3d(0, d, 0); ++count; }
-      if (j == n - 1) { sum += ref.point(i, n) - Eigen::Vector3d(0, d, 0); ++count; }
-      if (i == 1) { sum += ref.point(0, j) + Eigen::Vector3d(d, 0, 0); ++count; }
-      if (i == n - 1) { sum += ref.point(n, j) - Eigen::Vector3d(d, 0, 0); ++count; }
+      if (j == 1) {
+        sum += ref.point(i, 0) + Eigen::Vector3d(0, d, 0);
+        ++count;
+      }
+      if (j == n - 1) {
+        sum += ref.point(i, n) - Eigen::Vector3d(0, d, 0);
+        ++count;
+      }
+      if (i == 1) {
+        sum += ref.point(0, j) + Eigen::Vector3d(d, 0, 0);
+        ++count;
+      }
+      if (i == n - 1) {
+        sum += ref.point(n, j) - Eigen::Vector3d(d, 0, 0);
+        ++count;
+      }
       return sum / count;
     });
     const auto bl = bpde::solve_biharmonic_load(data).net;
@@ -152,15 +171,15 @@ int main(int argc, char** argv) {
       for (const char* kind : {"tetraharmonic", "biharmonic-load"}) {
         bpde::Json problem = {{"kind", kind}};
         if (std::strcmp(kind, "tetraharmonic") == 0) problem["method"] = "lu";
-        const bpde::Json job = {{"net", bpde::net_to_json(c.net)},
-                                {"fixed", "boundary+adjacent"},
-                                {"problem", problem},
-                                {"samples", 50}};
+        const bpde::Json job = {
+            {"net", bpde::net_to_json(c.net)}, {"fixed", "boundary+adjacent"}, {"problem", problem}, {"samples", 50}};
         bpde::write_json_file((dir / (c.name + "-" + kind + ".json")).string(), job);
       }
     }
   }
-  std::printf("| config | figure | method | n | residual | self-int | max \\|load\\| outer rings | max \\|load\\| interior | z(½,½) | max z | H range | explicit vs lu | sphere dist |\n");
+  std::printf(
+      "| config | figure | method | n | residual | self-int | max \\|load\\| outer rings | max \\|load\\| interior | "
+      "z(½,½) | max z | H range | explicit vs lu | sphere dist |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& c : configs) {
     for (const char* kind : {"biharmonic-load", "tetraharmonic"}) {
@@ -175,7 +194,8 @@ int main(int argc, char** argv) {
       const int si = bpde::check_report(mesh)["self_intersections"].get<int>();
       const bpde::Json H = bpde::mean_curvature_stats(res.net, mesh, job.samples);
       const bool tetra = std::strcmp(kind, "tetraharmonic") == 0;
-      const double residual = tetra ? res.report["pde_residual"].get<double>() : ls.interior / std::max(ls.rings, 1e-300);
+      const double residual =
+          tetra ? res.report["pde_residual"].get<double>() : ls.interior / std::max(ls.rings, 1e-300);
       char exp_vs_lu[32] = "";
       if (tetra) {
         bpde::TetraharmonicOptions o;
@@ -187,8 +207,8 @@ int main(int argc, char** argv) {
       char sph[32] = "";
       if (c.name.rfind("sphere", 0) == 0) std::snprintf(sph, sizeof sph, "%.5f", sphere_distance(net));
       std::printf("| %s | %s | %s | %d | %.1e | %d | %.4g | %.2g | %.3f | %.3f | [%.3g, %.3g] | %s | %s |\n",
-                  c.name.c_str(), c.figure.c_str(), tetra ? "tetraharmonic (lu)" : "biharmonic-load", net.n(),
-                  residual, si, ls.rings, ls.interior, net.evaluate(0.5, 0.5).z(), mesh.V.col(2).maxCoeff(),
+                  c.name.c_str(), c.figure.c_str(), tetra ? "tetraharmonic (lu)" : "biharmonic-load", net.n(), residual,
+                  si, ls.rings, ls.interior, net.evaluate(0.5, 0.5).z(), mesh.V.col(2).maxCoeff(),
                   H["min"].get<double>(), H["max"].get<double>(), exp_vs_lu, sph);
     }
   }

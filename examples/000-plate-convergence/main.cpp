@@ -82,12 +82,15 @@ int main() {
   std::printf("\n");
 
   std::printf("\n### The paper's table beside ours\n\n");
-  std::printf("| aspect | paper n = 11 | ours adm. n = 11 | paper n = 15 | ours adm. n = 15 | ours adm. n = 30 | ours ritz n = 30 | Bloor–Wilson | Timoshenko |\n");
+  std::printf(
+      "| aspect | paper n = 11 | ours adm. n = 11 | paper n = 15 | ours adm. n = 15 | ours adm. n = 30 | ours ritz n = "
+      "30 | Bloor–Wilson | Timoshenko |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (size_t k = 0; k < kAspects.size(); ++k)
     std::printf("| %.1f | %.8f | %.8f | %.8f | %.8f | %.8f | %.8f | %.8f | %.5f |\n", kAspects[k], kPaper11[k],
                 adm[11][k], kPaper15[k], adm[15][k], adm[30][k], rtz[30][k], kBloorWilson[k], kTimoshenko[k]);
-  std::printf("\nSquare, the paper's first table: n = 7: paper 0.00096377, ours %.8f; n = 9: paper 0.00122758, ours %.8f.\n",
-              adm[7][0], adm[9][0]);
+  std::printf(
+      "\nSquare, the paper's first table: n = 7: paper 0.00096377, ours %.8f; n = 9: paper 0.00122758, ours %.8f.\n",
+      adm[7][0], adm[9][0]);
   return 0;
 }

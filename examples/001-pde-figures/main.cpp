@@ -4,8 +4,8 @@
 //   EXAMPLE_DIR defaults to examples/001-pde-figures, OUT_DIR to out/001-pde-figures.
 // For each job: the explicit solution (written to OUT_DIR/<job>/), the lu solution, their
 // largest control-point difference relative to the net's size, the PDE residual, and the
-// energy extremal with the same boundary (docs/errata.md, explicit PDE solutions §2: it is a different surface with lower
-// energy). Prints a Markdown table (README.md holds its output).
+// energy extremal with the same boundary (docs/errata.md, explicit PDE solutions §2: it is a different surface with
+// lower energy). Prints a Markdown table (README.md holds its output).
 #include <cstdio>
 #include <filesystem>
 
@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".json") jobs.push_back(e.path());
   std::sort(jobs.begin(), jobs.end());
-  std::printf("| job | operator | E(PDE solution) | pde_residual | explicit vs lu | E(extremal) | self-intersections |\n");
+  std::printf(
+      "| job | operator | E(PDE solution) | pde_residual | explicit vs lu | E(extremal) | self-intersections |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   for (const auto& path : jobs) {
     const bpde::Job job = bpde::read_job_file(path.string());

@@ -77,11 +77,12 @@ void print_z_grid(const BSplineNet& net) {
 }
 
 void report(const char* what, const BSplinePdeResult& r, const EnergySpec& op) {
-  std::printf("- %s: %d equations, rank %d over all points, %d over the free points; free parameters %d; "
-              "compatibility conditions %d; converged %s; relative residual %.2e%s\n",
-              what, r.equations, r.rank, r.rank_free, r.free_parameters, r.compatibility_conditions,
-              r.summary.converged ? "**yes**" : "**no**", r.summary.residual,
-              r.minimum_energy_member ? "; **minimum-energy member** returned" : "");
+  std::printf(
+      "- %s: %d equations, rank %d over all points, %d over the free points; free parameters %d; "
+      "compatibility conditions %d; converged %s; relative residual %.2e%s\n",
+      what, r.equations, r.rank, r.rank_free, r.free_parameters, r.compatibility_conditions,
+      r.summary.converged ? "**yes**" : "**no**", r.summary.residual,
+      r.minimum_energy_member ? "; **minimum-energy member** returned" : "");
   if (r.summary.converged)
     std::printf("  - energy %.10g; relative equation residual %.1e; pde_residual (FORMATS.md, 50 x 50 grid) %.1e\n",
                 r.energy, bspline_pde_equation_residual(r.net, op), bspline_pde_residual(r.net, op));
@@ -102,17 +103,19 @@ int main() {
     const std::vector<double> K = uniform(8);
     const EnergySpec op = EnergySpec::second_order(1, -2, 1);
     const Eigen::MatrixXd A = bspline_pde_equations(3, 3, K, K, op);
-    std::printf("- Equations (Bernstein coefficients of Lx on the span): %ld; **rank %d** (paper: 13 equations, "
-                "\"12\" independent). Solution space: dimension 16 - %d = %d, i.e. f(u+v) + (u-v) g(u+v).\n",
-                static_cast<long>(A.rows()), rank_of(A), rank_of(A), 16 - rank_of(A));
+    std::printf(
+        "- Equations (Bernstein coefficients of Lx on the span): %ld; **rank %d** (paper: 13 equations, "
+        "\"12\" independent). Solution space: dimension 16 - %d = %d, i.e. f(u+v) + (u-v) g(u+v).\n",
+        static_cast<long>(A.rows()), rank_of(A), rank_of(A), 16 - rank_of(A));
     Eigen::MatrixX3d P(16, 3);
     P << 1, 1, 1, 1, 2, -8, 1, 3, 8, 1, 4, 1,  //
         2, 1, 8, 2, 2, -5. / 9, 2, 3, 119. / 9, 2, 4, 4. / 3, 3, 1, -8, 3, 2, -121. / 9, 3, 3, 7. / 9, 3, 4, -40. / 3,
         4, 1, 1, 4, 2, 4. / 3, 4, 3, 56. / 3, 4, 4, 5;
     const BSplineNet paper(3, 3, K, K, P);
-    std::printf("- The paper's listed net: relative equation residual %.3g, pde_residual %.3g (a solution gives ~1e-16): "
-                "**it does not satisfy the PDE** (docs/errata.md).\n",
-                bspline_pde_equation_residual(paper, op), bspline_pde_residual(paper, op));
+    std::printf(
+        "- The paper's listed net: relative equation residual %.3g, pde_residual %.3g (a solution gives ~1e-16): "
+        "**it does not satisfy the PDE** (docs/errata.md).\n",
+        bspline_pde_equation_residual(paper, op), bspline_pde_residual(paper, op));
     const BSplinePdeResult r = solve_bspline_pde(paper, op, std::vector<int>{0, 1, 2, 3});
     report("Solver with the paper's prescribed P_00..P_03", r, op);
     std::printf("\nz-coordinates of the solver's net (P_0j prescribed):\n\n");
@@ -121,9 +124,10 @@ int main() {
 
   // ------------------------------------------------------------------ Example 2
   std::printf("## Example 2: fourth order, quintic, 6 x 6 points\n\n");
-  std::printf("Set-up: uniform knots 0..11 (h = 1), the span [u5,u6] x [v5,v6]; prescribed P_0j and P_i0 (11 points) "
-              "from the paper. \"a = 1, b = 2, c = 1 in Equation (4)\" is read two ways: the operator [1,2,1,0,0] "
-              "and the biharmonic [1,0,2,0,1].\n\n");
+  std::printf(
+      "Set-up: uniform knots 0..11 (h = 1), the span [u5,u6] x [v5,v6]; prescribed P_0j and P_i0 (11 points) "
+      "from the paper. \"a = 1, b = 2, c = 1 in Equation (4)\" is read two ways: the operator [1,2,1,0,0] "
+      "and the biharmonic [1,0,2,0,1].\n\n");
   {
     const std::vector<double> K = uniform(12);
     const double z[6][6] = {{0, 10, 10, -10, -10, 0},
@@ -151,9 +155,10 @@ int main() {
       const Eigen::VectorXd a = A.col(7);
       const double z11 = -a.dot(r0) / a.squaredNorm();
       paper.points()(7, 2) = z11;
-      std::printf("- The paper's listed net, with the missing P_11 = (2, 2, %.6g) chosen to minimise the residual: "
-                  "relative equation residual %.3g, pde_residual %.3g: **not a solution**.\n",
-                  z11, bspline_pde_equation_residual(paper, op), bspline_pde_residual(paper, op));
+      std::printf(
+          "- The paper's listed net, with the missing P_11 = (2, 2, %.6g) chosen to minimise the residual: "
+          "relative equation residual %.3g, pde_residual %.3g: **not a solution**.\n",
+          z11, bspline_pde_equation_residual(paper, op), bspline_pde_residual(paper, op));
       const BSplinePdeResult r = solve_bspline_pde(paper, op, fixed);
       report("Solver with the paper's 11 prescribed points", r, op);
       std::printf("\nz-coordinates of the solver's net (row i = 0 and column j = 0 prescribed):\n\n");
@@ -168,8 +173,9 @@ int main() {
 
   // ------------------------------------------------------------------ §5 special cases
   std::printf("## Section 5 special cases on a multi-span net\n\n");
-  std::printf("Biquintic, clamped knots [0^6, 0.5, 1^6] in both directions (2 x 2 spans, 7 x 7 points), "
-              "boundary ring prescribed.\n\n");
+  std::printf(
+      "Biquintic, clamped knots [0^6, 0.5, 1^6] in both directions (2 x 2 spans, 7 x 7 points), "
+      "boundary ring prescribed.\n\n");
   {
     const std::vector<double> K = clamped(5, {0.5});
     std::mt19937 rng(2019);
@@ -185,8 +191,9 @@ int main() {
       for (int k = 0; k < 6; ++k) s(k) = 0.5 - 0.5 * std::cos(M_PI * (k + 0.5) / 6);
       Eigen::MatrixXd B(6, 6), F(6, 6);
       for (int a = 0; a < 6; ++a)
-        for (int k = 0; k < 6; ++k) B(a, k) = std::tgamma(6) / (std::tgamma(k + 1) * std::tgamma(6 - k)) *
-                                              std::pow(s(a), k) * std::pow(1 - s(a), 5 - k);
+        for (int k = 0; k < 6; ++k)
+          B(a, k) = std::tgamma(6) / (std::tgamma(k + 1) * std::tgamma(6 - k)) * std::pow(s(a), k) *
+                    std::pow(1 - s(a), 5 - k);
       for (int a = 0; a < 6; ++a)
         for (int b = 0; b < 6; ++b) F(a, b) = f(s(a), s(b));
       const Eigen::FullPivLU<Eigen::MatrixXd> lu(B);
@@ -202,10 +209,10 @@ int main() {
     };
     // A compatible boundary for the elliptic operators: the biharmonic polynomial
     // z = Re((u + i v)^5) + (u^2 + v^2) u v; and for x_uuuu = 0: z = (u^3 - 2u)(v^5 + v) + u v.
-    const BSplineNet poly = spline_of([](double u, double v) {
-      return std::pow(std::complex<double>(u, v), 5).real() + (u * u + v * v) * u * v;
-    });
-    const BSplineNet cubic_u = spline_of([](double u, double v) { return (u * u * u - 2 * u) * (v * v * v * v * v + v) + u * v; });
+    const BSplineNet poly = spline_of(
+        [](double u, double v) { return std::pow(std::complex<double>(u, v), 5).real() + (u * u + v * v) * u * v; });
+    const BSplineNet cubic_u =
+        spline_of([](double u, double v) { return (u * u * u - 2 * u) * (v * v * v * v * v + v) + u * v; });
     const BSplineNet compatible = boundary_only(poly);
 
     std::printf("### PDE solutions (Algorithm 2)\n\n");
@@ -241,19 +248,20 @@ int main() {
                                      u * (1 - v) * generic.evaluate(1, 0) + u * v * generic.evaluate(1, 1));
           err = std::max(err, (r.net.evaluate(u, v) - c).norm());
         }
-      std::printf("The Coons solution equals the bilinearly blended Coons patch of the four boundary curves: "
-                  "max deviation on a 21 x 21 grid %.2e.\n\n",
-                  err);
+      std::printf(
+          "The Coons solution equals the bilinearly blended Coons patch of the four boundary curves: "
+          "max deviation on a 21 x 21 grid %.2e.\n\n",
+          err);
     }
 
     std::printf("### Extremals (exist for any boundary)\n\n");
     std::printf("| energy | fixed | energy value | relative residual | seconds |\n|---|---|---|---|---|\n");
-    for (const auto& [name, e] :
-         std::vector<std::pair<const char*, EnergySpec>>{{"coons", EnergySpec::coons()},
-                                                         {"biharmonic", EnergySpec::biharmonic()},
-                                                         {"laplacian-squared", EnergySpec::laplacian_squared()},
-                                                         {"modified-biharmonic 0.8", EnergySpec::modified_biharmonic(alpha)},
-                                                         {"dirichlet", EnergySpec::dirichlet()}})
+    for (const auto& [name, e] : std::vector<std::pair<const char*, EnergySpec>>{
+             {"coons", EnergySpec::coons()},
+             {"biharmonic", EnergySpec::biharmonic()},
+             {"laplacian-squared", EnergySpec::laplacian_squared()},
+             {"modified-biharmonic 0.8", EnergySpec::modified_biharmonic(alpha)},
+             {"dirichlet", EnergySpec::dirichlet()}})
       for (FixedSet fx : {FixedSet::Boundary, FixedSet::BoundaryAdjacent}) {
         const BSplineExtremalResult r = solve_bspline_extremal(generic, e, BSplineExtremalOptions{fx});
         std::printf("| %s | %s | %.10g | %.1e | %.1e |\n", name, to_string(fx).c_str(), r.energy, r.summary.residual,
@@ -282,8 +290,8 @@ int main() {
                 n * n, e.summary.residual, seconds_since(t0));
     t0 = std::chrono::steady_clock::now();
     const BSplinePdeResult r = solve_bspline_pde(net, EnergySpec::coons());
-    std::printf("| biquintic %d x %d spans (%d points) | Coons PDE, %d equations | rank %d, converged %s | %.3f |\n", spans,
-                spans, n * n, r.equations, r.rank, r.summary.converged ? "yes" : "no", seconds_since(t0));
+    std::printf("| biquintic %d x %d spans (%d points) | Coons PDE, %d equations | rank %d, converged %s | %.3f |\n",
+                spans, spans, n * n, r.equations, r.rank, r.summary.converged ? "yes" : "no", seconds_since(t0));
   }
   return 0;
 }

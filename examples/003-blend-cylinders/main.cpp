@@ -1,9 +1,9 @@
 // §6 of Pasadas–Rodríguez (smoothing PDE splines): blending the cylinders
 //   f(x, y) = (2y - 1, 2 cos 2πx, 2 sin 2πx),   g(x, y) = (2y + 1, cos 2πx, sin 2πx)
 // by discrete smoothing PDE splines on the 8×4 BFS partition, for the four parameter sets of
-// Figure 2. Boundary data (docs/errata.md, smoothing PDE splines §6): u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0),
-// u_y(x,1) = g_y(x,0) at the nodes x_i = i/8; approximation points A = {(i/9, 1/2)}, β = ρh with
-// h(x, y) = (2y - 1, 0.5 cos 2πx, 0.5 sin 2πx).
+// Figure 2. Boundary data (docs/errata.md, smoothing PDE splines §6): u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) =
+// g(x,0), u_y(x,1) = g_y(x,0) at the nodes x_i = i/8; approximation points A = {(i/9, 1/2)}, β = ρh with h(x, y) = (2y
+// - 1, 0.5 cos 2πx, 0.5 sin 2πx).
 //
 // Usage: example_003_blend_cylinders EXAMPLE_DIR [OUT_DIR]
 //   Writes EXAMPLE_DIR/fig2{a,b,c,d}.json (FORMATS.md blend configs), reads them back, solves
@@ -43,9 +43,9 @@ BlendConfig figure2(double a, double eps, bool with_points) {
   for (int i = 0; i <= 8; ++i) {
     const double x = i / 8.0;
     p.y0_value.row(i) << 2 * 1.0 - 1, 2 * std::cos(kTwoPi * x), 2 * std::sin(kTwoPi * x);  // f(x,1)
-    p.y0_dy.row(i) << 2, 0, 0;                                                              // f_y
-    p.y1_value.row(i) << 2 * 0.0 + 1, std::cos(kTwoPi * x), std::sin(kTwoPi * x);           // g(x,0)
-    p.y1_dy.row(i) << 2, 0, 0;                                                              // g_y
+    p.y0_dy.row(i) << 2, 0, 0;                                                             // f_y
+    p.y1_value.row(i) << 2 * 0.0 + 1, std::cos(kTwoPi * x), std::sin(kTwoPi * x);          // g(x,0)
+    p.y1_dy.row(i) << 2, 0, 0;                                                             // g_y
   }
   const int m = with_points ? 9 : 0;
   p.points.resize(m, 2);
@@ -76,13 +76,11 @@ std::string pretty(const BlendConfig& c) {
     s += ']';
     return s;
   };
-  std::string s = "{\"kind\": \"blend\", \"partition\": " + j["partition"].dump() +
-                  ", \"a\": " + j["a"].dump() + ", \"epsilon\": " + j["epsilon"].dump() +
-                  ",\n \"edges\": {\n";
+  std::string s = "{\"kind\": \"blend\", \"partition\": " + j["partition"].dump() + ", \"a\": " + j["a"].dump() +
+                  ", \"epsilon\": " + j["epsilon"].dump() + ",\n \"edges\": {\n";
   for (const char* e : {"y0", "y1"}) {
     s += std::string("  \"") + e + "\": {\"value\": " + rows(j["edges"][e]["value"], "     ") +
-         ",\n         \"dy\": " + rows(j["edges"][e]["dy"], "     ") + "}" +
-         (e[1] == '0' ? ",\n" : "},\n");
+         ",\n         \"dy\": " + rows(j["edges"][e]["dy"], "     ") + "}" + (e[1] == '0' ? ",\n" : "},\n");
   }
   s += " \"points\": " + rows(j["points"], "  ") + ",\n \"data\": " + rows(j["data"], "  ") +
        ",\n \"samples\": " + j["samples"].dump() + "}\n";
@@ -110,8 +108,8 @@ int main(int argc, char** argv) {
   try {
     const std::filesystem::path dir = argv[1];
     const char* names[4] = {"fig2a", "fig2b", "fig2c", "fig2d"};
-    const BlendConfig configs[4] = {figure2(1, 1, false), figure2(10, 1, false),
-                                    figure2(10, 1e-3, true), figure2(10, 1e-5, true)};
+    const BlendConfig configs[4] = {figure2(1, 1, false), figure2(10, 1, false), figure2(10, 1e-3, true),
+                                    figure2(10, 1e-5, true)};
     std::printf(
         "| config | A | ε | a | converged | stationarity | J(σ) | \\|σ\\|_L² | max \\|σ(a_i) − β_i\\| "
         "| σ(x,½): X range | σ(x,½): radius range | surface X range | H min / mean / max "
@@ -155,11 +153,10 @@ int main(int argc, char** argv) {
       std::printf(
           "| %s | %s | %g | %g | %s | %.1e | %.6g | %.6g | %s | [%.4f, %.4f] | [%.4f, %.4f] | "
           "[%.4f, %.4f] | %.3f / %.3f / %.3f | %d | %.1e | %.4f |\n",
-          names[c], P.points.rows() ? "(i/9, ½), i = 0..8" : "∅", P.epsilon, P.a,
-          r.summary.converged ? "yes" : "no", r.summary.residual, r.functional, r.energy,
-          P.points.rows() ? (std::to_string(r.max_data_error)).c_str() : "—", xmin, xmax, rmin,
-          rmax, sxmin, sxmax, mesh.H.minCoeff(), mesh.H.mean(), mesh.H.maxCoeff(),
-          check.self_intersections, diff, secs);
+          names[c], P.points.rows() ? "(i/9, ½), i = 0..8" : "∅", P.epsilon, P.a, r.summary.converged ? "yes" : "no",
+          r.summary.residual, r.functional, r.energy,
+          P.points.rows() ? (std::to_string(r.max_data_error)).c_str() : "—", xmin, xmax, rmin, rmax, sxmin, sxmax,
+          mesh.H.minCoeff(), mesh.H.mean(), mesh.H.maxCoeff(), check.self_intersections, diff, secs);
       if (argc >= 3) {
         std::filesystem::create_directories(argv[2]);
         write_obj((std::filesystem::path(argv[2]) / (std::string(names[c]) + ".obj")).string(), mesh);

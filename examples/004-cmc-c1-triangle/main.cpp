@@ -32,7 +32,7 @@ using bpde::Json;
 namespace {
 
 constexpr int kSamples = 40;
-constexpr int kDegree = 6;     // the lowest degree with a free point for C¹ data: P_222
+constexpr int kDegree = 6;      // the lowest degree with a free point for C¹ data: P_222
 constexpr double kLift = 0.25;  // height of the adjacent ring
 
 bpde::TriangularNet c1_triangle(int n, double lift) {
@@ -120,7 +120,10 @@ int main(int argc, char** argv) {
       row("sweep", job, nullptr);
     }
 
-  std::printf("\n### Fold of the branch from H = 0 (lift %g)\n\n| n | free points | fold H < 0 | fold H > 0 |\n|---|---|---|---|\n", kLift);
+  std::printf(
+      "\n### Fold of the branch from H = 0 (lift %g)\n\n| n | free points | fold H < 0 | fold H > 0 "
+      "|\n|---|---|---|---|\n",
+      kLift);
   for (int n : {6, 7, 8, 10}) {
     const bpde::TriangularNet d = c1_triangle(n, kLift);
     auto fold = [&](double H) {

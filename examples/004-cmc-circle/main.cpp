@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
+#include "boundaries/reference_boundaries.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"
 #include "solvers/cmc/cmc.h"
-#include "boundaries/reference_boundaries.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;
@@ -104,7 +104,9 @@ int main(int argc, char** argv) {
     }
 
   // 3. The fold per degree: continue towards H = ∓10; the solve stops at the fold.
-  std::printf("\n### Fold of the branch from H = 0\n\n| n | fold H < 0 | fold H > 0 | V at the fold (H < 0) | steps |\n|---|---|---|---|---|\n");
+  std::printf(
+      "\n### Fold of the branch from H = 0\n\n| n | fold H < 0 | fold H > 0 | V at the fold (H < 0) | steps "
+      "|\n|---|---|---|---|---|\n");
   for (int n : {4, 5, 6, 7, 8, 10, 12}) {
     bpde::CmcOptions o;
     o.H = -10;

@@ -21,11 +21,11 @@
 #include <string>
 #include <vector>
 
+#include "boundaries/reference_boundaries.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"
 #include "solvers/cmc/cmc.h"
-#include "boundaries/reference_boundaries.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;
@@ -95,9 +95,13 @@ int main(int argc, char** argv) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".json") jobs.push_back(e.path());
   std::sort(jobs.begin(), jobs.end());
-  std::stable_partition(jobs.begin(), jobs.end(), [](const fs::path& p) { return p.stem().string().starts_with("top"); });
-  std::printf("### Job files (n = %d)\n\n| job | H | exit | D_H | D | V | z min / max | H mean | H min / max | self-intersections |\n"
-              "|---|---|---|---|---|---|---|---|---|---|\n", kDegree);
+  std::stable_partition(jobs.begin(), jobs.end(),
+                        [](const fs::path& p) { return p.stem().string().starts_with("top"); });
+  std::printf(
+      "### Job files (n = %d)\n\n| job | H | exit | D_H | D | V | z min / max | H mean | H min / max | "
+      "self-intersections |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n",
+      kDegree);
   for (const auto& p : jobs) {
     const bpde::Job job = bpde::read_job_file(p.string());
     const bpde::SolveOutcome o = bpde::run_job(job);
@@ -112,13 +116,15 @@ int main(int argc, char** argv) {
     std::printf("| %s | %g | %d | %.6f | %.6f | %.6f | %.4f / %.4f | %.4f | %.3f / %.3f | %d |\n", p.stem().c_str(),
                 job.problem.H, status, o.report["energy"].get<double>(), o.report["D"].get<double>(),
                 o.report["volume"].get<double>(), min_z(mesh), max_z(mesh), mc["mean"].get<double>(),
-                mc["min"].get<double>(), mc["max"].get<double>(), bpde::check_report(mesh)["self_intersections"].get<int>());
+                mc["min"].get<double>(), mc["max"].get<double>(),
+                bpde::check_report(mesh)["self_intersections"].get<int>());
   }
 
   // Degree sweep: distance to the reference surface and folds.
-  std::printf("\n### Degree sweep\n\n| n | top: max \\|x − Enneper\\| at H = 0 | top: fold H < 0 | top: fold H > 0 "
-              "| bottom: max \\|x − sphere\\| at H = −1.5 | bottom: fold H < 0 | bottom: fold H > 0 |\n"
-              "|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\n### Degree sweep\n\n| n | top: max \\|x − Enneper\\| at H = 0 | top: fold H < 0 | top: fold H > 0 "
+      "| bottom: max \\|x − sphere\\| at H = −1.5 | bottom: fold H < 0 | bottom: fold H > 0 |\n"
+      "|---|---|---|---|---|---|---|\n");
   for (int n : {4, 6, 8, 10}) {
     const bpde::TriangularNet top = bpde::triangular_boundary(n, enneper);
     const bpde::TriangularNet bot = bpde::triangular_boundary(n, small_sphere);
@@ -132,9 +138,9 @@ int main(int argc, char** argv) {
       const auto r = bpde::solve_cmc(d, f);
       return r.summary.converged ? fmt(H) + " reached" : fmt(r.H);
     };
-    std::printf("| %d | %.1e | %s | %s | %.1e | %s | %s |\n", n, param_error(t0.net, enneper),
-                fold(top, -20).c_str(), fold(top, 20).c_str(), param_error(b0.net, small_sphere),
-                fold(bot, -20).c_str(), fold(bot, 20).c_str());
+    std::printf("| %d | %.1e | %s | %s | %.1e | %s | %s |\n", n, param_error(t0.net, enneper), fold(top, -20).c_str(),
+                fold(top, 20).c_str(), param_error(b0.net, small_sphere), fold(bot, -20).c_str(),
+                fold(bot, 20).c_str());
   }
   return 0;
 }

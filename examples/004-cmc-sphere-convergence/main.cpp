@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "boundaries/reference_boundaries.h"
 #include "energies/cmc.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"
 #include "solvers/cmc/cmc.h"
-#include "boundaries/reference_boundaries.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;
@@ -72,8 +72,8 @@ void sweep_row(const NetT& data, int n, double H) {
   }
   const Errors e = errors(r.net);
   const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(r.net, kGrid, 0.1);
-  std::printf("| %d | %.1e | %.1e | %.7f | %.6f / %.6f | %.1e | %.1f |\n", n, e.dist, e.param, s.mean, s.min,
-              s.max, std::abs(s.mean - H), 1e3 * r.summary.seconds);
+  std::printf("| %d | %.1e | %.1e | %.7f | %.6f / %.6f | %.1e | %.1f |\n", n, e.dist, e.param, s.mean, s.min, s.max,
+              std::abs(s.mean - H), 1e3 * r.summary.seconds);
 }
 
 const char* kSweepHeader =
@@ -107,8 +107,9 @@ int main(int argc, char** argv) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".json") jobs.push_back(e.path());
   std::sort(jobs.begin(), jobs.end());
-  std::printf("### Job files\n\n| job | H | exit | D_H | V | max \\|\\|x\\| − 1\\| | H mean | self-intersections |\n"
-              "|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "### Job files\n\n| job | H | exit | D_H | V | max \\|\\|x\\| − 1\\| | H mean | self-intersections |\n"
+      "|---|---|---|---|---|---|---|---|\n");
   for (const auto& p : jobs) {
     const bpde::Job job = bpde::read_job_file(p.string());
     const bpde::SolveOutcome o = bpde::run_job(job);
@@ -130,7 +131,9 @@ int main(int argc, char** argv) {
   for (int n = 4; n <= 16; ++n) sweep_row(bpde::tensor_boundary(n, bpde::sphere_square), n, 1.0);
 
   // 4. Sign check.
-  std::printf("\n### Sign check: the same data with H = −1 (n = 8)\n\n| net | converged | max \\|\\|x\\| − 1\\| | V |\n|---|---|---|---|\n");
+  std::printf(
+      "\n### Sign check: the same data with H = −1 (n = 8)\n\n| net | converged | max \\|\\|x\\| − 1\\| | V "
+      "|\n|---|---|---|---|\n");
   {
     bpde::CmcOptions o;
     o.H = -1.0;

@@ -14,8 +14,7 @@ namespace bpde {
 std::array<double, 4> hermite_cubic(double t, int r) {
   switch (r) {
     case 0:
-      return {1 - 3 * t * t + 2 * t * t * t, t - 2 * t * t + t * t * t, 3 * t * t - 2 * t * t * t,
-              -t * t + t * t * t};
+      return {1 - 3 * t * t + 2 * t * t * t, t - 2 * t * t + t * t * t, 3 * t * t - 2 * t * t * t, -t * t + t * t * t};
     case 1:
       return {-6 * t + 6 * t * t, 1 - 4 * t + 3 * t * t, 6 * t - 6 * t * t, -2 * t + 3 * t * t};
     case 2:
@@ -30,13 +29,12 @@ std::array<double, 4> hermite_cubic(double t, int r) {
 
 BfsSpace::BfsSpace(int k, int l) : k_(k), l_(l) {
   if (k < 1 || l < 1 || k > kMaxPartition || l > kMaxPartition)
-    throw ParameterError("BFS partition: k and l must be in 1.." + std::to_string(kMaxPartition) +
-                         " (got " + std::to_string(k) + " x " + std::to_string(l) + ")");
+    throw ParameterError("BFS partition: k and l must be in 1.." + std::to_string(kMaxPartition) + " (got " +
+                         std::to_string(k) + " x " + std::to_string(l) + ")");
 }
 
 void BfsSpace::locate(double x, double y, int& i, int& j, double& t, double& s) const {
-  if (!std::isfinite(x) || !std::isfinite(y) || x < -1e-12 || x > 1 + 1e-12 || y < -1e-12 ||
-      y > 1 + 1e-12)
+  if (!std::isfinite(x) || !std::isfinite(y) || x < -1e-12 || x > 1 + 1e-12 || y < -1e-12 || y > 1 + 1e-12)
     throw ParameterError("BFS evaluation: point (" + std::to_string(x) + ", " + std::to_string(y) +
                          ") is outside [0,1]^2");
   x = std::clamp(x, 0.0, 1.0);
@@ -96,8 +94,7 @@ Eigen::Matrix<double, 16, 16> BfsSpace::element_form(const SecondOrderForm& form
       const auto bxx = local_basis(g.x(a), g.x(b), 2, 0, hx(), hy());
       const auto bxy = local_basis(g.x(a), g.x(b), 1, 1, hx(), hy());
       const auto byy = local_basis(g.x(a), g.x(b), 0, 2, hx(), hy());
-      const Eigen::Map<const Eigen::Matrix<double, 16, 1>> vxx(bxx.data()), vxy(bxy.data()),
-          vyy(byy.data());
+      const Eigen::Map<const Eigen::Matrix<double, 16, 1>> vxx(bxx.data()), vxy(bxy.data()), vyy(byy.data());
       K.noalias() += w * (form.c_xx * vxx * vxx.transpose() + form.c_xy * vxy * vxy.transpose() +
                           form.c_yy * vyy * vyy.transpose());
     }
@@ -106,8 +103,7 @@ Eigen::Matrix<double, 16, 16> BfsSpace::element_form(const SecondOrderForm& form
 
 namespace {
 
-Eigen::SparseMatrix<double> assemble_uniform(const BfsSpace& V,
-                                             const Eigen::Matrix<double, 16, 16>& K) {
+Eigen::SparseMatrix<double> assemble_uniform(const BfsSpace& V, const Eigen::Matrix<double, 16, 16>& K) {
   std::vector<Eigen::Triplet<double>> trip;
   trip.reserve(static_cast<std::size_t>(V.k()) * V.l() * 256);
   for (int i = 0; i < V.k(); ++i)
@@ -139,8 +135,7 @@ Eigen::SparseMatrix<double> BfsSpace::assemble_mass() const {
   return assemble_uniform(*this, M);
 }
 
-Eigen::MatrixX3d BfsSpace::assemble_load(const std::function<Eigen::Vector3d(double, double)>& f,
-                                         int q) const {
+Eigen::MatrixX3d BfsSpace::assemble_load(const std::function<Eigen::Vector3d(double, double)>& f, int q) const {
   const QuadratureRule1D g = gauss_legendre01(q);
   Eigen::MatrixX3d F = Eigen::MatrixX3d::Zero(num_dofs(), 3);
   std::vector<std::array<double, 16>> tab;
@@ -153,8 +148,7 @@ Eigen::MatrixX3d BfsSpace::assemble_load(const std::function<Eigen::Vector3d(dou
         for (int b = 0; b < q; ++b) {
           const Eigen::Vector3d fv = f((i + g.x(a)) * hx(), (j + g.x(b)) * hy());
           if (!fv.allFinite())
-            throw NonFiniteError("BFS load: f is not finite at (" +
-                                 std::to_string((i + g.x(a)) * hx()) + ", " +
+            throw NonFiniteError("BFS load: f is not finite at (" + std::to_string((i + g.x(a)) * hx()) + ", " +
                                  std::to_string((j + g.x(b)) * hy()) + ")");
           const double w = g.w(a) * g.w(b) * hx() * hy();
           const auto& v = tab[a * q + b];
@@ -164,11 +158,10 @@ Eigen::MatrixX3d BfsSpace::assemble_load(const std::function<Eigen::Vector3d(dou
   return F;
 }
 
-Eigen::Vector3d BfsSpace::evaluate(const Eigen::MatrixX3d& coefficients, double x, double y,
-                                   int dx, int dy) const {
+Eigen::Vector3d BfsSpace::evaluate(const Eigen::MatrixX3d& coefficients, double x, double y, int dx, int dy) const {
   if (coefficients.rows() != num_dofs())
-    throw SizeError("BFS evaluation: " + std::to_string(coefficients.rows()) +
-                    " coefficient rows, expected " + std::to_string(num_dofs()));
+    throw SizeError("BFS evaluation: " + std::to_string(coefficients.rows()) + " coefficient rows, expected " +
+                    std::to_string(num_dofs()));
   std::array<int, 16> idx;
   std::array<double, 16> val;
   basis_at(x, y, dx, dy, idx, val);
@@ -177,8 +170,7 @@ Eigen::Vector3d BfsSpace::evaluate(const Eigen::MatrixX3d& coefficients, double 
   return r;
 }
 
-Eigen::MatrixX3d BfsSpace::interpolate(
-    const std::function<Eigen::Matrix<double, 4, 3>(double, double)>& jet) const {
+Eigen::MatrixX3d BfsSpace::interpolate(const std::function<Eigen::Matrix<double, 4, 3>(double, double)>& jet) const {
   Eigen::MatrixX3d C(num_dofs(), 3);
   for (int i = 0; i <= k_; ++i)
     for (int j = 0; j <= l_; ++j) {
@@ -190,8 +182,8 @@ Eigen::MatrixX3d BfsSpace::interpolate(
 
 BfsSpace::BSplineForm BfsSpace::to_bspline(const Eigen::MatrixX3d& coefficients) const {
   if (coefficients.rows() != num_dofs())
-    throw SizeError("BFS to_bspline: " + std::to_string(coefficients.rows()) +
-                    " coefficient rows, expected " + std::to_string(num_dofs()));
+    throw SizeError("BFS to_bspline: " + std::to_string(coefficients.rows()) + " coefficient rows, expected " +
+                    std::to_string(num_dofs()));
   auto knots = [](int n) {
     std::vector<double> t = {0, 0, 0, 0};
     for (int i = 1; i < n; ++i) {

@@ -55,8 +55,7 @@ class BfsSpace {
   /// the element on their lower-left (clamped to the last element at x = 1 or y = 1); for
   /// dx, dy <= 1 the result does not depend on that choice (C¹). Throws ParameterError when
   /// (x, y) is outside Ω by more than 1e-12 or is not finite.
-  void basis_at(double x, double y, int dx, int dy, std::array<int, 16>& index,
-                std::array<double, 16>& value) const;
+  void basis_at(double x, double y, int dx, int dy, std::array<int, 16>& index, std::array<double, 16>& value) const;
 
   /// 16 by 16 element matrix of (·,·)_L on one element (the same for every element of a uniform
   /// partition), local dof order 4 (2 di + dj) + d, by a 4×4 Gauss rule (exact: the integrands
@@ -75,17 +74,14 @@ class BfsSpace {
   /// ((ω_r, f)_0) for a vector field f: num_dofs by 3, by a q×q Gauss rule per element
   /// (exact when f is a polynomial of degree <= 2q - 4 in each variable). Throws NonFiniteError
   /// if f returns a non-finite value.
-  Eigen::MatrixX3d assemble_load(const std::function<Eigen::Vector3d(double, double)>& f,
-                                 int q = 6) const;
+  Eigen::MatrixX3d assemble_load(const std::function<Eigen::Vector3d(double, double)>& f, int q = 6) const;
 
   /// ∂^(dx+dy) u / ∂x^dx ∂y^dy at (x, y) for the field with the given coefficients.
-  Eigen::Vector3d evaluate(const Eigen::MatrixX3d& coefficients, double x, double y, int dx = 0,
-                           int dy = 0) const;
+  Eigen::Vector3d evaluate(const Eigen::MatrixX3d& coefficients, double x, double y, int dx = 0, int dy = 0) const;
 
   /// Coefficients of the field that interpolates u, u_x, u_y, u_xy of a given function at the
   /// nodes (exact for bicubic polynomials). jet(x, y) returns the rows u, u_x, u_y, u_xy.
-  Eigen::MatrixX3d interpolate(
-      const std::function<Eigen::Matrix<double, 4, 3>(double, double)>& jet) const;
+  Eigen::MatrixX3d interpolate(const std::function<Eigen::Matrix<double, 4, 3>(double, double)>& jet) const;
 
   /// The same field as a clamped bicubic B-spline (FORMATS.md "bspline" net): degree (3, 3),
   /// knots {0,0,0,0, 1/k,1/k, ..., (k-1)/k,(k-1)/k, 1,1,1,1} in x (likewise in y), and

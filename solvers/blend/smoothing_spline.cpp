@@ -3,9 +3,9 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -19,14 +19,13 @@ void require_finite(const Eigen::MatrixXd& M, const std::string& name) {
   for (Eigen::Index r = 0; r < M.rows(); ++r)
     for (Eigen::Index c = 0; c < M.cols(); ++c)
       if (!std::isfinite(M(r, c)))
-        throw NonFiniteError(name + "[" + std::to_string(r) + "][" + std::to_string(c) +
-                             "] is not finite");
+        throw NonFiniteError(name + "[" + std::to_string(r) + "][" + std::to_string(c) + "] is not finite");
 }
 
 void require_edge(const Eigen::MatrixX3d& M, int k, const std::string& name) {
   if (M.rows() != k + 1)
-    throw SizeError(name + ": " + std::to_string(M.rows()) + " points, expected k+1 = " +
-                    std::to_string(k + 1) + " (one per node x_i = i/k)");
+    throw SizeError(name + ": " + std::to_string(M.rows()) + " points, expected k+1 = " + std::to_string(k + 1) +
+                    " (one per node x_i = i/k)");
   require_finite(M, name);
 }
 
@@ -40,14 +39,14 @@ std::string sci(double v) {
 
 void SmoothingSplineProblem::validate() const {
   if (k < 1 || l < 1 || k > BfsSpace::kMaxPartition || l > BfsSpace::kMaxPartition)
-    throw ParameterError("partition: k and l must be integers in 1.." +
-                         std::to_string(BfsSpace::kMaxPartition) + " (got [" + std::to_string(k) +
-                         ", " + std::to_string(l) + "])");
+    throw ParameterError("partition: k and l must be integers in 1.." + std::to_string(BfsSpace::kMaxPartition) +
+                         " (got [" + std::to_string(k) + ", " + std::to_string(l) + "])");
   if (!std::isfinite(a)) throw NonFiniteError("a is not finite");
   if (!(a > 0)) throw ParameterError("a must be > 0 (the operator must be strongly elliptic)");
   if (a < 1e-6 || a > 1e6)
-    throw ParameterError("a must be in [1e-6, 1e6]: beyond, the terms of (u,v)_L differ by more "
-                         "than 1e12 and the discrete problem is numerically singular");
+    throw ParameterError(
+        "a must be in [1e-6, 1e6]: beyond, the terms of (u,v)_L differ by more "
+        "than 1e12 and the discrete problem is numerically singular");
   if (!std::isfinite(epsilon)) throw NonFiniteError("epsilon is not finite");
   if (!(epsilon > 0)) throw ParameterError("epsilon must be > 0");
   require_edge(y0_value, k, "edges.y0.value");
@@ -61,8 +60,8 @@ void SmoothingSplineProblem::validate() const {
   require_finite(data, "data");
   for (Eigen::Index i = 0; i < points.rows(); ++i)
     if (points(i, 0) < 0 || points(i, 0) > 1 || points(i, 1) < 0 || points(i, 1) > 1)
-      throw ParameterError("points[" + std::to_string(i) + "] = (" + std::to_string(points(i, 0)) +
-                           ", " + std::to_string(points(i, 1)) + ") is outside [0,1]^2");
+      throw ParameterError("points[" + std::to_string(i) + "] = (" + std::to_string(points(i, 0)) + ", " +
+                           std::to_string(points(i, 1)) + ") is outside [0,1]^2");
 }
 
 void SmoothingSplineOptions::validate() const {
@@ -76,8 +75,8 @@ void SmoothingSplineOptions::validate() const {
 SmoothingSpline::SmoothingSpline(BfsSpace space, Eigen::MatrixX3d coefficients)
     : space_(space), coef_(std::move(coefficients)) {
   if (coef_.rows() != space_.num_dofs())
-    throw SizeError("SmoothingSpline: " + std::to_string(coef_.rows()) +
-                    " coefficient rows, expected " + std::to_string(space_.num_dofs()));
+    throw SizeError("SmoothingSpline: " + std::to_string(coef_.rows()) + " coefficient rows, expected " +
+                    std::to_string(space_.num_dofs()));
   require_finite(coef_, "SmoothingSpline coefficients");
 }
 
@@ -325,8 +324,8 @@ Eigen::MatrixX3d SmoothingSplineSolver::Impl::solve_linear(const Eigen::MatrixX3
 }
 
 SmoothingSplineSolver::Impl::Residuals SmoothingSplineSolver::Impl::residuals(const Eigen::MatrixX3d& alpha,
-                                                                            const Eigen::MatrixX3d& F,
-                                                                            const Eigen::MatrixX3d& y) const {
+                                                                              const Eigen::MatrixX3d& F,
+                                                                              const Eigen::MatrixX3d& y) const {
   const int nc = static_cast<int>(constrained.size());
   Residuals res{C * alpha - F, 0.0, 0.0};
   const Eigen::MatrixX3d scale = Cabs * alpha.cwiseAbs() + F.cwiseAbs();
@@ -344,8 +343,8 @@ SmoothingSplineSolver::Impl::Residuals SmoothingSplineSolver::Impl::residuals(co
 }
 
 SmoothingSplineSolver::Impl::Functional SmoothingSplineSolver::Impl::functional(const SmoothingSplineProblem& problem,
-                                                                              const Eigen::MatrixX3d& load,
-                                                                              const Eigen::MatrixX3d& c) const {
+                                                                                const Eigen::MatrixX3d& load,
+                                                                                const Eigen::MatrixX3d& c) const {
   Functional f;
   const Eigen::MatrixX3d r = A * c - problem.data;
   f.misfit = r.squaredNorm();
@@ -408,9 +407,7 @@ SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& probl
 const BfsSpace& SmoothingSplineSolver::space() const { return impl_->space; }
 const Eigen::SparseMatrix<double>& SmoothingSplineSolver::form_matrix() const { return impl_->R; }
 const Eigen::SparseMatrix<double>& SmoothingSplineSolver::system_matrix() const { return impl_->C; }
-const std::vector<int>& SmoothingSplineSolver::constrained_dofs() const {
-  return impl_->constrained;
-}
+const std::vector<int>& SmoothingSplineSolver::constrained_dofs() const { return impl_->constrained; }
 
 SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplineProblem& problem) const {
   Summary summary;
@@ -439,8 +436,7 @@ SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplinePr
   for (int c = 0; c < nc; ++c) v0.row(m.constrained[c]) = y.row(c);
   const Functional J0 = m.functional(problem, Fload, v0);
   if (!std::isfinite(J0.J))
-    throw NonFiniteError(
-        "the boundary data, data, load or epsilon are too large: the functional of eq. (6) overflows");
+    throw NonFiniteError("the boundary data, data, load or epsilon are too large: the functional of eq. (6) overflows");
   Functional J;
   if (alpha.allFinite()) J = m.functional(problem, Fload, alpha);
   if (m.factored) {

@@ -22,26 +22,26 @@
 // the constrained dofs (τ fixes dofs directly: u and u_y at the boundary nodes) and solves the
 // reduced SPD system C_ff α_f = F_f - C_fc y by sparse Cholesky (LDLᵀ).
 //
-// What the discrete spline reproduces (docs/errata.md, smoothing PDE splines): with A = ∅ and f = 0, exactly the data of
-// U ∈ span{1, x, y, xy}; as ε → 0, σ(a_i) → β_i with an error linear in ε.
+// What the discrete spline reproduces (docs/errata.md, smoothing PDE splines): with A = ∅ and f = 0, exactly the data
+// of U ∈ span{1, x, y, xy}; as ε → 0, σ(a_i) → β_i with an error linear in ε.
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "core/differential_geometry.h"
 #include "core/mesh.h"
 #include "solvers/blend/bfs_element.h"
-#include "tensor/bspline_net.h"
 #include "solvers/summary.h"
+#include "tensor/bspline_net.h"
 
 namespace bpde {
 
 /// The data of a discrete smoothing PDE spline (the FORMATS.md blend config, io/blend_config.h).
 struct SmoothingSplineProblem {
-  int k = 8;  ///< intervals in x
-  int l = 4;  ///< intervals in y
+  int k = 8;             ///< intervals in x
+  int l = 4;             ///< intervals in y
   double a = 1.0;        ///< operator ∂⁴_x + 2a ∂²_x∂²_y + a² ∂⁴_y; 1e-6 <= a <= 1e6
   double epsilon = 1.0;  ///< ε > 0
   /// Prescribed values and ∂/∂y at the k+1 nodes x_i = i/k of the edges y = 0 and y = 1, each
@@ -128,8 +128,7 @@ struct SmoothingSplineResult {
 class SmoothingSplineSolver {
  public:
   /// Uses k, l, a, epsilon and points of the problem (validated) and the options.
-  SmoothingSplineSolver(const SmoothingSplineProblem& problem,
-                        const SmoothingSplineOptions& options = {});
+  SmoothingSplineSolver(const SmoothingSplineProblem& problem, const SmoothingSplineOptions& options = {});
   ~SmoothingSplineSolver();
   SmoothingSplineSolver(const SmoothingSplineSolver&) = delete;
   SmoothingSplineSolver& operator=(const SmoothingSplineSolver&) = delete;

@@ -41,7 +41,9 @@ inline Eigen::SparseMatrix<double> sparse_submatrix(const Eigen::SparseMatrix<do
   return S;
 }
 
-inline Eigen::MatrixXd gather_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) { return P(idx, Eigen::all); }
+inline Eigen::MatrixXd gather_rows(const Eigen::MatrixX3d& P, const std::vector<int>& idx) {
+  return P(idx, Eigen::all);
+}
 
 inline void scatter_rows(Eigen::MatrixX3d& P, const std::vector<int>& idx, const Eigen::MatrixXd& X) {
   P(idx, Eigen::all) = X;

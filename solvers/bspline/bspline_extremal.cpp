@@ -170,8 +170,8 @@ BSplineExtremalResult BSplineExtremalSolver::Impl::solve(const BSplineNet& data)
     Xf = m.cod->solve(rhs);
     res = residual(Xf);
     std::ostringstream s;
-    s << "the energy is not positive definite on the free control points (smallest/largest eigenvalue "
-      << m.eig_ratio << "); returned the minimum-norm solution of the reduced system";
+    s << "the energy is not positive definite on the free control points (smallest/largest eigenvalue " << m.eig_ratio
+      << "); returned the minimum-norm solution of the reduced system";
     if (m.eig_ratio < -1e-12) s << " (a critical point, not a minimum)";
     message = s.str();
   }

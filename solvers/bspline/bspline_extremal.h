@@ -25,8 +25,8 @@
 
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/bspline_net.h"
 
 namespace bpde {
@@ -66,7 +66,7 @@ inline SolverRequirements bspline_extremal_requirements() {
 }
 
 struct BSplineExtremalResult {
-  BSplineNet net;   ///< the input net with its free points replaced by the extremal's
+  BSplineNet net;  ///< the input net with its free points replaced by the extremal's
   double energy = 0.0;
   /// residual: max |Q_ff X_f + Q_fc X_c| / max(|Q_ff||X_f| + |Q_fc||X_c|); when above the
   /// tolerance, status NotUnique (Q_ff singular) or NumericalLimit.

@@ -17,7 +17,6 @@
 namespace bpde {
 namespace {
 
-
 std::string fmt(double x) {
   std::ostringstream s;
   s.precision(3);
@@ -148,7 +147,8 @@ class SpanSystem {
   }
 
  private:
-  std::vector<std::vector<Eigen::MatrixXd>> ops(int k, int d, const BezierExtraction& ex, int order, bool along_u) const {
+  std::vector<std::vector<Eigen::MatrixXd>> ops(int k, int d, const BezierExtraction& ex, int order,
+                                                bool along_u) const {
     // 1-D operators per span and derivative order: (d+1) x n,  E D_k C[s] / h^k.
     std::vector<std::vector<Eigen::MatrixXd>> R(static_cast<size_t>(ex.spans()));
     std::vector<bool> used(static_cast<size_t>(order) + 1, false);
@@ -236,7 +236,7 @@ double bspline_pde_residual(const BSplineNet& net, const EnergySpec& op, int sam
   for (const auto& t : terms)
     if (t.du <= net.p() && t.dv <= net.q())
       floor += std::abs(t.c) * factorial(net.p()) / factorial(net.p() - t.du) * factorial(net.q()) /
-             factorial(net.q() - t.dv) / (std::pow(hu, t.du) * std::pow(hv, t.dv));
+               factorial(net.q() - t.dv) / (std::pow(hu, t.du) * std::pow(hv, t.dv));
   floor *= 1e-8 * net.points().cwiseAbs().maxCoeff();
   const double smax = std::max(size.maxCoeff(), floor);
   const double lmax = L.rowwise().norm().maxCoeff();
@@ -247,8 +247,10 @@ namespace {
 
 void check_size(int N) {
   if (N > kMaxDensePdeUnknowns)
-    throw UnsupportedProblem("bspline pde: a net with " + std::to_string(N) + " control points exceeds the dense "
-                             "solver's limit of " + std::to_string(kMaxDensePdeUnknowns) +
+    throw UnsupportedProblem("bspline pde: a net with " + std::to_string(N) +
+                             " control points exceeds the dense "
+                             "solver's limit of " +
+                             std::to_string(kMaxDensePdeUnknowns) +
                              " points; use the extremal, or fewer spans (on several spans an elliptic fourth-order "
                              "solution is one polynomial anyway)");
 }
@@ -286,8 +288,8 @@ struct FreeSvd {
   }
 };
 
-std::string incompatible_message(const EnergySpec& op, std::size_t prescribed, const BSplinePdeResult& out,
-                                 double res, double tolerance) {
+std::string incompatible_message(const EnergySpec& op, std::size_t prescribed, const BSplinePdeResult& out, double res,
+                                 double tolerance) {
   std::ostringstream m;
   m << "incompatible data: no B-spline solution of the " << op.name() << " PDE on this net meets the prescribed "
     << prescribed << " control points. The " << out.equations << " span equations have rank " << out.rank << " ("
@@ -382,8 +384,8 @@ void solve_into(const BSplineNet& data, const EnergySpec& op, const std::vector<
 
   std::string message;
   if (out.free_parameters > 0) {
-    message = minimise_energy_over_free_parameters(data, op, free, fixed, Xc, svd.V.rightCols(out.free_parameters),
-                                                   out, Xf);
+    message =
+        minimise_energy_over_free_parameters(data, op, free, fixed, Xc, svd.V.rightCols(out.free_parameters), out, Xf);
     res = residual_of(Xf);
     out.summary.residual = res;
     out.minimum_energy_member = true;

@@ -32,8 +32,8 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "solvers/pde/pde_residual.h"
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/bspline_net.h"
 
 namespace bpde {
@@ -64,7 +64,8 @@ inline SolverRequirements bspline_pde_requirements(const EnergySpec& op) {
   r.nets = {NetKind::BSpline};
   if (op.order() == 4) {
     r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent};
-    r.fixed_reason = "a fourth-order pde (" + op.name() + ") on a bspline net takes \"fixed\": \"boundary\" or \"boundary+adjacent\"";
+    r.fixed_reason = "a fourth-order pde (" + op.name() +
+                     ") on a bspline net takes \"fixed\": \"boundary\" or \"boundary+adjacent\"";
   } else {
     r.fixed = {FixedSet::UBoundaries};
     r.fixed_reason = "a second-order pde (" + op.name() + ") takes \"fixed\": \"u-boundaries\"";
@@ -75,17 +76,17 @@ inline SolverRequirements bspline_pde_requirements(const EnergySpec& op) {
 }
 
 struct BSplinePdeResult {
-  BSplineNet net;               ///< the solution (or the input net unchanged when converged = false)
+  BSplineNet net;  ///< the solution (or the input net unchanged when converged = false)
   /// residual: the relative residual of the equations (see Options); status Incompatible when the
   /// data miss the compatibility conditions, NumericalLimit when rounding spoils the solution.
   Summary summary;
-  int equations = 0;            ///< number of equations (Bernstein coefficients of Lx over all spans)
-  int rank = 0;                 ///< rank of the equations over ALL control points (paper's count)
-  int rank_free = 0;            ///< rank of the equations over the free control points
-  int free_parameters = 0;      ///< dimension of the solution set (per coordinate) with the data fixed
-  int compatibility_conditions = 0;  ///< independent linear conditions the prescribed data must meet
+  int equations = 0;                   ///< number of equations (Bernstein coefficients of Lx over all spans)
+  int rank = 0;                        ///< rank of the equations over ALL control points (paper's count)
+  int rank_free = 0;                   ///< rank of the equations over the free control points
+  int free_parameters = 0;             ///< dimension of the solution set (per coordinate) with the data fixed
+  int compatibility_conditions = 0;    ///< independent linear conditions the prescribed data must meet
   bool minimum_energy_member = false;  ///< free parameters were fixed by minimising the energy
-  double energy = 0.0;          ///< the energy of the returned net (EnergySpec's functional)
+  double energy = 0.0;                 ///< the energy of the returned net (EnergySpec's functional)
 };
 
 /// The equations over all control points: a (#equations x nu*nv) matrix whose product with the

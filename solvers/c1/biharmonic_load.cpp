@@ -21,7 +21,6 @@ namespace {
 
 using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-
 void check_square_degree(const TensorNet& net, int min_degree, const char* who) {
   if (net.n() != net.m())
     throw DegreeError(std::string(who) + ": needs a net of degree [n, n], got [" + std::to_string(net.n()) + ", " +
@@ -56,7 +55,6 @@ struct LoadSolver {
 // exact matrix entries.
 using MatL = MatLD;
 
-
 std::shared_ptr<const LoadSolver> build_load_solver(int n) {
   auto s = std::make_shared<LoadSolver>();
   s->interior = interior_indices(n);
@@ -74,9 +72,11 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
   for (int r = 0; r < ni; ++r) {
     const int i = s->interior[static_cast<size_t>(r)] / n1, j = s->interior[static_cast<size_t>(r)] % n1;
     for (int c = 0; c < ni; ++c)
-      A(r, c) = static_cast<long double>(op_entry(i, j, s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1));
+      A(r, c) = static_cast<long double>(
+          op_entry(i, j, s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1));
     for (int c = 0; c < nf; ++c)
-      B(r, c) = static_cast<long double>(op_entry(i, j, s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1));
+      B(r, c) = static_cast<long double>(
+          op_entry(i, j, s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1));
   }
   const Eigen::PartialPivLU<MatL> lu(A);
   MatL G = -lu.solve(B);
@@ -212,7 +212,8 @@ TensorNet complete_admissible_load(const TensorNet& load) {
   rhs(inner, Eigen::all) = load.points()(inner, Eigen::all);
   const Eigen::MatrixXd sol = Eigen::PartialPivLU<Eigen::MatrixXd>(A).solve(rhs);
   TensorNet out = load;
-  out.points()(ring, Eigen::all) = sol.middleRows(static_cast<Eigen::Index>(inner.size()), static_cast<Eigen::Index>(ring.size()));
+  out.points()(ring, Eigen::all) =
+      sol.middleRows(static_cast<Eigen::Index>(inner.size()), static_cast<Eigen::Index>(ring.size()));
   return out;
 }
 

@@ -18,8 +18,8 @@
 // it is: docs/c1.md, "How the C¹ solvers work".
 #include <Eigen/Core>
 
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -53,9 +53,9 @@ inline SolverRequirements biharmonic_load_requirements() {
 }
 
 struct BiharmonicLoadResult {
-  TensorNet net;   ///< degree (n,n); outer two rings copied from the data
-  TensorNet load;  ///< load net of net (degree (n,n)); zero (to rounding) at 2 <= i,j <= n-2
-  Summary summary; ///< residual = max |load interior| / max over the three terms' load nets
+  TensorNet net;    ///< degree (n,n); outer two rings copied from the data
+  TensorNet load;   ///< load net of net (degree (n,n)); zero (to rounding) at 2 <= i,j <= n-2
+  Summary summary;  ///< residual = max |load interior| / max over the three terms' load nets
 };
 
 /// Theorem 3. `data` is a degree (n,n) net, n >= 4; only its outer two rings are read.

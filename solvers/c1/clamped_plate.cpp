@@ -21,14 +21,12 @@ namespace {
 
 using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-
 // The deflection net (u_i, a v_j, W_ij) from the (n+1) x (n+1) scalar net W.
 TensorNet deflection_net(const Eigen::MatrixXd& W, double a) {
   const int n = static_cast<int>(W.rows()) - 1;
   TensorNet net(n, n);
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j)
-      net.set_point(i, j, Eigen::Vector3d(static_cast<double>(i) / n, a * j / n, W(i, j)));
+    for (int j = 0; j <= n; ++j) net.set_point(i, j, Eigen::Vector3d(static_cast<double>(i) / n, a * j / n, W(i, j)));
   return net;
 }
 
@@ -38,7 +36,8 @@ double plate_energy(const Eigen::MatrixXd& W, double a) {
   const Eigen::MatrixXd G00 = bernstein_derivative_integrals(n, 0, 0), G22 = bernstein_derivative_integrals(n, 2, 2),
                         G20 = bernstein_derivative_integrals(n, 2, 0);
   const double a2 = a * a;
-  const double quad = (W.cwiseProduct(G22 * W * G00)).sum() + 2.0 / a2 * (W.cwiseProduct(G20 * W * G20.transpose())).sum() +
+  const double quad = (W.cwiseProduct(G22 * W * G00)).sum() +
+                      2.0 / a2 * (W.cwiseProduct(G20 * W * G20.transpose())).sum() +
                       (W.cwiseProduct(G00 * W * G22)).sum() / (a2 * a2);
   const double lin = W.sum() / ((n + 1.0) * (n + 1.0));
   return a * (0.5 * quad - lin);
@@ -128,10 +127,14 @@ ModeTables mode_tables(int n) {
 // Bernstein coefficients at degree n of φ_k (exact integer prefix sums, one division).
 Eigen::VectorXd phi_bernstein(int k, int n) {
   // P_k(2u-1) = sum_i (-1)^(k-i) C(k,i) B_i^k(u); integrate twice from 0.
-  std::vector<std::int64_t> b(static_cast<size_t>(k + 1)), s1(static_cast<size_t>(k + 2), 0), s2(static_cast<size_t>(k + 3), 0);
-  for (int i = 0; i <= k; ++i) b[static_cast<size_t>(i)] = static_cast<std::int64_t>(((k - i) % 2 ? -1 : 1) * binomial(k, i));
-  for (int i = 1; i <= k + 1; ++i) s1[static_cast<size_t>(i)] = s1[static_cast<size_t>(i - 1)] + b[static_cast<size_t>(i - 1)];
-  for (int i = 1; i <= k + 2; ++i) s2[static_cast<size_t>(i)] = s2[static_cast<size_t>(i - 1)] + s1[static_cast<size_t>(i - 1)];
+  std::vector<std::int64_t> b(static_cast<size_t>(k + 1)), s1(static_cast<size_t>(k + 2), 0),
+      s2(static_cast<size_t>(k + 3), 0);
+  for (int i = 0; i <= k; ++i)
+    b[static_cast<size_t>(i)] = static_cast<std::int64_t>(((k - i) % 2 ? -1 : 1) * binomial(k, i));
+  for (int i = 1; i <= k + 1; ++i)
+    s1[static_cast<size_t>(i)] = s1[static_cast<size_t>(i - 1)] + b[static_cast<size_t>(i - 1)];
+  for (int i = 1; i <= k + 2; ++i)
+    s2[static_cast<size_t>(i)] = s2[static_cast<size_t>(i - 1)] + s1[static_cast<size_t>(i - 1)];
   Eigen::VectorXd e(k + 3);
   const double scale = std::sqrt(2.0 * k + 1.0) / ((k + 1.0) * (k + 2.0));
   for (int i = 0; i <= k + 2; ++i) e(i) = scale * static_cast<double>(s2[static_cast<size_t>(i)]);
@@ -189,7 +192,6 @@ ClampedPlateResult ritz(int n, double a) {
 // leaves (floor(n/2) - 1)^2 unknowns.
 
 quad qabs(quad x) { return x < 0 ? -x : x; }
-
 
 // Solve A x = b (N x N, row-major) by Gaussian elimination with partial pivoting, in quad.
 // Returns false if a pivot is exactly zero.
@@ -337,8 +339,7 @@ void ClampedPlateOptions::validate() const {
   if (!std::isfinite(aspect)) throw NonFiniteError("plate: --aspect is not a finite number");
   if (!(aspect >= 0.01 && aspect <= 100.0))
     throw ParameterError("plate: --aspect must be in [0.01, 100], got " + std::to_string(aspect));
-  if (degree < 4 || degree > 30)
-    throw DegreeError("plate: --degree must be in 4..30, got " + std::to_string(degree));
+  if (degree < 4 || degree > 30) throw DegreeError("plate: --degree must be in 4..30, got " + std::to_string(degree));
   if (method != Method::AdmissibleLoad && method != Method::Ritz)
     throw ParameterError("plate: unknown method (use admissible-load or ritz)");
 }

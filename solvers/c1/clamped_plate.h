@@ -24,9 +24,9 @@ namespace bpde {
 
 struct ClampedPlateOptions {
   enum class Method { AdmissibleLoad, Ritz };
-  double aspect = 1.0;                       ///< a: the plate is [0,1] x [0,a]; 0.01 <= a <= 100
-  int degree = 11;                           ///< n: bidegree of w; 4 <= n <= 30
-  Method method = Method::AdmissibleLoad;    ///< default admissible-load (the paper's method)
+  double aspect = 1.0;                     ///< a: the plate is [0,1] x [0,a]; 0.01 <= a <= 100
+  int degree = 11;                         ///< n: bidegree of w; 4 <= n <= 30
+  Method method = Method::AdmissibleLoad;  ///< default admissible-load (the paper's method)
   /// Throws NonFiniteError (aspect NaN/inf), ParameterError (aspect outside [0.01, 100]) or
   /// DegreeError (degree outside 4..30).
   void validate() const;

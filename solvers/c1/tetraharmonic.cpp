@@ -24,7 +24,6 @@ namespace {
 using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 constexpr double kBinom4[5] = {1.0, 4.0, 6.0, 4.0, 1.0};
 
-
 void check_data(const TensorNet& data) {
   if (data.n() != data.m())
     throw DegreeError("tetraharmonic: needs a net of degree [n, n], got [" + std::to_string(data.n()) + ", " +
@@ -35,18 +34,16 @@ void check_data(const TensorNet& data) {
                       data.m() + 1);
 }
 
-
 // ---- high-precision pieces of the solution operator (computed once per degree).
 // The Bernstein least-squares matrix is ill-conditioned (cond(A_I) ~ 3e6 at n = 12, 3e10 at
 // n = 16, 5e13 at n = 20), so a double QR loses up to 1e-3 relative in G. We factor in long double
 // (64-bit mantissa) and refine G with residuals computed in binary128 from exact matrix entries.
 using MatL = MatLD;
 
-
 struct LuSolver {
   std::vector<int> interior, fixed;
-  Eigen::MatrixXd G;                   // interior = G * fixed
-  std::vector<std::vector<quad>> T;    // T_0, T_2, .., T_8 in quad (index d)
+  Eigen::MatrixXd G;                               // interior = G * fixed
+  std::vector<std::vector<quad>> T;                // T_0, T_2, .., T_8 in quad (index d)
   std::unique_ptr<Eigen::HouseholderQR<MatL>> qr;  // of the interior columns, for refinement
 };
 
@@ -96,13 +93,16 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
       for (int i = 0; i <= n; ++i) {
         const quad a = A[static_cast<size_t>(i * n1 + k)];
         if (a == 0) continue;
-        for (int j = 0; j <= n; ++j) out(i * n1 + j) += static_cast<long double>(kBinom4[t] * a * B[static_cast<size_t>(j * n1 + l)]);
+        for (int j = 0; j <= n; ++j)
+          out(i * n1 + j) += static_cast<long double>(kBinom4[t] * a * B[static_cast<size_t>(j * n1 + l)]);
       }
     }
   };
   MatL AI(N, ni), AF(N, nf);
-  for (int c = 0; c < ni; ++c) column(s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1, AI.col(c));
-  for (int c = 0; c < nf; ++c) column(s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1, AF.col(c));
+  for (int c = 0; c < ni; ++c)
+    column(s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1, AI.col(c));
+  for (int c = 0; c < nf; ++c)
+    column(s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1, AF.col(c));
   s->qr = std::make_unique<Eigen::HouseholderQR<MatL>>(AI);
   const Eigen::HouseholderQR<MatL>& qr = *s->qr;
   MatL G = -qr.solve(AF);

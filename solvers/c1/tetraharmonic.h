@@ -25,8 +25,8 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -54,9 +54,9 @@ inline SolverRequirements tetraharmonic_requirements() {
 TetraharmonicOptions::Method parse_tetraharmonic_method(const std::string& name);
 
 struct TetraharmonicResult {
-  TensorNet net;   ///< degree (n,n); outer two rings copied from the data
-  Summary summary; ///< residual: max |Bernstein coefficient of Δ⁴x| / max over the five terms
-                   ///< of eq. (6) of their coefficients; converged iff residual <= 1e-11
+  TensorNet net;    ///< degree (n,n); outer two rings copied from the data
+  Summary summary;  ///< residual: max |Bernstein coefficient of Δ⁴x| / max over the five terms
+                    ///< of eq. (6) of their coefficients; converged iff residual <= 1e-11
 };
 
 /// Theorem 1. `data`: degree (n,n) net, n >= 4; only its outer two rings are read.

@@ -24,9 +24,12 @@ CmcSolver parse_cmc_solver(const std::string& name) {
 
 std::string to_string(CmcSolver s) {
   switch (s) {
-    case CmcSolver::Newton: return "newton";
-    case CmcSolver::Ceres: return "ceres";
-    case CmcSolver::NLopt: return "nlopt";
+    case CmcSolver::Newton:
+      return "newton";
+    case CmcSolver::Ceres:
+      return "ceres";
+    case CmcSolver::NLopt:
+      return "nlopt";
   }
   return "?";
 }
@@ -36,8 +39,7 @@ void CmcOptions::validate() const {
   if (V && !std::isfinite(*V)) throw NonFiniteError("cmc: V must be a finite number");
   if (V && solver != CmcSolver::NLopt)
     throw UnsupportedProblem("cmc: the volume-constrained problem (V) is solved by the nlopt solver only");
-  if (!(tolerance > 0.0 && tolerance <= 1e-3))
-    throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
+  if (!(tolerance > 0.0 && tolerance <= 1e-3)) throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
   if (max_corrector_iterations < 1) throw ParameterError("cmc: max_corrector_iterations must be >= 1");
   if (max_continuation_steps < 1) throw ParameterError("cmc: max_continuation_steps must be >= 1");
   if (!(min_step > 0.0 && min_step < 1.0)) throw ParameterError("cmc: min_step must be in (0, 1)");
@@ -69,8 +71,7 @@ Eigen::VectorXd CmcProblem::volume_gradient() const {
   return g;
 }
 
-double CmcProblem::evaluate(double H, Eigen::VectorXd& g, double tolerance, double scale_hint,
-                            double* scale) const {
+double CmcProblem::evaluate(double H, Eigen::VectorXd& g, double tolerance, double scale_hint, double* scale) const {
   Eigen::MatrixX3d F;
   double r = 0.0;
   bool done = false;
@@ -150,16 +151,15 @@ void check_degree(const TriangularNet& net, FixedSet fixed) {
   if (fixed == FixedSet::UBoundaries)
     throw UnsupportedProblem("cmc: fixed \"u-boundaries\" is defined for tensor nets only");
   if (net.n() < need)
-    throw DegreeError("cmc: a triangular net with " + to_string(fixed) + " data needs degree >= " +
-                      std::to_string(need) + " (got " + std::to_string(net.n()) + ")");
+    throw DegreeError("cmc: a triangular net with " + to_string(fixed) +
+                      " data needs degree >= " + std::to_string(need) + " (got " + std::to_string(net.n()) + ")");
 }
 
 void check_degree(const TensorNet& net, FixedSet fixed) {
   const int need = fixed == FixedSet::BoundaryAdjacent ? 4 : 2;
   if (net.n() < need || (fixed != FixedSet::UBoundaries && net.m() < need))
-    throw DegreeError("cmc: a tensor net with " + to_string(fixed) + " data needs degree >= " +
-                      std::to_string(need) + " in each direction (got " + std::to_string(net.n()) +
-                      ", " + std::to_string(net.m()) + ")");
+    throw DegreeError("cmc: a tensor net with " + to_string(fixed) + " data needs degree >= " + std::to_string(need) +
+                      " in each direction (got " + std::to_string(net.n()) + ", " + std::to_string(net.m()) + ")");
 }
 
 std::shared_ptr<const CmcFunctional> functional_for(const TriangularNet& net) {
@@ -258,8 +258,7 @@ Outcome volume_solve(CmcProblem& p, const CmcOptions& o, const Eigen::MatrixXd& 
 Outcome dirichlet_outcome(const CmcProblem& p, const CmcOptions& o) {
   const double r = p.residual(0.0);
   if (r <= o.tolerance) return {0.0, true, Status::Converged, "Dirichlet extremal (linear solve)"};
-  return {0.0, false, Status::NumericalLimit,
-          "Dirichlet extremal: the linear solve is not accurate to the tolerance"};
+  return {0.0, false, Status::NumericalLimit, "Dirichlet extremal: the linear solve is not accurate to the tolerance"};
 }
 
 // Tangent of the branch at H = 0: C_ff dY/dH = -2 dV/dP (free rows).
@@ -329,9 +328,12 @@ class StepController {
 // The chosen corrector at fixed H from the predicted point in p.P.
 CorrectorStats correct(CmcProblem& p, double H, const CmcOptions& o, const Eigen::MatrixXd& L) {
   switch (o.solver) {
-    case CmcSolver::Newton: return newton_correct(p, H, o, o.max_corrector_iterations);
-    case CmcSolver::Ceres: return ceres_correct(p, H, o);
-    case CmcSolver::NLopt: return nlopt_correct(p, H, o, L);
+    case CmcSolver::Newton:
+      return newton_correct(p, H, o, o.max_corrector_iterations);
+    case CmcSolver::Ceres:
+      return ceres_correct(p, H, o);
+    case CmcSolver::NLopt:
+      return nlopt_correct(p, H, o, L);
   }
   return {};
 }
@@ -412,9 +414,9 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     require_finite_rows(p.P, fixed_idx, "cmc");
     for (int r : p.free) p.P.row(r).setZero();
     const DirichletFactor dir = dirichlet_solve(p, fixed_idx);
-    const Outcome out = o.V           ? volume_solve(p, o, dir.L, res.summary)
-                        : o.H == 0.0  ? dirichlet_outcome(p, o)
-                                      : continue_branch(p, o, dir, fixed_idx, res.summary, res.continuation_steps);
+    const Outcome out = o.V          ? volume_solve(p, o, dir.L, res.summary)
+                        : o.H == 0.0 ? dirichlet_outcome(p, o)
+                                     : continue_branch(p, o, dir, fixed_idx, res.summary, res.continuation_steps);
     finish(res, data, p, o, out);
   }
   return res;
@@ -441,8 +443,6 @@ CmcResult<TensorNet> solve_cmc(const TensorNet& data, const CmcOptions& options)
 TriangularNet dirichlet_extremal(const TriangularNet& data, FixedSet fixed) {
   return cmc_detail::dirichlet_impl(data, fixed);
 }
-TensorNet dirichlet_extremal(const TensorNet& data, FixedSet fixed) {
-  return cmc_detail::dirichlet_impl(data, fixed);
-}
+TensorNet dirichlet_extremal(const TensorNet& data, FixedSet fixed) { return cmc_detail::dirichlet_impl(data, fixed); }
 
 }  // namespace bpde

@@ -32,8 +32,8 @@
 #include <string>
 
 #include "core/fixed_set.h"
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 #include "triangular/triangular_net.h"
 
@@ -46,14 +46,14 @@ CmcSolver parse_cmc_solver(const std::string& name);
 std::string to_string(CmcSolver s);
 
 struct CmcOptions {
-  double H = 0.0;                     ///< target mean curvature (H mode); default 0
-  std::optional<double> V;            ///< target volume (V mode); default unset
-  CmcSolver solver = CmcSolver::Newton;  ///< default newton
-  FixedSet fixed = FixedSet::Boundary;   ///< default boundary (C0 data)
+  double H = 0.0;                            ///< target mean curvature (H mode); default 0
+  std::optional<double> V;                   ///< target volume (V mode); default unset
+  CmcSolver solver = CmcSolver::Newton;      ///< default newton
+  FixedSet fixed = FixedSet::Boundary;       ///< default boundary (C0 data)
   double tolerance = kConvergenceTolerance;  ///< relative eq. (11) residual; default 1e-11, in (0, 1e-3]
-  int max_corrector_iterations = 30;  ///< per continuation step; default 30, >= 1
-  int max_continuation_steps = 400;   ///< default 400, >= 1
-  double min_step = 1e-5;             ///< smallest H step, relative to max(1, |H reached|); default 1e-5
+  int max_corrector_iterations = 30;         ///< per continuation step; default 30, >= 1
+  int max_continuation_steps = 400;          ///< default 400, >= 1
+  double min_step = 1e-5;                    ///< smallest H step, relative to max(1, |H reached|); default 1e-5
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range),
   /// UnsupportedProblem (V mode with a solver other than nlopt).
   void validate() const;
@@ -67,8 +67,10 @@ inline SolverRequirements cmc_requirements() {
   r.problem = "problem \"cmc\"";
   r.nets = {NetKind::Triangular, NetKind::Tensor};
   r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
-  r.min_degrees = {{NetKind::Triangular, FixedSet::Boundary, 3}, {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6},
-                   {NetKind::Tensor, FixedSet::Boundary, 2},     {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4},
+  r.min_degrees = {{NetKind::Triangular, FixedSet::Boundary, 3},
+                   {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6},
+                   {NetKind::Tensor, FixedSet::Boundary, 2},
+                   {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4},
                    {NetKind::Tensor, FixedSet::UBoundaries, 2}};
   r.methods = {"newton", "ceres", "nlopt"};
   return r;
@@ -76,11 +78,11 @@ inline SolverRequirements cmc_requirements() {
 
 template <class Net>
 struct CmcResult {
-  Net net;            ///< the critical point (or the last point of the branch if not converged)
-  double H = 0.0;     ///< H of `net`: the requested H, the last H reached, or the V-mode multiplier
-  double D = 0.0;     ///< Dirichlet energy
-  double V = 0.0;     ///< volume 1/3 ∫ <x_u ∧ x_v, x>
-  double DH = 0.0;    ///< D + 2HV
+  Net net;                     ///< the critical point (or the last point of the branch if not converged)
+  double H = 0.0;              ///< H of `net`: the requested H, the last H reached, or the V-mode multiplier
+  double D = 0.0;              ///< Dirichlet energy
+  double V = 0.0;              ///< volume 1/3 ∫ <x_u ∧ x_v, x>
+  double DH = 0.0;             ///< D + 2HV
   int continuation_steps = 0;  ///< accepted continuation steps (H mode)
   /// converged, iterations (corrector iterations in all), residual, message; status Fold past the
   /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),

@@ -49,8 +49,7 @@ class PointResidual final : public ceres::CostFunction {
     set_num_residuals(3);
     for (int b = 0; b < e->p->k(); ++b) mutable_parameter_block_sizes()->push_back(3);
   }
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     if (!e_->ensure(parameters, jacobians != nullptr)) return false;
     for (int r = 0; r < 3; ++r) residuals[r] = e_->F(3 * a_ + r);
     if (jacobians) {

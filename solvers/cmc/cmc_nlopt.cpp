@@ -134,8 +134,8 @@ CorrectorStats nlopt_correct(CmcProblem& p, double H, const CmcOptions& o, const
   return st;
 }
 
-CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
-                                  const Eigen::MatrixXd& L, double& H, std::string& note) {
+CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o, const Eigen::MatrixXd& L, double& H,
+                                  std::string& note) {
   CorrectorStats st;
   const unsigned n = static_cast<unsigned>(3 * p.k());
   SlsqpData d{Precond{&p, &L, p.get()}, V0, 0};
@@ -190,9 +190,9 @@ CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
   H = multiplier(p);
   st.residual = p.residual(H);
   st.ok = st.ok && std::isfinite(st.residual) && st.residual <= o.tolerance && vres() <= o.tolerance;
-  note = st.ok ? "min D subject to V = V0 by NLopt SLSQP (" + std::to_string(d.evals) +
-                     " evaluations, NLopt code " + std::to_string(static_cast<int>(code)) + ") + " +
-                     std::to_string(st.polish_steps) + " bordered Newton polish step(s)"
+  note = st.ok ? "min D subject to V = V0 by NLopt SLSQP (" + std::to_string(d.evals) + " evaluations, NLopt code " +
+                     std::to_string(static_cast<int>(code)) + ") + " + std::to_string(st.polish_steps) +
+                     " bordered Newton polish step(s)"
                : "SLSQP did not reach a critical point of D with V = V0 (NLopt code " +
                      std::to_string(static_cast<int>(code)) + ")";
   return st;

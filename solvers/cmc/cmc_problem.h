@@ -40,11 +40,11 @@ using SymFactor = SymmetricFactor<double>;
 
 /// Outcome of one corrector run at fixed H, starting from problem.P.
 struct CorrectorStats {
-  bool ok = false;        ///< residual <= tolerance
+  bool ok = false;  ///< residual <= tolerance
   int iterations = 0;
   double residual = 0.0;
-  int pd = -1;            ///< 1/0: Hessian at the solution (positive definite / not); -1 unknown
-  int polish_steps = 0;   ///< Newton steps added after NLopt
+  int pd = -1;           ///< 1/0: Hessian at the solution (positive definite / not); -1 unknown
+  int polish_steps = 0;  ///< Newton steps added after NLopt
 };
 
 /// Newton with the exact Hessian.
@@ -52,13 +52,12 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
 /// Ceres LM on the residual blocks of eq. (11).
 CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o);
 /// NLopt LD_LBFGS on D_H (preconditioned by the Cholesky factor L of the free Gram), then polish.
-CorrectorStats nlopt_correct(CmcProblem& p, double H, const CmcOptions& o,
-                             const Eigen::MatrixXd& L);
+CorrectorStats nlopt_correct(CmcProblem& p, double H, const CmcOptions& o, const Eigen::MatrixXd& L);
 
 /// V mode: minimise D subject to V = V0 from problem.P (the Dirichlet extremal) with SLSQP, then a
 /// bordered Newton polish. On return H holds the multiplier.
-CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
-                                  const Eigen::MatrixXd& L, double& H, std::string& note);
+CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o, const Eigen::MatrixXd& L, double& H,
+                                  std::string& note);
 
 /// H = -<∇D,∇V>/(2|∇V|^2) over the free points (0 if ∇V = 0).
 double multiplier(const CmcProblem& p);

@@ -30,7 +30,8 @@ double cos_half_pi(int n) {
   s << "pde: method \"explicit\" has no closed form for the operator of \"" << op.name() << "\" [";
   const auto& c = op.operator_coeffs();
   for (int k = 0; k < 5; ++k) s << (k ? ", " : "") << c[static_cast<size_t>(k)];
-  s << "] (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified biharmonic and G-norm operators); "
+  s << "] (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified biharmonic and G-norm "
+       "operators); "
        "use method \"lu\"";
   throw UnsupportedProblem(s.str());
 }
@@ -105,7 +106,8 @@ void PdeExplicitOptions::validate() const {
 
 ExplicitOperator classify_explicit_operator(const EnergySpec& op) {
   if (op.order() != 4)
-    throw UnsupportedProblem("pde: method \"explicit\" is for the fourth-order operators of Arnal-Monterde-Ugail; \"" + op.name() +
+    throw UnsupportedProblem("pde: method \"explicit\" is for the fourth-order operators of Arnal-Monterde-Ugail; \"" +
+                             op.name() +
                              "\" is second order (use fixed \"u-boundaries\" for the harmonic PDE, or method \"lu\")");
   if (op.kind() == EnergyKind::ModifiedBiharmonic && op.alpha() == 0.0)
     throw ParameterError(
@@ -149,7 +151,8 @@ ExplicitOperator classify_explicit_operator(const EnergySpec& op) {
 }
 
 Eigen::MatrixXd lemma1_sequences(double rho, double t, int N, bool closed_form) {
-  if (!(rho > 0) || !std::isfinite(rho) || !std::isfinite(t)) throw ParameterError("lemma1_sequences: need rho > 0 and finite t");
+  if (!(rho > 0) || !std::isfinite(rho) || !std::isfinite(t))
+    throw ParameterError("lemma1_sequences: need rho > 0 and finite t");
   if (N < 3) N = 3;
   Eigen::MatrixXd F = Eigen::MatrixXd::Zero(4, N + 1);
   const double ct = std::cos(t), st = std::sin(t);
@@ -191,7 +194,8 @@ namespace {
 // Lemma 1 sequences of the G-norm operator, by eq. (12) where it is accurate, else by recurrence.
 Eigen::MatrixXd gnorm_sequences(const ExplicitOperator& op, int n) {
   const double st = std::abs(std::sin(op.t));
-  const double den = (1 - op.rho * op.rho) * (1 - op.rho * op.rho) + 4 * op.rho * op.rho * std::cos(op.t) * std::cos(op.t);
+  const double den =
+      (1 - op.rho * op.rho) * (1 - op.rho * op.rho) + 4 * op.rho * op.rho * std::cos(op.t) * std::cos(op.t);
   const bool closed = st > 1e-3 && den > 1e-3 * (1 + std::pow(op.rho, 4));
   return lemma1_sequences(op.rho, op.t, n + 1, closed);
 }
@@ -269,8 +273,10 @@ bool gnorm_system9(Eigen::MatrixXd& a, int s, const ExplicitOperator& op, const 
   for (int l0 = 0; l0 < u; ++l0)
     for (int j = 0; j <= 4; ++j) {
       const int l = l0 + j;
-      if (l >= 2 && l <= s - 2) Mx(l0, l - 2) += co[j];
-      else rhs(l0) -= co[j] * (l == 0 ? yknown[0] : l == 1 ? yknown[1] : l == s - 1 ? yknown[2] : yknown[3]);
+      if (l >= 2 && l <= s - 2)
+        Mx(l0, l - 2) += co[j];
+      else
+        rhs(l0) -= co[j] * (l == 0 ? yknown[0] : l == 1 ? yknown[1] : l == s - 1 ? yknown[2] : yknown[3]);
     }
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(Mx, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const auto& sv = svd.singularValues();
@@ -309,12 +315,12 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
   const int n = data.n();
   if (data.m() != n) {
     std::ostringstream s;
-    s << "pde: method \"explicit\" needs a net of degree [n, n] (Arnal-Monterde-Ugail), got [" << data.n() << ", " << data.m()
-      << "]; use method \"lu\"";
+    s << "pde: method \"explicit\" needs a net of degree [n, n] (Arnal-Monterde-Ugail), got [" << data.n() << ", "
+      << data.m() << "]; use method \"lu\"";
     throw DegreeError(s.str());
   }
   summary.set_converged();
-  const int W = n + 2;  // padded: indices 0..n+1, zero outside the box
+  const int W = n + 2;                                                 // padded: indices 0..n+1, zero outside the box
   const Eigen::MatrixXd& Mf = bernstein_to_factorial_power_matrix(n);  // edge -> a (eq. (5)-(6))
   Eigen::VectorXd ifact(n + 2);
   for (int k = 0; k <= n + 1; ++k) ifact(k) = 1.0 / factorial(k);
@@ -345,8 +351,11 @@ Eigen::MatrixX3d explicit_pde_coefficients(const TensorNet& data, const Explicit
       if (s < 4) continue;
       // Interior of the anti-diagonal: k, l >= 2, k + l = s.
       switch (op.family) {
-        case ExplicitOperator::Family::Coons: break;  // a_kl = 0 (§5.2.1)
-        case ExplicitOperator::Family::Orthogonal: orthogonal_antidiagonal(a, s, wcol, wrow); break;
+        case ExplicitOperator::Family::Coons:
+          break;  // a_kl = 0 (§5.2.1)
+        case ExplicitOperator::Family::Orthogonal:
+          orthogonal_antidiagonal(a, s, wcol, wrow);
+          break;
         case ExplicitOperator::Family::GNorm:
           if (!gnorm_antidiagonal(a, s, F, op, options, summary)) return out;
           break;
@@ -365,8 +374,8 @@ PdeSolution solve_explicit_untimed(const TensorNet& data, const EnergySpec& op, 
   ExplicitOperator e = classify_explicit_operator(op);
   if (data.m() != data.n()) {
     std::ostringstream s;
-    s << "pde: method \"explicit\" needs a net of degree [n, n] (Arnal-Monterde-Ugail), got [" << data.n() << ", " << data.m()
-      << "]; use method \"lu\"";
+    s << "pde: method \"explicit\" needs a net of degree [n, n] (Arnal-Monterde-Ugail), got [" << data.n() << ", "
+      << data.m() << "]; use method \"lu\"";
     throw DegreeError(s.str());
   }
   const int n = data.n();

@@ -34,8 +34,8 @@
 
 #include "energies/energy_spec.h"
 #include "solvers/pde/pde_lu.h"  // PdeSolution
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -60,9 +60,10 @@ inline SolverRequirements pde_explicit_requirements(const EnergySpec& op) {
   if (op.order() == 4 && op.has_explicit_solution())
     r.methods = {"explicit"};
   else
-    r.method_reason = "operator " + op.name() +
-                      " has no explicit solution (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified "
-                      "biharmonic and G-norm operators); use \"method\": \"lu\"";
+    r.method_reason =
+        "operator " + op.name() +
+        " has no explicit solution (the explicit solutions cover Coons, biharmonic, laplacian-squared, modified "
+        "biharmonic and G-norm operators); use \"method\": \"lu\"";
   return r;
 }
 

@@ -46,15 +46,13 @@ int numerical_rank(const Eigen::JacobiSVD<Eigen::MatrixXd>& svd, double scale, d
 
 void PdeLuOptions::validate() const {
   auto ok = [](double x) { return std::isfinite(x) && x > 0 && x < 1; };
-  if (!ok(compatibility_tolerance))
-    throw ParameterError("PdeLuOptions: compatibility_tolerance must be in (0, 1)");
+  if (!ok(compatibility_tolerance)) throw ParameterError("PdeLuOptions: compatibility_tolerance must be in (0, 1)");
   if (!ok(rank_tolerance)) throw ParameterError("PdeLuOptions: rank_tolerance must be in (0, 1)");
   if (formulation != Formulation::AntiDiagonal && formulation != Formulation::Bernstein)
     throw ParameterError("PdeLuOptions: unknown formulation");
 }
 
-PdeStructure analyse_pde_structure(const std::vector<double>& c, int n, int m, FixedSet fixed,
-                                   double rank_tolerance) {
+PdeStructure analyse_pde_structure(const std::vector<double>& c, int n, int m, FixedSet fixed, double rank_tolerance) {
   const int p = static_cast<int>(c.size()) - 1;
   PdeStructure out;
   double cmax = 0;
@@ -83,12 +81,13 @@ PdeStructure analyse_pde_structure(const std::vector<double>& c, int n, int m, F
       if (l0 + p >= lo && l0 <= hi) rows.push_back(l0);
     if (rows.empty() || (unknown.empty() && data.empty())) continue;
     auto block = [&](const std::vector<int>& cols) {
-      Eigen::MatrixXd M = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()),
-                                                static_cast<Eigen::Index>(cols.size()));
+      Eigen::MatrixXd M =
+          Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
       for (size_t r = 0; r < rows.size(); ++r)
         for (size_t q = 0; q < cols.size(); ++q) {
           const int j = cols[q] - rows[r];
-          if (j >= 0 && j <= p) M(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(q)) = c[static_cast<size_t>(j)];
+          if (j >= 0 && j <= p)
+            M(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(q)) = c[static_cast<size_t>(j)];
         }
       return M;
     };
@@ -272,7 +271,8 @@ void factorial_power_conversions(int n, std::vector<T>& to, std::vector<T>& from
   T fact = 1;
   for (int k = 0; k <= n; ++k) {
     if (k > 0) fact *= k;
-    for (int i = 0; i <= k; ++i) to[static_cast<size_t>(k * N + i)] = (((k - i) % 2) ? -fact : fact) * c(n, k) * c(k, i);
+    for (int i = 0; i <= k; ++i)
+      to[static_cast<size_t>(k * N + i)] = (((k - i) % 2) ? -fact : fact) * c(n, k) * c(k, i);
     for (int i = k; i <= n; ++i) from[static_cast<size_t>(i * N + k)] = c(i, k) / (c(n, k) * fact);
   }
 }
@@ -438,7 +438,7 @@ template <class T>
 bool solve_interior_block(AntiDiagonalUnknowns<T>& x, int s, const std::array<T, 5>& c, T tol, std::vector<T>& band,
                           std::vector<T>& rhs) {
   const int n = x.n;
-  const int W5 = 5;  // stored band width after pivoting fill: columns l0-2 .. l0+2 -> l0-2 .. l0+4
+  const int W5 = 5;     // stored band width after pivoting fill: columns l0-2 .. l0+2 -> l0-2 .. l0+4
   const int m = s - 3;  // interior unknowns y_2..y_{s-2}
   if (m <= 0) return true;
   // Row l0 (0..m-1): sum_j c_j y_{l0+j} = 0. Unknown y_l -> column l - 2 = l0 + j - 2.
@@ -674,8 +674,8 @@ PdeSolution solve_antidiagonal(const TensorNet& data, const EnergySpec& op, cons
 // Any degrees: the Bernstein least-squares system, factored for this call.
 PdeSolution solve_bernstein(const TensorNet& data, const EnergySpec& op, const PdeLuOptions& options) {
   const int n = data.n(), m = data.m();
-  const PdeStructure st = analyse_pde_structure(operator_coefficients(op), n, m, FixedSet::Boundary,
-                                                options.rank_tolerance);
+  const PdeStructure st =
+      analyse_pde_structure(operator_coefficients(op), n, m, FixedSet::Boundary, options.rank_tolerance);
   if (!st.unique) return not_unique(data, st);
   const Split sp = split_indices(n, m, FixedSet::Boundary);
   const MatL K = bernstein_matrix_ld(pde_operator_terms(op), n, m);

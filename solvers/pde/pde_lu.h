@@ -37,8 +37,8 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "solvers/pde/pde_residual.h"
-#include "solvers/summary.h"
 #include "solvers/requirements.h"
+#include "solvers/summary.h"
 #include "tensor/tensor_net.h"
 
 namespace bpde {
@@ -85,9 +85,9 @@ struct PdeSolution {
 
 /// Structure of the problem (operator, degrees, fixed set), from the monomial block analysis.
 struct PdeStructure {
-  bool unique = true;        ///< every anti-diagonal block has full column rank
-  int conditions = 0;        ///< number of linear compatibility conditions on the data
-  std::string diagnosis;     ///< human-readable reason when !unique or conditions > 0
+  bool unique = true;     ///< every anti-diagonal block has full column rank
+  int conditions = 0;     ///< number of linear compatibility conditions on the data
+  std::string diagnosis;  ///< human-readable reason when !unique or conditions > 0
 };
 
 /// Monomial anti-diagonal analysis (see the header comment). `coeffs` are the operator's

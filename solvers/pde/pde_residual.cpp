@@ -57,11 +57,11 @@ double pde_residual(const TensorNet& net, const std::vector<PdeTerm>& terms, int
 
 void check_pde_degree_limit(int n, int m, const char* method, Summary& summary) {
   if (!summary.converged || std::max(n, m) <= kMaxPdeDegree) return;
-  summary.set_failed(Status::NumericalLimit,
-                     "numerical limit: degree [" + std::to_string(n) + ", " + std::to_string(m) + "] exceeds " +
-                         std::to_string(kMaxPdeDegree) + ", past which double-precision boundary data no longer "
-                         "determine the interior (docs/pde_accuracy.md); method \"" + method +
-                         "\" returned its computed net, which is not reliable");
+  summary.set_failed(Status::NumericalLimit, "numerical limit: degree [" + std::to_string(n) + ", " +
+                                                 std::to_string(m) + "] exceeds " + std::to_string(kMaxPdeDegree) +
+                                                 ", past which double-precision boundary data no longer "
+                                                 "determine the interior (docs/pde_accuracy.md); method \"" +
+                                                 method + "\" returned its computed net, which is not reliable");
 }
 
 }  // namespace bpde

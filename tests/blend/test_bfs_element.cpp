@@ -74,8 +74,7 @@ Bicubic random_bicubic(std::mt19937& rng) {
 TEST(HermiteCubic, KroneckerPropertiesAtTheEnds) {
   const auto v0 = hermite_cubic(0, 0), v1 = hermite_cubic(1, 0);
   const auto d0 = hermite_cubic(0, 1), d1 = hermite_cubic(1, 1);
-  const double ev0[4] = {1, 0, 0, 0}, ev1[4] = {0, 0, 1, 0}, ed0[4] = {0, 1, 0, 0},
-               ed1[4] = {0, 0, 0, 1};
+  const double ev0[4] = {1, 0, 0, 0}, ev1[4] = {0, 0, 1, 0}, ed0[4] = {0, 1, 0, 0}, ed1[4] = {0, 0, 0, 1};
   for (int i = 0; i < 4; ++i) {
     EXPECT_DOUBLE_EQ(v0[i], ev0[i]);
     EXPECT_DOUBLE_EQ(v1[i], ev1[i]);
@@ -85,8 +84,7 @@ TEST(HermiteCubic, KroneckerPropertiesAtTheEnds) {
   // derivatives against central differences
   for (double t : {0.1, 0.37, 0.8})
     for (int r = 0; r < 3; ++r) {
-      const auto p = hermite_cubic(t + 1e-6, r), m = hermite_cubic(t - 1e-6, r),
-                 d = hermite_cubic(t, r + 1);
+      const auto p = hermite_cubic(t + 1e-6, r), m = hermite_cubic(t - 1e-6, r), d = hermite_cubic(t, r + 1);
       for (int i = 0; i < 4; ++i) EXPECT_NEAR((p[i] - m[i]) / 2e-6, d[i], 1e-7);
     }
   EXPECT_EQ(hermite_cubic(0.3, 4)[0], 0.0);
@@ -129,8 +127,7 @@ TEST(BfsSpace, FormMatrixGivesTheExactEnergyOfBicubics) {
     double exact = 0;
     for (int c = 0; c < 3; ++c) {
       const auto uxx = u[c].deriv(2, 0), uxy = u[c].deriv(1, 1), uyy = u[c].deriv(0, 2);
-      exact += integral_product(uxx, uxx) + 2 * a * integral_product(uxy, uxy) +
-               a * a * integral_product(uyy, uyy);
+      exact += integral_product(uxx, uxx) + 2 * a * integral_product(uxy, uxy) + a * a * integral_product(uyy, uyy);
     }
     const double got = (C.transpose() * (R * C)).trace();
     EXPECT_NEAR(got, exact, 1e-11 * exact) << a;
@@ -150,9 +147,7 @@ TEST(BfsSpace, MassMatrixAndLoadAreExactForPolynomials) {
   EXPECT_NEAR((C.transpose() * (M * C)).trace(), exact, 1e-12 * exact);
   // (f, u)_0 with f = the same bicubics: load vector dotted with the coefficients
   const Eigen::MatrixX3d F = V.assemble_load(
-      [&](double x, double y) {
-        return Eigen::Vector3d(u[0].d(x, y, 0, 0), u[1].d(x, y, 0, 0), u[2].d(x, y, 0, 0));
-      },
+      [&](double x, double y) { return Eigen::Vector3d(u[0].d(x, y, 0, 0), u[1].d(x, y, 0, 0), u[2].d(x, y, 0, 0)); },
       4);
   EXPECT_NEAR((F.transpose() * C).trace(), exact, 1e-12 * exact);
 }
@@ -165,8 +160,7 @@ double bspline_basis(const std::vector<double>& t, int i, int p, double x) {
   }
   double r = 0;
   if (t[i + p] > t[i]) r += (x - t[i]) / (t[i + p] - t[i]) * bspline_basis(t, i, p - 1, x);
-  if (t[i + p + 1] > t[i + 1])
-    r += (t[i + p + 1] - x) / (t[i + p + 1] - t[i + 1]) * bspline_basis(t, i + 1, p - 1, x);
+  if (t[i + p + 1] > t[i + 1]) r += (t[i + p + 1] - x) / (t[i + p + 1] - t[i + 1]) * bspline_basis(t, i + 1, p - 1, x);
   return r;
 }
 
@@ -199,8 +193,7 @@ TEST(BfsSpace, BadArguments) {
   EXPECT_THROW(V.evaluate(C, 1.1, 0.5), ParameterError);
   EXPECT_THROW(V.evaluate(C, std::nan(""), 0.5), ParameterError);
   EXPECT_THROW(V.evaluate(Eigen::MatrixX3d::Zero(3, 3), 0.5, 0.5), SizeError);
-  EXPECT_THROW(V.assemble_load([](double, double) { return Eigen::Vector3d(1, std::nan(""), 0); }),
-               NonFiniteError);
+  EXPECT_THROW(V.assemble_load([](double, double) { return Eigen::Vector3d(1, std::nan(""), 0); }), NonFiniteError);
 }
 
 }  // namespace

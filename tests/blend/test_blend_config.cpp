@@ -151,8 +151,7 @@ TEST(BlendConfig, MalformedOrOverflowingText) {
 }
 
 TEST(BlendConfig, ExampleConfigsAreTheCylindersOfSection6) {
-  const std::filesystem::path dir =
-      std::filesystem::path(BPDE_SOURCE_DIR) / "examples" / "003-blend-cylinders";
+  const std::filesystem::path dir = std::filesystem::path(BPDE_SOURCE_DIR) / "examples" / "003-blend-cylinders";
   const char* names[4] = {"fig2a.json", "fig2b.json", "fig2c.json", "fig2d.json"};
   const double as[4] = {1, 10, 10, 10}, eps[4] = {1, 1, 1e-3, 1e-5};
   const int ms[4] = {0, 0, 9, 9};
@@ -177,8 +176,9 @@ TEST(BlendConfig, ExampleConfigsAreTheCylindersOfSection6) {
       EXPECT_NEAR(p.points(i, 0), i / 9.0, 1e-16);
       EXPECT_EQ(p.points(i, 1), 0.5);
       // β = h(i/9, 0.5), h(x, y) = (2y - 1, 0.5 cos 2πx, 0.5 sin 2πx)
-      EXPECT_LT((p.data.row(i) - Eigen::RowVector3d(0, 0.5 * std::cos(tp * i / 9.0),
-                                                     0.5 * std::sin(tp * i / 9.0))).norm(), 1e-15);
+      EXPECT_LT(
+          (p.data.row(i) - Eigen::RowVector3d(0, 0.5 * std::cos(tp * i / 9.0), 0.5 * std::sin(tp * i / 9.0))).norm(),
+          1e-15);
     }
     const auto r = solve_smoothing_spline(p);
     EXPECT_TRUE(r.summary.converged) << names[c] << ": " << r.summary.message;

@@ -55,9 +55,9 @@ SmoothingSplineProblem cylinders(double a, double eps, bool with_points) {
   for (int i = 0; i <= 8; ++i) {
     const double x = i / 8.0;
     p.y0_value.row(i) << 1, 2 * std::cos(kTwoPi * x), 2 * std::sin(kTwoPi * x);  // f(x, 1)
-    p.y0_dy.row(i) << 2, 0, 0;                                                    // f_y(x, 1)
+    p.y0_dy.row(i) << 2, 0, 0;                                                   // f_y(x, 1)
     p.y1_value.row(i) << 1, std::cos(kTwoPi * x), std::sin(kTwoPi * x);          // g(x, 0)
-    p.y1_dy.row(i) << 2, 0, 0;                                                    // g_y(x, 0)
+    p.y1_dy.row(i) << 2, 0, 0;                                                   // g_y(x, 0)
   }
   const int m = with_points ? 9 : 0;
   p.points.resize(m, 2);
@@ -83,8 +83,7 @@ double functional_by_quadrature(const SmoothingSpline& s, const SmoothingSplineP
         for (int b = 0; b < 5; ++b) {
           const double x = (i + g.x(a)) / p.k, y = (j + g.x(b)) / p.l;
           const double w = g.w(a) * g.w(b) / (p.k * p.l);
-          energy += w * (s.evaluate(x, y, 2, 0).squaredNorm() +
-                         2 * p.a * s.evaluate(x, y, 1, 1).squaredNorm() +
+          energy += w * (s.evaluate(x, y, 2, 0).squaredNorm() + 2 * p.a * s.evaluate(x, y, 1, 1).squaredNorm() +
                          p.a * p.a * s.evaluate(x, y, 0, 2).squaredNorm());
           if (p.load) load += w * p.load(x, y).dot(s.evaluate(x, y));
         }
@@ -92,14 +91,11 @@ double functional_by_quadrature(const SmoothingSpline& s, const SmoothingSplineP
 }
 
 TEST(SmoothingSpline, ReproducesDataFromSpanOneXYXYExactly) {
-  auto U = [](double x, double y) {
-    return Eigen::Vector3d(1 + 2 * x - y + 3 * x * y, -x + 0.5 * y, 2 - x * y);
-  };
+  auto U = [](double x, double y) { return Eigen::Vector3d(1 + 2 * x - y + 3 * x * y, -x + 0.5 * y, 2 - x * y); };
   auto Uy = [](double x, double) { return Eigen::Vector3d(-1 + 3 * x, 0.5, -x); };
   for (double a : {1.0, 10.0})
     for (double eps : {1.0, 1e-3}) {
-      for (auto method : {SmoothingSplineOptions::Method::kKktLu,
-                          SmoothingSplineOptions::Method::kElimination}) {
+      for (auto method : {SmoothingSplineOptions::Method::kKktLu, SmoothingSplineOptions::Method::kElimination}) {
         SmoothingSplineOptions o;
         o.method = method;
         const auto p = problem_from(6, 3, a, eps, U, Uy);
@@ -167,9 +163,7 @@ TEST(SmoothingSpline, InterpolatesBoundaryValuesAndDyAtTheNodes) {
     EXPECT_LT((r.spline.evaluate(x, 1, 0, 1) - p.y1_dy.row(i).transpose()).norm(), 1e-11);
   }
   // between nodes the edge is only approximated (generic data)
-  EXPECT_GT((r.spline.evaluate(1.0 / 16, 0) - 0.5 * (p.y0_value.row(0) + p.y0_value.row(1)).transpose())
-                .norm(),
-            0.0);
+  EXPECT_GT((r.spline.evaluate(1.0 / 16, 0) - 0.5 * (p.y0_value.row(0) + p.y0_value.row(1)).transpose()).norm(), 0.0);
 }
 
 TEST(SmoothingSpline, KktAndEliminationAgree) {
@@ -183,8 +177,7 @@ TEST(SmoothingSpline, KktAndEliminationAgree) {
       ASSERT_TRUE(r1.summary.converged) << r1.summary.message;
       ASSERT_TRUE(r2.summary.converged) << r2.summary.message;
       const double scale = r1.spline.coefficients().cwiseAbs().maxCoeff();
-      EXPECT_LT((r1.spline.coefficients() - r2.spline.coefficients()).cwiseAbs().maxCoeff(),
-                1e-9 * scale)
+      EXPECT_LT((r1.spline.coefficients() - r2.spline.coefficients()).cwiseAbs().maxCoeff(), 1e-9 * scale)
           << eps << " " << a;
       EXPECT_LT((r1.multipliers - r2.multipliers).cwiseAbs().maxCoeff(),
                 1e-8 * (1 + r1.multipliers.cwiseAbs().maxCoeff()));
@@ -206,8 +199,7 @@ TEST(SmoothingSpline, IsTheMinimiserOfEq6OverTheConstrainedSpace) {
     for (int i = 0; i <= V.k(); ++i)
       for (int j : {0, V.l()})
         for (int d : {0, 2}) dv.row(V.dof(i, j, d)).setZero();  // stay in H_h
-    const SmoothingSpline plus(V, r.spline.coefficients() + dv),
-        minus(V, r.spline.coefficients() - dv);
+    const SmoothingSpline plus(V, r.spline.coefficients() + dv), minus(V, r.spline.coefficients() - dv);
     const double Jp = functional_by_quadrature(plus, p), Jm = functional_by_quadrature(minus, p);
     const double first = 0.5 * (Jp - Jm), second = 0.5 * (Jp + Jm) - J0;
     EXPECT_GT(second, 0);
@@ -238,8 +230,7 @@ TEST(SmoothingSpline, ApproachesTheDataLinearlyInEpsilon) {
 
 TEST(SmoothingSpline, NumericallySingularProblemsAreReportedNotConverged) {
   // eps = 1e-300: the data term swamps the energy; the reduced system is singular in doubles.
-  for (auto method : {SmoothingSplineOptions::Method::kKktLu,
-                      SmoothingSplineOptions::Method::kElimination}) {
+  for (auto method : {SmoothingSplineOptions::Method::kKktLu, SmoothingSplineOptions::Method::kElimination}) {
     SmoothingSplineOptions o;
     o.method = method;
     const auto r = solve_smoothing_spline(cylinders(10.0, 1e-300, true), o);
@@ -292,8 +283,7 @@ TEST(SmoothingSpline, SampleOrderTrianglesAndMeanCurvature) {
       const int id = a * (N + 1) + b;
       EXPECT_LT((m.V.row(id).transpose() - Eigen::Vector3d(x, y, x * x + y * y)).norm(), 1e-13);
       const double fx = 2 * x, fy = 2 * y;
-      const double H = ((1 + fy * fy) * 2 + (1 + fx * fx) * 2) /
-                       (2 * std::pow(1 + fx * fx + fy * fy, 1.5));
+      const double H = ((1 + fy * fy) * 2 + (1 + fx * fx) * 2) / (2 * std::pow(1 + fx * fx + fy * fy, 1.5));
       EXPECT_NEAR(m.H(id), H, 1e-12);
     }
   EXPECT_NEAR(m.H(0), 2.0, 1e-12);

@@ -30,8 +30,7 @@ inline std::vector<double> uniform(int count) {
   return K;
 }
 
-inline BSplineNet random_net(int p, int q, const std::vector<double>& U, const std::vector<double>& V,
-                             unsigned seed) {
+inline BSplineNet random_net(int p, int q, const std::vector<double>& U, const std::vector<double>& V, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> R(-1, 1);
   const int nu = static_cast<int>(U.size()) - p - 1, nv = static_cast<int>(V.size()) - q - 1;

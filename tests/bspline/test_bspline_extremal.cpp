@@ -63,7 +63,8 @@ TEST(BSplineExtremal, DerivativeIntegralsOfOneSpanAreTheBernsteinOnes) {
     for (int a = 0; a <= 2; ++a)
       for (int b = 0; b <= 2; ++b) {
         const Eigen::MatrixXd ex = bernstein_derivative_integrals(k, a, b) * std::pow(3.0, 1 - a - b);
-        EXPECT_LT((bspline_derivative_integrals(k, K, a, b) - ex).cwiseAbs().maxCoeff(), 1e-13 * (1 + ex.cwiseAbs().maxCoeff()));
+        EXPECT_LT((bspline_derivative_integrals(k, K, a, b) - ex).cwiseAbs().maxCoeff(),
+                  1e-13 * (1 + ex.cwiseAbs().maxCoeff()));
       }
   }
 }
@@ -147,14 +148,15 @@ TEST(BSplineExtremal, ReproducesHarmonicAndBiharmonicPolynomialsOnMultiSpanNets)
   EXPECT_LT((rh.net.points() - h.points()).cwiseAbs().maxCoeff(), 1e-12);
 
   const Field biharmonic = [](double u, double v) {
-    return Eigen::Vector3d(u * u * u * u - 6 * u * u * v * v + v * v * v * v + u,
-                           (u * u + v * v) * (u * u - v * v), (u * u + v * v) * u * v + v);
+    return Eigen::Vector3d(u * u * u * u - 6 * u * u * v * v + v * v * v * v + u, (u * u + v * v) * (u * u - v * v),
+                           (u * u + v * v) * u * v + v);
   };
   const BSplineNet b = spline_of(biharmonic, 4, 4, U, V);
   data = b;
   for (int idx : data.free_indices(FixedSet::BoundaryAdjacent)) data.points().row(idx).setZero();
   for (const EnergySpec& e : {EnergySpec::biharmonic(), EnergySpec::laplacian_squared()}) {
-    const BSplineExtremalResult rb = solve_bspline_extremal(data, e, BSplineExtremalOptions{FixedSet::BoundaryAdjacent});
+    const BSplineExtremalResult rb =
+        solve_bspline_extremal(data, e, BSplineExtremalOptions{FixedSet::BoundaryAdjacent});
     ASSERT_TRUE(rb.summary.converged);
     EXPECT_LT((rb.net.points() - b.points()).cwiseAbs().maxCoeff(), 1e-11) << e.name();
   }

@@ -28,9 +28,9 @@ BSplineNet net_with_u(const std::vector<double>& U) {
 }  // namespace
 
 TEST(BSplineKnotScale, OverflowingWidthsAreRejectedWithTheKnotNamed) {
-  for (const std::vector<double>& U : {std::vector<double>{-1e308, -1e308, 1e308, 1e308},
-                                       std::vector<double>{0, 0, 1e308, 1e308}, std::vector<double>{0, 0, 1.7e308, 1.7e308},
-                                       std::vector<double>{0, 0, 1e51, 1e51}}) {
+  for (const std::vector<double>& U :
+       {std::vector<double>{-1e308, -1e308, 1e308, 1e308}, std::vector<double>{0, 0, 1e308, 1e308},
+        std::vector<double>{0, 0, 1.7e308, 1.7e308}, std::vector<double>{0, 0, 1e51, 1e51}}) {
     try {
       net_with_u(U);
       ADD_FAILURE() << "accepted knots up to " << U.back();
@@ -51,9 +51,9 @@ TEST(BSplineKnotScale, BadlyScaledDomainsAndSpansAreRejected) {
 }
 
 TEST(BSplineKnotScale, KnotsJustInsideTheLimitsWorkEndToEnd) {
-  for (const std::vector<double>& U : {std::vector<double>{-1e50, -1e50, 1e50, 1e50},
-                                       std::vector<double>{0, 0, 1e-50, 1e-50},
-                                       std::vector<double>{0, 0, 1e-11, 1, 1}, std::vector<double>{1e6, 1e6, 1e6 + 0.1, 1e6 + 0.1}}) {
+  for (const std::vector<double>& U :
+       {std::vector<double>{-1e50, -1e50, 1e50, 1e50}, std::vector<double>{0, 0, 1e-50, 1e-50},
+        std::vector<double>{0, 0, 1e-11, 1, 1}, std::vector<double>{1e6, 1e6, 1e6 + 0.1, 1e6 + 0.1}}) {
     const BSplineNet net = net_with_u(U);
     const TriangleMesh mesh = sample_mesh(net, 4);
     EXPECT_TRUE(mesh.V.allFinite()) << U.back();

@@ -126,7 +126,8 @@ TEST(BSplineOps, BlossomingRepresentsPolynomialsExactlyOnAnyKnots) {
   const BSplineNet net = bspline_from_bezier(bez, 0.5, 2, -1, 1, 5, 4, U, V);
   for (int s = 0; s <= 10; ++s)
     for (int t = 0; t <= 10; ++t) {
-      const double u = net.u_min() + (net.u_max() - net.u_min()) * s / 10, v = net.v_min() + (net.v_max() - net.v_min()) * t / 10;
+      const double u = net.u_min() + (net.u_max() - net.u_min()) * s / 10,
+                   v = net.v_min() + (net.v_max() - net.v_min()) * t / 10;
       const Eigen::Vector3d e = bez.evaluate((u - 0.5) / 1.5, (v + 1) / 2);
       EXPECT_LT((net.evaluate(u, v) - e).norm(), 1e-13);
     }
@@ -135,8 +136,8 @@ TEST(BSplineOps, BlossomingRepresentsPolynomialsExactlyOnAnyKnots) {
 TEST(BSplineOps, BadInputThrowsTypedErrors) {
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(4, 3);
   const std::vector<double> K{0, 0, 0, 1, 2, 2, 2};
-  EXPECT_THROW(insert_knot(2, K, P, 2.5), ParameterError);                // outside the domain
-  EXPECT_THROW(insert_knot(2, K, P, 1.0, 3), ParameterError);             // multiplicity 4 > 3
+  EXPECT_THROW(insert_knot(2, K, P, 2.5), ParameterError);     // outside the domain
+  EXPECT_THROW(insert_knot(2, K, P, 1.0, 3), ParameterError);  // multiplicity 4 > 3
   EXPECT_THROW(insert_knot(2, K, P, std::nan(""), 1), NonFiniteError);
   EXPECT_THROW(insert_knot(2, K, Eigen::MatrixXd::Zero(5, 3), 1.0), SizeError);
   EXPECT_THROW(insert_knot(2, {0, 0, 0, 2, 1, 2, 2}, P, 1.0), ParameterError);  // decreasing knots
@@ -154,7 +155,7 @@ TEST(BSplineOps, BadInputThrowsTypedErrors) {
 TEST(BSplineNetDeBoor, AgreesWithBasisEvaluationOnGeneralKnots) {
   // non-uniform, repeated interior knot, unclamped ends
   const std::vector<double> U = {-0.5, 0.0, 0.1, 0.4, 0.4, 0.7, 1.3, 1.5, 2.0};  // p = 3: 5 points
-  const std::vector<double> V = {0.0, 0.0, 0.0, 0.3, 0.8, 1.0, 1.0, 1.0};         // q = 2: 5 points
+  const std::vector<double> V = {0.0, 0.0, 0.0, 0.3, 0.8, 1.0, 1.0, 1.0};        // q = 2: 5 points
   Eigen::MatrixX3d P(25, 3);
   for (int r = 0; r < 25; ++r) P.row(r) << std::sin(1.0 + r), std::cos(0.3 * r), 0.1 * r * r;
   const bpde::BSplineNet net(3, 2, U, V, P);

@@ -37,7 +37,8 @@ BSplineNet blank_free(BSplineNet net, const std::vector<int>& free) {
 Field fourth_order_solution(const std::array<double, 5>& c, int k) {
   const auto r = roots({c[0], c[1], c[2], c[3], c[4]});
   return [r, k](double u, double v) {
-    return Eigen::Vector3d(re_power(r[0], k, u, v) + 0.5 * u * u * v, im_power(r[0], k, u, v) + re_power(r[2], k - 1, u, v),
+    return Eigen::Vector3d(re_power(r[0], k, u, v) + 0.5 * u * u * v,
+                           im_power(r[0], k, u, v) + re_power(r[2], k - 1, u, v),
                            im_power(r[2], k, u, v) + v * v * v - u);
   };
 }
@@ -70,10 +71,10 @@ TEST(BSplinePde, Example1PaperNetIsNotASolutionButTheSolverFindsOne) {
   const std::vector<double> K = uniform(8);
   const EnergySpec op = EnergySpec::second_order(1, -2, 1);
   Eigen::MatrixX3d P(16, 3);
-  P << 1, 1, 1, 1, 2, -8, 1, 3, 8, 1, 4, 1,                          // P_0j (prescribed)
-      2, 1, 8, 2, 2, -5. / 9, 2, 3, 119. / 9, 2, 4, 4. / 3,          // P_1j
-      3, 1, -8, 3, 2, -121. / 9, 3, 3, 7. / 9, 3, 4, -40. / 3,       // P_2j
-      4, 1, 1, 4, 2, 4. / 3, 4, 3, 56. / 3, 4, 4, 5;                  // P_3j
+  P << 1, 1, 1, 1, 2, -8, 1, 3, 8, 1, 4, 1,                     // P_0j (prescribed)
+      2, 1, 8, 2, 2, -5. / 9, 2, 3, 119. / 9, 2, 4, 4. / 3,     // P_1j
+      3, 1, -8, 3, 2, -121. / 9, 3, 3, 7. / 9, 3, 4, -40. / 3,  // P_2j
+      4, 1, 1, 4, 2, 4. / 3, 4, 3, 56. / 3, 4, 4, 5;            // P_3j
   const BSplineNet paper(3, 3, K, K, P);
   EXPECT_GT(bspline_pde_equation_residual(paper, op), 1e-3);  // docs/errata.md: the listed net fails the PDE
   const BSplinePdeResult r = solve_bspline_pde(paper, op, std::vector<int>{0, 1, 2, 3});
@@ -138,8 +139,11 @@ TEST(BSplinePde, SingleSpanRanksEqualExactMonomialRanks) {
     for (int i = 0; i < k; ++i) r *= a - i;
     return a < k ? 0.0 : r;
   };
-  for (const std::array<double, 5>& c :
-       {std::array<double, 5>{1, 0, 2, 0, 1}, {2, 0, 1, 0, 0.5}, {1, 0.5, 3, -0.4, 2}, {0, 0, 1, 0, 0}, {1, 0, 0, 0, 0}})
+  for (const std::array<double, 5>& c : {std::array<double, 5>{1, 0, 2, 0, 1},
+                                         {2, 0, 1, 0, 0.5},
+                                         {1, 0.5, 3, -0.4, 2},
+                                         {0, 0, 1, 0, 0},
+                                         {1, 0, 0, 0, 0}})
     for (int n = 4; n <= 7; ++n) {
       const int N = (n + 1) * (n + 1);
       Eigen::MatrixXd M = Eigen::MatrixXd::Zero(N, N);
@@ -248,11 +252,11 @@ TEST(BSplinePde, CoonsOperatorGivesTheCoonsPatchOnMultiSpanNets) {
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
   EXPECT_EQ(r.free_parameters, 0);
   EXPECT_LT(bspline_pde_residual(r.net, EnergySpec::coons()), 1e-6);  // rounding/rounding, floored
-  EXPECT_GT(bspline_pde_residual(data, EnergySpec::coons()), 0.5);      // a generic net: ratio ~1
+  EXPECT_GT(bspline_pde_residual(data, EnergySpec::coons()), 0.5);    // a generic net: ratio ~1
   for (double u : {0.1, 0.35, 0.8})
     for (double v : {0.05, 0.5, 0.9}) {
-      const Eigen::Vector3d coons = (1 - u) * data.evaluate(0, v) + u * data.evaluate(1, v) + (1 - v) * data.evaluate(u, 0) +
-                                    v * data.evaluate(u, 1) -
+      const Eigen::Vector3d coons = (1 - u) * data.evaluate(0, v) + u * data.evaluate(1, v) +
+                                    (1 - v) * data.evaluate(u, 0) + v * data.evaluate(u, 1) -
                                     ((1 - u) * (1 - v) * data.evaluate(0, 0) + (1 - u) * v * data.evaluate(0, 1) +
                                      u * (1 - v) * data.evaluate(1, 0) + u * v * data.evaluate(1, 1));
       EXPECT_LT((r.net.evaluate(u, v) - coons).norm(), 1e-12);
@@ -300,7 +304,8 @@ TEST(BSplinePde, DegenerateOperatorReturnsTheMinimumEnergyMember) {
   // Independent check: the KKT system  min ½ x^T Q x  s.t.  A x = 0, fixed points given.
   const Eigen::MatrixXd A = bspline_pde_equations(5, 5, U, V, op);
   const Eigen::MatrixXd Q(bspline_gram(5, 5, U, V, op));
-  const std::vector<int> fixed = member.fixed_indices(FixedSet::Boundary), free = member.free_indices(FixedSet::Boundary);
+  const std::vector<int> fixed = member.fixed_indices(FixedSet::Boundary),
+                         free = member.free_indices(FixedSet::Boundary);
   const int nf = static_cast<int>(free.size()), m = static_cast<int>(A.rows());
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nf + m, nf + m), rhs = Eigen::MatrixXd::Zero(nf + m, 3);
   for (int a = 0; a < nf; ++a) {

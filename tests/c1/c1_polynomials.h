@@ -1,6 +1,6 @@
 #pragma once
-// Exact polynomial test surfaces for the C¹-methods tests (Centella et al.): products zbar^a z^b with z = (u-u0) + i(v-v0),
-// as monomial coefficient tables, turned into degree-(n,n) nets.
+// Exact polynomial test surfaces for the C¹-methods tests (Centella et al.): products zbar^a z^b with z = (u-u0) +
+// i(v-v0), as monomial coefficient tables, turned into degree-(n,n) nets.
 #include <complex>
 #include <vector>
 
@@ -37,7 +37,8 @@ inline TensorNet net_from_tables(int n, const std::vector<std::vector<std::vecto
   for (int d = 0; d < 3; ++d)
     for (size_t k = 0; k < coords[static_cast<size_t>(d)].size(); ++k)
       for (size_t l = 0; l < coords[static_cast<size_t>(d)][k].size(); ++l)
-        c(static_cast<Eigen::Index>(k) * (n + 1) + static_cast<Eigen::Index>(l), d) = coords[static_cast<size_t>(d)][k][l];
+        c(static_cast<Eigen::Index>(k) * (n + 1) + static_cast<Eigen::Index>(l), d) =
+            coords[static_cast<size_t>(d)][k][l];
   return from_power(n, n, c);
 }
 

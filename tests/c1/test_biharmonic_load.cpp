@@ -40,7 +40,8 @@ TEST(BiharmonicLoad, SolvesDelta2xEqualsPWithVanishingInteriorLoad) {
     EXPECT_TRUE(r.summary.converged) << r.summary.message;
     EXPECT_EQ(r.summary.status, Status::Converged);
     // Outer two rings are the data, exactly.
-    for (int idx : data.fixed_indices(FixedSet::BoundaryAdjacent)) EXPECT_EQ(r.net.points().row(idx), data.points().row(idx));
+    for (int idx : data.fixed_indices(FixedSet::BoundaryAdjacent))
+      EXPECT_EQ(r.net.points().row(idx), data.points().row(idx));
     // The load net is zero at 2 <= i, j <= n-2, relative to a bound of the terms that cancel:
     // |T4| row sums <= 16 n!/(n-4)!, weights 1 + 2 + 1.
     const double lmax = r.load.points().cwiseAbs().maxCoeff();
@@ -64,8 +65,8 @@ TEST(BiharmonicLoad, ReproducesBiharmonicPolynomialsWithZeroLoad) {
   for (int n : {5, 7, 9, 11}) {
     const int b = std::min(n - 1, 6);
     const std::vector<std::vector<double>> U = {{0.0}, {1.0}}, V = {{0.0, 1.0}};
-    const TensorNet exact = net_from_tables(n, {add(U, re(zbar_z(1, b, 0.3, 0.6), 0.5)), add(V, im(zbar_z(1, b, 0.3, 0.6))),
-                                                re(zbar_z(0, b + 1, 0.3, 0.6))});
+    const TensorNet exact = net_from_tables(n, {add(U, re(zbar_z(1, b, 0.3, 0.6), 0.5)),
+                                                add(V, im(zbar_z(1, b, 0.3, 0.6))), re(zbar_z(0, b + 1, 0.3, 0.6))});
     TensorNet data = exact;
     for (int idx : exact.free_indices(FixedSet::BoundaryAdjacent)) data.points().row(idx).setConstant(-3.0);
     const auto r = solve_biharmonic_load(data);

@@ -75,9 +75,10 @@ TEST(ExactSolution41, BothC1MethodsApproximateUCosUExpV) {
       const auto tetra_ex = solve_tetraharmonic(approx, ex);
       const double e_data = max_error(approx), e_load = max_error(load.net), e_tetra = max_error(tetra.net),
                    e_tetra_ex = max_error(tetra_ex.net);
-      std::printf("n = %d, data = %s: |data patch - f| = %.3e, biharmonic-load %.3e, tetraharmonic lu %.3e, "
-                  "explicit %.3e\n",
-                  n, data == 0 ? "Chebyshev-Lobatto interpolation" : "L2 projection", e_data, e_load, e_tetra, e_tetra_ex);
+      std::printf(
+          "n = %d, data = %s: |data patch - f| = %.3e, biharmonic-load %.3e, tetraharmonic lu %.3e, "
+          "explicit %.3e\n",
+          n, data == 0 ? "Chebyshev-Lobatto interpolation" : "L2 projection", e_data, e_load, e_tetra, e_tetra_ex);
       // The paper's 2.499e-6 and 9.108e-6 at n = 7 (its data approximation is not stated; ours
       // gives 2.38e-6..2.47e-6 and 9.09e-6..9.14e-6). Much smaller at n = 9.
       if (n == 7) {

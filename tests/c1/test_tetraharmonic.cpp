@@ -24,9 +24,9 @@ TensorNet exact_tetraharmonic(int n) {
   const double u0 = 0.4, v0 = 0.7;
   const std::vector<std::vector<double>> U = {{0.0}, {1.0}}, V = {{0.0, 1.0}};
   if (n >= 7)
-    return net_from_tables(n, {add(U, re(zbar_z(3, 4, u0, v0), 0.5)),
-                               add(V, add(im(zbar_z(3, 4, u0, v0), 0.5), re(zbar_z(2, 3, u0, v0)))),
-                               add(re(zbar_z(3, 3, u0, v0)), im(zbar_z(1, 6, u0, v0)))});
+    return net_from_tables(
+        n, {add(U, re(zbar_z(3, 4, u0, v0), 0.5)), add(V, add(im(zbar_z(3, 4, u0, v0), 0.5), re(zbar_z(2, 3, u0, v0)))),
+            add(re(zbar_z(3, 3, u0, v0)), im(zbar_z(1, 6, u0, v0)))});
   if (n >= 6)
     return net_from_tables(n, {add(U, re(zbar_z(3, 3, u0, v0))), add(V, im(zbar_z(2, 4, u0, v0))),
                                add(re(zbar_z(3, 2, u0, v0)), im(zbar_z(1, 5, u0, v0)))});
@@ -36,7 +36,8 @@ TensorNet exact_tetraharmonic(int n) {
 
 TensorNet scrambled_interior(const TensorNet& net) {
   TensorNet data = net;
-  for (int idx : net.free_indices(FixedSet::BoundaryAdjacent)) data.points().row(idx) = Eigen::RowVector3d(1e3, -7.0, 42.0);
+  for (int idx : net.free_indices(FixedSet::BoundaryAdjacent))
+    data.points().row(idx) = Eigen::RowVector3d(1e3, -7.0, 42.0);
   return data;
 }
 
@@ -53,8 +54,10 @@ TEST(Tetraharmonic, RecoversExactPolynomialBothMethods) {
   // Relative tolerances (max point error / max point): the explicit recursion works in the
   // power basis (docs/c1.md) and loses about a digit per degree.
   // Observed (docs/c1.md) times ~5-10; both grow with the amplification of the data (docs/c1.md).
-  const double tol_lu[] = {0, 0, 0, 0, 1e-15, 1e-14, 1e-14, 1e-13, 1e-13, 3e-13, 1e-12, 1e-12, 1e-11, 3e-11, 1e-10, 5e-10, 3e-9};
-  const double tol_ex[] = {0, 0, 0, 0, 1e-14, 1e-14, 1e-14, 2e-13, 1e-12, 3e-12, 1e-11, 3e-11, 5e-11, 1e-10, 1e-9, 5e-9, 5e-9};
+  const double tol_lu[] = {0,     0,     0,     0,     1e-15, 1e-14, 1e-14, 1e-13, 1e-13,
+                           3e-13, 1e-12, 1e-12, 1e-11, 3e-11, 1e-10, 5e-10, 3e-9};
+  const double tol_ex[] = {0,     0,     0,     0,     1e-14, 1e-14, 1e-14, 2e-13, 1e-12,
+                           3e-12, 1e-11, 3e-11, 5e-11, 1e-10, 1e-9,  5e-9,  5e-9};
   for (int n = 4; n <= 16; ++n) {
     const TensorNet exact = exact_tetraharmonic(n);
     const TensorNet data = scrambled_interior(exact);
@@ -63,8 +66,8 @@ TEST(Tetraharmonic, RecoversExactPolynomialBothMethods) {
       o.method = m;
       const auto r = solve_tetraharmonic(data, o);
       const double err = relative_difference(r.net, exact);
-      std::cout << "n = " << n << (m == Method::LU ? " lu " : " explicit ") << "relative error " << err
-                << ", residual " << r.summary.residual << "\n";
+      std::cout << "n = " << n << (m == Method::LU ? " lu " : " explicit ") << "relative error " << err << ", residual "
+                << r.summary.residual << "\n";
       EXPECT_LT(err, m == Method::LU ? tol_lu[n] : tol_ex[n]) << "n = " << n;
       for (int idx : data.fixed_indices(FixedSet::BoundaryAdjacent))
         EXPECT_EQ(r.net.points().row(idx), data.points().row(idx));
@@ -77,7 +80,8 @@ TEST(Tetraharmonic, MethodsAgreeOnGenericData) {
     TensorNet data(n, n);
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j)
-        data.set_point(i, j, Eigen::Vector3d(i / double(n), j / double(n), std::sin(3.0 * i / n) * std::cos(2.0 * j / n)));
+        data.set_point(i, j,
+                       Eigen::Vector3d(i / double(n), j / double(n), std::sin(3.0 * i / n) * std::cos(2.0 * j / n)));
     TetraharmonicOptions o;
     const auto lu = solve_tetraharmonic(data, o);
     o.method = Method::Explicit;
@@ -97,7 +101,8 @@ TEST(Tetraharmonic, MethodsAgreeOnGenericData) {
         for (int t = 0; t < 5; ++t) {
           if (dd[t][0] > n || dd[t][1] > n) continue;
           s += c[t] * lu.net.derivative(u, v, dd[t][0], dd[t][1]);
-          bound += c[t] * factorial(n) / factorial(n - dd[t][0]) * factorial(n) / factorial(n - dd[t][1]) * 256.0 * pmax;
+          bound +=
+              c[t] * factorial(n) / factorial(n - dd[t][0]) * factorial(n) / factorial(n - dd[t][1]) * 256.0 * pmax;
         }
         EXPECT_LT(s.cwiseAbs().maxCoeff(), 1e-13 * bound) << n;
       }
@@ -108,7 +113,8 @@ TEST(Tetraharmonic, LuConvergesAtDegree20WhereExplicitDoesNot) {
   const int n = 20;
   TensorNet data(n, n);
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) data.set_point(i, j, Eigen::Vector3d(i / double(n), j / double(n), std::sin(3.0 * i / n)));
+    for (int j = 0; j <= n; ++j)
+      data.set_point(i, j, Eigen::Vector3d(i / double(n), j / double(n), std::sin(3.0 * i / n)));
   const auto lu = solve_tetraharmonic(data);
   EXPECT_TRUE(lu.summary.converged) << lu.summary.message;
   EXPECT_EQ(lu.summary.status, Status::Converged);
@@ -162,7 +168,7 @@ TEST(Tetraharmonic, Lemma2Determinant) {
     const double det = tetraharmonic_detail::lemma2_matrix(k).determinant();
     EXPECT_NEAR(det, tetraharmonic_detail::lemma2_determinant(k), 1e-9 * det) << "k = " << k;
   }
-  EXPECT_DOUBLE_EQ(tetraharmonic_detail::lemma2_determinant(1), 6.0);  // det [6]
+  EXPECT_DOUBLE_EQ(tetraharmonic_detail::lemma2_determinant(1), 6.0);   // det [6]
   EXPECT_DOUBLE_EQ(tetraharmonic_detail::lemma2_determinant(2), 20.0);  // det [[6,4],[4,6]]
 }
 

@@ -133,8 +133,8 @@ TEST(MeshChecks, SampledTorusWithTwoSeamsIsClosed) {
   Soup s;
   // (u, v) -> torus, oriented outwards: x_u ^ x_v points away from the tube's core circle
   add_grid(s, 96, 48, 0, 2 * kPi, 0, 2 * kPi, [&](double u, double v) {
-    return std::array<double, 3>{(R + rr * std::cos(v)) * std::cos(u),
-                                 (R + rr * std::cos(v)) * std::sin(u), rr * std::sin(v)};
+    return std::array<double, 3>{(R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u),
+                                 rr * std::sin(v)};
   });
   const auto r = check_mesh(s.v, s.t);
   EXPECT_TRUE(r.closed);
@@ -212,8 +212,8 @@ TEST(MeshChecks, ConeVolumeOfFlatSquareAtHeightOne) {
   add_grid(s, 5, 7, 0, 2, 0, 3, [](double u, double v) { return std::array<double, 3>{u, v, 1}; });
   const auto r = check_mesh(s.v, s.t);
   EXPECT_NEAR(r.cone_volume, 6.0 / 3.0, 1e-13);  // (1/3) * area * height
-  EXPECT_EQ(r.self_intersections, 0);             // coplanar neighbours are not intersections
-  ASSERT_TRUE(r.volume.has_value());               // planar boundary: capped volume 0
+  EXPECT_EQ(r.self_intersections, 0);            // coplanar neighbours are not intersections
+  ASSERT_TRUE(r.volume.has_value());             // planar boundary: capped volume 0
   EXPECT_NEAR(*r.volume, 0.0, 1e-13);
 }
 

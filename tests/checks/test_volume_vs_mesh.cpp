@@ -5,11 +5,11 @@
 
 #include <cmath>
 
+#include "boundaries/reference_boundaries.h"
 #include "checks/mesh_checks.h"
 #include "energies/volume.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
-#include "boundaries/reference_boundaries.h"
 
 using namespace bpde;
 
@@ -55,6 +55,7 @@ TEST(VolumeVsMesh, TriangularSpherePatch) {
 TEST(VolumeVsMesh, TensorPatch) {
   TensorNet net(4, 5);
   for (int i = 0; i <= 4; ++i)
-    for (int j = 0; j <= 5; ++j) net.set_point(i, j, {i / 4.0, j / 5.0 + 0.1 * i * (4 - i), 0.3 * std::sin(i + 2.0 * j)});
+    for (int j = 0; j <= 5; ++j)
+      net.set_point(i, j, {i / 4.0, j / 5.0 + 0.1 * i * (4 - i), 0.3 * std::sin(i + 2.0 * j)});
   expect_second_order(net);
 }

@@ -1,10 +1,10 @@
 // The bpde command's contract (FORMATS.md "Exit status and errors"), by running the binary.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cstdio>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <new>
@@ -54,8 +54,7 @@ fs::path write(const std::string& name, const std::string& text) {
   return p;
 }
 
-const char* kTensor =
-    R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})";
+const char* kTensor = R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})";
 
 void expect_bad_input(const std::string& args, const std::string& needle) {
   const CmdResult r = run(args);
@@ -89,22 +88,46 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndWritesNothing) {
   expect_bad_input("sample " + (tmpdir() / "missing.json").string() + " --out " + out.string(), "missing.json");
   expect_bad_input("sample " + write("m.json", "{\"type\": \"tensor\", ").string() + " --out " + out.string(),
                    "malformed JSON");
-  expect_bad_input("sample " + write("nan.json", R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1e999]]})").string() + " --out " + out.string(),
-                   "overflow");
-  expect_bad_input("sample " + write("cnt.json", R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0]]})").string() + " --out " + out.string(),
+  expect_bad_input(
+      "sample " +
+          write("nan.json", R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1e999]]})")
+              .string() +
+          " --out " + out.string(),
+      "overflow");
+  expect_bad_input("sample " +
+                       write("cnt.json", R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0]]})").string() +
+                       " --out " + out.string(),
                    "needs 4 points");
-  expect_bad_input("sample " + write("deg.json", R"({"type": "triangular", "degree": 0, "points": []})").string() + " --out " + out.string(),
+  expect_bad_input("sample " + write("deg.json", R"({"type": "triangular", "degree": 0, "points": []})").string() +
+                       " --out " + out.string(),
                    "degree");
-  expect_bad_input("sample " + write("deg2.json", R"({"type": "triangular", "degree": 99, "points": []})").string() + " --out " + out.string(),
+  expect_bad_input("sample " + write("deg2.json", R"({"type": "triangular", "degree": 99, "points": []})").string() +
+                       " --out " + out.string(),
                    "1..64");
-  expect_bad_input("sample " + write("unk.json", R"({"type": "tensor", "degree": [1, 1], "weights": [], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})").string() + " --out " + out.string(),
-                   "unknown field");
-  expect_bad_input("solve " + write("job.json", std::string(R"({"net": )") + kTensor + R"(, "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}})").string() + " --out " + out.string(),
+  expect_bad_input(
+      "sample " +
+          write("unk.json",
+                R"({"type": "tensor", "degree": [1, 1], "weights": [], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})")
+              .string() +
+          " --out " + out.string(),
+      "unknown field");
+  expect_bad_input("solve " +
+                       write("job.json", std::string(R"({"net": )") + kTensor +
+                                             R"(, "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}})")
+                           .string() +
+                       " --out " + out.string(),
                    "degrees >= 2");
-  expect_bad_input("solve " + write("job2.json", std::string(R"({"net": )") + kTensor + R"(, "problem": {"kind": "extremal", "energy": {"name": "gnorm", "G": [[1, 2], [2, 4]]}}})").string() + " --out " + out.string(),
-                   "singular");
+  expect_bad_input(
+      "solve " +
+          write("job2.json",
+                std::string(R"({"net": )") + kTensor +
+                    R"(, "problem": {"kind": "extremal", "energy": {"name": "gnorm", "G": [[1, 2], [2, 4]]}}})")
+              .string() +
+          " --out " + out.string(),
+      "singular");
   expect_bad_input("sample", "required");
-  expect_bad_input("sample " + write("t2.json", kTensor).string() + " --out " + out.string() + " --samples 0", "samples");
+  expect_bad_input("sample " + write("t2.json", kTensor).string() + " --out " + out.string() + " --samples 0",
+                   "samples");
   EXPECT_FALSE(fs::exists(out));
 }
 
@@ -125,7 +148,8 @@ TEST(Cli, SolvePdeAndExtremalWriteReports) {
   const CmdResult r = run("solve " + ex.string() + " --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string res = slurp_file(out / "result.json");
-  for (const char* key : {"\"pde_residual\"", "\"converged\": true", "\"energy\"", "\"self_intersections\"", "\"mean_curvature\""})
+  for (const char* key :
+       {"\"pde_residual\"", "\"converged\": true", "\"energy\"", "\"self_intersections\"", "\"mean_curvature\""})
     EXPECT_NE(res.find(key), std::string::npos) << key;
   EXPECT_TRUE(fs::exists(out / "surface.ply"));
 }
@@ -133,7 +157,8 @@ TEST(Cli, SolvePdeAndExtremalWriteReports) {
 TEST(Cli, HarmonicEvenDegreeIncompatibleDataExitsOne) {
   // degree 2, u-boundaries: rows i = 0 and i = 2 given; a harmonic bidegree-(2,2) patch has
   // 2n+1 = 5 dimensions against 6 data values, so generic data are incompatible (docs/errata.md).
-  const std::string job = R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,1],[0,1,0],[0.5,0,0],[0.5,0.5,0],[0.5,1,0],[1,0,0],[1,0.5,0.3],[1,1,2]]},
+  const std::string job =
+      R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,1],[0,1,0],[0.5,0,0],[0.5,0.5,0],[0.5,1,0],[1,0,0],[1,0.5,0.3],[1,1,2]]},
     "fixed": "u-boundaries", "problem": {"kind": "pde", "operator": {"name": "dirichlet"}}})";
   const fs::path out = tmpdir() / "harm";
   const CmdResult r = run("solve " + write("harm.json", job).string() + " --out " + out.string());
@@ -202,7 +227,8 @@ TEST(Cli, PlateReproducesThePaperAndTetraharmonicJobsRun) {
     }
   const std::string net = R"({"type": "tensor", "degree": [4, 4], "points": [)" + pts.str() + "]}";
   for (const char* kind : {"tetraharmonic", "biharmonic-load"}) {
-    const std::string job = "{\"net\": " + net + ", \"fixed\": \"boundary+adjacent\", \"problem\": {\"kind\": \"" + kind + "\"}}";
+    const std::string job =
+        "{\"net\": " + net + ", \"fixed\": \"boundary+adjacent\", \"problem\": {\"kind\": \"" + kind + "\"}}";
     const fs::path out = tmpdir() / kind;
     r = run("solve " + write(std::string(kind) + ".json", job).string() + " --out " + out.string());
     EXPECT_EQ(r.status, 0) << kind << r.err;
@@ -221,24 +247,36 @@ TEST(Cli, BSplineJobs) {
   for (int i = 0; i < 7; ++i)
     for (int j = 0; j < 7; ++j)
       pts << (i + j == 0 ? "" : ",") << "[" << i / 6.0 << "," << j / 6.0 << "," << 0.1 * ((i * 7 + j * 3) % 5) << "]";
-  const std::string net = R"({"type": "bspline", "degree": [5, 5], "knots": [[0,0,0,0,0,0,0.5,1,1,1,1,1,1],[0,0,0,0,0,0,0.5,1,1,1,1,1,1]], "points": [)" +
-                          pts.str() + "]}";
+  const std::string net =
+      R"({"type": "bspline", "degree": [5, 5], "knots": [[0,0,0,0,0,0,0.5,1,1,1,1,1,1],[0,0,0,0,0,0,0.5,1,1,1,1,1,1]], "points": [)" +
+      pts.str() + "]}";
   // the extremal exists for any boundary
-  CmdResult r = run("solve " + write("bs_ext.json", "{\"net\": " + net + R"(, "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}})").string() +
+  CmdResult r = run("solve " +
+                    write("bs_ext.json", "{\"net\": " + net +
+                                             R"(, "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}})")
+                        .string() +
                     " --out " + (tmpdir() / "bs_ext").string());
   EXPECT_EQ(r.status, 0) << r.err;
   // generic data on a multi-span net admit no spline solution of the biharmonic PDE (docs/errata.md): exit 1
-  r = run("solve " + write("bs_pde.json", "{\"net\": " + net + R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})").string() +
-          " --out " + (tmpdir() / "bs_pde").string());
+  r = run(
+      "solve " +
+      write("bs_pde.json", "{\"net\": " + net + R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})")
+          .string() +
+      " --out " + (tmpdir() / "bs_pde").string());
   EXPECT_EQ(r.status, 1) << r.err;
   const std::string res = slurp_file(tmpdir() / "bs_pde" / "result.json");
   EXPECT_NE(res.find("\"rank\""), std::string::npos);
   EXPECT_NE(res.find("\"converged\": false"), std::string::npos);
   r = run("energy " + write("bs_net.json", net).string() + " --energy biharmonic");
   EXPECT_EQ(r.status, 0) << r.err;
-  expect_bad_input("solve " + write("bs_exp.json", "{\"net\": " + net + R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}, "method": "explicit"}})").string() +
-                       " --out " + (tmpdir() / "bs_exp").string(),
-                   "explicit");
+  expect_bad_input(
+      "solve " +
+          write("bs_exp.json",
+                "{\"net\": " + net +
+                    R"(, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}, "method": "explicit"}})")
+              .string() +
+          " --out " + (tmpdir() / "bs_exp").string(),
+      "explicit");
 }
 
 TEST(Cli, InternalFailuresExitThreeWithOneLine) {
@@ -274,7 +312,8 @@ TEST(Cli, InternalFailuresExitThreeWithOneLine) {
 
 TEST(Cli, OutOfMemoryExitsThreeAndWritesNothing) {
   // A valid job whose surface files need ~1 GB (4M samples), under a 400 MB address-space limit.
-  const std::string job = std::string(R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,1],[0,1,0],[0.5,0,0],[0.5,0.5,0],[0.5,1,0],[1,0,0],[1,0.5,0.3],[1,1,2]]},
+  const std::string job = std::string(
+      R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,1],[0,1,0],[0.5,0,0],[0.5,0.5,0],[0.5,1,0],[1,0,0],[1,0.5,0.3],[1,1,2]]},
     "problem": {"kind": "extremal", "energy": {"name": "biharmonic"}}, "samples": 2000})");
   const fs::path out = tmpdir() / "oom";
   const fs::path o = tmpdir() / "oom_stdout", e = tmpdir() / "oom_stderr";
@@ -326,11 +365,13 @@ TEST(Cli, BSplinePdeTakesBoundaryAdjacentData) {
   std::vector<double> z;
   const std::string net = bspline_polynomial_net(5, {0, 0, 0, 0, 0, 0, 0.5, 1, 1, 1, 1, 1, 1}, z);
   const fs::path out = tmpdir() / "bs_pde_c1";
-  const CmdResult r = run("solve " +
-                          write("bs_pde_c1.json", "{\"net\": " + net +
-                                                      R"(, "fixed": "boundary+adjacent", "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})")
-                              .string() +
-                          " --out " + out.string());
+  const CmdResult r = run(
+      "solve " +
+      write("bs_pde_c1.json",
+            "{\"net\": " + net +
+                R"(, "fixed": "boundary+adjacent", "problem": {"kind": "pde", "operator": {"name": "biharmonic"}}})")
+          .string() +
+      " --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream in(out / "result.json");
   std::stringstream text;

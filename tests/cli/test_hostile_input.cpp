@@ -111,20 +111,23 @@ TEST(HostileInput, HugeAndOverflowingKnotsAreBadInput) {
     const fs::path net = write("knots" + tag + ".json", bspline_net(knots));
     expect_bad_input("sample " + net.string() + " --out " + out.string(), out, "too large");
     expect_bad_input("check " + net.string(), out, "too large");
-    const fs::path job = write("knotjob" + tag + ".json",
-                               job_with_net(bspline_net(knots), R"({"kind": "extremal", "energy": {"name": "dirichlet"}})"));
+    const fs::path job =
+        write("knotjob" + tag + ".json",
+              job_with_net(bspline_net(knots), R"({"kind": "extremal", "energy": {"name": "dirichlet"}})"));
     expect_bad_input("solve " + job.string() + " --out " + out.string(), out, "too large");
   }
   // Badly scaled although every number is moderate: a domain of 1e-6 at 1e6, a span of 1e-15.
-  expect_bad_input("sample " + write("knots_res.json", bspline_net("[1e6, 1e6, 1000000.000001, 1000000.000001]")).string() +
-                       " --out " + out.string(),
-                   out, "badly scaled");
   expect_bad_input("sample " +
-                       write("knots_span.json", R"({"type": "bspline", "degree": [1, 1], "knots": [[0, 0, 1e-15, 1, 1],)"
-                                                R"( [0, 0, 1, 1]], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1],[2,0,0],[2,1,1]]})")
-                           .string() +
+                       write("knots_res.json", bspline_net("[1e6, 1e6, 1000000.000001, 1000000.000001]")).string() +
                        " --out " + out.string(),
                    out, "badly scaled");
+  expect_bad_input(
+      "sample " +
+          write("knots_span.json", R"({"type": "bspline", "degree": [1, 1], "knots": [[0, 0, 1e-15, 1, 1],)"
+                                   R"( [0, 0, 1, 1]], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1],[2,0,0],[2,1,1]]})")
+              .string() +
+          " --out " + out.string(),
+      out, "badly scaled");
   // Just inside the limits the same net is fine.
   const CmdResult ok = run("check " + write("knots_ok.json", bspline_net("[-1e50, -1e50, 1e50, 1e50]")).string());
   EXPECT_EQ(ok.status, 0) << ok.err;
@@ -145,7 +148,8 @@ TEST(HostileInput, DeepNestingIsBadInput) {
   const CmdResult r = run("check " + at.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.find("nest deeper"), std::string::npos) << r.err;
-  const fs::path over = write("over_limit.json", R"({"type": "tensor", "degree": [1, 1], "points": )" + nested(256) + "}");
+  const fs::path over =
+      write("over_limit.json", R"({"type": "tensor", "degree": [1, 1], "points": )" + nested(256) + "}");
   expect_bad_input("check " + over.string(), out, "nest deeper");
 }
 
@@ -169,7 +173,10 @@ TEST(HostileInput, EndlessAndOversizedInputIsBadInput) {
 TEST(HostileInput, GnormWithParallelAxesIsBadInput) {
   const fs::path out = prepared_out("gnorm");
   for (const char* t : {"0", "3.141592653589793", "-3.141592653589793", "1e-14"}) {
-    const fs::path job = write("gnorm.json", job_with_net(kTensor, std::string(R"({"kind": "extremal", "energy": {"name": "gnorm", "rho": 2, "t": )") + t + "}}"));
+    const fs::path job =
+        write("gnorm.json",
+              job_with_net(kTensor, std::string(R"({"kind": "extremal", "energy": {"name": "gnorm", "rho": 2, "t": )") +
+                                        t + "}}"));
     expect_bad_input("solve " + job.string() + " --out " + out.string(), out, "singular");
   }
 }
@@ -197,7 +204,8 @@ std::string high_degree_pde_job(int n, const char* method) {
 TEST(HostileInput, HighDegreePdeReportsTheNumericalLimit) {
   for (const char* method : {"explicit", "lu"})
     for (int n : {25, 64}) {
-      const fs::path job = write(std::string("pde_") + method + std::to_string(n) + ".json", high_degree_pde_job(n, method));
+      const fs::path job =
+          write(std::string("pde_") + method + std::to_string(n) + ".json", high_degree_pde_job(n, method));
       const fs::path out = tmpdir() / (std::string("pde_") + method + std::to_string(n));
       const CmdResult r = run("solve " + job.string() + " --out " + out.string());
       ASSERT_EQ(r.status, 1) << method << " n=" << n << ": " << r.err;

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "core/bernstein.h"
 #include "boundaries/reference_boundaries.h"
+#include "core/bernstein.h"
 #include "tensor/tensor_net.h"
 #include "tests/random_points.h"
 #include "triangular/triangular_net.h"

@@ -4,9 +4,9 @@
 #include <Eigen/Dense>
 
 #include "cmc_test_util.h"
-#include "energies/cmc.h"
 #include "core/errors.h"
 #include "core/quadrature.h"
+#include "energies/cmc.h"
 #include "energies/triangular_gram.h"
 
 namespace bpde {

@@ -90,8 +90,8 @@ TEST(CmcSolver, PlanarBoundaryMirrorsUnderHToMinusH) {
   EXPECT_GT(a.V, 0.0);
   EXPECT_NEAR(a.V, -b.V, 1e-12 * std::abs(a.V));
   // Tensor: the unit square in z = 0, corners P_00 -> P_n0 -> P_nn -> P_0n counter-clockwise.
-  const TensorNet td = testing::tensor_boundary(
-      5, [](double u, double v) { return Eigen::Vector3d(u + 0.05 * u * v, v, 0); });
+  const TensorNet td =
+      testing::tensor_boundary(5, [](double u, double v) { return Eigen::Vector3d(u + 0.05 * u * v, v, 0); });
   const auto ta = solve_cmc(td, opts(-1.0));
   const auto tb = solve_cmc(td, opts(1.0));
   ASSERT_TRUE(ta.summary.converged && tb.summary.converged) << ta.summary.message << " | " << tb.summary.message;
@@ -150,9 +150,7 @@ TEST(CmcSolver, FoldIsDetectedAndReported) {
     const double h = std::stod(r.summary.message.substr(prefix.size()));
     EXPECT_NEAR(h, r.H, 1e-5 * std::abs(r.H));
     // The returned net is the last point of the branch: a valid critical point at r.H.
-    EXPECT_LE(CmcFunctional::triangular(5).residual(r.net.points(), r.H,
-                                                   data.free_indices(FixedSet::Boundary)),
-              1e-11);
+    EXPECT_LE(CmcFunctional::triangular(5).residual(r.net.points(), r.H, data.free_indices(FixedSet::Boundary)), 1e-11);
     // Just beyond the reported fold there is no branch point; just before it there is one.
     EXPECT_FALSE(solve_cmc(data, opts(r.H * 1.01, CmcSolver::Newton)).summary.converged);
     EXPECT_TRUE(solve_cmc(data, opts(r.H * 0.99, CmcSolver::Newton)).summary.converged);
@@ -161,8 +159,8 @@ TEST(CmcSolver, FoldIsDetectedAndReported) {
 
 TEST(CmcSolver, FoldOnTensorNetsAndWithC1Data) {
   const std::string prefix = "no critical point on the branch from H = 0 beyond H ≈ ";
-  const TensorNet sq = testing::tensor_boundary(
-      5, [](double u, double v) { return Eigen::Vector3d(u, v + 0.1 * u * (1 - u), 0); });
+  const TensorNet sq =
+      testing::tensor_boundary(5, [](double u, double v) { return Eigen::Vector3d(u, v + 0.1 * u * (1 - u), 0); });
   const auto t = solve_cmc(sq, opts(40.0));
   EXPECT_FALSE(t.summary.converged);
   EXPECT_EQ(t.summary.status, Status::Fold);
@@ -193,8 +191,7 @@ TEST(CmcSolver, ConvergesToTheSphereWithConformalData) {
         dist = std::max(dist, std::abs(r.net.evaluate(double(a) / N, double(b) / N).norm() - 1.0));
     const MeanCurvatureStats s = mean_curvature_stats(r.net, 30, 0.1);
     const double herr = std::abs(s.mean - 1.0);
-    std::printf("n = %2d  max | |x| - 1 | = %.3e   H mean = %.8f  [%.6f, %.6f]\n", n, dist, s.mean,
-                s.min, s.max);
+    std::printf("n = %2d  max | |x| - 1 | = %.3e   H mean = %.8f  [%.6f, %.6f]\n", n, dist, s.mean, s.min, s.max);
     EXPECT_LT(dist, prev_dist);
     EXPECT_LT(herr, prev_h);
     prev_dist = dist;
@@ -272,13 +269,11 @@ TEST(CmcSolver, BadInput) {
   EXPECT_THROW(solve_cmc(t6, opts(std::nan(""))), NonFiniteError);
   EXPECT_THROW(solve_cmc(t6, opts(INFINITY)), NonFiniteError);
   EXPECT_THROW(solve_cmc(TriangularNet(2), opts(1.0)), DegreeError);
-  EXPECT_THROW(solve_cmc(TriangularNet(5), opts(1.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent)),
-               DegreeError);
+  EXPECT_THROW(solve_cmc(TriangularNet(5), opts(1.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent)), DegreeError);
   EXPECT_NO_THROW(solve_cmc(TriangularNet(3), opts(1.0)));
   EXPECT_NO_THROW(solve_cmc(t6, opts(0.1, CmcSolver::Newton, FixedSet::BoundaryAdjacent)));
   EXPECT_THROW(solve_cmc(TensorNet(1, 3), opts(1.0)), DegreeError);
-  EXPECT_THROW(solve_cmc(TensorNet(4, 3), opts(1.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent)),
-               DegreeError);
+  EXPECT_THROW(solve_cmc(TensorNet(4, 3), opts(1.0, CmcSolver::Newton, FixedSet::BoundaryAdjacent)), DegreeError);
   EXPECT_NO_THROW(solve_cmc(TensorNet(2, 2), opts(1.0)));
   EXPECT_THROW(solve_cmc(t6, opts(1.0, CmcSolver::Newton, FixedSet::UBoundaries)), UnsupportedProblem);
   CmcOptions o;
@@ -301,9 +296,10 @@ TEST(CmcSolver, PaperFigure1Setup) {
   for (double H : {-0.5, -1.0, -1.5}) {
     const auto r = solve_cmc(data, opts(H));
     const MeanCurvatureStats s = mean_curvature_stats(r.net, 30, 0.1);
-    std::printf("Fig.1 n=4 H=%5.2f converged=%d reached H=%.6g D=%.8f V=%.8f top z=%.6f H in [%.4f, %.4f] mean %.4f  %s\n",
-                H, int(r.summary.converged), r.H, r.D, r.V, r.net.evaluate(1.0 / 3, 1.0 / 3).z(), s.min,
-                s.max, s.mean, r.summary.message.c_str());
+    std::printf(
+        "Fig.1 n=4 H=%5.2f converged=%d reached H=%.6g D=%.8f V=%.8f top z=%.6f H in [%.4f, %.4f] mean %.4f  %s\n", H,
+        int(r.summary.converged), r.H, r.D, r.V, r.net.evaluate(1.0 / 3, 1.0 / 3).z(), s.min, s.max, s.mean,
+        r.summary.message.c_str());
     ASSERT_TRUE(r.summary.converged) << r.summary.message;
     EXPECT_GT(r.net.evaluate(1.0 / 3, 1.0 / 3).z(), 0.0);
     EXPECT_GT(r.V, 0.0);

@@ -112,8 +112,7 @@ double quadrature_volume_tensor(const TensorNet& net, int q) {
   for (int a = 0; a < q; ++a)
     for (int b = 0; b < q; ++b) {
       const double u = r.x(a), v = r.x(b);
-      V += r.w(a) * r.w(b) *
-           net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).dot(net.evaluate(u, v));
+      V += r.w(a) * r.w(b) * net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).dot(net.evaluate(u, v));
     }
   return V / 3;
 }
@@ -148,8 +147,8 @@ TEST(Volume, PrintedSignOfD13IsWrong) {
           return num == 0 ? 0.0 : num / (double(S[r]) * S[s]);
         };
         auto mult = [](int m, int i, int j) { return binomial(m, i) * binomial(m - i, j); };
-        const double ratio = mult(n, I[a][0], I[a][1]) * mult(n, I[b][0], I[b][1]) *
-                             mult(n, I[c][0], I[c][1]) / mult(3 * n, S[0], S[1]);
+        const double ratio =
+            mult(n, I[a][0], I[a][1]) * mult(n, I[b][0], I[b][1]) * mult(n, I[c][0], I[c][1]) / mult(3 * n, S[0], S[1]);
         const double Cw = ratio * (d(0, 1) + d(1, 2) + d(0, 2));  // as printed
         Vwrong += Cw * P.row(Eigen::Index(a)).cross(P.row(Eigen::Index(b))).dot(P.row(Eigen::Index(c)));
       }

@@ -203,7 +203,8 @@ std::vector<Case> cases() {
                [] { solve_biharmonic_load(with_nan(random_net(5, 5, 1), FixedSet::BoundaryAdjacent)); },
                [] {
                  const TensorNet d = random_net(6, 6, 4);
-                 return std::vector<Solve>{run_of("biharmonic load", d, solve_biharmonic_load(d), FixedSet::BoundaryAdjacent)};
+                 return std::vector<Solve>{
+                     run_of("biharmonic load", d, solve_biharmonic_load(d), FixedSet::BoundaryAdjacent)};
                }});
   c.push_back({"clamped_plate",
                [] {
@@ -225,7 +226,8 @@ std::vector<Case> cases() {
                    const ClampedPlateResult r = solve_clamped_plate(o);
                    // prescribed: w and its gradient vanish on the edges, i.e. the outer two rings are 0
                    bool exact = true;
-                   for (int k : r.net.fixed_indices(FixedSet::BoundaryAdjacent)) exact = exact && r.net.points()(k, 2) == 0.0;
+                   for (int k : r.net.fixed_indices(FixedSet::BoundaryAdjacent))
+                     exact = exact && r.net.points()(k, 2) == 0.0;
                    runs.push_back({"plate", r.summary, exact, true});
                  }
                  return runs;

@@ -42,7 +42,8 @@ TEST(Bernstein, TableMatchesTheRecurrence) {
     std::vector<double> b(static_cast<size_t>(n + 1));
     for (Eigen::Index r = 0; r < t.size(); ++r) {
       bernstein_values(n, t(r), b.data());
-      for (int i = 0; i <= n; ++i) EXPECT_NEAR(B(r, i), b[static_cast<size_t>(i)], 4e-16 * (n + 2) * b[static_cast<size_t>(i)] + 1e-300);
+      for (int i = 0; i <= n; ++i)
+        EXPECT_NEAR(B(r, i), b[static_cast<size_t>(i)], 4e-16 * (n + 2) * b[static_cast<size_t>(i)] + 1e-300);
     }
   }
 }

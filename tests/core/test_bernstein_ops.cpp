@@ -30,7 +30,8 @@ quad falling(int a, int d) {
 }
 
 template <class T>
-double max_rel_error(const std::vector<T>& rm, int rows, int cols, const std::vector<quad>& x, const std::vector<quad>& want) {
+double max_rel_error(const std::vector<T>& rm, int rows, int cols, const std::vector<quad>& x,
+                     const std::vector<quad>& want) {
   // Error of (rm x) (summed in binary128) relative to the size of the terms, sum_c |rm(r,c)| |x(c)|:
   // what the rounding of the entries of rm can cause.
   double worst = 0;
@@ -91,10 +92,13 @@ TEST(BernsteinOps, DerivativeEntriesAreExactIntegers) {
 TEST(BernsteinOps, EigenFormsAreTheSameEntries) {
   for (int n : {2, 7, 30}) {
     for (int d = 0; d <= std::min(n, 4); ++d) {
-      EXPECT_EQ(bernstein_derivative_operator(n, d), rm_to_matrix<double>(derivative_operator_rm<double>(n, d), n - d + 1, n + 1));
-      EXPECT_EQ(derivative_at_degree_matrix<double>(n, d), rm_to_matrix<double>(derivative_at_degree_rm<double>(n, d), n + 1, n + 1));
+      EXPECT_EQ(bernstein_derivative_operator(n, d),
+                rm_to_matrix<double>(derivative_operator_rm<double>(n, d), n - d + 1, n + 1));
+      EXPECT_EQ(derivative_at_degree_matrix<double>(n, d),
+                rm_to_matrix<double>(derivative_at_degree_rm<double>(n, d), n + 1, n + 1));
     }
-    EXPECT_EQ(bernstein_elevation_operator(n, 3), rm_to_matrix<double>(elevation_operator_rm<double>(n, 3), n + 4, n + 1));
+    EXPECT_EQ(bernstein_elevation_operator(n, 3),
+              rm_to_matrix<double>(elevation_operator_rm<double>(n, 3), n + 4, n + 1));
   }
 }
 
@@ -112,7 +116,8 @@ TEST(BernsteinOps, ElevationKeepsThePolynomial) {
       const VecLD g = elevate(p, r);
       ASSERT_EQ(g.size(), n + r + 1);
       const std::vector<long double> E = elevation_operator_rm<long double>(n, r);
-      std::vector<long double> pv(p.data(), p.data() + p.size()), gv(g.data(), g.data() + g.size()), ev(static_cast<size_t>(n + r + 1), 0);
+      std::vector<long double> pv(p.data(), p.data() + p.size()), gv(g.data(), g.data() + g.size()),
+          ev(static_cast<size_t>(n + r + 1), 0);
       for (int j = 0; j <= n + r; ++j)
         for (int i = 0; i <= n; ++i) ev[static_cast<size_t>(j)] += E[static_cast<size_t>(j * (n + 1) + i)] * p(i);
       for (long double t : {0.0L, 0.21L, 0.5L, 0.77L, 1.0L}) {

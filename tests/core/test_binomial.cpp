@@ -53,7 +53,8 @@ const std::vector<std::vector<Big>>& exact_rows() {
     for (int n = 1; n <= kMaxBinomialRow; ++n) {
       r[n].resize(static_cast<size_t>(n) + 1);
       r[n][0] = r[n][static_cast<size_t>(n)] = Big{1};
-      for (int k = 1; k < n; ++k) r[n][static_cast<size_t>(k)] = add(r[n - 1][static_cast<size_t>(k - 1)], r[n - 1][static_cast<size_t>(k)]);
+      for (int k = 1; k < n; ++k)
+        r[n][static_cast<size_t>(k)] = add(r[n - 1][static_cast<size_t>(k - 1)], r[n - 1][static_cast<size_t>(k)]);
     }
     return r;
   }();
@@ -88,7 +89,8 @@ TEST(Binomial, Binary128AgainstExactIntegers) { check_against_exact<quad>(113, 3
 TEST(Binomial, WholeRowsExactUpToTheStatedDegrees) {
   // The header's claim: every C(n, k) exact for n <= 56 (double), 67 (long double), 116 (quad).
   const auto& ex = exact_rows();
-  for (int k = 0; k <= 56; ++k) EXPECT_TRUE(static_cast<quad>(binomial<double>(56, k)) == to_quad(ex[56][static_cast<size_t>(k)]));
+  for (int k = 0; k <= 56; ++k)
+    EXPECT_TRUE(static_cast<quad>(binomial<double>(56, k)) == to_quad(ex[56][static_cast<size_t>(k)]));
   for (int k = 0; k <= 67; ++k)
     EXPECT_TRUE(static_cast<quad>(binomial<long double>(67, k)) == to_quad(ex[67][static_cast<size_t>(k)]));
   for (int k = 0; k <= 116; ++k) EXPECT_TRUE(binomial<quad>(116, k) == to_quad(ex[116][static_cast<size_t>(k)]));
@@ -106,7 +108,9 @@ TEST(Binomial, SameBitsAsAnEagerDoubleTable) {
   for (int n = 1; n <= kMaxBinomialRow; ++n) {
     row.assign(static_cast<size_t>(n) + 1, 0.0);
     row[0] = 1.0;
-    for (int k = 1; k <= n; ++k) row[static_cast<size_t>(k)] = prev[static_cast<size_t>(k - 1)] + (k <= n - 1 ? prev[static_cast<size_t>(k)] : 0.0);
+    for (int k = 1; k <= n; ++k)
+      row[static_cast<size_t>(k)] =
+          prev[static_cast<size_t>(k - 1)] + (k <= n - 1 ? prev[static_cast<size_t>(k)] : 0.0);
     for (int k = 0; k <= n; ++k) ASSERT_EQ(binomial(n, k), row[static_cast<size_t>(k)]) << n << ' ' << k;
     prev.swap(row);
   }
@@ -150,7 +154,8 @@ TEST(Binomial, ConcurrentFirstUse) {
         const int k = n / 3;
         const quad truth = to_quad(ex[static_cast<size_t>(n)][static_cast<size_t>(k)]);
         const quad got = binomial<quad>(n, k);
-        if (!((got > truth ? got - truth : truth - got) <= truth * quad((n + 1) * std::ldexp(1.0, -112)))) ++wrong[static_cast<size_t>(t)];
+        if (!((got > truth ? got - truth : truth - got) <= truth * quad((n + 1) * std::ldexp(1.0, -112))))
+          ++wrong[static_cast<size_t>(t)];
       }
     });
   for (auto& th : threads) th.join();

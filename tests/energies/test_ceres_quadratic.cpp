@@ -43,8 +43,7 @@ namespace {
 /// R (r x N) with R^T R = Q up to the dropped eigenvalues below rank_tolerance * λ_max. Throws
 /// SizeError (not square), NonFiniteError, ParameterError if Q has an eigenvalue below
 /// -negative_tolerance * λ_max (Q indefinite: the energy is not a sum of squares).
-Eigen::MatrixXd psd_factor(const Eigen::MatrixXd& Q, double rank_tolerance = 1e-14,
-                           double negative_tolerance = 1e-10);
+Eigen::MatrixXd psd_factor(const Eigen::MatrixXd& Q, double rank_tolerance = 1e-14, double negative_tolerance = 1e-10);
 
 class QuadraticEnergyCost : public ceres::CostFunction {
  public:
@@ -173,7 +172,8 @@ TEST(CeresQuadratic, CostEqualsEnergy) {
   EXPECT_NEAR(cost, E.value(P), 1e-12 * E.value(P));
   const Eigen::MatrixX3d G = E.gradient(P);
   for (int I = 0; I < P.rows(); ++I)
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(grad[static_cast<size_t>(3 * I + c)], G(I, c), 1e-10 * G.cwiseAbs().maxCoeff());
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(grad[static_cast<size_t>(3 * I + c)], G(I, c), 1e-10 * G.cwiseAbs().maxCoeff());
   EXPECT_THROW(add_quadratic_energy(problem, Q, {}), SizeError);
 }
 
@@ -260,7 +260,8 @@ TEST(CeresQuadratic, WithANonQuadraticTermAgreesWithNewton) {
     if (step < 1e-15) break;
   }
   double err = 0;
-  for (int I = 0; I < data.size(); ++I) err = std::max(err, (pts[static_cast<size_t>(I)] - P.row(I).transpose()).cwiseAbs().maxCoeff());
+  for (int I = 0; I < data.size(); ++I)
+    err = std::max(err, (pts[static_cast<size_t>(I)] - P.row(I).transpose()).cwiseAbs().maxCoeff());
   EXPECT_LE(err, 1e-7) << summary.BriefReport();
   // the pin really pulls: the answer is not the plain extremal
   const ExtremalResult plain = solve_extremal(data, e, FixedSet::Boundary);

@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-
 #include "core/errors.h"
 #include "energies/quadratic_energy.h"
 #include "energies/tensor_gram.h"
@@ -12,7 +11,8 @@ namespace {
 using testing::random_points;
 
 TEST(QuadraticEnergy, GradientMatchesCentralDifferences) {
-  for (const auto& e : {EnergySpec::dirichlet(), EnergySpec::laplacian_squared(), EnergySpec::fourth_order({1, 0.4, 2, -0.3, 1.5})}) {
+  for (const auto& e :
+       {EnergySpec::dirichlet(), EnergySpec::laplacian_squared(), EnergySpec::fourth_order({1, 0.4, 2, -0.3, 1.5})}) {
     const int n = 4, m = 3;
     const QuadraticEnergy E = QuadraticEnergy::tensor(e, n, m);
     const Eigen::MatrixX3d P = random_points(E.size(), 7);

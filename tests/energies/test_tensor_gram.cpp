@@ -27,7 +27,8 @@ std::vector<EnergySpec> all_energies() {
 }
 
 // Q by Gauss quadrature of 1/2 Σ w (∂^a B_I ∂^b B_J + ∂^b B_I ∂^a B_J) with derivative tables.
-Eigen::MatrixXd gram_by_quadrature(const std::vector<QuadraticTerm>& terms, int n, int m, double hu = 1, double hv = 1) {
+Eigen::MatrixXd gram_by_quadrature(const std::vector<QuadraticTerm>& terms, int n, int m, double hu = 1,
+                                   double hv = 1) {
   const QuadratureRule1D ru = gauss_legendre01(n + 2), rv = gauss_legendre01(m + 2);
   const int N = (n + 1) * (m + 1);
   Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(N, N);
@@ -113,10 +114,11 @@ TEST(TensorGram, EnergyOfKnownPolynomialPatch) {
     // fourth-order [a..e]: 1/2 (4a/3 + b + 4c/3) (d, e multiply zero terms here)
     EXPECT_NEAR(E(EnergySpec::fourth_order({2, 3, 5, 7, 11})), 0.5 * (8.0 / 3 + 3 + 20.0 / 3), 1e-12);
     const double rho = 1.7, t = 0.9;
-    EXPECT_NEAR(E(EnergySpec::gnorm(rho, t)), 0.5 * (4 * rho * rho / 3 + 2 * rho * std::cos(t) + 4 * (1 + rho * rho) / 3),
-                1e-12);
+    EXPECT_NEAR(E(EnergySpec::gnorm(rho, t)),
+                0.5 * (4 * rho * rho / 3 + 2 * rho * std::cos(t) + 4 * (1 + rho * rho) / 3), 1e-12);
     // G = [[1, 2], [0, 1]] by rows: e1 = (1, 0), e2 = (2, 1): [1, 4, 6, 4, 5].
-    EXPECT_NEAR(E(EnergySpec::gnorm((Eigen::Matrix2d() << 1, 2, 0, 1).finished())), 0.5 * (4.0 / 3 + 4 + 24.0 / 3), 1e-12);
+    EXPECT_NEAR(E(EnergySpec::gnorm((Eigen::Matrix2d() << 1, 2, 0, 1).finished())), 0.5 * (4.0 / 3 + 4 + 24.0 / 3),
+                1e-12);
   }
   // x = (u, v, u v^2): x_uu = 0, x_uv = (0,0,2v), x_vv = (0,0,2u): 1/2 (4c/3 + d + 4e/3).
   for (auto [n, m] : std::vector<std::pair<int, int>>{{1, 2}, {4, 3}}) {

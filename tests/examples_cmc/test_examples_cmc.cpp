@@ -69,7 +69,9 @@ TEST(ExamplesCmc, CircleFigure1AtDegree4) {
 TEST(ExamplesCmc, CirclePastTheFoldIsReportedNotThrown) {
   const JobRun r = run("004-cmc-circle", "n6-H-1.5-past-fold.json");
   EXPECT_FALSE(r.out.converged);
-  EXPECT_EQ(r.out.report.value("message", std::string()).rfind("no critical point on the branch from H = 0 beyond H ≈", 0), 0u)
+  EXPECT_EQ(
+      r.out.report.value("message", std::string()).rfind("no critical point on the branch from H = 0 beyond H ≈", 0),
+      0u)
       << r.out.report.dump();
   EXPECT_NEAR(num(r.out, "H"), -1.1422, 1e-3);
   const fs::path dir = fs::path(::testing::TempDir()) / "bpde_examples_cmc_fold";
@@ -113,7 +115,8 @@ TEST(ExamplesCmc, Figure2BottomSphericalArcs) {
   const auto& net = std::get<TriangularNet>(s.out.net);
   double dist = 0;
   for (int a = 0; a <= 20; ++a)
-    for (int b = 0; a + b <= 20; ++b) dist = std::max(dist, std::abs(net.evaluate(a / 20.0, b / 20.0).norm() - 2.0 / 3));
+    for (int b = 0; a + b <= 20; ++b)
+      dist = std::max(dist, std::abs(net.evaluate(a / 20.0, b / 20.0).norm() - 2.0 / 3));
   EXPECT_LT(dist, 2e-3);  // 1.3e-3 at n = 6 (README)
   EXPECT_NEAR(mean_H(s), -1.5, 0.03);
   const JobRun a = run("004-cmc-fig2", "bottom-a-arcs-H-2.json");

@@ -72,8 +72,9 @@ TEST(Extremal, BilinearBoundaryGivesTheBilinearPatch) {
         const double u = double(i) / n, v = double(j) / m;
         bil.set_point(i, j, (1 - u) * (1 - v) * A + u * (1 - v) * B + u * v * C + (1 - u) * v * D);
       }
-    for (const auto& e : {EnergySpec::dirichlet(), EnergySpec::biharmonic(), EnergySpec::laplacian_squared(),
-                          EnergySpec::coons(), EnergySpec::modified_biharmonic(0.7), EnergySpec::second_order(2, 0, 3)}) {
+    for (const auto& e :
+         {EnergySpec::dirichlet(), EnergySpec::biharmonic(), EnergySpec::laplacian_squared(), EnergySpec::coons(),
+          EnergySpec::modified_biharmonic(0.7), EnergySpec::second_order(2, 0, 3)}) {
       const ExtremalResult r = solve_extremal(scrambled(bil, FixedSet::Boundary), e, FixedSet::Boundary);
       EXPECT_LE(max_diff(r.net, bil), 1e-12) << e.name() << " n=" << n << " m=" << m;
       EXPECT_TRUE(r.summary.converged) << r.summary.message;
@@ -91,12 +92,14 @@ TEST(Extremal, HarmonicPolynomialIsTheDirichletExtremalUpToDegree20) {
     cached.use_cache = true;
     const ExtremalResult r =
         solve_extremal(scrambled(truth, FixedSet::Boundary), EnergySpec::dirichlet(), FixedSet::Boundary, cached);
-    const double tol = stable_tolerance(*ExtremalSolver::cached(EnergySpec::dirichlet(), n, n, FixedSet::Boundary), truth);
+    const double tol =
+        stable_tolerance(*ExtremalSolver::cached(EnergySpec::dirichlet(), n, n, FixedSet::Boundary), truth);
     EXPECT_LE(tol, n <= 8 ? 1e-10 : 1e-4);  // the bound is not vacuous
     EXPECT_LE(max_diff(r.net, truth), tol) << n;
     // the surface itself is accurate far beyond the coefficients
     for (double u : {0.1, 0.5, 0.77})
-      for (double v : {0.05, 0.4, 0.9}) EXPECT_LE((r.net.evaluate(u, v) - truth.evaluate(u, v)).norm(), n <= 14 ? 1e-12 : 1e-9) << n;
+      for (double v : {0.05, 0.4, 0.9})
+        EXPECT_LE((r.net.evaluate(u, v) - truth.evaluate(u, v)).norm(), n <= 14 ? 1e-12 : 1e-9) << n;
     EXPECT_NEAR(r.energy, energy_value(truth, EnergySpec::dirichlet()), 1e-10);
   }
 }
@@ -143,7 +146,8 @@ TEST(Extremal, EnergyIsMinimalAgainstPerturbationsOfTheFreePoints) {
       EXPECT_NEAR(r.energy, E.value(r.net.points()), 1e-12 * std::max(1.0, r.energy));
       // gradient over the free points vanishes
       const Eigen::MatrixX3d G = E.gradient(r.net.points());
-      for (int I : data.free_indices(fs)) EXPECT_LE(G.row(I).cwiseAbs().maxCoeff(), 1e-9 * std::max(1.0, r.energy)) << e.name();
+      for (int I : data.free_indices(fs))
+        EXPECT_LE(G.row(I).cwiseAbs().maxCoeff(), 1e-9 * std::max(1.0, r.energy)) << e.name();
       for (int trial = 0; trial < 10; ++trial) {
         Eigen::MatrixX3d P = r.net.points();
         for (int I : data.free_indices(fs))
@@ -216,15 +220,17 @@ TEST(Extremal, SingularOrIndefiniteReducedSystemsAreRejected) {
   EXPECT_THROW(ExtremalSolver(EnergySpec::fourth_order({0, 0, 0, 0, 0}), 4, 4, FixedSet::Boundary), ParameterError);
   // non-elliptic: symbol ξ⁴ - 3ξ²η² + η⁴ < 0 at ξ = η; second order with b² > 4ac
   for (int n : {4, 8, 16})
-    EXPECT_THROW(ExtremalSolver(EnergySpec::fourth_order({1, 0, -3, 0, 1}), n, n, FixedSet::Boundary), ParameterError) << n;
+    EXPECT_THROW(ExtremalSolver(EnergySpec::fourth_order({1, 0, -3, 0, 1}), n, n, FixedSet::Boundary), ParameterError)
+        << n;
   // (a - b + c < 0: oscillations along u = -v have negative energy; degree 4 is still too coarse
   // to contain one, degree 6 is not)
   EXPECT_NO_THROW(ExtremalSolver(EnergySpec::second_order(1, 3, 1), 4, 4, FixedSet::Boundary));
   for (int n : {6, 8, 12, 20})
     EXPECT_THROW(ExtremalSolver(EnergySpec::second_order(1, 3, 1), n, n, FixedSet::Boundary), ParameterError) << n;
   const TensorNet shape(6, 6);
-  EXPECT_THROW(ExtremalSolver(tensor_gram(EnergySpec::second_order(1, 3, 1), 6, 6), shape.fixed_indices(FixedSet::Boundary)),
-               ParameterError);
+  EXPECT_THROW(
+      ExtremalSolver(tensor_gram(EnergySpec::second_order(1, 3, 1), 6, 6), shape.fixed_indices(FixedSet::Boundary)),
+      ParameterError);
   // but x_uu only with u-boundaries is fine: x = a(v) + u b(v) vanishing at u = 0, 1 is zero
   EXPECT_NO_THROW(ExtremalSolver(EnergySpec::fourth_order({1, 0, 0, 0, 0}), 5, 5, FixedSet::UBoundaries));
   // and coons is positive definite with the boundary fixed, even at the lowest degree

@@ -78,7 +78,10 @@ TEST(JsonIo, BadNetsAreTypedAndNamed) {
   j = tri(3);
   j["type"] = "hexagonal";
   EXPECT_THROW(net_from_json(j), ParseError);
-  Json b = {{"type", "bspline"}, {"degree", {2, 1}}, {"knots", {{0, 0.5, 0, 0.5, 1, 1, 1}, {0, 0, 1, 1}}}, {"points", Json::array()}};
+  Json b = {{"type", "bspline"},
+            {"degree", {2, 1}},
+            {"knots", {{0, 0.5, 0, 0.5, 1, 1, 1}, {0, 0, 1, 1}}},
+            {"points", Json::array()}};
   for (int i = 0; i < 8; ++i) b["points"].push_back({i, 0, 0});
   EXPECT_THROW(net_from_json(b), ParameterError);  // decreasing knots
   b["knots"] = {{0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}};
@@ -100,9 +103,8 @@ TEST(JsonIo, JobsValidateTheProblemTable) {
   extra["samples"] = 0;
   EXPECT_THROW(job_from_json(extra), ParameterError);
 
-  const Json pde_explicit_fo = {{"kind", "pde"},
-                                {"operator", {{"name", "fourth-order"}, {"coeffs", {1, 0, 3, 0, 1}}}},
-                                {"method", "explicit"}};
+  const Json pde_explicit_fo = {
+      {"kind", "pde"}, {"operator", {{"name", "fourth-order"}, {"coeffs", {1, 0, 3, 0, 1}}}}, {"method", "explicit"}};
   try {
     job_from_json(job(tensor22(), pde_explicit_fo));
     FAIL();
@@ -110,15 +112,18 @@ TEST(JsonIo, JobsValidateTheProblemTable) {
     EXPECT_NE(std::string(e.what()).find("lu"), std::string::npos);
   }
   // proportional to a G-norm operator: explicit is fine
-  const Json pde_gn = {{"kind", "pde"}, {"operator", {{"name", "operator"}, {"coeffs", {8, 0, 10, 0, 2}}}}, {"method", "explicit"}};
+  const Json pde_gn = {
+      {"kind", "pde"}, {"operator", {{"name", "operator"}, {"coeffs", {8, 0, 10, 0, 2}}}}, {"method", "explicit"}};
   EXPECT_NO_THROW(job_from_json(job(tensor22(), pde_gn)));
-  EXPECT_THROW(job_from_json(job(tensor22(), {{"kind", "extremal"}, {"energy", {{"name", "operator"}, {"coeffs", {1, 0, 2, 0, 1}}}}})),
+  EXPECT_THROW(job_from_json(job(tensor22(), {{"kind", "extremal"},
+                                              {"energy", {{"name", "operator"}, {"coeffs", {1, 0, 2, 0, 1}}}}})),
                ParseError);
   const Json harm = {{"kind", "pde"}, {"operator", {{"name", "dirichlet"}}}};
   EXPECT_THROW(job_from_json(job(tensor22(), harm)), UnsupportedProblem);
   EXPECT_NO_THROW(job_from_json(job(tensor22(), harm, "u-boundaries")));
-  EXPECT_THROW(job_from_json(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}}, "u-boundaries")),
-               UnsupportedProblem);
+  EXPECT_THROW(
+      job_from_json(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}}, "u-boundaries")),
+      UnsupportedProblem);
 
   const Json tetra = {{"kind", "tetraharmonic"}, {"method", "explicit"}};
   EXPECT_THROW(job_from_json(job(tensor22(), tetra, "boundary+adjacent")), DegreeError);
@@ -146,7 +151,8 @@ TEST(JsonIo, JobsAreRefusedWithTheirMessages) {
   const Json bih = {{"kind", "extremal"}, {"energy", {{"name", "biharmonic"}}}};
   EXPECT_EQ(message(job(tensor22(), bih, "boundary+adjacent")),
             "job: problem \"extremal\" on a tensor net with boundary+adjacent data needs degrees >= 4, got [2, 2]");
-  EXPECT_EQ(message(job(tri(2), bih)), "job: problem \"extremal\" on a triangular net with boundary data needs degree >= 3, got 2");
+  EXPECT_EQ(message(job(tri(2), bih)),
+            "job: problem \"extremal\" on a triangular net with boundary data needs degree >= 3, got 2");
   EXPECT_EQ(message(job(tri(4), bih, "u-boundaries")), "job: fixed \"u-boundaries\" is only defined for tensor nets");
   EXPECT_EQ(message(job(tri(4), {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}})),
             "job: problem \"pde\" needs a tensor or bspline net, not a triangular net");
@@ -158,7 +164,8 @@ TEST(JsonIo, JobsAreRefusedWithTheirMessages) {
             "job: problem \"biharmonic-load\" takes C1 data: \"fixed\": \"boundary+adjacent\"");
   EXPECT_EQ(message(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "dirichlet"}}}})),
             "job: a second-order pde (dirichlet) takes \"fixed\": \"u-boundaries\"");
-  EXPECT_EQ(message(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "dirichlet"}}}, {"method", "explicit"}}, "u-boundaries")),
+  EXPECT_EQ(message(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "dirichlet"}}}, {"method", "explicit"}},
+                        "u-boundaries")),
             "job: the second-order pde has no explicit method (Arnal-Monterde-Ugail); use \"method\": \"lu\"");
   EXPECT_EQ(message(job(tensor22(), {{"kind", "pde"}, {"operator", {{"name", "biharmonic"}}}}, "u-boundaries")),
             "job: a fourth-order pde (biharmonic) takes \"fixed\": \"boundary\"");
@@ -190,8 +197,10 @@ TEST(JsonIo, RequirementsWithoutReasonsListWhatTheyTake) {
             "w: problem \"x\" needs a tensor or bspline net, not a triangular net");
   EXPECT_EQ(message({NetKind::Tensor, 4, 4}, FixedSet::UBoundaries, ""),
             "w: problem \"x\" takes \"fixed\": \"boundary\" or \"boundary+adjacent\"");
-  EXPECT_EQ(message({NetKind::Tensor, 4, 4}, FixedSet::Boundary, "d"), "w: problem \"x\" has no method \"d\" (expected a, b or c)");
-  EXPECT_EQ(message({NetKind::Tensor, 4, 2}, FixedSet::Boundary, "a"), "w: problem \"x\" needs degrees >= 3, got [4, 2]");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 4}, FixedSet::Boundary, "d"),
+            "w: problem \"x\" has no method \"d\" (expected a, b or c)");
+  EXPECT_EQ(message({NetKind::Tensor, 4, 2}, FixedSet::Boundary, "a"),
+            "w: problem \"x\" needs degrees >= 3, got [4, 2]");
   EXPECT_EQ(message({NetKind::Tensor, 4, 3}, FixedSet::Boundary, "a"), "accepted");
   EXPECT_EQ(message({NetKind::Tensor, 1, 1}, FixedSet::BoundaryAdjacent, ""), "accepted");  // no minimum given
   EXPECT_THROW(check_requirements(r, {NetKind::Tensor, 2, 2}, FixedSet::Boundary, "", "w"), DegreeError);

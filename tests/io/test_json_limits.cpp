@@ -1,10 +1,10 @@
 // Input limits of the JSON readers (issue 14; docs/FORMATS.md "Input limits").
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "core/errors.h"
 #include "io/json_io.h"

@@ -90,8 +90,7 @@ inline TensorNet boundary_only(const TensorNet& net, bool u_rows_only = false) {
   TensorNet out(net.n(), net.m());
   for (int i = 0; i <= net.n(); ++i)
     for (int j = 0; j <= net.m(); ++j) {
-      const bool keep = u_rows_only ? (i == 0 || i == net.n())
-                                    : (i == 0 || i == net.n() || j == 0 || j == net.m());
+      const bool keep = u_rows_only ? (i == 0 || i == net.n()) : (i == 0 || i == net.n() || j == 0 || j == net.m());
       if (keep) out.set_point(i, j, net.point(i, j));
     }
   return out;

@@ -53,8 +53,7 @@ TEST(PdeAccuracy, Table) {
         worst[1] = std::max(worst[1], relative_error(l.net, exact));
         worst[2] = std::max(worst[2], relative_error(m.net, exact));
       }
-      std::printf("| %s | %d | %.1e | %.1e | %.1e | %.1e |\n", c.name.c_str(), n, floor, worst[0], worst[1],
-                  worst[2]);
+      std::printf("| %s | %d | %.1e | %.1e | %.1e | %.1e |\n", c.name.c_str(), n, floor, worst[0], worst[1], worst[2]);
       EXPECT_LT(worst[0], floor_tolerance(floor)) << c.name << " explicit n=" << n;
       EXPECT_LT(worst[1], floor_tolerance(floor)) << c.name << " lu n=" << n;
       EXPECT_LT(worst[2], floor_tolerance(floor)) << c.name << " mould n=" << n;

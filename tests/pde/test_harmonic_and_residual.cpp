@@ -110,8 +110,7 @@ TEST(PdeResidual, MatchesHandComputedValues) {
   // u^4 - 3 u^2 v^2 is biharmonic: 0.
   EXPECT_LT(pde_residual(power_net(4, 4, {{4, 0, 1.0}, {2, 2, -3.0}}), bih, 10), 1e-13);
   // u^3 v under B x_uuuv with [1, 3, 0, 0, 0]: L = 3*6 = 18 where u^4 terms vanish -> 1.
-  EXPECT_NEAR(pde_residual(power_net(4, 4, {{3, 1, 1.0}}), EnergySpec::pde_operator({1, 3, 0, 0, 0}), 10), 1.0,
-              1e-12);
+  EXPECT_NEAR(pde_residual(power_net(4, 4, {{3, 1, 1.0}}), EnergySpec::pde_operator({1, 3, 0, 0, 0}), 10), 1.0, 1e-12);
   // Dirichlet: u^2 - v^2 harmonic; u^2 + v^2 gives |2 + 2| / (2 + 2) = 1; u^2 gives 1.
   EXPECT_LT(pde_residual(power_net(2, 2, {{2, 0, 1.0}, {0, 2, -1.0}}), EnergySpec::dirichlet(), 10), 1e-14);
   EXPECT_NEAR(pde_residual(power_net(2, 2, {{2, 0, 1.0}, {0, 2, 1.0}}), EnergySpec::dirichlet(), 10), 1.0, 1e-13);

@@ -55,8 +55,8 @@ std::vector<OpCase> operator_cases() {
       {"operator 3 x gnorm(0.8, 0.7)",
        EnergySpec::pde_operator({3 * 0.64, 3 * 1.6 * std::cos(0.7), 3 * 1.64, 3 * 1.6 * std::cos(0.7), 3.0}),
        gnorm_roots(0.8, 0.7)},
-      {"operator 2 x modified(1.2)",
-       EnergySpec::pde_operator({2.0, 0.0, 2 * 2 * 1.44, 0.0, 2 * 1.44 * 1.44}), modified_biharmonic_roots(1.2)},
+      {"operator 2 x modified(1.2)", EnergySpec::pde_operator({2.0, 0.0, 2 * 2 * 1.44, 0.0, 2 * 1.44 * 1.44}),
+       modified_biharmonic_roots(1.2)},
   };
 }
 
@@ -158,9 +158,9 @@ TEST(PdeExplicit, DegenerateParametersGiveFiniteAnswersEqualToLu) {
   };
   // t = 0, pi: csc t in eq. (12); rho = 1 at t = pi/2: biharmonic limit of §5.2.4; near-misses of
   // both; rho > 1 (transposed route).
-  const std::vector<P> params = {{2.0, 0.0},   {0.5, kPi},        {1.0, kPi / 2},          {1.0 + 1e-9, kPi / 2},
-                                 {0.7, 1e-9},  {1.4, kPi - 1e-9}, {1.0, kPi / 2 - 1e-7},   {1.0 - 1e-7, kPi / 2 + 1e-6},
-                                 {3.0, 0.3},   {0.3, 2.9}};
+  const std::vector<P> params = {{2.0, 0.0},  {0.5, kPi},        {1.0, kPi / 2},        {1.0 + 1e-9, kPi / 2},
+                                 {0.7, 1e-9}, {1.4, kPi - 1e-9}, {1.0, kPi / 2 - 1e-7}, {1.0 - 1e-7, kPi / 2 + 1e-6},
+                                 {3.0, 0.3},  {0.3, 2.9}};
   for (const P& p : params) {
     const EnergySpec op = gnorm_operator(p.rho, p.t);  // t = 0, pi: a singular G, a valid operator
     for (int n : {4, 7, 10}) {
@@ -209,8 +209,7 @@ TEST(PdeExplicitAndLu, RhoOneNonOrthogonalIsNotUnique) {
   EXPECT_TRUE(solve_pde_explicit(random_net(5, 5, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
   EXPECT_FALSE(solve_pde_explicit(random_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
   EXPECT_FALSE(solve_pde_explicit(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
-  EXPECT_EQ(solve_pde_explicit(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status,
-            Status::NotUnique);
+  EXPECT_EQ(solve_pde_explicit(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status, Status::NotUnique);
   // Off rho = 1 the solution is unique again (and both routes agree).
   const TensorNet d = random_net(8, 8, 2);
   const PdeSolution e8 = solve_pde_explicit(d, EnergySpec::gnorm(1.05, kPi / 4));

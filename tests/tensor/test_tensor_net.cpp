@@ -31,8 +31,10 @@ struct ProductPoly {
   Eigen::Vector3d deriv(double u, double v, int du, int dv) const {
     Eigen::Vector3d out;
     for (int k = 0; k < 3; ++k) {
-      const double fu = du > n ? 0 : factorial(n) / factorial(n - du) * std::pow(b[k], du) * std::pow(a[k] + b[k] * u, n - du);
-      const double fv = dv > m ? 0 : factorial(m) / factorial(m - dv) * std::pow(d[k], dv) * std::pow(c[k] + d[k] * v, m - dv);
+      const double fu =
+          du > n ? 0 : factorial(n) / factorial(n - du) * std::pow(b[k], du) * std::pow(a[k] + b[k] * u, n - du);
+      const double fv =
+          dv > m ? 0 : factorial(m) / factorial(m - dv) * std::pow(d[k], dv) * std::pow(c[k] + d[k] * v, m - dv);
       out(k) = fu * fv;
     }
     return out;

@@ -35,8 +35,8 @@ struct LinearPower {
         continue;
       }
       const double L = a[k] * u + b[k] * v + c[k] * (1 - u - v);
-      out(k) = factorial(n) / factorial(n - d) * std::pow(a[k] - c[k], du) * std::pow(b[k] - c[k], dv) *
-               std::pow(L, n - d);
+      out(k) =
+          factorial(n) / factorial(n - d) * std::pow(a[k] - c[k], du) * std::pow(b[k] - c[k], dv) * std::pow(L, n - d);
     }
     return out;
   }
@@ -90,13 +90,15 @@ TEST(TriangularNet, DerivativesOfExactPolynomialsUpToDegree25) {
       for (int du = 0; du <= 3; ++du)
         for (int dv = 0; dv <= 3; ++dv) {
           const Eigen::Vector3d exact = p.deriv(u, v, du, dv);
-          const double tol = 1e-13 * exact.norm() +
-                             1e-14 * std::pow(2.0 * n, du + dv) * net.points().cwiseAbs().maxCoeff();
+          const double tol =
+              1e-13 * exact.norm() + 1e-14 * std::pow(2.0 * n, du + dv) * net.points().cwiseAbs().maxCoeff();
           EXPECT_LT((net.derivative(u, v, du, dv) - exact).norm(), tol) << n << du << dv;
         }
     const Eigen::Vector2d d(0.6, -0.8);
-    EXPECT_LT((net.directional_derivative(0.3, 0.3, d) - (0.6 * p.deriv(0.3, 0.3, 1, 0) - 0.8 * p.deriv(0.3, 0.3, 0, 1))).norm(),
-              1e-12 * (1 + p.deriv(0.3, 0.3, 1, 0).norm()));
+    EXPECT_LT(
+        (net.directional_derivative(0.3, 0.3, d) - (0.6 * p.deriv(0.3, 0.3, 1, 0) - 0.8 * p.deriv(0.3, 0.3, 0, 1)))
+            .norm(),
+        1e-12 * (1 + p.deriv(0.3, 0.3, 1, 0).norm()));
   }
 }
 
@@ -127,8 +129,8 @@ TEST(TriangularNet, CurvatureOfParaboloid) {
 
 TEST(TriangularNet, Rings) {
   TriangularNet net(6);
-  EXPECT_EQ(net.boundary_indices().size(), 18u);        // 3n
-  EXPECT_EQ(net.adjacent_ring_indices().size(), 9u);    // 3(n-3)
+  EXPECT_EQ(net.boundary_indices().size(), 18u);      // 3n
+  EXPECT_EQ(net.adjacent_ring_indices().size(), 9u);  // 3(n-3)
   EXPECT_EQ(net.fixed_indices(FixedSet::BoundaryAdjacent).size(), 27u);
   EXPECT_EQ(net.free_indices(FixedSet::BoundaryAdjacent).size(), 1u);  // P_222
   EXPECT_THROW(net.fixed_indices(FixedSet::UBoundaries), UnsupportedProblem);
