@@ -16,43 +16,17 @@
 #include "core/errors.h"
 #include "jobs/exit_status.h"
 #include "jobs/run_job.h"
+#include "tests/cli/cli_run.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CmdResult {
-  int status;
-  std::string out, err;
-};
-
-fs::path tmpdir() {
-  static const fs::path d = [] {
-    fs::path p = fs::temp_directory_path() / ("bpde_cli_" + std::to_string(::getpid()));
-    fs::create_directories(p);
-    return p;
-  }();
-  return d;
-}
-
-CmdResult run(const std::string& args) {
-  const fs::path o = tmpdir() / "stdout", e = tmpdir() / "stderr";
-  const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
-  const int rc = std::system(cmd.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  return {WEXITSTATUS(rc), slurp(o), slurp(e)};
-}
-
-fs::path write(const std::string& name, const std::string& text) {
-  const fs::path p = tmpdir() / name;
-  std::ofstream(p) << text;
-  return p;
-}
+using bpde::testing::CmdResult;
+using bpde::testing::run;
+using bpde::testing::slurp;
+using bpde::testing::tmpdir;
+using bpde::testing::write;
 
 const char* kTensor = R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})";
 

@@ -17,45 +17,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/cli/cli_run.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CmdResult {
-  int status;
-  std::string out, err;
-};
-
-fs::path tmpdir() {
-  static const fs::path d = [] {
-    fs::path p = fs::temp_directory_path() / ("bpde_hostile_" + std::to_string(::getpid()));
-    fs::create_directories(p);
-    return p;
-  }();
-  return d;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-CmdResult run(const std::string& args) {
-  const fs::path o = tmpdir() / "stdout", e = tmpdir() / "stderr";
-  const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
-  const int rc = std::system(cmd.c_str());
-  // A crash (SIGSEGV, SIGABRT from glibc's heap checks) is not an exit status: report it as -signal.
-  const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -(WIFSIGNALED(rc) ? WTERMSIG(rc) : 1000);
-  return {status, slurp(o), slurp(e)};
-}
-
-fs::path write(const std::string& name, const std::string& text) {
-  const fs::path p = tmpdir() / name;
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
-}
+using bpde::testing::CmdResult;
+using bpde::testing::run;
+using bpde::testing::slurp;
+using bpde::testing::tmpdir;
+using bpde::testing::write;
 
 // An output folder that already holds a file: a bad-input run must leave exactly that.
 fs::path prepared_out(const std::string& name) {

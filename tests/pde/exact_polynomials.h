@@ -131,4 +131,15 @@ inline std::vector<Root> gnorm_roots(double rho, double t) {
   return {{cld(0, 1), false}, {r2, false}};
 }
 
+/// Generic data: the grid (i/n, j/m, 0) perturbed by up to 0.1 in u, v and 0.5 in z, from `seed`.
+inline TensorNet perturbed_grid_net(int n, int m, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  TensorNet net(n, m);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= m; ++j)
+      net.set_point(i, j, Eigen::Vector3d(double(i) / n + 0.1 * U(gen), double(j) / m + 0.1 * U(gen), 0.5 * U(gen)));
+  return net;
+}
+
 }  // namespace bpde::testing

@@ -2,29 +2,17 @@
 // docs/pde_accuracy.md "Numerical limit").
 #include <gtest/gtest.h>
 
-#include <random>
-
 #include "solvers/pde/pde_explicit.h"
 #include "solvers/pde/pde_lu.h"
 #include "solvers/pde/pde_residual.h"
+#include "tests/pde/exact_polynomials.h"
 
 using namespace bpde;
-
-namespace {
-TensorNet generic_ring(int n, int m, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> U(-1.0, 1.0);
-  TensorNet net(n, m);
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= m; ++j)
-      net.set_point(i, j, Eigen::Vector3d(double(i) / n + 0.1 * U(gen), double(j) / m + 0.1 * U(gen), 0.5 * U(gen)));
-  return net;
-}
-}  // namespace
+using bpde::testing::perturbed_grid_net;
 
 TEST(PdeDegreeLimit, AboveTheLimitBothMethodsReportTheNumericalLimit) {
   for (int n : {kMaxPdeDegree + 1, 25, 64}) {
-    const TensorNet data = generic_ring(n, n, 5u + n);
+    const TensorNet data = perturbed_grid_net(n, n, 5u + n);
     const PdeSolution e = solve_pde_explicit(data, EnergySpec::biharmonic());
     const PdeSolution l = solve_pde_lu(data, EnergySpec::biharmonic());
     for (const PdeSolution* s : {&e, &l}) {
@@ -51,7 +39,7 @@ TEST(PdeDegreeLimit, AboveTheLimitBothMethodsReportTheNumericalLimit) {
 }
 
 TEST(PdeDegreeLimit, AtTheLimitTheMethodsStillAgree) {
-  const TensorNet data = generic_ring(kMaxPdeDegree, kMaxPdeDegree, 11);
+  const TensorNet data = perturbed_grid_net(kMaxPdeDegree, kMaxPdeDegree, 11);
   const PdeSolution e = solve_pde_explicit(data, EnergySpec::biharmonic());
   const PdeSolution l = solve_pde_lu(data, EnergySpec::biharmonic());
   ASSERT_TRUE(e.summary.converged) << e.summary.message;

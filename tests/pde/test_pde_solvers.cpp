@@ -17,16 +17,6 @@ namespace {
 using namespace bpde::testing;
 const double kPi = std::acos(-1.0);
 
-TensorNet random_net(int n, int m, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> U(-1.0, 1.0);
-  TensorNet net(n, m);
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= m; ++j)
-      net.set_point(i, j, Eigen::Vector3d(double(i) / n + 0.1 * U(gen), double(j) / m + 0.1 * U(gen), 0.5 * U(gen)));
-  return net;
-}
-
 // Relative tolerance for exact recovery at degree n <= 15 for the general operator below, where
 // no mould is built: above the measured errors, far below the O(1) error of a wrong solve.
 double tol(int n) { return 1e-13 * std::pow(10.0, std::max(0, n - 8)); }
@@ -96,7 +86,7 @@ TEST(PdeExplicitAndLu, AgreeOnGenericBoundaries) {
   // Generic data: solutions are amplified (docs/errata.md), compare relative to the solution's size.
   for (const OpCase& c : operator_cases()) {
     for (int n : {4, 5, 7, 9, 11, 13}) {
-      const TensorNet data = random_net(n, n, 77u + n);
+      const TensorNet data = perturbed_grid_net(n, n, 77u + n);
       const PdeSolution e = solve_pde_explicit(data, c.op);
       const PdeSolution l = solve_pde_lu(data, c.op);
       ASSERT_TRUE(e.summary.converged && l.summary.converged) << c.name;
@@ -108,7 +98,7 @@ TEST(PdeExplicitAndLu, AgreeOnGenericBoundaries) {
 
 TEST(PdeExplicitAndLu, SmallDegrees) {
   for (int n = 1; n <= 4; ++n) {
-    const TensorNet data = random_net(n, n, 5u + n);
+    const TensorNet data = perturbed_grid_net(n, n, 5u + n);
     const PdeSolution e = solve_pde_explicit(data, EnergySpec::biharmonic());
     const PdeSolution l = solve_pde_lu(data, EnergySpec::biharmonic());
     ASSERT_TRUE(e.summary.converged && l.summary.converged) << n;
@@ -138,7 +128,7 @@ TensorNet coons_patch(const TensorNet& d) {
 
 TEST(PdeExplicitAndLu, CoonsEqualsTheBilinearlyBlendedPatch) {
   for (int n : {2, 3, 5, 8, 12, 16, 20}) {
-    const TensorNet data = random_net(n, n, 300u + n);
+    const TensorNet data = perturbed_grid_net(n, n, 300u + n);
     const TensorNet truth = coons_patch(data);
     const PdeSolution e = solve_pde_explicit(data, EnergySpec::coons());
     const PdeSolution l = solve_pde_lu(data, EnergySpec::coons());
@@ -164,7 +154,7 @@ TEST(PdeExplicit, DegenerateParametersGiveFiniteAnswersEqualToLu) {
   for (const P& p : params) {
     const EnergySpec op = gnorm_operator(p.rho, p.t);  // t = 0, pi: a singular G, a valid operator
     for (int n : {4, 7, 10}) {
-      const TensorNet data = random_net(n, n, 900u + n);
+      const TensorNet data = perturbed_grid_net(n, n, 900u + n);
       const PdeSolution e = solve_pde_explicit(data, op);
       const PdeSolution l = solve_pde_lu(data, op);
       ASSERT_TRUE(e.summary.converged) << p.rho << " " << p.t << " n=" << n << ": " << e.summary.message;
@@ -174,7 +164,7 @@ TEST(PdeExplicit, DegenerateParametersGiveFiniteAnswersEqualToLu) {
     }
   }
   // rho = 1 in the orthogonal formula equals the biharmonic solution.
-  const TensorNet data = random_net(9, 9, 4);
+  const TensorNet data = perturbed_grid_net(9, 9, 4);
   EXPECT_LT(relative_error(solve_pde_explicit(data, EnergySpec::gnorm(1.0, kPi / 2)).net,
                            solve_pde_explicit(data, EnergySpec::biharmonic()).net),
             1e-14);
@@ -185,7 +175,7 @@ TEST(PdeExplicitAndLu, RhoOneNonOrthogonalIsNotUnique) {
   // boundary ring from n = 4 on: no unique solution. Both methods must say so, not return noise.
   const EnergySpec op = gnorm_operator(1.0, 0.0);
   for (int n : {4, 6}) {
-    const TensorNet data = random_net(n, n, 3);
+    const TensorNet data = perturbed_grid_net(n, n, 3);
     const PdeSolution e = solve_pde_explicit(data, op);
     const PdeSolution l = solve_pde_lu(data, op);
     EXPECT_FALSE(e.summary.converged);
@@ -202,16 +192,18 @@ TEST(PdeExplicitAndLu, RhoOneNonOrthogonalIsNotUnique) {
   EXPECT_LT(pde_residual(from_power(3, 3, c), op, 10), 1e-14);
   // t = pi/4 with rho = 1: the anti-diagonal blocks k + l = 8, 9, 10 are singular (M_s = 0), which
   // the anti-diagonal analysis sees from n = 6 on (block 8 lies inside the (6,6) box).
-  EXPECT_TRUE(solve_pde_lu(random_net(5, 5, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
-  EXPECT_FALSE(solve_pde_lu(random_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
-  EXPECT_FALSE(solve_pde_lu(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
-  EXPECT_EQ(solve_pde_lu(random_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status, Status::NotUnique);
-  EXPECT_TRUE(solve_pde_explicit(random_net(5, 5, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
-  EXPECT_FALSE(solve_pde_explicit(random_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
-  EXPECT_FALSE(solve_pde_explicit(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
-  EXPECT_EQ(solve_pde_explicit(random_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status, Status::NotUnique);
+  EXPECT_TRUE(solve_pde_lu(perturbed_grid_net(5, 5, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_FALSE(solve_pde_lu(perturbed_grid_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_FALSE(solve_pde_lu(perturbed_grid_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_EQ(solve_pde_lu(perturbed_grid_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status,
+            Status::NotUnique);
+  EXPECT_TRUE(solve_pde_explicit(perturbed_grid_net(5, 5, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_FALSE(solve_pde_explicit(perturbed_grid_net(6, 6, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_FALSE(solve_pde_explicit(perturbed_grid_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.converged);
+  EXPECT_EQ(solve_pde_explicit(perturbed_grid_net(7, 7, 1), EnergySpec::gnorm(1.0, kPi / 4)).summary.status,
+            Status::NotUnique);
   // Off rho = 1 the solution is unique again (and both routes agree).
-  const TensorNet d = random_net(8, 8, 2);
+  const TensorNet d = perturbed_grid_net(8, 8, 2);
   const PdeSolution e8 = solve_pde_explicit(d, EnergySpec::gnorm(1.05, kPi / 4));
   const PdeSolution l8 = solve_pde_lu(d, EnergySpec::gnorm(1.05, kPi / 4));
   ASSERT_TRUE(e8.summary.converged && l8.summary.converged);
@@ -219,7 +211,7 @@ TEST(PdeExplicitAndLu, RhoOneNonOrthogonalIsNotUnique) {
 }
 
 TEST(PdeExplicit, WrongOperatorsAreUnsupported) {
-  const TensorNet data = random_net(6, 6, 1);
+  const TensorNet data = perturbed_grid_net(6, 6, 1);
   try {
     solve_pde_explicit(data, EnergySpec::pde_operator({1.0, 0.5, 3.0, -0.7, 2.0}));
     FAIL() << "expected UnsupportedProblem";
@@ -228,7 +220,7 @@ TEST(PdeExplicit, WrongOperatorsAreUnsupported) {
   }
   EXPECT_THROW(solve_pde_explicit(data, EnergySpec::fourth_order({1, 0, 1, 0, 1})), UnsupportedProblem);
   EXPECT_THROW(solve_pde_explicit(data, EnergySpec::dirichlet()), UnsupportedProblem);
-  EXPECT_THROW(solve_pde_explicit(random_net(5, 6, 1), EnergySpec::biharmonic()), DegreeError);
+  EXPECT_THROW(solve_pde_explicit(perturbed_grid_net(5, 6, 1), EnergySpec::biharmonic()), DegreeError);
   EXPECT_THROW(solve_pde_lu(data, EnergySpec::dirichlet()), UnsupportedProblem);
   // Non-elliptic: modified biharmonic with alpha = 0 is x_uuuu = 0.
   EXPECT_THROW(solve_pde_explicit(data, EnergySpec::modified_biharmonic(0.0)), ParameterError);
@@ -276,7 +268,7 @@ TEST(PdeLu, UnequalDegrees) {
     const PdeSolution l = solve_pde_lu(boundary_only(exact), EnergySpec::biharmonic());
     ASSERT_TRUE(l.summary.converged) << l.summary.message;
     EXPECT_LT(relative_error(l.net, exact), 1e-10);
-    const PdeSolution bad = mould.solve(random_net(n, m, 2));
+    const PdeSolution bad = mould.solve(perturbed_grid_net(n, m, 2));
     EXPECT_FALSE(bad.summary.converged);
     EXPECT_EQ(bad.summary.status, Status::Incompatible) << bad.summary.message;
     EXPECT_FALSE(bad.summary.message.empty());
@@ -289,7 +281,7 @@ TEST(PdeMould, OneProductPerSolveEqualsTheOneShotSolve) {
   EXPECT_EQ(mould.interior_from_boundary().rows(), (n - 1) * (n - 1));
   EXPECT_EQ(mould.interior_from_boundary().cols(), 4 * n);
   for (unsigned seed = 0; seed < 3; ++seed) {
-    const TensorNet data = random_net(n, n, seed);
+    const TensorNet data = perturbed_grid_net(n, n, seed);
     const PdeSolution a = mould.solve(data);
     const PdeSolution b = solve_pde_lu(data, EnergySpec::gnorm(0.7, 1.0));  // anti-diagonal blocks
     PdeLuOptions dense;
@@ -302,7 +294,7 @@ TEST(PdeMould, OneProductPerSolveEqualsTheOneShotSolve) {
     mould.apply(data, out);
     EXPECT_EQ(out.points(), a.net.points());
   }
-  EXPECT_THROW(mould.solve(random_net(n, n - 1, 1)), DegreeError);
+  EXPECT_THROW(mould.solve(perturbed_grid_net(n, n - 1, 1)), DegreeError);
 }
 
 TEST(PdeExplicit, Lemma1ClosedFormMatchesItsRecurrence) {
@@ -339,7 +331,7 @@ TEST(PdeLu, BlockRankDecisionsMatchTheStructureAnalysis) {
       const EnergySpec op = gnorm_operator(1.0, t);
       const auto& c = op.operator_coeffs();
       const PdeStructure st = analyse_pde_structure({c[0], c[1], c[2], c[3], c[4]}, n, n, FixedSet::Boundary);
-      const PdeSolution l = solve_pde_lu(random_net(n, n, 9u + n), op);
+      const PdeSolution l = solve_pde_lu(perturbed_grid_net(n, n, 9u + n), op);
       EXPECT_EQ(l.summary.converged, st.unique) << "t=" << t << " n=" << n << ": " << l.summary.message;
       EXPECT_EQ(l.summary.status, st.unique ? Status::Converged : Status::NotUnique) << "t=" << t << " n=" << n;
       (st.unique ? unique : singular) += 1;

@@ -1,0 +1,57 @@
+#pragma once
+// Running the `bpde` binary from the CLI tests (test_cli.cpp, test_hostile_input.cpp): its exit
+// status, stdout and stderr, in a temporary folder of this test process.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace bpde::testing {
+
+namespace fs = std::filesystem;
+
+struct CmdResult {
+  int status;  ///< the exit status, or -signal when the command crashed (SIGSEGV, SIGABRT, ...)
+  std::string out, err;
+};
+
+/// A folder of this test process under the system's temporary directory.
+inline fs::path tmpdir() {
+  static const fs::path d = [] {
+    fs::path p = fs::temp_directory_path() / ("bpde_cli_" + std::to_string(::getpid()));
+    fs::create_directories(p);
+    return p;
+  }();
+  return d;
+}
+
+/// The bytes of a file ("" when it cannot be read).
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Run `bpde ARGS` (BPDE_BINARY), capturing stdout and stderr.
+inline CmdResult run(const std::string& args) {
+  const fs::path o = tmpdir() / "stdout", e = tmpdir() / "stderr";
+  const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
+  const int rc = std::system(cmd.c_str());
+  // A crash is not an exit status: report it as -signal.
+  const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -(WIFSIGNALED(rc) ? WTERMSIG(rc) : 1000);
+  return {status, slurp(o), slurp(e)};
+}
+
+/// Write `text` to tmpdir()/name and return its path.
+inline fs::path write(const std::string& name, const std::string& text) {
+  const fs::path p = tmpdir() / name;
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+}  // namespace bpde::testing
