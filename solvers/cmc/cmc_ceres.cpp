@@ -87,13 +87,8 @@ class StopAtTolerance final : public ceres::IterationCallback {
 }  // namespace
 
 CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
-  CorrectorStats st;
-  st.residual = p.residual(H);
-  if (st.residual <= o.tolerance) {
-    st.ok = true;
-    return st;
-  }
-  if (!std::isfinite(st.residual)) return st;
+  CorrectorStats st = start_stats(p, H, o);
+  if (st.ok || !std::isfinite(st.residual)) return st;
   const int k = p.k();
   Eigen::VectorXd buf = p.get();
   SharedEvaluation eval;

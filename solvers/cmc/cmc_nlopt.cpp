@@ -95,13 +95,8 @@ double slsqp_constraint(unsigned, const double* z, double* grad, void* data) {
 }  // namespace
 
 CorrectorStats nlopt_correct(CmcProblem& p, double H, const CmcOptions& o, const Eigen::MatrixXd& L) {
-  CorrectorStats st;
-  st.residual = p.residual(H);
-  if (st.residual <= o.tolerance) {
-    st.ok = true;
-    return st;
-  }
-  if (!std::isfinite(st.residual)) return st;
+  CorrectorStats st = start_stats(p, H, o);
+  if (st.ok || !std::isfinite(st.residual)) return st;
   const unsigned n = static_cast<unsigned>(3 * p.k());
   LbfgsData d{Precond{&p, &L, p.get()}, H, o.tolerance, nullptr, false, {}, 0};
   nlopt_opt opt = nlopt_create(NLOPT_LD_LBFGS, n);

@@ -47,6 +47,15 @@ struct CorrectorStats {
   int polish_steps = 0;  ///< Newton steps added after NLopt
 };
 
+/// The stats of the start point of a corrector: its eq. (11) residual at H, ok when it already
+/// meets the tolerance. A corrector starts iterating only when `!ok` and the residual is finite.
+inline CorrectorStats start_stats(CmcProblem& p, double H, const CmcOptions& o) {
+  CorrectorStats st;
+  st.residual = p.residual(H);
+  st.ok = st.residual <= o.tolerance;
+  return st;
+}
+
 /// Newton with the exact Hessian.
 CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int max_iterations);
 /// Ceres LM on the residual blocks of eq. (11).
