@@ -18,6 +18,7 @@
 // it is: docs/c1.md, "How the C¹ solvers work".
 #include <Eigen/Core>
 
+#include "solvers/c1/c1_requirements.h"
 #include "solvers/requirements.h"
 #include "solvers/summary.h"
 #include "tensor/tensor_net.h"
@@ -41,16 +42,7 @@ struct BiharmonicLoadOptions {
 };
 
 /// The FORMATS.md "biharmonic-load" problem: tensor nets, C1 data, n = m >= 4.
-inline SolverRequirements biharmonic_load_requirements() {
-  SolverRequirements r;
-  r.problem = "problem \"biharmonic-load\"";
-  r.nets = {NetKind::Tensor};
-  r.fixed = {FixedSet::BoundaryAdjacent};
-  r.fixed_reason = r.problem + " takes C1 data: \"fixed\": \"boundary+adjacent\"";
-  r.square = true;
-  r.min_degrees = {{NetKind::Tensor, FixedSet::BoundaryAdjacent, 4}};
-  return r;
-}
+inline SolverRequirements biharmonic_load_requirements() { return c1_data_requirements("problem \"biharmonic-load\""); }
 
 struct BiharmonicLoadResult {
   TensorNet net;    ///< degree (n,n); outer two rings copied from the data

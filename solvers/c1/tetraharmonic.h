@@ -25,6 +25,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "solvers/c1/c1_requirements.h"
 #include "solvers/requirements.h"
 #include "solvers/summary.h"
 #include "tensor/tensor_net.h"
@@ -39,13 +40,7 @@ struct TetraharmonicOptions {
 
 /// The FORMATS.md "tetraharmonic" problem: tensor nets, C1 data, n = m >= 4; methods explicit, lu.
 inline SolverRequirements tetraharmonic_requirements() {
-  SolverRequirements r;
-  r.problem = "problem \"tetraharmonic\"";
-  r.nets = {NetKind::Tensor};
-  r.fixed = {FixedSet::BoundaryAdjacent};
-  r.fixed_reason = r.problem + " takes C1 data: \"fixed\": \"boundary+adjacent\"";
-  r.square = true;
-  r.min_degrees = {{NetKind::Tensor, FixedSet::BoundaryAdjacent, 4}};
+  SolverRequirements r = c1_data_requirements("problem \"tetraharmonic\"");
   r.methods = {"explicit", "lu"};
   return r;
 }
