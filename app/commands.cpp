@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/inputs.h"
 #include "core/errors.h"
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
@@ -11,6 +12,7 @@
 #include "jobs/run_energy.h"
 #include "jobs/run_job.h"
 #include "jobs/run_plate.h"
+#include "jobs/solve_summary.h"
 
 namespace bpde::app {
 
@@ -23,15 +25,19 @@ void check_samples(int samples) {
 
 }  // namespace
 
-int cmd_solve(const std::string& job_path, const std::string& out_dir) {
-  const Job job = read_job_file(job_path);
+int cmd_solve(const std::string& job_path, const std::string& out_dir, const SolveFlags& flags) {
+  if (flags.samples) check_samples(*flags.samples);
+  Job job = read_job_input(job_path);
+  if (flags.samples) job.samples = *flags.samples;
   const SolveOutcome out = run_job(job);
-  return write_outcome(out_dir, job, out);
+  const WrittenResult written = write_job_result(out_dir, job, out);
+  if (!flags.quiet) std::fputs(solve_summary(written.result, job_path, out_dir).c_str(), stdout);
+  return written.exit_code;
 }
 
 int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples) {
   check_samples(samples);
-  const Net net = read_net_file(net_path);
+  const Net net = read_net_input(net_path);
   const TriangleMesh mesh = sample_net(net, samples);
   make_output_dir(out_dir);
   write_surface_files(out_dir, net, mesh);
@@ -39,14 +45,14 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
 }
 
 int cmd_energy(const std::string& net_path, const std::string& energy, std::optional<double> H) {
-  const Net net = read_net_file(net_path);
+  const Net net = read_net_input(net_path);
   std::cout << energy_report(net, energy, H).dump() << "\n";
   return 0;
 }
 
 int cmd_check(const std::string& net_path, int samples) {
   check_samples(samples);
-  const Net net = read_net_file(net_path);
+  const Net net = read_net_input(net_path);
   std::cout << check_report(sample_net(net, samples)).dump() << "\n";
   return 0;
 }
@@ -58,7 +64,7 @@ int cmd_plate(double aspect, int degree, const std::string& method) {
 }
 
 int cmd_blend(const std::string& config_path, const std::string& out_dir) {
-  const BlendConfig config = read_blend_config(config_path);
+  const BlendConfig config = read_blend_input(config_path);
   const BlendOutcome out = run_blend(config);
   return write_blend_outcome(out_dir, config, out);
 }

@@ -1,5 +1,7 @@
 #pragma once
 // The subcommands of `bpde`: each parses its input with io/, runs it through jobs/ and writes.
+// Net inputs may be the result.json bpde writes (its "net"); a file given to the wrong subcommand
+// is bad input naming the right one (app/inputs.h).
 // They return the process exit status (0 solved, 1 valid input without a solution) and let
 // exceptions propagate to main (InvalidInput: exit 2; internal errors: exit 3).
 #include <optional>
@@ -9,7 +11,14 @@
 
 namespace bpde::app {
 
-int cmd_solve(const std::string& job_path, const std::string& out_dir);
+/// The flags of `bpde solve`.
+struct SolveFlags {
+  bool quiet = false;          ///< no summary on stdout
+  std::optional<int> samples;  ///< overrides the job's "samples" (1..kMaxSamples)
+};
+
+/// Solve a job, write DIR and print the summary (jobs/solve_summary.h) unless flags.quiet.
+int cmd_solve(const std::string& job_path, const std::string& out_dir, const SolveFlags& flags = {});
 int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples);
 int cmd_energy(const std::string& net_path, const std::string& energy, std::optional<double> H);
 int cmd_check(const std::string& net_path, int samples);

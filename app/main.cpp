@@ -9,11 +9,13 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/version.h"
 #include "jobs/exit_status.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)"};
-  app.require_subcommand(1);
+  CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)", "bpde"};
+  app.require_subcommand(0, 1);  // bare `bpde` prints the usage (below)
+  app.set_version_flag("-V,--version", "bpde " BPDE_VERSION, "Print the version and exit");
   app.set_help_all_flag("--help-all", "Show help for every subcommand");
 
   std::string in, out;
@@ -23,22 +25,25 @@ int main(int argc, char** argv) {
       app.add_subcommand("solve", "Solve a job (FORMATS.md \"Jobs\") and write DIR/result.json + surface files");
   solve->add_option("job", in, "JOB.json")->required();
   solve->add_option("--out", out, "Output directory (created if missing)")->required();
+  bpde::app::SolveFlags solve_flags;
+  solve->add_flag("-q,--quiet", solve_flags.quiet, "Print no summary (errors still go to stderr)");
+  solve->add_option("--samples", solve_flags.samples, "Mesh resolution N, overriding the job's \"samples\"");
 
   auto* sample = app.add_subcommand("sample", "Write surface.obj, surface.ply and net.obj for any net");
-  sample->add_option("net", in, "NET.json")->required();
+  sample->add_option("net", in, "NET.json (or a result.json of bpde: its net)")->required();
   sample->add_option("--out", out, "Output directory")->required();
   sample->add_option("--samples", samples, "Mesh resolution N (default 50)");
 
   std::string energy;
   std::optional<double> H;
   auto* en = app.add_subcommand("energy", "Print the value of an energy of a net as JSON");
-  en->add_option("net", in, "NET.json")->required();
+  en->add_option("net", in, "NET.json (or a result.json of bpde: its net)")->required();
   en->add_option("--energy", energy, "Bare name (dirichlet, biharmonic, laplacian-squared, coons, cmc) or ENERGY JSON")
       ->required();
   en->add_option("--H", H, "Mean curvature H (required for cmc)");
 
   auto* check = app.add_subcommand("check", "CGAL checks of the sampled surface, as JSON");
-  check->add_option("net", in, "NET.json")->required();
+  check->add_option("net", in, "NET.json (or a result.json of bpde: its net)")->required();
   check->add_option("--samples", samples, "Mesh resolution N (default 50)");
 
   double aspect = 1.0;
@@ -59,18 +64,21 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version: exit 0
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "error: %s (see bpde --help)\n", bpde::one_line(e.what()).c_str());
     return 2;
   }
 
+  if (app.get_subcommands().empty()) {  // bare `bpde`: the usage, as --help prints it
+    std::cout << app.help();
+    return 0;
+  }
+
   try {
     using namespace bpde::app;
-    if (*solve) return cmd_solve(in, out);
+    if (*solve) return cmd_solve(in, out, solve_flags);
     if (*sample) return cmd_sample(in, out, samples);
     if (*en) return cmd_energy(in, energy, H);
     if (*check) return cmd_check(in, samples);

@@ -1,0 +1,140 @@
+// The command as a new user meets it (issue "A command that behaves like the tools users know"):
+// --version, bare `bpde`, the summary of `bpde solve`, --quiet and --samples, result.json as a
+// net input, and a file given to the wrong subcommand.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_run.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using bpde::testing::CmdResult;
+using bpde::testing::run;
+using bpde::testing::slurp;
+using bpde::testing::tmpdir;
+using bpde::testing::write;
+
+const std::string kSource = BPDE_SOURCE_DIR;
+const std::string kPdeJob = kSource + "/examples/001-pde-figures/fig1-biharmonic.json";
+const std::string kBlend = kSource + "/examples/003-blend-cylinders/fig2a.json";
+const std::string kFold = kSource + "/examples/004-cmc-circle/n6-H-1.5-past-fold.json";
+
+// The count of `v ` lines of an OBJ file.
+long vertices(const fs::path& obj) {
+  std::ifstream in(obj);
+  long n = 0;
+  for (std::string line; std::getline(in, line);) n += line.rfind("v ", 0) == 0;
+  return n;
+}
+
+void expect_one_error_line(const CmdResult& r, const std::string& needle) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << "should mention '" << needle << "': " << r.err;
+}
+
+}  // namespace
+
+TEST(CliUsability, VersionIsTheProjectVersionOfCMakeLists) {
+  std::smatch m;
+  const std::string cmake = slurp(kSource + "/CMakeLists.txt");
+  ASSERT_TRUE(std::regex_search(cmake, m, std::regex(R"(project\(bezierpde VERSION ([0-9.]+))")));
+  for (const char* flag : {"--version", "-V"}) {
+    const CmdResult r = run(flag);
+    EXPECT_EQ(r.status, 0) << flag << r.err;
+    EXPECT_EQ(r.out, "bpde " + m[1].str() + "\n") << flag;
+    EXPECT_EQ(r.err, "");
+  }
+}
+
+TEST(CliUsability, BareCommandPrintsTheUsageAndExitsZero) {
+  const CmdResult r = run("");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("Usage: bpde"), std::string::npos) << r.out;
+  for (const char* sub : {"solve", "sample", "energy", "check", "plate", "blend", "demo"})
+    EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
+  EXPECT_EQ(r.out, run("--help").out);  // the same text as --help
+}
+
+TEST(CliUsability, SolvePrintsASummaryUnlessQuiet) {
+  const fs::path out = tmpdir() / "summary";
+  const CmdResult r = run("solve " + kPdeJob + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  for (const std::string& needle : std::vector<std::string>{
+           "problem             pde (biharmonic, method explicit) on a tensor net of degree [5, 5]",
+        "converged           yes", "energy              174.55", "pde residual", "mean curvature      min ",
+        "self-intersections  0", "files               " + out.string() + "/{result.json"})
+    EXPECT_NE(r.out.find(needle), std::string::npos) << needle << "\n" << r.out;
+  EXPECT_LE(std::count(r.out.begin(), r.out.end(), '\n'), 24) << "one screen";
+
+  const CmdResult q = run("solve " + kPdeJob + " --out " + (tmpdir() / "quiet").string() + " --quiet");
+  EXPECT_EQ(q.status, 0) << q.err;
+  EXPECT_EQ(q.out, "");
+  EXPECT_EQ(q.err, "");
+  EXPECT_TRUE(fs::exists(tmpdir() / "quiet" / "result.json"));
+}
+
+TEST(CliUsability, SolveWithoutSolutionSaysWhyInTheSummary) {
+  const CmdResult r = run("solve " + kFold + " --out " + (tmpdir() / "fold").string());
+  ASSERT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("converged           no"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("not converged       no critical point on the branch"), std::string::npos) << r.out;
+}
+
+TEST(CliUsability, SolveSamplesOverridesTheJobAndIsValidated) {
+  const fs::path out = tmpdir() / "samples";
+  ASSERT_EQ(run("solve " + kPdeJob + " --out " + out.string() + " -q --samples 4").status, 0);
+  EXPECT_EQ(vertices(out / "surface.obj"), 5 * 5);  // tensor: (N + 1)^2 vertices; the job says 50
+  for (const char* bad : {"0", "2001", "-3"}) {
+    const fs::path o = tmpdir() / (std::string("samples_bad") + bad);
+    expect_one_error_line(run("solve " + kPdeJob + " --out " + o.string() + " --samples " + bad), "--samples");
+    EXPECT_FALSE(fs::exists(o)) << bad;
+  }
+}
+
+TEST(CliUsability, SampleAndCheckTakeTheResultBpdeWrote) {
+  const fs::path solved = tmpdir() / "solved";
+  ASSERT_EQ(run("solve " + kPdeJob + " --out " + solved.string() + " -q --samples 30").status, 0);
+  const std::string result = (solved / "result.json").string();
+  const fs::path resampled = tmpdir() / "resampled";
+  const CmdResult s = run("sample " + result + " --out " + resampled.string() + " --samples 30");
+  ASSERT_EQ(s.status, 0) << s.err;
+  // The same net sampled the same way: the same surface as solve wrote.
+  EXPECT_TRUE(slurp(resampled / "surface.obj") == slurp(solved / "surface.obj"));
+  EXPECT_EQ(vertices(resampled / "surface.obj"), 31 * 31);
+  const CmdResult c = run("check " + result + " --samples 10");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(c.out.find("\"self_intersections\":0"), std::string::npos) << c.out;
+  const CmdResult e = run("energy " + result + " --energy biharmonic");
+  ASSERT_EQ(e.status, 0) << e.err;
+  EXPECT_NEAR(std::stod(e.out.substr(e.out.find(':') + 1)), 174.55115678, 1e-6) << e.out;
+  // A result whose net is broken is still reported at its JSON path.
+  const fs::path broken = write("broken_result.json", R"({"net": {"type": "tensor"}, "report": {}})");
+  expect_one_error_line(run("check " + broken.string()), "broken_result.json.net: missing field \"degree\"");
+}
+
+TEST(CliUsability, AFileGivenToTheWrongSubcommandNamesTheRightOne) {
+  const fs::path o = tmpdir() / "wrong";
+  expect_one_error_line(run("solve " + kBlend + " --out " + o.string()), "this is a blend config: use `bpde blend`");
+  expect_one_error_line(run("blend " + kPdeJob + " --out " + o.string()), "this is a job: use `bpde solve`");
+  expect_one_error_line(run("check " + kPdeJob), "this is a job, not a net: use `bpde solve`");
+  expect_one_error_line(run("sample " + kBlend + " --out " + o.string()), "use `bpde blend`");
+  const fs::path net = write("plain_net.json", R"({"type": "tensor", "degree": [1, 1],
+      "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})");
+  expect_one_error_line(run("solve " + net.string() + " --out " + o.string()), "this is a net, not a job");
+  EXPECT_FALSE(fs::exists(o));
+  // Files that are none of these keep the strict readers' messages.
+  const fs::path odd = write("odd_job.json", R"({"nett": 1})");
+  expect_one_error_line(run("solve " + odd.string() + " --out " + o.string()), "unknown field \"nett\"");
+}
