@@ -7,6 +7,7 @@
 #include "core/errors.h"
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
+#include "jobs/job_progress.h"
 #include "jobs/run_blend.h"
 #include "jobs/run_demo.h"
 #include "jobs/run_energy.h"
@@ -21,6 +22,12 @@ namespace {
 void check_samples(int samples) {
   if (samples < 1 || samples > kMaxSamples)
     throw ParameterError("--samples must be in 1.." + std::to_string(kMaxSamples) + ", got " + std::to_string(samples));
+}
+
+// sample_net with its progress stage.
+TriangleMesh sampled(const Net& net, int samples) {
+  const ProgressStage stage(job_progress(), "sampling");
+  return sample_net(net, samples);
 }
 
 }  // namespace
@@ -38,8 +45,9 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir, const Sol
 int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples) {
   check_samples(samples);
   const Net net = read_net_input(net_path);
-  const TriangleMesh mesh = sample_net(net, samples);
+  const TriangleMesh mesh = sampled(net, samples);
   make_output_dir(out_dir);
+  const ProgressStage stage(job_progress(), "writing files");
   write_surface_files(out_dir, net, mesh);
   return 0;
 }
@@ -53,7 +61,13 @@ int cmd_energy(const std::string& net_path, const std::string& energy, std::opti
 int cmd_check(const std::string& net_path, int samples) {
   check_samples(samples);
   const Net net = read_net_input(net_path);
-  std::cout << check_report(sample_net(net, samples)).dump() << "\n";
+  const TriangleMesh mesh = sampled(net, samples);
+  Json report;
+  {
+    const ProgressStage stage(job_progress(), "checking (CGAL)");
+    report = check_report(mesh);
+  }
+  std::cout << report.dump() << "\n";
   return 0;
 }
 

@@ -4,13 +4,17 @@
 // "converged": false and a message); 2 bad input (one line `error: ...` on stderr, nothing
 // written); 3 internal failure: out of memory or a broken invariant (one line
 // `internal error: ...` on stderr; jobs/exit_status.h).
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "app/commands.h"
+#include "app/progress_line.h"
 #include "app/version.h"
 #include "jobs/exit_status.h"
+#include "jobs/job_progress.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)", "bpde"};
@@ -20,6 +24,8 @@ int main(int argc, char** argv) {
 
   std::string in, out;
   int samples = 50;
+  bool progress = false;
+  const char* progress_help = "Show progress on stderr even when it is not a terminal";
 
   auto* solve =
       app.add_subcommand("solve", "Solve a job (FORMATS.md \"Jobs\") and write DIR/result.json + surface files");
@@ -28,11 +34,13 @@ int main(int argc, char** argv) {
   bpde::app::SolveFlags solve_flags;
   solve->add_flag("-q,--quiet", solve_flags.quiet, "Print no summary (errors still go to stderr)");
   solve->add_option("--samples", solve_flags.samples, "Mesh resolution N, overriding the job's \"samples\"");
+  solve->add_flag("--progress", progress, progress_help);
 
   auto* sample = app.add_subcommand("sample", "Write surface.obj, surface.ply and net.obj for any net");
   sample->add_option("net", in, "NET.json (or a result.json of bpde: its net)")->required();
   sample->add_option("--out", out, "Output directory")->required();
   sample->add_option("--samples", samples, "Mesh resolution N (default 50)");
+  sample->add_flag("--progress", progress, progress_help);
 
   std::string energy;
   std::optional<double> H;
@@ -45,6 +53,7 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "CGAL checks of the sampled surface, as JSON");
   check->add_option("net", in, "NET.json (or a result.json of bpde: its net)")->required();
   check->add_option("--samples", samples, "Mesh resolution N (default 50)");
+  check->add_flag("--progress", progress, progress_help);
 
   double aspect = 1.0;
   int degree = 0;
@@ -57,6 +66,7 @@ int main(int argc, char** argv) {
   auto* blend = app.add_subcommand("blend", "Blending surface by smoothing PDE splines (Pasadas-Rodriguez)");
   blend->add_option("config", in, "CONFIG.json")->required();
   blend->add_option("--out", out, "Output directory")->required();
+  blend->add_flag("--progress", progress, progress_help);
 
   std::string demo_out = "out/demo";
   auto* demo = app.add_subcommand("demo", "Run the built-in default job (the README's main command)");
@@ -76,6 +86,15 @@ int main(int argc, char** argv) {
     return 0;
   }
 
+  // Progress on stderr (core/progress.h): on a terminal, or forced by --progress. Off, no callback
+  // is installed and the library does not format a single progress line.
+  std::optional<bpde::app::ProgressLine> line;
+  std::optional<bpde::JobProgressScope> scope;
+  if (bpde::app::progress_wanted(progress)) {
+    line.emplace(stderr, ::isatty(STDERR_FILENO) == 1);
+    scope.emplace(line->callback());
+  }
+
   try {
     using namespace bpde::app;
     if (*solve) return cmd_solve(in, out, solve_flags);
@@ -88,6 +107,8 @@ int main(int argc, char** argv) {
   } catch (...) {
     // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.
     const bpde::ErrorExit x = bpde::error_exit(std::current_exception());
+    scope.reset();
+    line.reset();  // clears the progress line before the one error line
     std::fputs(x.line.c_str(), stderr);
     return x.code;
   }

@@ -18,6 +18,7 @@
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
 #include "io/mesh_io.h"
+#include "jobs/job_progress.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
 #include "solvers/c1/biharmonic_load.h"
@@ -143,6 +144,7 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   CmcOptions o;
   o.fixed = job.fixed;
   o.solver = job.problem.solver;
+  o.progress = job_progress();
   if (job.problem.kind == ProblemKind::CmcV)
     o.V = job.problem.V;
   else
@@ -367,8 +369,15 @@ Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }
 // statistics and the CGAL figures unless the solver already set them.
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
                            const Json& extra, Status status) {
-  if (!report.contains("mean_curvature")) report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
-  if (!report.contains("check")) report["check"] = check_report(mesh);
+  if (!report.contains("mean_curvature")) {
+    const ProgressStage stage(job_progress(), "mean curvature");
+    report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
+  }
+  if (!report.contains("check")) {
+    const ProgressStage stage(job_progress(), "checking (CGAL)");
+    report["check"] = check_report(mesh);
+  }
+  const ProgressStage stage(job_progress(), "writing files");
   Json result = {{"net", net_to_json(net)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
   make_output_dir(dir);
@@ -378,7 +387,10 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
 }
 
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out) {
-  const TriangleMesh mesh = sample_net(out.net, job.samples);
+  const TriangleMesh mesh = [&] {
+    const ProgressStage stage(job_progress(), "sampling");
+    return sample_net(out.net, job.samples);
+  }();
   return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status);
 }
 

@@ -389,6 +389,7 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFacto
       if (!last) tangent = next_tangent;
       ++continuation_steps;
       control.accept(step, st.iterations);
+      report(o.progress, "cmc continuation", std::abs(control.h()), std::abs(Ht));
     } else {
       p.set(y);
       if (!control.reject(step))

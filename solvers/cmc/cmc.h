@@ -32,6 +32,7 @@
 #include <string>
 
 #include "core/fixed_set.h"
+#include "core/progress.h"
 #include "solvers/requirements.h"
 #include "solvers/summary.h"
 #include "tensor/tensor_net.h"
@@ -54,6 +55,9 @@ struct CmcOptions {
   int max_corrector_iterations = 30;         ///< per continuation step; default 30, >= 1
   int max_continuation_steps = 400;          ///< default 400, >= 1
   double min_step = 1e-5;                    ///< smallest H step, relative to max(1, |H reached|); default 1e-5
+  /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
+  /// reached|, total = |H requested| (core/progress.h); default none.
+  ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range),
   /// UnsupportedProblem (V mode with a solver other than nlopt).
   void validate() const;

@@ -73,8 +73,8 @@ TEST(CliUsability, SolvePrintsASummaryUnlessQuiet) {
   EXPECT_EQ(r.err, "");
   for (const std::string& needle : std::vector<std::string>{
            "problem             pde (biharmonic, method explicit) on a tensor net of degree [5, 5]",
-        "converged           yes", "energy              174.55", "pde residual", "mean curvature      min ",
-        "self-intersections  0", "files               " + out.string() + "/{result.json"})
+           "converged           yes", "energy              174.55", "pde residual", "mean curvature      min ",
+           "self-intersections  0", "files               " + out.string() + "/{result.json"})
     EXPECT_NE(r.out.find(needle), std::string::npos) << needle << "\n" << r.out;
   EXPECT_LE(std::count(r.out.begin(), r.out.end(), '\n'), 24) << "one screen";
 
@@ -137,4 +137,30 @@ TEST(CliUsability, AFileGivenToTheWrongSubcommandNamesTheRightOne) {
   // Files that are none of these keep the strict readers' messages.
   const fs::path odd = write("odd_job.json", R"({"nett": 1})");
   expect_one_error_line(run("solve " + odd.string() + " --out " + o.string()), "unknown field \"nett\"");
+}
+
+TEST(CliUsability, ProgressGoesToStderrWhenForcedAndNothingOtherwise) {
+  const std::string cmc = kSource + "/examples/004-cmc-circle/n4-b-H-1.json";
+  const CmdResult p = run("solve " + cmc + " --out " + (tmpdir() / "progress").string() + " -q --progress");
+  ASSERT_EQ(p.status, 0) << p.err;
+  EXPECT_EQ(p.out, "");  // progress never goes to stdout
+  for (const char* stage :
+       {"bpde: cmc continuation", "bpde: sampling", "bpde: checking (CGAL) done in", "bpde: writing files done in"})
+    EXPECT_NE(p.err.find(stage), std::string::npos) << stage << "\n" << p.err;
+  EXPECT_EQ(p.err.find('\r'), std::string::npos) << "whole lines, not a terminal line";
+  // stderr is not a terminal here: without --progress, nothing on stderr on success.
+  const CmdResult q = run("solve " + cmc + " --out " + (tmpdir() / "no_progress").string());
+  ASSERT_EQ(q.status, 0) << q.err;
+  EXPECT_EQ(q.err, "");
+  const std::string result = (tmpdir() / "progress" / "result.json").string();
+  const CmdResult c = run("check " + result + " --progress");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(c.err.find("bpde: sampling"), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("bpde: checking (CGAL) done in"), std::string::npos) << c.err;
+  EXPECT_EQ(run("check " + result).err, "");
+  EXPECT_EQ(run("sample " + result + " --out " + (tmpdir() / "resample").string()).err, "");
+  // A bad input with --progress still ends in exactly one error line.
+  const CmdResult bad = run("solve " + kBlend + " --out " + (tmpdir() / "p_bad").string() + " --progress");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }

@@ -1,0 +1,25 @@
+#pragma once
+// The progress callback (core/progress.h) of the jobs run on this thread: run_job passes it to
+// the solvers' Options (CmcOptions::progress), write_result reports its stages (sampling,
+// checking, writing). Null unless a caller installs one with a JobProgressScope, so that the job
+// functions keep their signatures and cost nothing when progress is off.
+#include "core/progress.h"
+
+namespace bpde {
+
+/// The callback installed on this thread (an empty function when none is).
+const ProgressFn& job_progress();
+
+/// Installs `progress` for the jobs run on this thread while it lives (scopes nest).
+class JobProgressScope {
+ public:
+  explicit JobProgressScope(ProgressFn progress);
+  ~JobProgressScope();
+  JobProgressScope(const JobProgressScope&) = delete;
+  JobProgressScope& operator=(const JobProgressScope&) = delete;
+
+ private:
+  ProgressFn previous_;
+};
+
+}  // namespace bpde
