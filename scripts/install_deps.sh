@@ -13,6 +13,7 @@ PACKAGES=(
   libbenchmark-dev       # Google Benchmark
   nlohmann-json3-dev     # JSON
   libcli11-dev           # command line
+  python3 python3-jsonschema  # tests/schema: the JSON Schemas of docs/schema/
 )
 
 missing=()

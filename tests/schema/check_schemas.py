@@ -1,0 +1,143 @@
+#!/usr/bin/env python3
+"""The JSON Schemas of docs/schema/ against the examples and against the readers.
+
+Usage: check_schemas.py SOURCE_DIR BPDE_BINARY
+
+1. Every JSON file under examples/ validates against its schema (blend configs against
+   blend.schema.json, jobs against job.schema.json).
+2. On a few mutations of an example job, blend config and net (unknown field, wrong type, missing
+   field, value out of range), the schema rejects exactly when the reader (the bpde binary)
+   rejects with exit 2; the unmutated files pass both.
+Exit 0 when all hold; the failures are printed.
+"""
+import copy
+import json
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+import jsonschema
+
+SOURCE = pathlib.Path(sys.argv[1])
+BPDE = sys.argv[2]
+SCHEMAS = SOURCE / "docs" / "schema"
+failures = []
+
+
+def load(path):
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)
+
+
+def validator(name):
+    """A validator of docs/schema/NAME, its relative $refs resolved among the schema files."""
+    schemas = {p.name: load(p) for p in SCHEMAS.glob("*.schema.json")}
+    cls = jsonschema.validators.validator_for(schemas[name])
+    cls.check_schema(schemas[name])
+    try:  # jsonschema >= 4.18
+        from referencing import Registry, Resource
+
+        registry = Registry().with_resources((n, Resource.from_contents(s)) for n, s in schemas.items())
+        return cls(schemas[name], registry=registry)
+    except ImportError:  # Debian 12: jsonschema 4.10
+        resolver = jsonschema.RefResolver(base_uri=name, referrer=schemas[name], store=schemas)
+        return cls(schemas[name], resolver=resolver)
+
+
+JOB, BLEND, NET = validator("job.schema.json"), validator("blend.schema.json"), validator("net.schema.json")
+
+
+def schema_errors(v, doc):
+    return [f"{'/'.join(map(str, e.absolute_path)) or '(root)'}: {e.message[:160]}" for e in v.iter_errors(doc)]
+
+
+# 1. Every example validates.
+examples = sorted((SOURCE / "examples").rglob("*.json"))
+if not examples:
+    failures.append("no example JSON found under examples/")
+for path in examples:
+    doc = load(path)
+    v = BLEND if doc.get("kind") == "blend" else JOB
+    for e in schema_errors(v, doc):
+        failures.append(f"{path.relative_to(SOURCE)}: {e}")
+
+# 2. The schemas reject what the readers reject.
+tmp = pathlib.Path(tempfile.mkdtemp(prefix="bpde_schema_"))
+
+
+def reader_exit(command, doc):
+    """Exit status of `bpde COMMAND FILE [...]` on doc (2: the reader refused it)."""
+    f = tmp / "input.json"
+    f.write_text(json.dumps(doc), encoding="utf-8")
+    out = tmp / "out"
+    args = {"solve": ["solve", str(f), "--out", str(out), "--quiet", "--samples", "2"],
+            "blend": ["blend", str(f), "--out", str(out)],
+            "check": ["check", str(f), "--samples", "2"]}[command]
+    return subprocess.run([BPDE] + args, capture_output=True, timeout=300).returncode
+
+
+def mutate(doc, path, value=None, delete=False):
+    d = copy.deepcopy(doc)
+    node = d
+    for k in path[:-1]:
+        node = node[k]
+    if delete:
+        del node[path[-1]]
+    else:
+        node[path[-1]] = value
+    return d
+
+
+job = load(SOURCE / "examples" / "001-pde-figures" / "fig1-biharmonic.json")
+cmc = load(SOURCE / "examples" / "004-cmc-circle" / "n4-b-H-1.json")
+blend = load(SOURCE / "examples" / "003-blend-cylinders" / "fig2a.json")
+net = {"type": "triangular", "degree": 1, "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
+
+cases = [
+    # (what, command, validator, document, the reader and the schema accept it)
+    ("job as it is", "solve", JOB, job, True),
+    ("job without samples and fixed", "solve", JOB, mutate(mutate(job, ["samples"], delete=True), ["fixed"],
+                                                              delete=True), True),
+    ("job: unknown top-level field", "solve", JOB, mutate(job, ["sample"], 50), False),
+    ("job: unknown problem field", "solve", JOB, mutate(job, ["problem", "methd"], "lu"), False),
+    ("job: samples of the wrong type", "solve", JOB, mutate(job, ["samples"], "50"), False),
+    ("job: samples out of range", "solve", JOB, mutate(job, ["samples"], 2001), False),
+    ("job: missing problem", "solve", JOB, mutate(job, ["problem"], delete=True), False),
+    ("job: unknown method", "solve", JOB, mutate(job, ["problem", "method"], "qr"), False),
+    ("job: unknown fixed set", "solve", JOB, mutate(job, ["fixed"], "all"), False),
+    ("job: degree above 64", "solve", JOB, mutate(job, ["net", "degree"], [65, 5]), False),
+    ("job: operator energy in an extremal", "solve", JOB,
+     mutate(job, ["problem"], {"kind": "extremal", "energy": {"name": "operator", "coeffs": [1, 0, 2, 0, 1]}}), False),
+    ("job: extremal energy missing its coeffs", "solve", JOB,
+     mutate(job, ["problem"], {"kind": "extremal", "energy": {"name": "fourth-order"}}), False),
+    ("cmc job as it is", "solve", JOB, cmc, True),
+    ("cmc job with both H and V", "solve", JOB, mutate(cmc, ["problem", "V"], 1.0), False),
+    ("cmc job with V and solver newton", "solve", JOB, mutate(mutate(cmc, ["problem", "H"], delete=True),
+                                                            ["problem", "V"], 1.0), False),
+    ("blend config as it is", "blend", BLEND, blend, True),
+    ("blend: unknown field", "blend", BLEND, mutate(blend, ["b"], 1), False),
+    ("blend: missing epsilon", "blend", BLEND, mutate(blend, ["epsilon"], delete=True), False),
+    ("blend: partition of the wrong type", "blend", BLEND, mutate(blend, ["partition"], "4x4"), False),
+    ("blend: epsilon zero", "blend", BLEND, mutate(blend, ["epsilon"], 0), False),
+    ("blend: edge without dy", "blend", BLEND, mutate(blend, ["edges", "y0", "dy"], delete=True), False),
+    ("net as it is", "check", NET, net, True),
+    ("net: unknown field", "check", NET, mutate(net, ["knots"], []), False),
+    ("net: missing points", "check", NET, mutate(net, ["points"], delete=True), False),
+    ("net: a point of two numbers", "check", NET, mutate(net, ["points", 2], [0, 1]), False),
+    ("net: degree of the wrong type", "check", NET, mutate(net, ["degree"], [1, 1]), False),
+    ("net: unknown type", "check", NET, mutate(net, ["type"], "quad"), False),
+]
+for what, command, v, doc, valid in cases:
+    errors = schema_errors(v, doc)
+    status = reader_exit(command, doc)
+    if valid and (errors or status == 2):
+        failures.append(f"{what}: should pass; schema says {errors[:2]}, bpde {command} exit {status}")
+    if not valid and (not errors or status != 2):
+        failures.append(f"{what}: should be refused; schema errors {len(errors)}, bpde {command} exit {status}")
+
+for f in failures:
+    print("FAIL", f)
+print(f"{len(examples)} examples, {len(cases)} reader cases, {len(failures)} failures")
+sys.exit(1 if failures else 0)
