@@ -5,11 +5,13 @@
 // For each job: the explicit solution (written to OUT_DIR/<job>/), the lu solution, their
 // largest control-point difference relative to the net's size, the PDE residual, and the
 // energy extremal with the same boundary (docs/errata.md, explicit PDE solutions §2: it is a different surface with
-// lower energy). Prints a Markdown table (README.md holds its output).
+// lower energy). Prints a Markdown table as the generated section "pde-figures" of README.md
+// (scripts/docs.sh); residual and difference at rounding level print as "< 1e-13".
 #include <cstdio>
 #include <filesystem>
 
 #include "energies/quadratic_energy.h"
+#include "examples/common/generated.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"
 #include "solvers/extremal.h"
@@ -24,6 +26,7 @@ int main(int argc, char** argv) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".json") jobs.push_back(e.path());
   std::sort(jobs.begin(), jobs.end());
+  const bpde::examples::GeneratedSection section("pde-figures");
   std::printf(
       "| job | operator | E(PDE solution) | pde_residual | explicit vs lu | E(extremal) | self-intersections |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
@@ -37,8 +40,10 @@ int main(int argc, char** argv) {
     const auto& P = std::get<bpde::TensorNet>(ex.net).points();
     const double diff = (P - lu.net.points()).cwiseAbs().maxCoeff() / P.cwiseAbs().maxCoeff();
     const bpde::ExtremalResult xt = bpde::solve_extremal(data, op, bpde::FixedSet::Boundary);
-    std::printf("| %s | %s | %.6g | %.1e | %.1e | %.6g | %d |\n", path.stem().c_str(), op.name().c_str(),
-                ex.report["energy"].get<double>(), ex.report["pde_residual"].get<double>(), diff, xt.energy,
+    std::printf("| %s | %s | %.6g | %s | %s | %.6g | %d |\n", path.stem().c_str(), op.name().c_str(),
+                ex.report["energy"].get<double>(),
+                bpde::examples::stable_small(ex.report["pde_residual"].get<double>()).c_str(),
+                bpde::examples::stable_small(diff).c_str(), xt.energy,
                 bpde::check_report(bpde::sample_net(ex.net, job.samples))["self_intersections"].get<int>());
   }
   return 0;
