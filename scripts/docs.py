@@ -34,7 +34,7 @@ END = "<!-- end -->"
 ARGS = {
     "000-c1-configurations": ["{src}", "{tmp}/out"],
     "001-pde-figures": ["{src}", "{tmp}/out"],
-    "003-blend-cylinders": ["{tmp}/configs", "{tmp}/out"],
+    "003-blend-cylinders": ["{tmp}", "{tmp}/out"],
     "004-cmc-c1-triangle": ["{src}", "{tmp}/out"],
     "004-cmc-circle": ["{src}", "{tmp}/out"],
     "004-cmc-fig2": ["{src}", "{tmp}/out"],
@@ -73,7 +73,7 @@ def masked(body, columns):
             out.append(line)
             skip = set()
             continue
-        cells = line.strip().strip("|").split("|")
+        cells = re.split(r"(?<!\\)\|", line.strip()[1:-1])  # cells; "\|" is a pipe inside a cell
         if not skip and not set(line) <= set("|-: \n"):
             names = [c.strip() for c in cells]
             if any(c in names for c in columns):

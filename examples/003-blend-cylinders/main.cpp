@@ -7,7 +7,8 @@
 //
 // Usage: example_003_blend_cylinders EXAMPLE_DIR [OUT_DIR]
 //   Writes EXAMPLE_DIR/fig2{a,b,c,d}.json (FORMATS.md blend configs), reads them back, solves
-//   each one by the KKT system (LU) and by elimination, and prints the README table. With
+//   each one by the KKT system (LU) and by elimination, and prints the README table (its
+//   generated section "blend-cylinders", scripts/docs.sh; seconds are machine-dependent). With
 //   OUT_DIR, also writes OUT_DIR/fig2X.obj (the (50+1)² sampled surface).
 #include <chrono>
 #include <cmath>
@@ -20,6 +21,7 @@
 
 #include "checks/mesh_checks.h"
 #include "core/errors.h"
+#include "examples/common/generated.h"
 #include "io/blend_config.h"
 #include "solvers/blend/smoothing_spline.h"
 
@@ -110,6 +112,7 @@ int main(int argc, char** argv) {
     const char* names[4] = {"fig2a", "fig2b", "fig2c", "fig2d"};
     const BlendConfig configs[4] = {figure2(1, 1, false), figure2(10, 1, false), figure2(10, 1e-3, true),
                                     figure2(10, 1e-5, true)};
+    const bpde::examples::GeneratedSection section("blend-cylinders", "seconds");
     std::printf(
         "| config | A | ε | a | converged | stationarity | J(σ) | \\|σ\\|_L² | max \\|σ(a_i) − β_i\\| "
         "| σ(x,½): X range | σ(x,½): radius range | surface X range | H min / mean / max "
@@ -151,12 +154,13 @@ int main(int argc, char** argv) {
       const MeshCheckReport check = check_mesh(verts, tris);
       const auto& P = cfg.problem;
       std::printf(
-          "| %s | %s | %g | %g | %s | %.1e | %.6g | %.6g | %s | [%.4f, %.4f] | [%.4f, %.4f] | "
-          "[%.4f, %.4f] | %.3f / %.3f / %.3f | %d | %.1e | %.4f |\n",
+          "| %s | %s | %g | %g | %s | %s | %.6g | %.6g | %s | [%.4f, %.4f] | [%.4f, %.4f] | "
+          "[%.4f, %.4f] | %.3f / %.3f / %.3f | %d | %s | %.4f |\n",
           names[c], P.points.rows() ? "(i/9, ½), i = 0..8" : "∅", P.epsilon, P.a, r.summary.converged ? "yes" : "no",
-          r.summary.residual, r.functional, r.energy,
+          bpde::examples::stable_small(r.summary.residual).c_str(), r.functional, r.energy,
           P.points.rows() ? (std::to_string(r.max_data_error)).c_str() : "—", xmin, xmax, rmin, rmax, sxmin, sxmax,
-          mesh.H.minCoeff(), mesh.H.mean(), mesh.H.maxCoeff(), check.self_intersections, diff, secs);
+          mesh.H.minCoeff(), mesh.H.mean(), mesh.H.maxCoeff(), check.self_intersections,
+          bpde::examples::order_bound(diff).c_str(), secs);
       if (argc >= 3) {
         std::filesystem::create_directories(argv[2]);
         write_obj((std::filesystem::path(argv[2]) / (std::string(names[c]) + ".obj")).string(), mesh);
