@@ -20,6 +20,7 @@
 
 #include "boundaries/reference_boundaries.h"
 #include "energies/cmc.h"
+#include "examples/common/generated.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"
@@ -102,13 +103,16 @@ int main(int argc, char** argv) {
                           job_json(bpde::tensor_boundary(8, bpde::sphere_square), 1.0));
   }
 
+  // The tables are the generated section "cmc-sphere-convergence" of README.md (scripts/docs.sh);
+  // the solve times (ms) are machine-dependent and not compared.
+  const bpde::examples::GeneratedSection section("cmc-sphere-convergence", "ms");
   // 1. Job files.
   std::vector<fs::path> jobs;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".json") jobs.push_back(e.path());
   std::sort(jobs.begin(), jobs.end());
   std::printf(
-      "### Job files\n\n| job | H | exit | D_H | V | max \\|\\|x\\| − 1\\| | H mean | self-intersections |\n"
+      "#### Job files\n\n| job | H | exit | D_H | V | max \\|\\|x\\| − 1\\| | H mean | self-intersections |\n"
       "|---|---|---|---|---|---|---|---|\n");
   for (const auto& p : jobs) {
     const bpde::Job job = bpde::read_job_file(p.string());
@@ -125,14 +129,14 @@ int main(int argc, char** argv) {
   }
 
   // 2–3. Degree sweeps, H = +1 (the sphere's H in the FORMATS.md orientation).
-  std::printf("\n### Triangular (sphere_triangle), H = +1\n\n%s", kSweepHeader);
+  std::printf("\n#### Triangular (sphere_triangle), H = +1\n\n%s", kSweepHeader);
   for (int n = 4; n <= 16; ++n) sweep_row(bpde::triangular_boundary(n, bpde::sphere_triangle), n, 1.0);
-  std::printf("\n### Tensor (sphere_square), H = +1\n\n%s", kSweepHeader);
+  std::printf("\n#### Tensor (sphere_square), H = +1\n\n%s", kSweepHeader);
   for (int n = 4; n <= 16; ++n) sweep_row(bpde::tensor_boundary(n, bpde::sphere_square), n, 1.0);
 
   // 4. Sign check.
   std::printf(
-      "\n### Sign check: the same data with H = −1 (n = 8)\n\n| net | converged | max \\|\\|x\\| − 1\\| | V "
+      "\n#### Sign check: the same data with H = −1 (n = 8)\n\n| net | converged | max \\|\\|x\\| − 1\\| | V "
       "|\n|---|---|---|---|\n");
   {
     bpde::CmcOptions o;
