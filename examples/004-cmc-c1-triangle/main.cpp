@@ -16,11 +16,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "examples/common/generated.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"
@@ -105,10 +107,16 @@ int main(int argc, char** argv) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".json") jobs.push_back(e.path());
   std::sort(jobs.begin(), jobs.end());
-  std::printf("### Job files (lift %g)\n\n%s", kLift, kHeader);
+  std::printf("### Job files (lift %g)\n\n", kLift);
+  std::optional<bpde::examples::GeneratedSection> section;
+  section.emplace("cmc-c1-triangle-jobs");
+  std::printf("%s", kHeader);
   for (const auto& p : jobs) row(p.stem().string(), bpde::read_job_file(p.string()), &out);
+  section.reset();
 
-  std::printf("\n### Degree sweep (lift %g)\n\n%s", kLift, kHeader);
+  std::printf("\n### Degree sweep (lift %g)\n\n", kLift);
+  section.emplace("cmc-c1-triangle-sweep");
+  std::printf("%s", kHeader);
   for (int n : {6, 7, 8, 10})
     for (double H : {0.0, -1.0, -1.5, -2.0}) {
       bpde::Job job;
@@ -120,10 +128,10 @@ int main(int argc, char** argv) {
       row("sweep", job, nullptr);
     }
 
-  std::printf(
-      "\n### Fold of the branch from H = 0 (lift %g)\n\n| n | free points | fold H < 0 | fold H > 0 "
-      "|\n|---|---|---|---|\n",
-      kLift);
+  section.reset();
+  std::printf("\n### Fold of the branch from H = 0 (lift %g)\n\n", kLift);
+  section.emplace("cmc-c1-triangle-fold");
+  std::printf("| n | free points | fold H < 0 | fold H > 0 |\n|---|---|---|---|\n");
   for (int n : {6, 7, 8, 10}) {
     const bpde::TriangularNet d = c1_triangle(n, kLift);
     auto fold = [&](double H) {

@@ -12,10 +12,12 @@
 //   3. the fold: the last H reached on the branch from H = 0 towards H = −10 (and +10).
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "examples/common/generated.h"
 #include "boundaries/reference_boundaries.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
@@ -88,11 +90,18 @@ int main(int argc, char** argv) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".json") jobs.push_back(e.path());
   std::sort(jobs.begin(), jobs.end());
-  std::printf("### Job files\n\n%s", kHeader);
-  for (const auto& p : jobs) row(p.stem().string(), bpde::read_job_file(p.string()), &out);
+  std::printf("### Job files\n\n");
+  {
+    const bpde::examples::GeneratedSection section("cmc-circle-jobs");
+    std::printf("%s", kHeader);
+    for (const auto& p : jobs) row(p.stem().string(), bpde::read_job_file(p.string()), &out);
+  }
 
   // 2. Degree sweep.
-  std::printf("\n### Degree sweep (newton)\n\n%s", kHeader);
+  std::printf("\n### Degree sweep (newton)\n\n");
+  std::optional<bpde::examples::GeneratedSection> section;
+  section.emplace("cmc-circle-sweep");
+  std::printf("%s", kHeader);
   for (int n : {4, 5, 6, 8, 10})
     for (double H : {-1.5, -1.0, -0.5}) {
       bpde::Job job;
@@ -104,8 +113,11 @@ int main(int argc, char** argv) {
     }
 
   // 3. The fold per degree: continue towards H = ∓10; the solve stops at the fold.
+  section.reset();
+  std::printf("\n### Fold of the branch from H = 0\n\n");
+  section.emplace("cmc-circle-fold");
   std::printf(
-      "\n### Fold of the branch from H = 0\n\n| n | fold H < 0 | fold H > 0 | V at the fold (H < 0) | steps "
+      "| n | fold H < 0 | fold H > 0 | V at the fold (H < 0) | steps "
       "|\n|---|---|---|---|---|\n");
   for (int n : {4, 5, 6, 7, 8, 10, 12}) {
     bpde::CmcOptions o;

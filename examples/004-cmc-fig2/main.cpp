@@ -17,10 +17,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "examples/common/generated.h"
 #include "boundaries/reference_boundaries.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
@@ -97,11 +99,13 @@ int main(int argc, char** argv) {
   std::sort(jobs.begin(), jobs.end());
   std::stable_partition(jobs.begin(), jobs.end(),
                         [](const fs::path& p) { return p.stem().string().starts_with("top"); });
+  std::printf("### Job files (n = %d)\n\n", kDegree);
+  std::optional<bpde::examples::GeneratedSection> section;
+  section.emplace("cmc-fig2-jobs");
   std::printf(
-      "### Job files (n = %d)\n\n| job | H | exit | D_H | D | V | z min / max | H mean | H min / max | "
+      "| job | H | exit | D_H | D | V | z min / max | H mean | H min / max | "
       "self-intersections |\n"
-      "|---|---|---|---|---|---|---|---|---|---|\n",
-      kDegree);
+      "|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& p : jobs) {
     const bpde::Job job = bpde::read_job_file(p.string());
     const bpde::SolveOutcome o = bpde::run_job(job);
@@ -121,8 +125,11 @@ int main(int argc, char** argv) {
   }
 
   // Degree sweep: distance to the reference surface and folds.
+  section.reset();
+  std::printf("\n### Degree sweep\n\n");
+  section.emplace("cmc-fig2-sweep");
   std::printf(
-      "\n### Degree sweep\n\n| n | top: max \\|x − Enneper\\| at H = 0 | top: fold H < 0 | top: fold H > 0 "
+      "| n | top: max \\|x − Enneper\\| at H = 0 | top: fold H < 0 | top: fold H > 0 "
       "| bottom: max \\|x − sphere\\| at H = −1.5 | bottom: fold H < 0 | bottom: fold H > 0 |\n"
       "|---|---|---|---|---|---|---|\n");
   for (int n : {4, 6, 8, 10}) {

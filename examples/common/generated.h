@@ -29,10 +29,12 @@ class GeneratedSection {
 };
 
 /// A non-negative error or residual for a table: "< floor" below `floor` (rounding level, whose
-/// digits vary with the machine and compiler), else 2 significant digits ("%.1e").
+/// digits vary with the machine and compiler), "0" when exactly 0, else 2 significant digits ("%.1e").
 inline std::string stable_small(double x, double floor = 1e-13) {
   char buf[32];
-  if (x < floor)
+  if (x == 0)
+    return "0";  // exactly: the same computation on both sides
+  else if (x < floor)
     std::snprintf(buf, sizeof buf, "< %.0e", floor);
   else
     std::snprintf(buf, sizeof buf, "%.1e", x);
