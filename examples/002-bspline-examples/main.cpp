@@ -9,11 +9,13 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "energies/energy_spec.h"
+#include "examples/common/generated.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
 #include "tensor/bspline_net.h"
@@ -255,6 +257,8 @@ int main() {
     }
 
     std::printf("### Extremals (exist for any boundary)\n\n");
+    std::optional<bpde::examples::GeneratedSection> section;
+    section.emplace("bspline-extremals", "seconds");
     std::printf("| energy | fixed | energy value | relative residual | seconds |\n|---|---|---|---|---|\n");
     for (const auto& [name, e] : std::vector<std::pair<const char*, EnergySpec>>{
              {"coons", EnergySpec::coons()},
@@ -264,14 +268,16 @@ int main() {
              {"dirichlet", EnergySpec::dirichlet()}})
       for (FixedSet fx : {FixedSet::Boundary, FixedSet::BoundaryAdjacent}) {
         const BSplineExtremalResult r = solve_bspline_extremal(generic, e, BSplineExtremalOptions{fx});
-        std::printf("| %s | %s | %.10g | %.1e | %.1e |\n", name, to_string(fx).c_str(), r.energy, r.summary.residual,
-                    r.summary.seconds);
+        std::printf("| %s | %s | %.10g | %s | %.1e |\n", name, to_string(fx).c_str(), r.energy,
+                    bpde::examples::stable_small(r.summary.residual).c_str(), r.summary.seconds);
       }
+    section.reset();
     std::printf("\n");
   }
 
   // ------------------------------------------------------------------ sizes
   std::printf("## Larger nets (timings on this machine)\n\n");
+  const bpde::examples::GeneratedSection sizes("bspline-sizes", "seconds");
   std::printf("| net | problem | result | seconds |\n|---|---|---|---|\n");
   for (int spans : {4, 8, 16}) {
     std::vector<double> interior;
@@ -286,8 +292,8 @@ int main() {
     const BSplineNet net(5, 5, K, K, P);
     auto t0 = std::chrono::steady_clock::now();
     const BSplineExtremalResult e = solve_bspline_extremal(net, EnergySpec::biharmonic());
-    std::printf("| biquintic %d x %d spans (%d points) | biharmonic extremal | residual %.1e | %.3f |\n", spans, spans,
-                n * n, e.summary.residual, seconds_since(t0));
+    std::printf("| biquintic %d x %d spans (%d points) | biharmonic extremal | residual %s | %.3f |\n", spans, spans,
+                n * n, bpde::examples::stable_small(e.summary.residual).c_str(), seconds_since(t0));
     t0 = std::chrono::steady_clock::now();
     const BSplinePdeResult r = solve_bspline_pde(net, EnergySpec::coons());
     std::printf("| biquintic %d x %d spans (%d points) | Coons PDE, %d equations | rank %d, converged %s | %.3f |\n",
