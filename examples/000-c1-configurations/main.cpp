@@ -220,8 +220,7 @@ int main(int argc, char** argv) {
       std::printf("| %s | %s | %s | %d | %s | %d | %.4g | %s | %.3f | %.3f | [%.3g, %.3g] | %s | %s |\n",
                   c.name.c_str(), c.figure.c_str(), tetra ? "tetraharmonic (lu)" : "biharmonic-load", net.n(),
                   bpde::examples::order_bound(residual).c_str(), si, ls.rings, interior, net.evaluate(0.5, 0.5).z(),
-                  mesh.V.col(2).maxCoeff(),
-                  H["min"].get<double>(), H["max"].get<double>(), exp_vs_lu, sph);
+                  mesh.V.col(2).maxCoeff(), H["min"].get<double>(), H["max"].get<double>(), exp_vs_lu, sph);
     }
   }
   results.reset();

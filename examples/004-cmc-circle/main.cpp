@@ -12,13 +12,13 @@
 //   3. the fold: the last H reached on the branch from H = 0 towards H = −10 (and +10).
 #include <algorithm>
 #include <cstdio>
-#include <optional>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "examples/common/generated.h"
 #include "boundaries/reference_boundaries.h"
+#include "examples/common/generated.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"

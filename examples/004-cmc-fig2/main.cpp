@@ -17,13 +17,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "examples/common/generated.h"
 #include "boundaries/reference_boundaries.h"
+#include "examples/common/generated.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
 #include "jobs/run_job.h"
