@@ -17,6 +17,7 @@
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
+#include "io/boundary_json.h"
 #include "io/mesh_io.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
@@ -347,7 +348,11 @@ Status checked_status(const Summary& s) {
   return s.status;
 }
 
-SolveOutcome run_job(const Job& job) { return checked_solver(job, "job").run(job); }
+SolveOutcome run_job(const Job& job) {
+  SolveOutcome out = checked_solver(job, "job").run(job);
+  if (!job.boundary_fit.empty()) out.report["boundary_fit"] = boundary_fit_to_json(job.boundary_fit);
+  return out;
+}
 
 void make_output_dir(const std::string& dir) {
   std::error_code ec;
