@@ -74,7 +74,8 @@ class BoundaryCurve {
                            double angle1, const std::optional<Eigen::Vector3d>& reference = std::nullopt);
   static BoundaryCurve arc_through(const Eigen::Vector3d& p0, const Eigen::Vector3d& pm, const Eigen::Vector3d& p1);
   static BoundaryCurve helix(const Eigen::Vector3d& center, const Eigen::Vector3d& axis, double radius, double angle0,
-                             double angle1, double pitch, const std::optional<Eigen::Vector3d>& reference = std::nullopt);
+                             double angle1, double pitch,
+                             const std::optional<Eigen::Vector3d>& reference = std::nullopt);
   static BoundaryCurve function(std::function<Eigen::Vector3d(double)> f, std::string kind = "function");
 
   /// "bezier", "bspline", "samples", "segment", "arc", "helix" or the function's kind.

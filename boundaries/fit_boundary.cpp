@@ -134,7 +134,8 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
       const int d = static_cast<int>(maps[e].adj.size()) - 1;
       Eigen::MatrixX3d Dr(d + 1, 3);
       for (int s = 0; s <= d; ++s)
-        Dr.row(s) = maps[e].cross * (P.row(maps[e].adj[static_cast<size_t>(s)]) - P.row(maps[e].bnd[static_cast<size_t>(s)]));
+        Dr.row(s) =
+            maps[e].cross * (P.row(maps[e].adj[static_cast<size_t>(s)]) - P.row(maps[e].bnd[static_cast<size_t>(s)]));
       out.edges[e].tangent_max_error = edge_error(data.tangents[e], Dr);
     }
   }

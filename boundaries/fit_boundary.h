@@ -108,7 +108,8 @@ struct BoundaryFit {
 /// Throws SizeError (not 4 edges, or tangents for some edges only), DegreeError (degrees outside
 /// 1..kMaxDegree; tangents with n or m < 2), ParameterError (corners that do not meet, options),
 /// NonFiniteError (a fit that overflows), and the fit's errors.
-BoundaryFit<TensorNet> fit_tensor_boundary(int n, int m, const BoundaryData& data, const BoundaryFitOptions& options = {});
+BoundaryFit<TensorNet> fit_tensor_boundary(int n, int m, const BoundaryData& data,
+                                           const BoundaryFitOptions& options = {});
 
 /// The triangular net of degree n likewise (3 edges; tangents need n >= 2).
 BoundaryFit<TriangularNet> fit_triangular_boundary(int n, const BoundaryData& data,

@@ -192,7 +192,8 @@ BoundaryNet boundary_from_json(const Json& j, const std::string& path) {
       const std::string p = path + "." + key;
       if (!a.is_array()) throw ParseError(p + ": expected an array of " + std::to_string(E) + " curves");
       if (a.size() != E)
-        throw SizeError(p + ": a " + type + " net has " + std::to_string(E) + " edges, got " + std::to_string(a.size()));
+        throw SizeError(p + ": a " + type + " net has " + std::to_string(E) + " edges, got " +
+                        std::to_string(a.size()));
       std::vector<BoundaryCurve> c;
       for (size_t e = 0; e < E; ++e) c.push_back(curve_from_json(a[e], p + "[" + std::to_string(e) + "]"));
       return c;
