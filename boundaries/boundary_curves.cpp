@@ -104,7 +104,11 @@ BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points, const std::vector<
 BoundaryCurve BoundaryCurve::segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   require_finite(a, "from");
   require_finite(b, "to");
-  return BoundaryCurve(Segment{a, b}, "segment");
+  // A degree-1 Bézier curve: fitted by exact elevation.
+  Eigen::MatrixX3d P(2, 3);
+  P.row(0) = a.transpose();
+  P.row(1) = b.transpose();
+  return BoundaryCurve(Bezier{P}, "segment");
 }
 
 BoundaryCurve BoundaryCurve::arc(const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double radius,
@@ -200,10 +204,6 @@ Eigen::Vector3d BoundaryCurve::evaluate(double t) const {
     const Eigen::Index i = std::clamp<Eigen::Index>(it - T.data(), 1, T.size() - 1);
     const double w = (t - T(i - 1)) / (T(i) - T(i - 1));
     return ((1 - w) * s->points.row(i - 1) + w * s->points.row(i)).transpose();
-  }
-  if (const auto* s = std::get_if<Segment>(&data_)) {
-    if (t == 1.0) return s->b;
-    return (1 - t) * s->a + t * s->b;
   }
   if (const auto* a = std::get_if<Arc>(&data_)) {
     const double ang = t == 1.0 ? a->angle1 : a->angle0 + t * (a->angle1 - a->angle0);

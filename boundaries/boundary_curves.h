@@ -10,7 +10,7 @@
 //   samples  points q_0..q_M with parameters t_0 = 0 < t_1 < ... < t_M = 1: the given parameters
 //            mapped affinely onto [0,1], or, when none are given, the normalised chord length.
 //            evaluate() interpolates linearly between samples; the fit uses the samples only.
-//   segment  c(t) = (1-t) a + t b.
+//   segment  c(t) = (1-t) a + t b (held as a degree-1 Bézier curve).
 //   arc      c(t) = center + r (cos a e1 + sin a e2), a = a0 + t (a1 - a0) (angles in radians,
 //            counter-clockwise about the unit normal N, right-handed: e2 = N x e1). e1 is the
 //            reference direction projected onto the plane of the circle and normalised; the
@@ -50,9 +50,6 @@ class BoundaryCurve {
     Eigen::MatrixX3d points;  ///< (M+1) x 3, M >= 1
     Eigen::VectorXd params;   ///< M+1 strictly increasing, first 0, last 1
   };
-  struct Segment {
-    Eigen::Vector3d a, b;
-  };
   /// Arc and helix (pitch 0 for an arc).
   struct Arc {
     Eigen::Vector3d center, e1, e2, normal;
@@ -85,12 +82,12 @@ class BoundaryCurve {
   Eigen::Vector3d start() const { return evaluate(0.0); }
   Eigen::Vector3d end() const { return evaluate(1.0); }
 
-  /// The form, for the fit (nullptr when it is another one).
+  /// The form, for the fit (nullptr when it is another one; a segment is a Bézier curve).
   const Bezier* as_bezier() const { return std::get_if<Bezier>(&data_); }
   const Samples* as_samples() const { return std::get_if<Samples>(&data_); }
 
  private:
-  using Data = std::variant<Bezier, BSpline, Samples, Segment, Arc, Function>;
+  using Data = std::variant<Bezier, BSpline, Samples, Arc, Function>;
   BoundaryCurve(Data d, std::string kind) : data_(std::move(d)), kind_(std::move(kind)) {}
   BoundaryCurve as_arc() const;  // a helix with its pitch dropped, named "arc"
   Data data_;

@@ -19,7 +19,7 @@
 //     edge 2: u = 0, x(0, 1-t)     (P_0n0 -> P_00n; points P_{0,n-s,s})
 //
 // Fit of one curve at degree n (fit_edge):
-//   - a Bézier curve of degree k <= n: exact degree elevation (method "elevation");
+//   - a Bézier curve of degree k <= n, or a segment: exact degree elevation (method "elevation");
 //   - samples: least squares over the samples at their parameters with the end points fixed to
 //     the first and last sample ("least-squares"; needs at least n+1 samples that determine the
 //     polynomial: SizeError / ParameterError otherwise);
