@@ -194,3 +194,17 @@ TEST(BoundaryJobs, BadInputExitsTwoWithOneLine) {
                  "collinear");
   expect_bad_job("bad_fit", tri(seg + ", " + seg2 + ", " + seg3, R"(, "fit": "spline")"), "unknown fit \"spline\"");
 }
+
+// The complete example of FORMATS.md "Boundary curves" runs as documented.
+TEST(BoundaryJobs, TheFormatsExampleRuns) {
+  const std::string doc = bpde::testing::slurp(fs::path(BPDE_SOURCE_DIR) / "docs" / "FORMATS.md");
+  const size_t section = doc.find("## Boundary curves");
+  ASSERT_NE(section, std::string::npos);
+  const size_t begin = doc.find("```json", section) + 7, end = doc.find("```", begin);
+  const Json r = solve(write("formats_example.json", doc.substr(begin, end - begin)), "formats_example");
+  EXPECT_TRUE(r["report"]["converged"].get<bool>());
+  const Json& fit = r["report"]["boundary_fit"];
+  ASSERT_EQ(fit.size(), 3u);
+  EXPECT_EQ(fit[2]["method"], "elevation");
+  EXPECT_LT(fit[0]["max_error"].get<double>(), 4e-8);  // degree 8: 3.1e-8 (docs/boundaries.md)
+}
