@@ -44,6 +44,12 @@ void frame(const Eigen::Vector3d& normal, const std::optional<Eigen::Vector3d>& 
   e2 = N.cross(e1);
 }
 
+void require_at_most(Eigen::Index rows, const char* what) {
+  if (rows > BoundaryCurve::kMaxPoints)
+    throw SizeError(std::string(what) + ": at most " + std::to_string(BoundaryCurve::kMaxPoints) + " points, got " +
+                    std::to_string(rows));
+}
+
 }  // namespace
 
 BoundaryCurve BoundaryCurve::bezier(Eigen::MatrixX3d points) {
@@ -57,6 +63,7 @@ BoundaryCurve BoundaryCurve::bezier(Eigen::MatrixX3d points) {
 }
 
 BoundaryCurve BoundaryCurve::bspline(int degree, std::vector<double> knots, Eigen::MatrixX3d points) {
+  require_at_most(points.rows(), "a B-spline curve");
   BSplineNet::validate_knots(degree, knots, "curve");
   const Eigen::Index count = static_cast<Eigen::Index>(knots.size()) - degree - 1;
   if (points.rows() != count)
@@ -68,6 +75,7 @@ BoundaryCurve BoundaryCurve::bspline(int degree, std::vector<double> knots, Eige
 
 BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points) {
   if (points.rows() < 2) throw SizeError("samples: at least 2 points, got " + std::to_string(points.rows()));
+  require_at_most(points.rows(), "samples");
   require_finite(points, "points");
   std::vector<double> s(static_cast<size_t>(points.rows()), 0.0);
   for (Eigen::Index i = 1; i < points.rows(); ++i) {
@@ -82,6 +90,7 @@ BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points) {
 
 BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points, const std::vector<double>& params) {
   if (points.rows() < 2) throw SizeError("samples: at least 2 points, got " + std::to_string(points.rows()));
+  require_at_most(points.rows(), "samples");
   if (static_cast<Eigen::Index>(params.size()) != points.rows())
     throw SizeError("samples: " + std::to_string(points.rows()) + " points but " + std::to_string(params.size()) +
                     " parameters");

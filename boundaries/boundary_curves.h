@@ -38,6 +38,10 @@ namespace bpde {
 
 class BoundaryCurve {
  public:
+  /// Most points of a B-spline curve or of samples (SizeError beyond): a fit costs O(points · n²)
+  /// time and the least-squares table O(points · n) memory.
+  static constexpr int kMaxPoints = 100000;
+
   struct Bezier {
     Eigen::MatrixX3d points;  ///< (k+1) x 3, k >= 1
   };

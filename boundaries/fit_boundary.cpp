@@ -65,6 +65,8 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
   for (size_t e = 0; e < E; ++e) {
     starts[e] = data.edges[e].start();
     ends[e] = data.edges[e].end();
+    if (!starts[e].allFinite() || !ends[e].allFinite())
+      throw NonFiniteError("boundary: the end points of edge " + std::to_string(e) + " overflow");
     lo = lo.cwiseMin(starts[e]).cwiseMin(ends[e]);
     hi = hi.cwiseMax(starts[e]).cwiseMax(ends[e]);
   }

@@ -181,7 +181,7 @@ Job parse_job(const Json& j, const std::string& source) {
     if (job.fixed != FixedSet::BoundaryAdjacent && b->c1)
       throw ParameterError(source + ".boundary.tangents: C1 data, but fixed is not \"boundary+adjacent\"");
     job.net = std::move(b->net);
-    job.boundary_fit = std::move(b->fits);
+    job.boundary_fit = boundary_fit_to_json(b->fits);
   }
   job.problem = problem_from_json(field(j, source, "problem"), source + ".problem");
   if (j.contains("samples")) {

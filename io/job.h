@@ -5,7 +5,6 @@
 #include <optional>
 #include <string>
 
-#include "boundaries/fit_boundary.h"
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "io/json_io.h"
@@ -34,9 +33,9 @@ struct Job {
   FixedSet fixed = FixedSet::Boundary;
   Problem problem;
   int samples = 50;  ///< mesh resolution of the surface files, 1..kMaxSamples
-  /// A job given in the "boundary" form (io/boundary_json.h): how each edge was fitted (the
-  /// report's `boundary_fit`); empty when the job gives the net.
-  std::vector<EdgeFit> boundary_fit = {};
+  /// A job given in the "boundary" form (io/boundary_json.h): how each edge was fitted, the
+  /// report's `boundary_fit` (boundary_fit_to_json); null when the job gives the net.
+  Json boundary_fit = nullptr;
 };
 
 /// Largest accepted `samples` (a 2000^2 grid is 4M vertices; more is almost surely a mistake).

@@ -17,7 +17,6 @@
 #include "energies/quadratic_energy.h"
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
-#include "io/boundary_json.h"
 #include "io/mesh_io.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
@@ -350,7 +349,7 @@ Status checked_status(const Summary& s) {
 
 SolveOutcome run_job(const Job& job) {
   SolveOutcome out = checked_solver(job, "job").run(job);
-  if (!job.boundary_fit.empty()) out.report["boundary_fit"] = boundary_fit_to_json(job.boundary_fit);
+  if (!job.boundary_fit.is_null()) out.report["boundary_fit"] = job.boundary_fit;
   return out;
 }
 

@@ -110,6 +110,10 @@ TEST(BoundaryCurves, BadCurvesThrowTypedErrors) {
   EXPECT_THROW(BoundaryCurve::samples(S), bpde::ParameterError);  // points 0 and 1 coincide
   EXPECT_THROW(BoundaryCurve::samples(S, {0, 2, 1}), bpde::ParameterError);
   EXPECT_THROW(BoundaryCurve::samples(S, {0, 1}), bpde::SizeError);
+  Eigen::MatrixX3d many = Eigen::MatrixX3d::Zero(BoundaryCurve::kMaxPoints + 1, 3);
+  many.col(0).setLinSpaced(0, 1);
+  EXPECT_THROW(BoundaryCurve::samples(many), bpde::SizeError);
+  EXPECT_NO_THROW(BoundaryCurve::samples(many.topRows(BoundaryCurve::kMaxPoints)));
 }
 
 }  // namespace

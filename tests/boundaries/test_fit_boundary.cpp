@@ -258,6 +258,9 @@ TEST(FitBoundary, BadDataThrowTypedErrors) {
              BoundaryCurve::segment(Vector3d(1e308, 0, 0), Vector3d(-1e308, 1e308, 0)),
              BoundaryCurve::segment(Vector3d(-1e308, 1e308, 0), Vector3d(0, 0, 0))};
   EXPECT_THROW(bpde::fit_triangular_boundary(4, h), bpde::NonFiniteError);
+  // A helix whose rise overflows at its end point.
+  h.edges[0] = BoundaryCurve::helix(Vector3d::Zero(), Vector3d(0, 0, 1), 1, 0, 1e10, 1e308);
+  EXPECT_THROW(bpde::fit_triangular_boundary(4, h), bpde::NonFiniteError);
 }
 
 }  // namespace
