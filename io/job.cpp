@@ -176,8 +176,9 @@ Job parse_job(const Json& j, const std::string& source) {
   if (j.contains("fixed")) job.fixed = fixed_from_string(string(j["fixed"], source + ".fixed"), source + ".fixed");
   if (b) {
     if (job.fixed == FixedSet::BoundaryAdjacent && !b->c1)
-      throw ParameterError(source + ".boundary: fixed \"boundary+adjacent\" needs \"tangents\" (the cross-boundary "
-                                    "derivative along every edge)");
+      throw ParameterError(source +
+                           ".boundary: fixed \"boundary+adjacent\" needs \"tangents\" (the cross-boundary "
+                           "derivative along every edge)");
     if (job.fixed != FixedSet::BoundaryAdjacent && b->c1)
       throw ParameterError(source + ".boundary.tangents: C1 data, but fixed is not \"boundary+adjacent\"");
     job.net = std::move(b->net);
