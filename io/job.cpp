@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/errors.h"
+#include "io/boundary_json.h"
 
 namespace bpde {
 
@@ -163,9 +164,26 @@ Problem problem_from_json(const Json& j, const std::string& path) {
 
 Job parse_job(const Json& j, const std::string& source) {
   using namespace json_read;
-  check_keys(j, source, {"net", "fixed", "problem", "samples"});
-  Job job{net_from_json(field(j, source, "net"), source + ".net"), FixedSet::Boundary, {}, 50};
+  check_keys(j, source, {"net", "boundary", "fixed", "problem", "samples"});
+  if (j.contains("net") == j.contains("boundary"))
+    throw ParseError(source + ": a job gives exactly one of \"net\" and \"boundary\"");
+  Job job;
+  std::optional<BoundaryNet> b;
+  if (j.contains("net"))
+    job.net = net_from_json(j["net"], source + ".net");
+  else
+    b = boundary_from_json(j["boundary"], source + ".boundary");
   if (j.contains("fixed")) job.fixed = fixed_from_string(string(j["fixed"], source + ".fixed"), source + ".fixed");
+  if (b) {
+    if (job.fixed == FixedSet::BoundaryAdjacent && !b->c1)
+      throw ParameterError(source +
+                           ".boundary: fixed \"boundary+adjacent\" needs \"tangents\" (the cross-boundary "
+                           "derivative along every edge)");
+    if (job.fixed != FixedSet::BoundaryAdjacent && b->c1)
+      throw ParameterError(source + ".boundary.tangents: C1 data, but fixed is not \"boundary+adjacent\"");
+    job.net = std::move(b->net);
+    job.boundary_fit = boundary_fit_to_json(b->fits);
+  }
   job.problem = problem_from_json(field(j, source, "problem"), source + ".problem");
   if (j.contains("samples")) {
     job.samples = integer(j["samples"], source + ".samples");

@@ -33,6 +33,9 @@ struct Job {
   FixedSet fixed = FixedSet::Boundary;
   Problem problem;
   int samples = 50;  ///< mesh resolution of the surface files, 1..kMaxSamples
+  /// A job given in the "boundary" form (io/boundary_json.h): how each edge was fitted, the
+  /// report's `boundary_fit` (boundary_fit_to_json); null when the job gives the net.
+  Json boundary_fit = nullptr;
 };
 
 /// Largest accepted `samples` (a 2000^2 grid is 4M vertices; more is almost surely a mistake).
@@ -43,7 +46,7 @@ EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_o
 /// The `--energy` argument of `bpde energy`: a bare name or an ENERGY JSON object.
 EnergySpec energy_from_argument(const std::string& arg);
 
-/// Parse a whole job: the net, the fixed set, the problem (each field strictly, as FORMATS.md
+/// Parse a whole job: the net (or the "boundary" form, FORMATS.md "Boundary curves"), the fixed set, the problem (each field strictly, as FORMATS.md
 /// says). Throws InvalidInput subclasses naming the JSON path. Whether the solvers take the
 /// combination of net, fixed set and problem is checked by the job layer against the solvers'
 /// requirements: use job_from_json / read_job_file of jobs/run_job.h, which parse and validate.

@@ -349,7 +349,11 @@ Status checked_status(const Summary& s) {
   return s.status;
 }
 
-SolveOutcome run_job(const Job& job) { return checked_solver(job, "job").run(job); }
+SolveOutcome run_job(const Job& job) {
+  SolveOutcome out = checked_solver(job, "job").run(job);
+  if (!job.boundary_fit.is_null()) out.report["boundary_fit"] = job.boundary_fit;
+  return out;
+}
 
 void make_output_dir(const std::string& dir) {
   std::error_code ec;

@@ -1,0 +1,118 @@
+#pragma once
+// The boundary control points of a net at a given degree from boundary curves
+// (boundaries/boundary_curves.h; FORMATS.md "Boundary curves"): C⁰ data from one curve per edge,
+// C¹ data (boundary + adjacent ring) from a cross-boundary derivative field per edge as well.
+//
+// Edge order and direction: the edges run once around the boundary, each curve from the end of
+// the previous one to the start of the next (c_e(1) = c_{e+1}(0), the last back to the first), in
+// the corner order of FORMATS.md "Orientation" (counter-clockwise seen from +z makes x_u ^ x_v
+// point to +z):
+//   tensor (degree n, m), P_ij at index i(m+1)+j, i along u:
+//     edge 0: v = 0, u from 0 to 1   (P_00 -> P_n0; points P_{s,0},   s = 0..n)
+//     edge 1: u = 1, v from 0 to 1   (P_n0 -> P_nm; points P_{n,s},   s = 0..m)
+//     edge 2: v = 1, u from 1 to 0   (P_nm -> P_0m; points P_{n-s,m}, s = 0..n)
+//     edge 3: u = 0, v from 1 to 0   (P_0m -> P_00; points P_{0,m-s}, s = 0..m)
+//   triangular (degree n, P_ijk of triangular/triangular_net.h, x(u,v) with w = 1-u-v;
+//   corners P_00n = x(0,0), P_n00 = x(1,0), P_0n0 = x(0,1)):
+//     edge 0: v = 0, x(t, 0)       (P_00n -> P_n00; points P_{s,0,n-s})
+//     edge 1: w = 0, x(1-t, t)     (P_n00 -> P_0n0; points P_{n-s,s,0})
+//     edge 2: u = 0, x(0, 1-t)     (P_0n0 -> P_00n; points P_{0,n-s,s})
+//
+// Fit of one curve at degree n (fit_edge):
+//   - a Bézier curve of degree k <= n, or a segment: exact degree elevation (method "elevation");
+//   - samples: least squares over the samples at their parameters with the end points fixed to
+//     the first and last sample ("least-squares"; needs at least n+1 samples that determine the
+//     polynomial: SizeError / ParameterError otherwise);
+//   - any other curve: interpolation at the n+1 Chebyshev–Lobatto nodes t_k = (1 - cos(πk/n))/2
+//     ("interpolation", the default; spectral convergence for analytic curves, docs/boundaries.md),
+//     or least squares over 8n+1 uniform parameters with the end points fixed ("least-squares").
+// Corners: the edges must meet, |c_e(1) - c_{e+1}(0)| <= corner_tolerance * max(1, d) with d the
+// diagonal of the bounding box of the curves' end points (ParameterError naming the two edges and
+// the gap otherwise). The corner control point is the mean of the two fitted end points, shared
+// exactly by both edges.
+//
+// C¹ data: tangent field T_e(t) along edge e (same parameter t as the edge) = the derivative of
+// the surface across the edge, into the domain:
+//   tensor: edge 0: x_v, edge 1: -x_u, edge 2: -x_v, edge 3: x_u (at the edge point of parameter t);
+//   triangular: the derivative towards the opposite corner C from the edge's first corner A,
+//     d/dε x(q + ε(C - A)) in (u,v): edge 0: x_v, edge 1: -x_u, edge 2: x_u - x_v.
+// It is fitted (as above) at the degree of the cross derivative along the edge (tensor: the edge's
+// degree; triangular: n - 1), giving coefficients D_s, and the adjacent ring is
+//   tensor edge 0: P_{s,1} = P_{s,0} + D_s / m (likewise for the others with 1/n or 1/m),
+//   triangular edge 0: P_{s,1,n-1-s} = P_{s,0,n-s} + D_s / n (likewise, cyclically).
+// An adjacent point that is itself a boundary point is left to the boundary curves; one that two
+// edges define (the corner "twist" points) is the mean of both. The reported tangent error is
+// measured on the result, so that inconsistent corner data show up there.
+//
+// The other control points are zero: every solver determines them (FORMATS.md "Jobs").
+// Errors (per edge): the maximum over 257 uniform parameters (samples: over the samples) of
+// |x_e(t) - c_e(t)|, with x_e the net's boundary curve: the parametric distance, an upper bound
+// of the geometric one. Tangent errors likewise with the net's cross derivative.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "boundaries/boundary_curves.h"
+#include "tensor/tensor_net.h"
+#include "triangular/triangular_net.h"
+
+namespace bpde {
+
+enum class FitMethod { Interpolation, LeastSquares };
+
+/// "interpolation" or "least-squares".
+std::string to_string(FitMethod m);
+
+/// The boundary of a net as curves, in the edge order above; `tangents` is empty (C⁰ data) or
+/// holds one field per edge (C¹ data).
+struct BoundaryData {
+  std::vector<BoundaryCurve> edges;
+  std::vector<BoundaryCurve> tangents;
+};
+
+struct BoundaryFitOptions {
+  FitMethod method = FitMethod::Interpolation;  ///< for curves that are neither low-degree Bézier nor samples
+  double corner_tolerance = 1e-8;               ///< relative gap allowed at the corners, > 0
+  /// ParameterError unless corner_tolerance is finite and > 0.
+  void validate() const;
+};
+
+/// How one edge was fitted.
+struct EdgeFit {
+  int edge = 0;
+  std::string curve;   ///< the curve's kind
+  std::string method;  ///< "elevation", "interpolation" or "least-squares"
+  double max_error = 0;
+  /// C¹ data: the tangent field's kind, method and error on the result.
+  std::optional<std::string> tangent_curve, tangent_method;
+  std::optional<double> tangent_max_error;
+};
+
+/// One curve at degree n >= 1: its Bernstein coefficients ((n+1) x 3) and the method used.
+struct CurveFit {
+  Eigen::MatrixX3d points;
+  std::string method;
+};
+CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method = FitMethod::Interpolation);
+
+/// The maximum distance between the Bézier curve `points` and the curve (see above).
+double edge_error(const BoundaryCurve& curve, const Eigen::MatrixX3d& points);
+
+template <class NetT>
+struct BoundaryFit {
+  NetT net;
+  std::vector<EdgeFit> edges;
+};
+
+/// The tensor net of degree (n, m) with the fitted boundary (and adjacent ring with tangents).
+/// Throws SizeError (not 4 edges, or tangents for some edges only), DegreeError (degrees outside
+/// 1..kMaxDegree; tangents with n or m < 2), ParameterError (corners that do not meet, options),
+/// NonFiniteError (a fit that overflows), and the fit's errors.
+BoundaryFit<TensorNet> fit_tensor_boundary(int n, int m, const BoundaryData& data,
+                                           const BoundaryFitOptions& options = {});
+
+/// The triangular net of degree n likewise (3 edges; tangents need n >= 2).
+BoundaryFit<TriangularNet> fit_triangular_boundary(int n, const BoundaryData& data,
+                                                   const BoundaryFitOptions& options = {});
+
+}  // namespace bpde

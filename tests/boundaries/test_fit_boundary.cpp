@@ -1,0 +1,266 @@
+// Fitting boundary curves to a net's boundary (boundaries/fit_boundary.h): exact reproduction of
+// polynomial data, the spectral convergence of arcs against the interpolation remainder bound,
+// shared corners, samples, C¹ rings from tangent fields, and the typed errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "boundaries/fit_boundary.h"
+#include "boundaries/reference_boundaries.h"
+#include "boundaries/reference_curves.h"
+#include "core/bernstein.h"
+#include "core/errors.h"
+#include "tests/random_points.h"
+
+namespace {
+
+using bpde::BoundaryCurve;
+using bpde::BoundaryData;
+using Eigen::Vector3d;
+constexpr double kPi = std::numbers::pi;
+
+Vector3d bezier(const Eigen::MatrixX3d& P, double t) { return BoundaryCurve::bezier(P).evaluate(t); }
+
+// The Cauchy remainder bound of interpolation at the n+1 Chebyshev–Lobatto nodes on [0,1]: the
+// node polynomial is at most 4^-n there, so |c - p| <= sqrt(2) θ^(n+1) r / ((n+1)! 4^n) for a
+// circle of radius r traversed through the angle θ (two components with |c^(n+1)| <= r θ^(n+1)).
+double arc_bound(int n, double theta, double r) {
+  return std::sqrt(2.0) * r * std::pow(theta, n + 1) / (bpde::factorial(n + 1) * std::pow(4.0, n));
+}
+
+TEST(FitBoundary, BezierEdgesOfLowDegreeAreReproducedExactly) {
+  // Tensor degree (7, 5): edges of degree 3, 5, 5 and 1 whose end points meet exactly.
+  const Eigen::MatrixX3d R = bpde::testing::random_points(20, 11);
+  Eigen::MatrixX3d e0 = R.topRows(4), e1 = R.middleRows(4, 6), e2 = R.middleRows(10, 6), e3(2, 3);
+  e1.row(0) = e0.row(3);
+  e2.row(0) = e1.row(5);
+  e3.row(0) = e2.row(5);
+  e3.row(1) = e0.row(0);
+  BoundaryData d;
+  for (const auto& e : {e0, e1, e2, e3}) d.edges.push_back(BoundaryCurve::bezier(e));
+  const auto fit = bpde::fit_tensor_boundary(7, 5, d);
+  for (const auto& f : fit.edges) {
+    EXPECT_EQ(f.method, "elevation");
+    EXPECT_LT(f.max_error, 1e-14);
+  }
+  for (int k = 0; k <= 20; ++k) {
+    const double t = k / 20.0;
+    EXPECT_LT((fit.net.evaluate(t, 0) - bezier(e0, t)).norm(), 1e-14);
+    EXPECT_LT((fit.net.evaluate(1, t) - bezier(e1, t)).norm(), 1e-14);
+    EXPECT_LT((fit.net.evaluate(1 - t, 1) - bezier(e2, t)).norm(), 1e-14);
+    EXPECT_LT((fit.net.evaluate(0, 1 - t) - bezier(e3, t)).norm(), 1e-14);
+  }
+  // An edge at the net's degree (edge 1: u = 1, degree m = 5) is copied bit for bit.
+  for (int s = 0; s <= 5; ++s) EXPECT_EQ(fit.net.point(7, s), Vector3d(e1.row(s).transpose()));
+
+  // Triangular degree 6: edges of degree 6, 2, 4.
+  Eigen::MatrixX3d t0 = R.topRows(7), t1 = R.middleRows(7, 3), t2 = R.middleRows(10, 5);
+  t1.row(0) = t0.row(6);
+  t2.row(0) = t1.row(2);
+  t2.row(4) = t0.row(0);
+  BoundaryData g;
+  for (const auto& e : {t0, t1, t2}) g.edges.push_back(BoundaryCurve::bezier(e));
+  const auto tri = bpde::fit_triangular_boundary(6, g);
+  for (int k = 0; k <= 20; ++k) {
+    const double t = k / 20.0;
+    EXPECT_LT((tri.net.evaluate(t, 0) - bezier(t0, t)).norm(), 1e-14);
+    EXPECT_LT((tri.net.evaluate(1 - t, t) - bezier(t1, t)).norm(), 1e-14);
+    EXPECT_LT((tri.net.evaluate(0, 1 - t) - bezier(t2, t)).norm(), 1e-14);
+  }
+  // Interior points are zero: the solvers determine them.
+  EXPECT_EQ(tri.net.point(2, 2), Vector3d::Zero());
+}
+
+TEST(FitBoundary, ArcErrorConvergesSpectrallyAtTheRemainderBound) {
+  // A third of a circle of radius 1.5 (θ = 2π/3): the error is within a factor 2 of the bound
+  // for n = 3..12 (below rounding from n = 13 on), so each degree gains a factor θ/(4(n+2)).
+  const double theta = 2 * kPi / 3, r = 1.5;
+  const BoundaryCurve arc = BoundaryCurve::arc(Vector3d(0, 0, 1), Vector3d(0, 1, 1), r, 0.2, 0.2 + theta);
+  double previous = 1;
+  for (int n = 3; n <= 12; ++n) {
+    const auto f = bpde::fit_edge(arc, n);
+    EXPECT_EQ(f.method, "interpolation");
+    const double e = bpde::edge_error(arc, f.points);
+    const double b = arc_bound(n, theta, r);
+    EXPECT_LE(e, b) << n;
+    EXPECT_GE(e, 0.5 * b) << n;
+    EXPECT_LT(e, 0.15 * previous) << n;
+    previous = e;
+    // Least squares (8n+1 uniform samples) is as good to a factor 2.
+    const auto ls = bpde::fit_edge(arc, n, bpde::FitMethod::LeastSquares);
+    EXPECT_EQ(ls.method, "least-squares");
+    EXPECT_LT(bpde::edge_error(arc, ls.points), 2 * e) << n;
+  }
+  EXPECT_LT(bpde::edge_error(arc, bpde::fit_edge(arc, 16).points), 1e-14);
+}
+
+TEST(FitBoundary, HelixArcErrorIsTheArcsAndItsRiseIsExact) {
+  const double theta = kPi / 2;
+  const BoundaryCurve h = BoundaryCurve::helix(Vector3d::Zero(), Vector3d(0, 0, 1), 1, 0, theta, 0.5);
+  for (int n : {4, 6, 8, 10}) {
+    const auto f = bpde::fit_edge(h, n);
+    const double e = bpde::edge_error(h, f.points);
+    EXPECT_LE(e, arc_bound(n, theta, 1)) << n;
+    EXPECT_GE(e, 0.3 * arc_bound(n, theta, 1)) << n;
+    // The rise z = 0.5 a / 2π = t/8 is linear: reproduced to rounding.
+    for (double t : {0.1, 0.45, 0.8}) EXPECT_NEAR(bezier(f.points, t).z(), t / 8, 1e-15) << n;
+  }
+  EXPECT_LT(bpde::edge_error(h, bpde::fit_edge(h, 8).points), 3e-9);
+}
+
+TEST(FitBoundary, CornersAreSharedExactlyAndGapsAreRefused) {
+  const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), b2 = b + Vector3d(3e-12, -1e-12, 0);
+  BoundaryData d;
+  d.edges = {BoundaryCurve::segment(a, b), BoundaryCurve::segment(b2, c), BoundaryCurve::segment(c, a)};
+  const auto fit = bpde::fit_triangular_boundary(5, d);
+  // P_n00 is the corner of edges 0 and 1: the mean of the two end points, bit for bit.
+  EXPECT_EQ(fit.net.point(5, 0), Vector3d(0.5 * (b + b2)));
+  EXPECT_EQ(fit.net.point(0, 5), c);
+  EXPECT_EQ(fit.net.point(0, 0), a);
+  EXPECT_LT(fit.edges[0].max_error, 2e-12);  // the corner moved by half the gap
+  // A gap of 1e-3 is bad input naming the edges and the gap.
+  d.edges[1] = BoundaryCurve::segment(b + Vector3d(0, 1e-3, 0), c);
+  try {
+    bpde::fit_triangular_boundary(5, d);
+    FAIL() << "expected ParameterError";
+  } catch (const bpde::ParameterError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("edges 0 and 1 do not meet"), std::string::npos) << m;
+    EXPECT_NE(m.find("0.001"), std::string::npos) << m;
+  }
+  // The tolerance is an option.
+  bpde::BoundaryFitOptions o;
+  o.corner_tolerance = 1e-2;
+  EXPECT_NO_THROW(bpde::fit_triangular_boundary(5, d, o));
+  o.corner_tolerance = 0;
+  EXPECT_THROW(bpde::fit_triangular_boundary(5, d, o), bpde::ParameterError);
+}
+
+TEST(FitBoundary, SampledPointsAreFittedByLeastSquares) {
+  // 40 samples of a cubic at uneven parameters: the degree-5 fit is the cubic (elevated).
+  const Eigen::MatrixX3d P = bpde::testing::random_points(4, 5);
+  Eigen::MatrixX3d S(40, 3);
+  std::vector<double> t(40);
+  for (int i = 0; i < 40; ++i) {
+    t[static_cast<size_t>(i)] = std::pow(i / 39.0, 1.5);
+    S.row(i) = bezier(P, t[static_cast<size_t>(i)]).transpose();
+  }
+  const BoundaryCurve c = BoundaryCurve::samples(S, t);
+  const auto f = bpde::fit_edge(c, 5);
+  EXPECT_EQ(f.method, "least-squares");
+  for (double u : {0.0, 0.3, 0.77, 1.0}) EXPECT_LT((bezier(f.points, u) - bezier(P, u)).norm(), 1e-13);
+  EXPECT_LT(bpde::edge_error(c, f.points), 1e-13);
+  // Chord-length parameters of uniform samples on a segment are uniform: the segment exactly.
+  Eigen::MatrixX3d L(9, 3);
+  for (int i = 0; i < 9; ++i) L.row(i) = Eigen::RowVector3d(1 + i / 8.0, 2 * i / 8.0, 0);
+  const auto g = bpde::fit_edge(BoundaryCurve::samples(L), 4);
+  for (double u : {0.1, 0.5, 0.9}) EXPECT_LT((bezier(g.points, u) - Vector3d(1 + u, 2 * u, 0)).norm(), 1e-14);
+  // Samples of an arc: least squares converges like the interpolation.
+  Eigen::MatrixX3d A(33, 3);
+  std::vector<double> ta(33);
+  for (int i = 0; i < 33; ++i) {
+    ta[static_cast<size_t>(i)] = i / 32.0;
+    A.row(i) << std::cos(i / 32.0), std::sin(i / 32.0), 0;
+  }
+  EXPECT_LT(bpde::edge_error(BoundaryCurve::samples(A, ta), bpde::fit_edge(BoundaryCurve::samples(A, ta), 6).points),
+            2 * arc_bound(6, 1.0, 1.0));
+  // Fewer samples than the degree needs.
+  EXPECT_THROW(bpde::fit_edge(BoundaryCurve::samples(L), 9), bpde::SizeError);
+}
+
+TEST(FitBoundary, TensorC1RingFromTangentFields) {
+  // The boundary and the inward cross derivatives of a random polynomial patch reproduce its
+  // outer two rings (interpolation of polynomials of the net's degree is exact).
+  const bpde::TensorNet X(5, 4, bpde::testing::random_points(30, 3));
+  BoundaryData d;
+  d.edges = {BoundaryCurve::function([&](double t) { return X.evaluate(t, 0); }),
+             BoundaryCurve::function([&](double t) { return X.evaluate(1, t); }),
+             BoundaryCurve::function([&](double t) { return X.evaluate(1 - t, 1); }),
+             BoundaryCurve::function([&](double t) { return X.evaluate(0, 1 - t); })};
+  d.tangents = {BoundaryCurve::function([&](double t) { return X.derivative(t, 0, 0, 1); }),
+                BoundaryCurve::function([&](double t) { return Vector3d(-X.derivative(1, t, 1, 0)); }),
+                BoundaryCurve::function([&](double t) { return Vector3d(-X.derivative(1 - t, 1, 0, 1)); }),
+                BoundaryCurve::function([&](double t) { return X.derivative(0, 1 - t, 1, 0); })};
+  const auto fit = bpde::fit_tensor_boundary(5, 4, d);
+  for (int r : X.fixed_indices(bpde::FixedSet::BoundaryAdjacent))
+    EXPECT_LT((fit.net.points().row(r) - X.points().row(r)).norm(), 1e-12) << r;
+  for (int r : X.free_indices(bpde::FixedSet::BoundaryAdjacent)) EXPECT_EQ(fit.net.points().row(r).norm(), 0.0);
+  for (const auto& e : fit.edges) {
+    ASSERT_TRUE(e.tangent_max_error);
+    EXPECT_LT(*e.tangent_max_error, 1e-11);
+    EXPECT_EQ(*e.tangent_method, "interpolation");
+  }
+  // A tangent field that disagrees at a corner shows in the reported tangent error.
+  d.tangents[0] =
+      BoundaryCurve::function([&](double t) { return Vector3d(X.derivative(t, 0, 0, 1) + Vector3d(0, 0, 1)); });
+  const auto bad = bpde::fit_tensor_boundary(5, 4, d);
+  EXPECT_GT(*bad.edges[0].tangent_max_error, 0.5);
+  // Tangents for some edges only.
+  d.tangents.pop_back();
+  EXPECT_THROW(bpde::fit_tensor_boundary(5, 4, d), bpde::SizeError);
+}
+
+TEST(FitBoundary, TriangularC1RingFromTangentFields) {
+  // Edge 0: x_v; edge 1: -x_u; edge 2: x_u - x_v (towards the opposite corner).
+  const bpde::TriangularNet X(6, bpde::testing::random_points(28, 4));
+  BoundaryData d;
+  d.edges = {BoundaryCurve::function([&](double t) { return X.evaluate(t, 0); }),
+             BoundaryCurve::function([&](double t) { return X.evaluate(1 - t, t); }),
+             BoundaryCurve::function([&](double t) { return X.evaluate(0, 1 - t); })};
+  d.tangents = {BoundaryCurve::function([&](double t) { return X.derivative(t, 0, 0, 1); }),
+                BoundaryCurve::function([&](double t) { return Vector3d(-X.derivative(1 - t, t, 1, 0)); }),
+                BoundaryCurve::function(
+                    [&](double t) { return Vector3d(X.derivative(0, 1 - t, 1, 0) - X.derivative(0, 1 - t, 0, 1)); })};
+  const auto fit = bpde::fit_triangular_boundary(6, d);
+  for (int r : X.fixed_indices(bpde::FixedSet::BoundaryAdjacent))
+    EXPECT_LT((fit.net.points().row(r) - X.points().row(r)).norm(), 1e-12) << r;
+  for (int r : X.free_indices(bpde::FixedSet::BoundaryAdjacent)) EXPECT_EQ(fit.net.points().row(r).norm(), 0.0);
+  for (const auto& e : fit.edges) EXPECT_LT(*e.tangent_max_error, 1e-11);
+}
+
+TEST(FitBoundary, CircleThreeArcsCurvesAreTheReferenceNet) {
+  // The reference net fits edges 1 and 2 in the opposite direction: the same interpolant, whose
+  // control points agree to the collocation's rounding (growing with n), the curves to 1e-15.
+  for (int n = 3; n <= 12; ++n) {
+    const auto fit = bpde::fit_triangular_boundary(n, bpde::circle_three_arcs_curves());
+    const bpde::TriangularNet ref = bpde::circle_three_arcs(n);
+    EXPECT_LT((fit.net.points() - ref.points()).cwiseAbs().maxCoeff(), n <= 6 ? 1e-14 : 1e-12) << n;
+    for (int k = 0; k <= 16; ++k) {
+      const double t = k / 16.0;
+      for (const auto& uv : {Eigen::Vector2d(t, 0), Eigen::Vector2d(1 - t, t), Eigen::Vector2d(0, t)})
+        EXPECT_LT((fit.net.evaluate(uv(0), uv(1)) - ref.evaluate(uv(0), uv(1))).norm(), 2e-15) << n;
+    }
+  }
+  // Any plane, radius and center: the corners lie on that circle.
+  const Vector3d c(1, 2, 3), N = Vector3d(1, 1, 0).normalized();
+  const auto fit = bpde::fit_triangular_boundary(6, bpde::circle_three_arcs_curves(2.5, c, N));
+  for (const Vector3d& p : {fit.net.point(6, 0), fit.net.point(0, 6), fit.net.point(0, 0)}) {
+    EXPECT_NEAR((p - c).norm(), 2.5, 1e-14);
+    EXPECT_NEAR((p - c).dot(N), 0.0, 1e-14);
+  }
+}
+
+TEST(FitBoundary, BadDataThrowTypedErrors) {
+  BoundaryData d;
+  d.edges = {BoundaryCurve::segment(Vector3d(0, 0, 0), Vector3d(1, 0, 0)),
+             BoundaryCurve::segment(Vector3d(1, 0, 0), Vector3d(0, 1, 0)),
+             BoundaryCurve::segment(Vector3d(0, 1, 0), Vector3d(0, 0, 0))};
+  EXPECT_THROW(bpde::fit_tensor_boundary(3, 3, d), bpde::SizeError);  // 3 edges for a tensor net
+  EXPECT_THROW(bpde::fit_triangular_boundary(0, d), bpde::DegreeError);
+  EXPECT_THROW(bpde::fit_triangular_boundary(65, d), bpde::DegreeError);
+  d.tangents = d.edges;
+  EXPECT_THROW(bpde::fit_triangular_boundary(1, d), bpde::DegreeError);
+  // Overflow in the fit is non-finite data, never a NaN net.
+  BoundaryData h;
+  h.edges = {BoundaryCurve::segment(Vector3d(0, 0, 0), Vector3d(1e308, 0, 0)),
+             BoundaryCurve::segment(Vector3d(1e308, 0, 0), Vector3d(-1e308, 1e308, 0)),
+             BoundaryCurve::segment(Vector3d(-1e308, 1e308, 0), Vector3d(0, 0, 0))};
+  EXPECT_THROW(bpde::fit_triangular_boundary(4, h), bpde::NonFiniteError);
+  // A helix whose rise overflows at its end point.
+  h.edges[0] = BoundaryCurve::helix(Vector3d::Zero(), Vector3d(0, 0, 1), 1, 0, 1e10, 1e308);
+  EXPECT_THROW(bpde::fit_triangular_boundary(4, h), bpde::NonFiniteError);
+}
+
+}  // namespace
