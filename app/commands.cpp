@@ -29,12 +29,13 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir) {
   return write_outcome(out_dir, job, out);
 }
 
-int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples) {
+int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples, const std::string& mesh_format) {
   check_samples(samples);
+  const MeshFormat format = mesh_format_from_string(mesh_format, "--mesh-format");
   const Net net = read_net_file(net_path);
   const TriangleMesh mesh = sample_net(net, samples);
   make_output_dir(out_dir);
-  write_surface_files(out_dir, net, mesh);
+  write_surface_files(out_dir, net, mesh, format);
   return 0;
 }
 

@@ -10,7 +10,8 @@
 namespace bpde::app {
 
 int cmd_solve(const std::string& job_path, const std::string& out_dir);
-int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples);
+int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples,
+               const std::string& mesh_format = "ascii");
 int cmd_energy(const std::string& net_path, const std::string& energy, std::optional<double> H);
 int cmd_check(const std::string& net_path, int samples);
 int cmd_plate(double aspect, int degree, const std::string& method);

@@ -24,10 +24,12 @@ int main(int argc, char** argv) {
   solve->add_option("job", in, "JOB.json")->required();
   solve->add_option("--out", out, "Output directory (created if missing)")->required();
 
-  auto* sample = app.add_subcommand("sample", "Write surface.obj, surface.ply and net.obj for any net");
+  std::string mesh_format = "ascii";
+  auto* sample = app.add_subcommand("sample", "Write surface.obj, surface.ply, surface.vtp and net.obj for any net");
   sample->add_option("net", in, "NET.json")->required();
   sample->add_option("--out", out, "Output directory")->required();
   sample->add_option("--samples", samples, "Mesh resolution N (default 50)");
+  sample->add_option("--mesh-format", mesh_format, "surface.ply/.vtp numbers: ascii (default) or binary (float32)");
 
   std::string energy;
   std::optional<double> H;
@@ -71,7 +73,7 @@ int main(int argc, char** argv) {
   try {
     using namespace bpde::app;
     if (*solve) return cmd_solve(in, out);
-    if (*sample) return cmd_sample(in, out, samples);
+    if (*sample) return cmd_sample(in, out, samples, mesh_format);
     if (*en) return cmd_energy(in, energy, H);
     if (*check) return cmd_check(in, samples);
     if (*plate) return cmd_plate(aspect, degree, method);

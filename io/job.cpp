@@ -163,7 +163,7 @@ Problem problem_from_json(const Json& j, const std::string& path) {
 
 Job parse_job(const Json& j, const std::string& source) {
   using namespace json_read;
-  check_keys(j, source, {"net", "fixed", "problem", "samples"});
+  check_keys(j, source, {"net", "fixed", "problem", "samples", "mesh_format"});
   Job job{net_from_json(field(j, source, "net"), source + ".net"), FixedSet::Boundary, {}, 50};
   if (j.contains("fixed")) job.fixed = fixed_from_string(string(j["fixed"], source + ".fixed"), source + ".fixed");
   job.problem = problem_from_json(field(j, source, "problem"), source + ".problem");
@@ -173,6 +173,8 @@ Job parse_job(const Json& j, const std::string& source) {
       throw ParameterError(source + ".samples: must be in 1.." + std::to_string(kMaxSamples) + ", got " +
                            std::to_string(job.samples));
   }
+  if (j.contains("mesh_format"))
+    job.mesh_format = mesh_format_from_string(string(j["mesh_format"], source + ".mesh_format"), source + ".mesh_format");
   return job;
 }
 

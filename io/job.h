@@ -8,6 +8,7 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "io/json_io.h"
+#include "io/mesh_io.h"
 #include "solvers/cmc/cmc.h"
 
 namespace bpde {
@@ -33,6 +34,9 @@ struct Job {
   FixedSet fixed = FixedSet::Boundary;
   Problem problem;
   int samples = 50;  ///< mesh resolution of the surface files, 1..kMaxSamples
+  /// bezierpde extension (FORMATS.md): `"mesh_format": "ascii" | "binary"` for surface.ply and
+  /// surface.vtp.
+  MeshFormat mesh_format = MeshFormat::Ascii;
 };
 
 /// Largest accepted `samples` (a 2000^2 grid is 4M vertices; more is almost surely a mistake).

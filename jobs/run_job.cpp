@@ -366,20 +366,22 @@ Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }
 // result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
 // statistics and the CGAL figures unless the solver already set them.
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                           const Json& extra, Status status) {
+                           const Json& extra, Status status, MeshFormat format) {
   if (!report.contains("mean_curvature")) report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
   if (!report.contains("check")) report["check"] = check_report(mesh);
   Json result = {{"net", net_to_json(net)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
   make_output_dir(dir);
   write_json_file(dir + "/result.json", result);
-  write_surface_files(dir, net, mesh);
+  write_surface_files(dir, net, mesh, format);
   return {std::move(result), exit_code(status)};
 }
 
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out) {
   const TriangleMesh mesh = sample_net(out.net, job.samples);
-  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status);
+  WrittenResult written =
+      write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status, job.mesh_format);
+  return written;
 }
 
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {
