@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
+#include "jobs/exports.h"
 #include "jobs/run_blend.h"
 #include "jobs/run_demo.h"
 #include "jobs/run_energy.h"
@@ -23,8 +24,9 @@ void check_samples(int samples) {
 
 }  // namespace
 
-int cmd_solve(const std::string& job_path, const std::string& out_dir) {
-  const Job job = read_job_file(job_path);
+int cmd_solve(const std::string& job_path, const std::string& out_dir, bool html) {
+  Job job = read_job_file(job_path);
+  if (html) job.export_html = true;
   const SolveOutcome out = run_job(job);
   return write_outcome(out_dir, job, out);
 }
@@ -62,6 +64,18 @@ int cmd_blend(const std::string& config_path, const std::string& out_dir) {
   const BlendConfig config = read_blend_config(config_path);
   const BlendOutcome out = run_blend(config);
   return write_blend_outcome(out_dir, config, out);
+}
+
+int cmd_view(const std::string& dir, int samples) {
+  check_samples(samples);
+  const std::string path = dir + "/result.json";
+  const Json result = read_json_file(path);
+  json_read::require_object(result, path);
+  const Net net = net_from_json(json_read::field(result, path, "net"), path + ".net");
+  Exports exports;
+  exports.html = true;
+  write_exports(dir, net, sample_net(net, samples), result, exports);
+  return 0;
 }
 
 int cmd_demo(const std::string& out_dir) {

@@ -9,13 +9,16 @@
 
 namespace bpde::app {
 
-int cmd_solve(const std::string& job_path, const std::string& out_dir);
+/// `html`: also write DIR/view.html (as the job's "export": ["html"]).
+int cmd_solve(const std::string& job_path, const std::string& out_dir, bool html = false);
 int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples,
                const std::string& mesh_format = "ascii");
 int cmd_energy(const std::string& net_path, const std::string& energy, std::optional<double> H);
 int cmd_check(const std::string& net_path, int samples);
 int cmd_plate(double aspect, int degree, const std::string& method);
 int cmd_blend(const std::string& config_path, const std::string& out_dir);
+/// DIR/view.html for DIR/result.json (its net sampled at `samples`, its report beside it).
+int cmd_view(const std::string& dir, int samples);
 /// The built-in default job (README's main command).
 int cmd_demo(const std::string& out_dir);
 

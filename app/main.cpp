@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
       app.add_subcommand("solve", "Solve a job (FORMATS.md \"Jobs\") and write DIR/result.json + surface files");
   solve->add_option("job", in, "JOB.json")->required();
   solve->add_option("--out", out, "Output directory (created if missing)")->required();
+  bool html = false;
+  solve->add_flag("--html", html, "Also write DIR/view.html, the self-contained web viewer");
 
   std::string mesh_format = "ascii";
   auto* sample = app.add_subcommand("sample", "Write surface.obj, surface.ply, surface.vtp and net.obj for any net");
@@ -55,6 +57,10 @@ int main(int argc, char** argv) {
   blend->add_option("config", in, "CONFIG.json")->required();
   blend->add_option("--out", out, "Output directory")->required();
 
+  auto* view = app.add_subcommand("view", "Write DIR/view.html (web viewer) for the result.json in DIR");
+  view->add_option("dir", in, "DIR holding result.json")->required();
+  view->add_option("--samples", samples, "Mesh resolution N (default 50)");
+
   std::string demo_out = "out/demo";
   auto* demo = app.add_subcommand("demo", "Run the built-in default job (the README's main command)");
   demo->add_option("--out", demo_out, "Output directory (default out/demo)");
@@ -72,12 +78,13 @@ int main(int argc, char** argv) {
 
   try {
     using namespace bpde::app;
-    if (*solve) return cmd_solve(in, out);
+    if (*solve) return cmd_solve(in, out, html);
     if (*sample) return cmd_sample(in, out, samples, mesh_format);
     if (*en) return cmd_energy(in, energy, H);
     if (*check) return cmd_check(in, samples);
     if (*plate) return cmd_plate(aspect, degree, method);
     if (*blend) return cmd_blend(in, out);
+    if (*view) return cmd_view(in, samples);
     if (*demo) return cmd_demo(demo_out);
   } catch (...) {
     // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.

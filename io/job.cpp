@@ -163,7 +163,7 @@ Problem problem_from_json(const Json& j, const std::string& path) {
 
 Job parse_job(const Json& j, const std::string& source) {
   using namespace json_read;
-  check_keys(j, source, {"net", "fixed", "problem", "samples", "mesh_format"});
+  check_keys(j, source, {"net", "fixed", "problem", "samples", "mesh_format", "export"});
   Job job{net_from_json(field(j, source, "net"), source + ".net"), FixedSet::Boundary, {}, 50};
   if (j.contains("fixed")) job.fixed = fixed_from_string(string(j["fixed"], source + ".fixed"), source + ".fixed");
   job.problem = problem_from_json(field(j, source, "problem"), source + ".problem");
@@ -175,6 +175,17 @@ Job parse_job(const Json& j, const std::string& source) {
   }
   if (j.contains("mesh_format"))
     job.mesh_format = mesh_format_from_string(string(j["mesh_format"], source + ".mesh_format"), source + ".mesh_format");
+  if (j.contains("export")) {
+    const std::string where = source + ".export";
+    if (!j["export"].is_array()) throw ParseError(where + ": expected an array of export names (\"html\")");
+    for (size_t k = 0; k < j["export"].size(); ++k) {
+      const std::string e = string(j["export"][k], where + "[" + std::to_string(k) + "]");
+      if (e == "html")
+        job.export_html = true;
+      else
+        throw ParseError(where + "[" + std::to_string(k) + "]: unknown export \"" + e + "\" (expected html)");
+    }
+  }
   return job;
 }
 

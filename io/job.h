@@ -34,9 +34,10 @@ struct Job {
   FixedSet fixed = FixedSet::Boundary;
   Problem problem;
   int samples = 50;  ///< mesh resolution of the surface files, 1..kMaxSamples
-  /// bezierpde extension (FORMATS.md): `"mesh_format": "ascii" | "binary"` for surface.ply and
-  /// surface.vtp.
+  /// bezierpde extensions (FORMATS.md): `"mesh_format": "ascii" | "binary"` for surface.ply and
+  /// surface.vtp; `"export": ["html"]` for DIR/view.html.
   MeshFormat mesh_format = MeshFormat::Ascii;
+  bool export_html = false;
 };
 
 /// Largest accepted `samples` (a 2000^2 grid is 4M vertices; more is almost surely a mistake).

@@ -100,19 +100,16 @@ void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   out.close();
 }
 
-void write_net_obj(const std::string& path, const Net& net) {
-  File out(path);
-  std::fprintf(out.f, "# bezierpde control net (%s)\n", net_kind(net).c_str());
-  auto line = [&](int a, int b) { std::fprintf(out.f, "l %d %d\n", a + 1, b + 1); };
+std::vector<std::array<int, 2>> net_segments(const Net& net) {
+  std::vector<std::array<int, 2>> out;
+  auto line = [&](int a, int b) { out.push_back({a, b}); };
   if (const auto* t = std::get_if<TensorNet>(&net)) {
-    write_vertices(out.f, t->points());
     for (int i = 0; i <= t->n(); ++i)
       for (int j = 0; j <= t->m(); ++j) {
         if (i < t->n()) line(t->index(i, j), t->index(i + 1, j));
         if (j < t->m()) line(t->index(i, j), t->index(i, j + 1));
       }
   } else if (const auto* b = std::get_if<BSplineNet>(&net)) {
-    write_vertices(out.f, b->points());
     for (int i = 0; i < b->nu(); ++i)
       for (int j = 0; j < b->nv(); ++j) {
         if (i + 1 < b->nu()) line(b->index(i, j), b->index(i + 1, j));
@@ -120,7 +117,6 @@ void write_net_obj(const std::string& path, const Net& net) {
       }
   } else {
     const auto& tr = std::get<TriangularNet>(net);
-    write_vertices(out.f, tr.points());
     const int n = tr.n();
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n - i; ++j) {
@@ -132,6 +128,14 @@ void write_net_obj(const std::string& path, const Net& net) {
         if (i > 0) line(tr.index(i, j), tr.index(i - 1, j + 1));
       }
   }
+  return out;
+}
+
+void write_net_obj(const std::string& path, const Net& net) {
+  File out(path);
+  std::fprintf(out.f, "# bezierpde control net (%s)\n", net_kind(net).c_str());
+  write_vertices(out.f, std::visit([](const auto& n) -> Eigen::MatrixX3d { return n.points(); }, net));
+  for (const auto& [a, b] : net_segments(net)) std::fprintf(out.f, "l %d %d\n", a + 1, b + 1);
   out.close();
 }
 

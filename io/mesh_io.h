@@ -1,7 +1,9 @@
 #pragma once
 // Surface and control-net files (FORMATS.md "Results"): OBJ, PLY (ASCII with 17 significant
 // digits, or binary little-endian float32) and VTK XML PolyData (io/vtp_io.h).
+#include <array>
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 #include "io/json_io.h"
@@ -22,6 +24,9 @@ MeshFormat mesh_format_from_string(const std::string& s, const std::string& wher
 /// triangles as `list uchar int vertex_indices`. Throws FileError.
 void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields,
                MeshFormat format = MeshFormat::Ascii);
+/// The segments of the control net (pairs of point indices, net order) joining neighbours along
+/// each parameter direction (three directions for triangular nets).
+std::vector<std::array<int, 2>> net_segments(const Net& net);
 /// The control net as OBJ lines: its points as vertices (net order) and `l a b` segments joining
 /// neighbours along each parameter direction (three directions for triangular nets).
 void write_net_obj(const std::string& path, const Net& net);

@@ -18,6 +18,7 @@
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
 #include "io/mesh_io.h"
+#include "jobs/exports.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
 #include "solvers/c1/biharmonic_load.h"
@@ -381,6 +382,9 @@ WrittenResult write_job_result(const std::string& dir, const Job& job, const Sol
   const TriangleMesh mesh = sample_net(out.net, job.samples);
   WrittenResult written =
       write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status, job.mesh_format);
+  Exports exports;
+  exports.html = job.export_html;
+  write_exports(dir, out.net, mesh, written.result, exports);
   return written;
 }
 

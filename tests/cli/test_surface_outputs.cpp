@@ -57,3 +57,31 @@ TEST(CliSurfaceOutputs, JobMeshFormatIsReadAndCheckedBeforeAnythingRuns) {
   EXPECT_NE(r.err.find("mesh_format"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(bad_out));
 }
+
+TEST(CliSurfaceOutputs, HtmlExportAndViewWriteThePage) {
+  const char* net = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+                    R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
+  const std::string job = std::string(R"({"net": )") + net +
+                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "samples": 4)";
+  const fs::path with_export = write("ex.json", job + R"(, "export": ["html"]})");
+  const fs::path out = tmpdir() / "ex_out";
+  CmdResult r = run("solve " + with_export.string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = slurp(out / "view.html");
+  EXPECT_NE(page.find("\"vertices\":25"), std::string::npos);
+  // bpde view rewrites the same page from result.json at the same resolution
+  fs::remove(out / "view.html");
+  r = run("view " + out.string() + " --samples 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(out / "view.html"), page);
+  // bad input: an unknown export, a folder without result.json
+  const fs::path bad = write("ex_bad.json", job + R"(, "export": ["pdf"]})");
+  r = run("solve " + bad.string() + " --out " + (tmpdir() / "ex_bad_out").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("export[0]"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmpdir() / "ex_bad_out"));
+  fs::create_directories(tmpdir() / "empty_dir");
+  r = run("view " + (tmpdir() / "empty_dir").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(fs::exists(tmpdir() / "empty_dir" / "view.html"));
+}
