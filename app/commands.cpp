@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
+#include "io/step_export.h"
 #include "jobs/exports.h"
 #include "jobs/run_blend.h"
 #include "jobs/run_demo.h"
@@ -75,6 +76,11 @@ int cmd_view(const std::string& dir, int samples) {
   Exports exports;
   exports.html = true;
   write_exports(dir, net, sample_net(net, samples), result, exports);
+  return 0;
+}
+
+int cmd_export(const std::string& net_path, const std::string& step_path) {
+  write_step(step_path, read_net_file(net_path));
   return 0;
 }
 

@@ -19,6 +19,8 @@ int cmd_plate(double aspect, int degree, const std::string& method);
 int cmd_blend(const std::string& config_path, const std::string& out_dir);
 /// DIR/view.html for DIR/result.json (its net sampled at `samples`, its report beside it).
 int cmd_view(const std::string& dir, int samples);
+/// The exact patch of NET.json as STEP (io/step_export.h).
+int cmd_export(const std::string& net_path, const std::string& step_path);
 /// The built-in default job (README's main command).
 int cmd_demo(const std::string& out_dir);
 

@@ -61,6 +61,11 @@ int main(int argc, char** argv) {
   view->add_option("dir", in, "DIR holding result.json")->required();
   view->add_option("--samples", samples, "Mesh resolution N (default 50)");
 
+  std::string step_path;
+  auto* exp = app.add_subcommand("export", "Write the exact patch of a net for CAD (STEP, through OpenCASCADE)");
+  exp->add_option("net", in, "NET.json")->required();
+  exp->add_option("--step", step_path, "FILE.step")->required();
+
   std::string demo_out = "out/demo";
   auto* demo = app.add_subcommand("demo", "Run the built-in default job (the README's main command)");
   demo->add_option("--out", demo_out, "Output directory (default out/demo)");
@@ -85,6 +90,7 @@ int main(int argc, char** argv) {
     if (*plate) return cmd_plate(aspect, degree, method);
     if (*blend) return cmd_blend(in, out);
     if (*view) return cmd_view(in, samples);
+    if (*exp) return cmd_export(in, step_path);
     if (*demo) return cmd_demo(demo_out);
   } catch (...) {
     // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.

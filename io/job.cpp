@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/errors.h"
+#include "io/step_export.h"
 
 namespace bpde {
 
@@ -177,13 +178,17 @@ Job parse_job(const Json& j, const std::string& source) {
     job.mesh_format = mesh_format_from_string(string(j["mesh_format"], source + ".mesh_format"), source + ".mesh_format");
   if (j.contains("export")) {
     const std::string where = source + ".export";
-    if (!j["export"].is_array()) throw ParseError(where + ": expected an array of export names (\"html\")");
+    if (!j["export"].is_array()) throw ParseError(where + ": expected an array of export names (\"step\", \"html\")");
     for (size_t k = 0; k < j["export"].size(); ++k) {
       const std::string e = string(j["export"][k], where + "[" + std::to_string(k) + "]");
-      if (e == "html")
+      if (e == "step") {
+        check_step_degree(job.net, where);
+        job.export_step = true;
+      }
+      else if (e == "html")
         job.export_html = true;
       else
-        throw ParseError(where + "[" + std::to_string(k) + "]: unknown export \"" + e + "\" (expected html)");
+        throw ParseError(where + "[" + std::to_string(k) + "]: unknown export \"" + e + "\" (expected step or html)");
     }
   }
   return job;

@@ -35,8 +35,9 @@ struct Job {
   Problem problem;
   int samples = 50;  ///< mesh resolution of the surface files, 1..kMaxSamples
   /// bezierpde extensions (FORMATS.md): `"mesh_format": "ascii" | "binary"` for surface.ply and
-  /// surface.vtp; `"export": ["html"]` for DIR/view.html.
+  /// surface.vtp; `"export": ["step", "html"]` for DIR/surface.step and DIR/view.html.
   MeshFormat mesh_format = MeshFormat::Ascii;
+  bool export_step = false;
   bool export_html = false;
 };
 

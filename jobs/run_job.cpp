@@ -384,6 +384,7 @@ WrittenResult write_job_result(const std::string& dir, const Job& job, const Sol
       write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status, job.mesh_format);
   Exports exports;
   exports.html = job.export_html;
+  exports.step = job.export_step;
   write_exports(dir, out.net, mesh, written.result, exports);
   return written;
 }

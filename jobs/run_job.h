@@ -74,7 +74,7 @@ struct WrittenResult {
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
                            const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii);
 /// write_result for a job's outcome, sampled at job.samples, in job.mesh_format, and the job's
-/// exports (job.export_html: DIR/view.html; jobs/exports.h).
+/// exports (job.export_step: DIR/surface.step; job.export_html: DIR/view.html; jobs/exports.h).
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out);
 /// write_job_result's exit code: 0 if converged, else 1.
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out);

@@ -14,6 +14,8 @@ PACKAGES=(
   libbenchmark-dev       # Google Benchmark
   nlohmann-json3-dev     # JSON
   libcli11-dev           # command line
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
+                         # OpenCASCADE 7.6: STEP export (io/step_export.cpp)
   chromium               # the browser test of view.html (headless)
   zlib1g-dev             # the browser test decodes Chromium's PNG screenshot
 )

@@ -85,3 +85,33 @@ TEST(CliSurfaceOutputs, HtmlExportAndViewWriteThePage) {
   EXPECT_EQ(r.status, 2);
   EXPECT_FALSE(fs::exists(tmpdir() / "empty_dir" / "view.html"));
 }
+
+TEST(CliSurfaceOutputs, StepExportFromTheCommandAndFromAJob) {
+  const fs::path net = write("step_net.json", kTensor);
+  const fs::path step = tmpdir() / "net.step";
+  CmdResult r = run("export " + net.string() + " --step " + step.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "");  // OpenCASCADE's messages stay off stdout
+  const std::string text = slurp(step);
+  EXPECT_EQ(text.rfind("ISO-10303-21;", 0), 0u);
+  EXPECT_NE(text.find("B_SPLINE_SURFACE"), std::string::npos);
+  const char* net2 = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+                     R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
+  const std::string job = std::string(R"({"net": )") + net2 +
+                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "export": ["step"]})";
+  const fs::path out = tmpdir() / "step_job";
+  r = run("solve " + write("step_job.json", job).string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(out / "surface.step").rfind("ISO-10303-21;", 0), 0u);
+  // a degree OpenCASCADE cannot hold is refused before anything runs
+  std::string big = R"({"net": {"type": "triangular", "degree": 26, "points": [)";
+  for (int k = 0; k < 27 * 28 / 2; ++k) big += std::string(k ? "," : "") + "[" + std::to_string(k) + ",0,1]";
+  big += R"(]}, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "export": ["step"]})";
+  const fs::path big_out = tmpdir() / "step_big";
+  r = run("solve " + write("step_big.json", big).string() + " --out " + big_out.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("STEP"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(big_out));
+  r = run("export " + net.string() + " --step /nonexistent-dir/x.step");
+  EXPECT_EQ(r.status, 2) << r.err;
+}
