@@ -57,21 +57,43 @@ SurfaceFields surface_fields(const Net& net, const TriangleMesh& mesh) {
   out.H.setZero(nv);
   out.K.setZero(nv);
   out.regular.setZero(nv);
-  std::visit(
-      [&](const auto& s) {
-        for (Eigen::Index k = 0; k < nv; ++k) {
-          const SurfaceJet jet = surface_jet(s, out.uv(k, 0), out.uv(k, 1));
-          const double cross = jet.xu.cross(jet.xv).norm(), scale = jet.xu.norm() * jet.xv.norm();
-          if (!(scale > 0) || !(cross >= kRegularSine * scale)) continue;
-          const FundamentalForms f = fundamental_forms(jet);
-          if (!f.regular || !std::isfinite(f.K) || !std::isfinite(f.H)) continue;
-          out.regular(k) = 1;
-          out.normal.row(k) = f.normal.transpose();
-          out.K(k) = f.K;
-          out.H(k) = k < mesh.H.size() && std::isfinite(mesh.H(k)) ? mesh.H(k) : f.H;
-        }
-      },
-      net);
+  // The jets at the vertices: tabulated for tensor and triangular nets (one Bernstein table per
+  // derivative, as sample_mesh does), pointwise for bspline nets.
+  auto classify = [&](Eigen::Index k, const SurfaceJet& jet) {
+    const double cross = jet.xu.cross(jet.xv).norm(), scale = jet.xu.norm() * jet.xv.norm();
+    if (!(scale > 0) || !(cross >= kRegularSine * scale)) return;
+    const FundamentalForms f = fundamental_forms(jet);
+    if (!f.regular || !std::isfinite(f.K) || !std::isfinite(f.H)) return;
+    out.regular(k) = 1;
+    out.normal.row(k) = f.normal.transpose();
+    out.K(k) = f.K;
+    out.H(k) = k < mesh.H.size() && std::isfinite(mesh.H(k)) ? mesh.H(k) : f.H;
+  };
+  auto tabulated = [&](const Eigen::MatrixX3d& Xu, const Eigen::MatrixX3d& Xv, const Eigen::MatrixX3d& Xuu,
+                       const Eigen::MatrixX3d& Xuv, const Eigen::MatrixX3d& Xvv) {
+    for (Eigen::Index k = 0; k < nv; ++k) {
+      SurfaceJet jet;
+      jet.xu = Xu.row(k).transpose(), jet.xv = Xv.row(k).transpose();
+      jet.xuu = Xuu.row(k).transpose(), jet.xuv = Xuv.row(k).transpose(), jet.xvv = Xvv.row(k).transpose();
+      classify(k, jet);
+    }
+  };
+  if (const auto* t = std::get_if<TensorNet>(&net)) {
+    Eigen::VectorXd g(N + 1);
+    for (int a = 0; a <= N; ++a) g(a) = static_cast<double>(a) / N;
+    tabulated(t->evaluate_grid(g, g, 1, 0), t->evaluate_grid(g, g, 0, 1), t->evaluate_grid(g, g, 2, 0),
+              t->evaluate_grid(g, g, 1, 1), t->evaluate_grid(g, g, 0, 2));
+  } else if (const auto* tr = std::get_if<TriangularNet>(&net)) {
+    const int n = tr->n();
+    auto D = [&](int du, int dv) -> Eigen::MatrixX3d {
+      if (du + dv > n) return Eigen::MatrixX3d::Zero(nv, 3);
+      return TriangularNet::basis_matrix(n - du - dv, out.uv) * tr->derivative_points(du, dv);
+    };
+    tabulated(D(1, 0), D(0, 1), D(2, 0), D(1, 1), D(0, 2));
+  } else {
+    const auto& b = std::get<BSplineNet>(net);
+    for (Eigen::Index k = 0; k < nv; ++k) classify(k, surface_jet(b, out.uv(k, 0), out.uv(k, 1)));
+  }
   // Irregular vertices: the mean over their regular neighbours.
   Eigen::VectorXd count = Eigen::VectorXd::Zero(nv), Hs = Eigen::VectorXd::Zero(nv), Ks = Eigen::VectorXd::Zero(nv);
   Eigen::MatrixX3d Ns = Eigen::MatrixX3d::Zero(nv, 3);
