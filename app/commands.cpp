@@ -8,6 +8,8 @@
 #include "io/blend_config.h"
 #include "io/mesh_io.h"
 #include "jobs/job_progress.h"
+#include "io/step_export.h"
+#include "jobs/exports.h"
 #include "jobs/run_blend.h"
 #include "jobs/run_demo.h"
 #include "jobs/run_energy.h"
@@ -36,19 +38,21 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir, const Sol
   if (flags.samples) check_samples(*flags.samples);
   Job job = read_job_input(job_path);
   if (flags.samples) job.samples = *flags.samples;
+  if (flags.html) job.export_html = true;
   const SolveOutcome out = run_job(job);
   const WrittenResult written = write_job_result(out_dir, job, out);
   if (!flags.quiet) std::fputs(solve_summary(written.result, job_path, out_dir).c_str(), stdout);
   return written.exit_code;
 }
 
-int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples) {
+int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples, const std::string& mesh_format) {
   check_samples(samples);
+  const MeshFormat format = mesh_format_from_string(mesh_format, "--mesh-format");
   const Net net = read_net_input(net_path);
   const TriangleMesh mesh = sampled(net, samples);
   make_output_dir(out_dir);
   const ProgressStage stage(job_progress(), "writing files");
-  write_surface_files(out_dir, net, mesh);
+  write_surface_files(out_dir, net, mesh, format);
   return 0;
 }
 
@@ -81,6 +85,23 @@ int cmd_blend(const std::string& config_path, const std::string& out_dir) {
   const BlendConfig config = read_blend_input(config_path);
   const BlendOutcome out = run_blend(config);
   return write_blend_outcome(out_dir, config, out);
+}
+
+int cmd_view(const std::string& dir, int samples) {
+  check_samples(samples);
+  const std::string path = dir + "/result.json";
+  const Json result = read_json_file(path);
+  json_read::require_object(result, path);
+  const Net net = net_from_json(json_read::field(result, path, "net"), path + ".net");
+  Exports exports;
+  exports.html = true;
+  write_exports(dir, net, sample_net(net, samples), result, exports);
+  return 0;
+}
+
+int cmd_export(const std::string& net_path, const std::string& step_path) {
+  write_step(step_path, read_net_file(net_path));
+  return 0;
 }
 
 int cmd_demo(const std::string& out_dir) {

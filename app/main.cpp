@@ -35,11 +35,14 @@ int main(int argc, char** argv) {
   solve->add_flag("-q,--quiet", solve_flags.quiet, "Print no summary (errors still go to stderr)");
   solve->add_option("--samples", solve_flags.samples, "Mesh resolution N, overriding the job's \"samples\"");
   solve->add_flag("--progress", progress, progress_help);
+  solve->add_flag("--html", solve_flags.html, "Also write DIR/view.html, the self-contained web viewer");
 
-  auto* sample = app.add_subcommand("sample", "Write surface.obj, surface.ply and net.obj for any net");
+  std::string mesh_format = "ascii";
+  auto* sample = app.add_subcommand("sample", "Write surface.obj, surface.ply, surface.vtp and net.obj for any net");
   sample->add_option("net", in, "NET.json (or a result.json of bpde: its net)")->required();
   sample->add_option("--out", out, "Output directory")->required();
   sample->add_option("--samples", samples, "Mesh resolution N (default 50)");
+  sample->add_option("--mesh-format", mesh_format, "surface.ply/.vtp numbers: ascii (default) or binary (float32)");
   sample->add_flag("--progress", progress, progress_help);
 
   std::string energy;
@@ -67,6 +70,15 @@ int main(int argc, char** argv) {
   blend->add_option("config", in, "CONFIG.json")->required();
   blend->add_option("--out", out, "Output directory")->required();
   blend->add_flag("--progress", progress, progress_help);
+
+  auto* view = app.add_subcommand("view", "Write DIR/view.html (web viewer) for the result.json in DIR");
+  view->add_option("dir", in, "DIR holding result.json")->required();
+  view->add_option("--samples", samples, "Mesh resolution N (default 50)");
+
+  std::string step_path;
+  auto* exp = app.add_subcommand("export", "Write the exact patch of a net for CAD (STEP, through OpenCASCADE)");
+  exp->add_option("net", in, "NET.json")->required();
+  exp->add_option("--step", step_path, "FILE.step")->required();
 
   std::string demo_out = "out/demo";
   auto* demo = app.add_subcommand("demo", "Run the built-in default job (the README's main command)");
@@ -98,11 +110,13 @@ int main(int argc, char** argv) {
   try {
     using namespace bpde::app;
     if (*solve) return cmd_solve(in, out, solve_flags);
-    if (*sample) return cmd_sample(in, out, samples);
+    if (*sample) return cmd_sample(in, out, samples, mesh_format);
     if (*en) return cmd_energy(in, energy, H);
     if (*check) return cmd_check(in, samples);
     if (*plate) return cmd_plate(aspect, degree, method);
     if (*blend) return cmd_blend(in, out);
+    if (*view) return cmd_view(in, samples);
+    if (*exp) return cmd_export(in, step_path);
     if (*demo) return cmd_demo(demo_out);
   } catch (...) {
     // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.

@@ -4,6 +4,7 @@
 
 #include "core/errors.h"
 #include "io/boundary_json.h"
+#include "io/step_export.h"
 
 namespace bpde {
 
@@ -164,7 +165,7 @@ Problem problem_from_json(const Json& j, const std::string& path) {
 
 Job parse_job(const Json& j, const std::string& source) {
   using namespace json_read;
-  check_keys(j, source, {"net", "boundary", "fixed", "problem", "samples"});
+  check_keys(j, source, {"net", "boundary", "fixed", "problem", "samples", "mesh_format", "export"});
   if (j.contains("net") == j.contains("boundary"))
     throw ParseError(source + ": a job gives exactly one of \"net\" and \"boundary\"");
   Job job;
@@ -190,6 +191,23 @@ Job parse_job(const Json& j, const std::string& source) {
     if (job.samples < 1 || job.samples > kMaxSamples)
       throw ParameterError(source + ".samples: must be in 1.." + std::to_string(kMaxSamples) + ", got " +
                            std::to_string(job.samples));
+  }
+  if (j.contains("mesh_format"))
+    job.mesh_format = mesh_format_from_string(string(j["mesh_format"], source + ".mesh_format"), source + ".mesh_format");
+  if (j.contains("export")) {
+    const std::string where = source + ".export";
+    if (!j["export"].is_array()) throw ParseError(where + ": expected an array of export names (\"step\", \"html\")");
+    for (size_t k = 0; k < j["export"].size(); ++k) {
+      const std::string e = string(j["export"][k], where + "[" + std::to_string(k) + "]");
+      if (e == "step") {
+        check_step_degree(job.net, where);
+        job.export_step = true;
+      }
+      else if (e == "html")
+        job.export_html = true;
+      else
+        throw ParseError(where + "[" + std::to_string(k) + "]: unknown export \"" + e + "\" (expected step or html)");
+    }
   }
   return job;
 }

@@ -8,6 +8,7 @@
 #include "core/fixed_set.h"
 #include "energies/energy_spec.h"
 #include "io/json_io.h"
+#include "io/mesh_io.h"
 #include "solvers/cmc/cmc.h"
 
 namespace bpde {
@@ -36,6 +37,11 @@ struct Job {
   /// A job given in the "boundary" form (io/boundary_json.h): how each edge was fitted, the
   /// report's `boundary_fit` (boundary_fit_to_json); null when the job gives the net.
   Json boundary_fit = nullptr;
+  /// bezierpde extensions (FORMATS.md): `"mesh_format": "ascii" | "binary"` for surface.ply and
+  /// surface.vtp; `"export": ["step", "html"]` for DIR/surface.step and DIR/view.html.
+  MeshFormat mesh_format = MeshFormat::Ascii;
+  bool export_step = false;
+  bool export_html = false;
 };
 
 /// Largest accepted `samples` (a 2000^2 grid is 4M vertices; more is almost surely a mistake).

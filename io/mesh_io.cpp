@@ -1,10 +1,15 @@
 #include "io/mesh_io.h"
 
+#include <bit>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <memory>
+#include <vector>
 
 #include "core/errors.h"
+#include "io/vtp_io.h"
 
 namespace bpde {
 namespace {
@@ -42,34 +47,69 @@ void write_obj(const std::string& path, const TriangleMesh& mesh) {
   out.close();
 }
 
-void write_ply(const std::string& path, const TriangleMesh& mesh) {
+MeshFormat mesh_format_from_string(const std::string& s, const std::string& where) {
+  if (s == "ascii") return MeshFormat::Ascii;
+  if (s == "binary") return MeshFormat::Binary;
+  throw ParseError(where + ": unknown mesh format \"" + s + "\" (expected ascii or binary)");
+}
+
+namespace {
+
+// Little-endian bytes of a value appended to a buffer.
+template <class T>
+void put_le(std::vector<char>& buf, T value) {
+  static_assert(std::endian::native == std::endian::little, "binary PLY writer assumes a little-endian host");
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  buf.insert(buf.end(), bytes, bytes + sizeof(T));
+}
+
+}  // namespace
+
+void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format) {
+  const bool binary = format == MeshFormat::Binary;
+  const char* type = binary ? "float" : "double";
   File out(path);
   std::fprintf(out.f,
-               "ply\nformat ascii 1.0\ncomment bezierpde surface; mean_curvature per FORMATS.md sign convention\n"
-               "element vertex %ld\nproperty double x\nproperty double y\nproperty double z\n"
-               "property double mean_curvature\nelement face %ld\nproperty list uchar int vertex_indices\nend_header\n",
-               static_cast<long>(mesh.V.rows()), static_cast<long>(mesh.F.rows()));
-  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r)
-    std::fprintf(out.f, "%.17g %.17g %.17g %.17g\n", mesh.V(r, 0), mesh.V(r, 1), mesh.V(r, 2),
-                 r < mesh.H.size() ? mesh.H(r) : 0.0);
-  for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
-    std::fprintf(out.f, "3 %d %d %d\n", mesh.F(r, 0), mesh.F(r, 1), mesh.F(r, 2));
+               "ply\nformat %s 1.0\ncomment bezierpde surface; mean_curvature per FORMATS.md sign convention; "
+               "regular = 0 where x_u and x_v are parallel (mean_curvature there: mean of the regular neighbours)\n"
+               "element vertex %ld\nproperty %s x\nproperty %s y\nproperty %s z\nproperty %s mean_curvature\n"
+               "property uchar regular\nelement face %ld\nproperty list uchar int vertex_indices\nend_header\n",
+               binary ? "binary_little_endian" : "ascii", static_cast<long>(mesh.V.rows()), type, type, type, type,
+               static_cast<long>(mesh.F.rows()));
+  if (binary) {
+    std::vector<char> buf;
+    buf.reserve(static_cast<size_t>(mesh.V.rows()) * 17 + static_cast<size_t>(mesh.F.rows()) * 13);
+    for (Eigen::Index r = 0; r < mesh.V.rows(); ++r) {
+      for (int c = 0; c < 3; ++c) put_le(buf, static_cast<float>(mesh.V(r, c)));
+      put_le(buf, static_cast<float>(fields.H(r)));
+      put_le(buf, static_cast<std::uint8_t>(fields.regular(r)));
+    }
+    for (Eigen::Index r = 0; r < mesh.F.rows(); ++r) {
+      put_le(buf, static_cast<std::uint8_t>(3));
+      for (int c = 0; c < 3; ++c) put_le(buf, static_cast<std::int32_t>(mesh.F(r, c)));
+    }
+    std::fwrite(buf.data(), 1, buf.size(), out.f);
+  } else {
+    for (Eigen::Index r = 0; r < mesh.V.rows(); ++r)
+      std::fprintf(out.f, "%.17g %.17g %.17g %.17g %d\n", mesh.V(r, 0), mesh.V(r, 1), mesh.V(r, 2), fields.H(r),
+                   static_cast<int>(fields.regular(r)));
+    for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
+      std::fprintf(out.f, "3 %d %d %d\n", mesh.F(r, 0), mesh.F(r, 1), mesh.F(r, 2));
+  }
   out.close();
 }
 
-void write_net_obj(const std::string& path, const Net& net) {
-  File out(path);
-  std::fprintf(out.f, "# bezierpde control net (%s)\n", net_kind(net).c_str());
-  auto line = [&](int a, int b) { std::fprintf(out.f, "l %d %d\n", a + 1, b + 1); };
+std::vector<std::array<int, 2>> net_segments(const Net& net) {
+  std::vector<std::array<int, 2>> out;
+  auto line = [&](int a, int b) { out.push_back({a, b}); };
   if (const auto* t = std::get_if<TensorNet>(&net)) {
-    write_vertices(out.f, t->points());
     for (int i = 0; i <= t->n(); ++i)
       for (int j = 0; j <= t->m(); ++j) {
         if (i < t->n()) line(t->index(i, j), t->index(i + 1, j));
         if (j < t->m()) line(t->index(i, j), t->index(i, j + 1));
       }
   } else if (const auto* b = std::get_if<BSplineNet>(&net)) {
-    write_vertices(out.f, b->points());
     for (int i = 0; i < b->nu(); ++i)
       for (int j = 0; j < b->nv(); ++j) {
         if (i + 1 < b->nu()) line(b->index(i, j), b->index(i + 1, j));
@@ -77,7 +117,6 @@ void write_net_obj(const std::string& path, const Net& net) {
       }
   } else {
     const auto& tr = std::get<TriangularNet>(net);
-    write_vertices(out.f, tr.points());
     const int n = tr.n();
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n - i; ++j) {
@@ -89,6 +128,14 @@ void write_net_obj(const std::string& path, const Net& net) {
         if (i > 0) line(tr.index(i, j), tr.index(i - 1, j + 1));
       }
   }
+  return out;
+}
+
+void write_net_obj(const std::string& path, const Net& net) {
+  File out(path);
+  std::fprintf(out.f, "# bezierpde control net (%s)\n", net_kind(net).c_str());
+  write_vertices(out.f, std::visit([](const auto& n) -> Eigen::MatrixX3d { return n.points(); }, net));
+  for (const auto& [a, b] : net_segments(net)) std::fprintf(out.f, "l %d %d\n", a + 1, b + 1);
   out.close();
 }
 
@@ -96,9 +143,11 @@ TriangleMesh sample_net(const Net& net, int samples) {
   return std::visit([samples](const auto& n) { return sample_mesh(n, samples); }, net);
 }
 
-void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh) {
+void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh, MeshFormat format) {
+  const SurfaceFields fields = surface_fields(net, mesh);
   write_obj(dir + "/surface.obj", mesh);
-  write_ply(dir + "/surface.ply", mesh);
+  write_ply(dir + "/surface.ply", mesh, fields, format);
+  write_vtp(dir + "/surface.vtp", mesh, fields, format);
   write_net_obj(dir + "/net.obj", net);
 }
 

@@ -1,23 +1,39 @@
 #pragma once
-// Surface and control-net files (FORMATS.md "Results"): OBJ and ASCII PLY, coordinates written
-// with 17 significant digits.
+// Surface and control-net files (FORMATS.md "Results"): OBJ, PLY (ASCII with 17 significant
+// digits, or binary little-endian float32) and VTK XML PolyData (io/vtp_io.h).
+#include <array>
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 #include "io/json_io.h"
+#include "io/surface_fields.h"
 
 namespace bpde {
 
 /// `v x y z` per vertex (in mesh order) and `f a b c` per triangle (1-based). Throws FileError.
 void write_obj(const std::string& path, const TriangleMesh& mesh);
-/// ASCII PLY with double x, y, z, mean_curvature per vertex and the triangles. Throws FileError.
-void write_ply(const std::string& path, const TriangleMesh& mesh);
+/// How surface.ply (and surface.vtp) store numbers: `ascii` (17 significant digits, doubles) or
+/// `binary` (PLY binary_little_endian with float32 x, y, z, mean_curvature; VTP base64 float32).
+enum class MeshFormat { Ascii, Binary };
+/// "ascii" or "binary" (ParseError naming `where` otherwise).
+MeshFormat mesh_format_from_string(const std::string& s, const std::string& where);
+
+/// PLY with x, y, z, mean_curvature (fields.H: at irregular vertices the mean of the regular
+/// neighbours, never the blown-up value) and `uchar regular` (fields.regular) per vertex, and the
+/// triangles as `list uchar int vertex_indices`. Throws FileError.
+void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields,
+               MeshFormat format = MeshFormat::Ascii);
+/// The segments of the control net (pairs of point indices, net order) joining neighbours along
+/// each parameter direction (three directions for triangular nets).
+std::vector<std::array<int, 2>> net_segments(const Net& net);
 /// The control net as OBJ lines: its points as vertices (net order) and `l a b` segments joining
 /// neighbours along each parameter direction (three directions for triangular nets).
 void write_net_obj(const std::string& path, const Net& net);
 
-/// Sample any net: surface.obj, surface.ply and net.obj into `dir` (which must exist).
+/// Sample any net: surface.obj, surface.ply, surface.vtp and net.obj into `dir` (which must exist).
 TriangleMesh sample_net(const Net& net, int samples);
-void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh);
+void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh,
+                         MeshFormat format = MeshFormat::Ascii);
 
 }  // namespace bpde

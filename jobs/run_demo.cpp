@@ -54,7 +54,7 @@ std::string demo_summary(const Json& r, const std::string& out_dir) {
            r["mean_curvature"]["min"].get<double>(), r["mean_curvature"]["max"].get<double>(),
            r["mean_curvature"]["mean"].get<double>());
   append(s, "  self-intersections  %d\n", r["check"]["self_intersections"].get<int>());
-  append(s, "  files               %s/{result.json, surface.obj, surface.ply, net.obj}\n", out_dir.c_str());
+  append(s, "  files               %s/{result.json, surface.obj, surface.ply, surface.vtp, net.obj}\n", out_dir.c_str());
   return s;
 }
 

@@ -19,6 +19,7 @@
 #include "energies/volume.h"
 #include "io/mesh_io.h"
 #include "jobs/job_progress.h"
+#include "jobs/exports.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
 #include "solvers/c1/biharmonic_load.h"
@@ -372,7 +373,7 @@ Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }
 // result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
 // statistics and the CGAL figures unless the solver already set them.
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                           const Json& extra, Status status) {
+                           const Json& extra, Status status, MeshFormat format) {
   if (!report.contains("mean_curvature")) {
     const ProgressStage stage(job_progress(), "mean curvature");
     report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
@@ -386,7 +387,7 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
   for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
   make_output_dir(dir);
   write_json_file(dir + "/result.json", result);
-  write_surface_files(dir, net, mesh);
+  write_surface_files(dir, net, mesh, format);
   return {std::move(result), exit_code(status)};
 }
 
@@ -395,7 +396,13 @@ WrittenResult write_job_result(const std::string& dir, const Job& job, const Sol
     const ProgressStage stage(job_progress(), "sampling");
     return sample_net(out.net, job.samples);
   }();
-  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status);
+  WrittenResult written =
+      write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status, job.mesh_format);
+  Exports exports;
+  exports.html = job.export_html;
+  exports.step = job.export_step;
+  write_exports(dir, out.net, mesh, written.result, exports);
+  return written;
 }
 
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {

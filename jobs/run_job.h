@@ -68,12 +68,13 @@ struct WrittenResult {
   int exit_code = 0;
 };
 
-/// Write DIR/result.json and surface.obj, surface.ply, net.obj (DIR created with its parents).
-/// The report gains `mean_curvature` and `check` unless already present. The exit code is
-/// exit_code(status).
+/// Write DIR/result.json and surface.obj, surface.ply, surface.vtp, net.obj (DIR created with its
+/// parents; PLY and VTP in `format`). The report gains `mean_curvature` and `check` unless already
+/// present. The exit code is exit_code(status).
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                           const Json& extra, Status status);
-/// write_result for a job's outcome, sampled at job.samples.
+                           const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii);
+/// write_result for a job's outcome, sampled at job.samples, in job.mesh_format, and the job's
+/// exports (job.export_step: DIR/surface.step; job.export_html: DIR/view.html; jobs/exports.h).
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out);
 /// write_job_result's exit code: 0 if converged, else 1.
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out);

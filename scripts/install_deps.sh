@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package bezierpde needs, and nothing that is already there.
+# Installs every Debian 12 package bezierpde needs, and nothing that is already there, then the
+# viewer's npm packages (three.js and esbuild, pinned by viewer/package-lock.json) when missing.
 # Idempotent: a second run installs nothing. Needs root (or sudo) only when something is missing.
 set -euo pipefail
 
@@ -14,6 +15,10 @@ PACKAGES=(
   nlohmann-json3-dev     # JSON
   libcli11-dev           # command line
   python3 python3-jsonschema  # tests/schema: the JSON Schemas of docs/schema/
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
+                         # OpenCASCADE 7.6: STEP export (io/step_export.cpp)
+  chromium               # the browser test of view.html (headless)
+  zlib1g-dev             # the browser test decodes Chromium's PNG screenshot
 )
 
 missing=()
@@ -22,15 +27,23 @@ for p in "${PACKAGES[@]}"; do
     missing+=("$p")
   fi
 done
+# view.html: three.js and esbuild from the npm registry (viewer/). Debian's npm, unless an npm
+# (e.g. one that came with another Node.js) is already on the PATH.
+if ! command -v npm >/dev/null 2>&1; then missing+=(npm); fi
 
 if ((${#missing[@]} == 0)); then
-  echo "install_deps: all ${#PACKAGES[@]} packages present"
-  exit 0
+  echo "install_deps: all packages present"
+else
+  echo "install_deps: installing ${missing[*]}"
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install_deps: installing ${missing[*]}"
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+viewer="$(dirname "$0")/../viewer"
+if [ ! -f "$viewer/node_modules/three/package.json" ] || [ ! -x "$viewer/node_modules/.bin/esbuild" ]; then
+  echo "install_deps: npm ci in viewer/ (three.js, esbuild)"
+  (cd "$viewer" && npm ci --no-audit --no-fund)
+fi

@@ -1,0 +1,126 @@
+#include "io/vtp_io.h"
+
+#include <bit>
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include "core/errors.h"
+#include "io/base64.h"
+
+namespace bpde {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "the VTP writer declares LittleEndian");
+
+// One DataArray: `values` row-major (#rows x components), written as Float64/Float32 text or
+// base64, or Int32/UInt8 for integer types.
+class ArrayWriter {
+ public:
+  ArrayWriter(std::string& out, bool binary) : out_(out), binary_(binary) {}
+
+  void reals(const char* name, const double* values, size_t count, int components) {
+    open(binary_ ? "Float32" : "Float64", name, components);
+    if (binary_) {
+      std::vector<float> f(values, values + count);
+      payload(f.data(), f.size() * sizeof(float));
+    } else {
+      for (size_t k = 0; k < count; ++k) number(values[k], k, components);
+    }
+    close();
+  }
+
+  template <class Int>
+  void ints(const char* type, const char* name, const std::vector<Int>& values, int components) {
+    open(type, name, components);
+    if (binary_) {
+      payload(values.data(), values.size() * sizeof(Int));
+    } else {
+      for (size_t k = 0; k < values.size(); ++k) number(static_cast<long long>(values[k]), k, components);
+    }
+    close();
+  }
+
+ private:
+  void open(const char* type, const char* name, int components) {
+    out_ += "        <DataArray type=\"";
+    out_ += type;
+    out_ += "\"";
+    if (name) {
+      out_ += " Name=\"";
+      out_ += name;
+      out_ += "\"";
+    }
+    out_ += " NumberOfComponents=\"" + std::to_string(components) + "\" format=\"";
+    out_ += binary_ ? "binary" : "ascii";
+    out_ += "\">\n";
+  }
+  void close() { out_ += "\n        </DataArray>\n"; }
+  template <class T>
+  void number(T value, size_t k, int components) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, value);
+    out_.append(buf, r.ptr);
+    out_ += (k + 1) % (static_cast<size_t>(components) * 4) == 0 ? '\n' : ' ';
+  }
+  void payload(const void* data, size_t bytes) {
+    std::vector<char> block(sizeof(std::uint64_t) + bytes);
+    const std::uint64_t n = bytes;
+    std::memcpy(block.data(), &n, sizeof n);
+    if (bytes) std::memcpy(block.data() + sizeof n, data, bytes);
+    out_ += base64_encode(block.data(), block.size());
+  }
+
+  std::string& out_;
+  bool binary_;
+};
+
+}  // namespace
+
+void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format) {
+  const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
+  if (fields.H.size() != nv || fields.K.size() != nv || fields.normal.rows() != nv || fields.uv.rows() != nv ||
+      fields.regular.size() != nv)
+    throw InternalError("write_vtp: fields do not match the mesh");
+  using RowMat3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  using RowMat2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+  const RowMat3 points = mesh.V, normals = fields.normal;
+  const RowMat2 uv = fields.uv;
+  std::vector<std::int32_t> connectivity(static_cast<size_t>(nf) * 3), offsets(static_cast<size_t>(nf));
+  for (Eigen::Index t = 0; t < nf; ++t) {
+    for (int c = 0; c < 3; ++c) connectivity[static_cast<size_t>(3 * t + c)] = mesh.F(t, c);
+    offsets[static_cast<size_t>(t)] = static_cast<std::int32_t>(3 * (t + 1));
+  }
+  std::vector<std::uint8_t> regular(fields.regular.data(), fields.regular.data() + nv);
+
+  std::string s;
+  s.reserve(static_cast<size_t>(nv) * 200 + static_cast<size_t>(nf) * 40);
+  s += "<?xml version=\"1.0\"?>\n<!-- bezierpde surface (FORMATS.md, surface.vtp) -->\n";
+  s += "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
+  s += "  <PolyData>\n    <Piece NumberOfPoints=\"" + std::to_string(nv) +
+       "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"" + std::to_string(nf) +
+       "\">\n";
+  ArrayWriter w(s, format == MeshFormat::Binary);
+  s += "      <PointData Scalars=\"mean_curvature\" Normals=\"Normals\" TCoords=\"uv\">\n";
+  w.reals("Normals", normals.data(), static_cast<size_t>(nv) * 3, 3);
+  w.reals("mean_curvature", fields.H.data(), static_cast<size_t>(nv), 1);
+  w.reals("gaussian_curvature", fields.K.data(), static_cast<size_t>(nv), 1);
+  w.reals("uv", uv.data(), static_cast<size_t>(nv) * 2, 2);
+  w.ints("UInt8", "regular", regular, 1);
+  s += "      </PointData>\n      <Points>\n";
+  w.reals("Points", points.data(), static_cast<size_t>(nv) * 3, 3);
+  s += "      </Points>\n      <Polys>\n";
+  w.ints("Int32", "connectivity", connectivity, 1);
+  w.ints("Int32", "offsets", offsets, 1);
+  s += "      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw FileError("cannot write file '" + path + "'");
+  out.write(s.data(), static_cast<std::streamsize>(s.size()));
+  out.close();
+  if (!out) throw FileError("error while writing '" + path + "'");
+}
+
+}  // namespace bpde

@@ -1,0 +1,117 @@
+// The command's surface outputs beyond OBJ/PLY: --mesh-format and "mesh_format" (binary PLY and
+// VTP), by running the binary.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tests/cli/cli_run.h"
+
+namespace fs = std::filesystem;
+using bpde::testing::CmdResult;
+using bpde::testing::run;
+using bpde::testing::slurp;
+using bpde::testing::tmpdir;
+using bpde::testing::write;
+
+namespace {
+const char* kTensor = R"({"type": "tensor", "degree": [1, 1], "points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})";
+}  // namespace
+
+TEST(CliSurfaceOutputs, SampleWritesBinaryPlyAndVtpOnRequest) {
+  const fs::path net = write("st.json", kTensor);
+  for (const std::string format : {"ascii", "binary"}) {
+    const fs::path out = tmpdir() / ("so_" + format);
+    const CmdResult r =
+        run("sample " + net.string() + " --out " + out.string() + " --samples 3 --mesh-format " + format);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string ply = slurp(out / "surface.ply"), vtp = slurp(out / "surface.vtp");
+    EXPECT_NE(ply.find(format == "binary" ? "format binary_little_endian 1.0\n" : "format ascii 1.0\n"),
+              std::string::npos);
+    EXPECT_NE(ply.find("property uchar regular\n"), std::string::npos);
+    EXPECT_NE(vtp.find("NumberOfPoints=\"16\""), std::string::npos);
+    EXPECT_NE(vtp.find(format == "binary" ? "format=\"binary\"" : "format=\"ascii\""), std::string::npos);
+  }
+  const fs::path bad = tmpdir() / "so_bad";
+  const CmdResult r = run("sample " + net.string() + " --out " + bad.string() + " --mesh-format float");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--mesh-format"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(bad));
+}
+
+TEST(CliSurfaceOutputs, JobMeshFormatIsReadAndCheckedBeforeAnythingRuns) {
+  const char* net = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+                    R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
+  const std::string job = std::string(R"({"net": )") + net +
+                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "samples": 4, )";
+  const fs::path good = write("mf.json", job + R"("mesh_format": "binary"})");
+  const fs::path out = tmpdir() / "mf_out";
+  CmdResult r = run("solve " + good.string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(slurp(out / "surface.ply").find("binary_little_endian"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "surface.vtp"));
+  const fs::path bad = write("mf_bad.json", job + R"("mesh_format": 3})");
+  const fs::path bad_out = tmpdir() / "mf_bad_out";
+  r = run("solve " + bad.string() + " --out " + bad_out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("mesh_format"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(bad_out));
+}
+
+TEST(CliSurfaceOutputs, HtmlExportAndViewWriteThePage) {
+  const char* net = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+                    R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
+  const std::string job = std::string(R"({"net": )") + net +
+                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "samples": 4)";
+  const fs::path with_export = write("ex.json", job + R"(, "export": ["html"]})");
+  const fs::path out = tmpdir() / "ex_out";
+  CmdResult r = run("solve " + with_export.string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = slurp(out / "view.html");
+  EXPECT_NE(page.find("\"vertices\":25"), std::string::npos);
+  // bpde view rewrites the same page from result.json at the same resolution
+  fs::remove(out / "view.html");
+  r = run("view " + out.string() + " --samples 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(out / "view.html"), page);
+  // bad input: an unknown export, a folder without result.json
+  const fs::path bad = write("ex_bad.json", job + R"(, "export": ["pdf"]})");
+  r = run("solve " + bad.string() + " --out " + (tmpdir() / "ex_bad_out").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("export[0]"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmpdir() / "ex_bad_out"));
+  fs::create_directories(tmpdir() / "empty_dir");
+  r = run("view " + (tmpdir() / "empty_dir").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(fs::exists(tmpdir() / "empty_dir" / "view.html"));
+}
+
+TEST(CliSurfaceOutputs, StepExportFromTheCommandAndFromAJob) {
+  const fs::path net = write("step_net.json", kTensor);
+  const fs::path step = tmpdir() / "net.step";
+  CmdResult r = run("export " + net.string() + " --step " + step.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "");  // OpenCASCADE's messages stay off stdout
+  const std::string text = slurp(step);
+  EXPECT_EQ(text.rfind("ISO-10303-21;", 0), 0u);
+  EXPECT_NE(text.find("B_SPLINE_SURFACE"), std::string::npos);
+  const char* net2 = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+                     R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
+  const std::string job = std::string(R"({"net": )") + net2 +
+                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "export": ["step"]})";
+  const fs::path out = tmpdir() / "step_job";
+  r = run("solve " + write("step_job.json", job).string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(out / "surface.step").rfind("ISO-10303-21;", 0), 0u);
+  // a degree OpenCASCADE cannot hold is refused before anything runs
+  std::string big = R"({"net": {"type": "triangular", "degree": 26, "points": [)";
+  for (int k = 0; k < 27 * 28 / 2; ++k) big += std::string(k ? "," : "") + "[" + std::to_string(k) + ",0,1]";
+  big += R"(]}, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "export": ["step"]})";
+  const fs::path big_out = tmpdir() / "step_big";
+  r = run("solve " + write("step_big.json", big).string() + " --out " + big_out.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("STEP"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(big_out));
+  r = run("export " + net.string() + " --step /nonexistent-dir/x.step");
+  EXPECT_EQ(r.status, 2) << r.err;
+}

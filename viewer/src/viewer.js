@@ -1,0 +1,172 @@
+// The script of bpde's view.html (io/html_view.h): bundled with three.js and OrbitControls into one
+// classic script at build time (CMakeLists.txt, esbuild), so that the page opens from disk.
+//
+// The page's data is the JSON object in <script id="bpde-data" type="application/json">:
+//   vertices, triangles: counts; positions (3 per vertex), normals (3 per vertex), H (1 per
+//   vertex): base64 little-endian float32; regular: base64 uint8 (1 per vertex); indices: base64
+//   uint32 (3 per triangle); net: {points: base64 float32 (3 per point), lines: base64 uint32
+//   (2 per segment)}; range: [lo, hi] of the colour scale; report: the report object.
+// After the first frame the page writes what it drew into #bpde-status (data-vertices,
+// data-triangles, data-drawn: non-background pixels in the middle of the canvas) and the title.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
+function bytes(b64) {
+  const s = atob(b64);
+  const out = new Uint8Array(s.length);
+  for (let i = 0; i < s.length; ++i) out[i] = s.charCodeAt(i);
+  return out;
+}
+const f32 = (b64) => new Float32Array(bytes(b64).buffer);
+const u32 = (b64) => new Uint32Array(bytes(b64).buffer);
+
+// A perceptual blue-white-red scale would hide the sign convention; use viridis-like stops.
+const STOPS = [
+  [0.267, 0.005, 0.329], [0.283, 0.141, 0.458], [0.254, 0.265, 0.530], [0.207, 0.372, 0.553],
+  [0.164, 0.471, 0.558], [0.128, 0.567, 0.551], [0.135, 0.659, 0.518], [0.267, 0.749, 0.441],
+  [0.478, 0.821, 0.318], [0.741, 0.873, 0.150], [0.993, 0.906, 0.144],
+];
+function colour(t) {
+  const x = Math.min(1, Math.max(0, t)) * (STOPS.length - 1);
+  const i = Math.min(STOPS.length - 2, Math.floor(x)), f = x - i;
+  return STOPS[i].map((a, k) => a + f * (STOPS[i + 1][k] - a));
+}
+
+function formatNumber(v) {
+  if (typeof v !== 'number') return String(v);
+  if (Number.isInteger(v)) return String(v);
+  return Math.abs(v) >= 1e-3 && Math.abs(v) < 1e6 ? v.toPrecision(8) : v.toExponential(6);
+}
+
+function reportTable(report) {
+  const table = document.getElementById('bpde-report');
+  const row = (k, v) => {
+    const tr = document.createElement('tr');
+    const a = document.createElement('th'), b = document.createElement('td');
+    a.textContent = k;
+    b.textContent = v;
+    tr.append(a, b);
+    table.append(tr);
+  };
+  for (const [k, v] of Object.entries(report)) {
+    if (v !== null && typeof v === 'object' && !Array.isArray(v)) {
+      for (const [k2, v2] of Object.entries(v)) row(k + '.' + k2, formatNumber(v2));
+    } else {
+      row(k, Array.isArray(v) ? JSON.stringify(v) : formatNumber(v));
+    }
+  }
+}
+
+function legend(lo, hi) {
+  const c = document.getElementById('bpde-legend');
+  const g = c.getContext('2d');
+  for (let x = 0; x < c.width; ++x) {
+    const [r, gr, b] = colour(x / (c.width - 1));
+    g.fillStyle = `rgb(${255 * r},${255 * gr},${255 * b})`;
+    g.fillRect(x, 0, 1, c.height);
+  }
+  document.getElementById('bpde-lo').textContent = formatNumber(lo);
+  document.getElementById('bpde-hi').textContent = formatNumber(hi);
+}
+
+function main() {
+  const data = JSON.parse(document.getElementById('bpde-data').textContent);
+  const canvas = document.getElementById('bpde-canvas');
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(window.devicePixelRatio || 1);
+  const background = new THREE.Color(0xffffff);
+  renderer.setClearColor(background, 1);
+  const scene = new THREE.Scene();
+
+  const positions = f32(data.positions), normals = f32(data.normals), H = f32(data.H);
+  const [lo, hi] = data.range;
+  const colours = new Float32Array(3 * data.vertices);
+  for (let k = 0; k < data.vertices; ++k) colours.set(colour(hi > lo ? (H[k] - lo) / (hi - lo) : 0.5), 3 * k);
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+  geometry.setAttribute('normal', new THREE.BufferAttribute(normals, 3));
+  geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+  geometry.setIndex(new THREE.BufferAttribute(u32(data.indices), 1));
+  geometry.computeBoundingSphere();
+  const surface = new THREE.Mesh(
+    geometry,
+    new THREE.MeshLambertMaterial({ vertexColors: true, side: THREE.DoubleSide, polygonOffset: true,
+                                    polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+  scene.add(surface);
+  const wire = new THREE.Mesh(geometry,
+                              new THREE.MeshBasicMaterial({ color: 0x202020, wireframe: true, transparent: true, opacity: 0.35 }));
+  wire.visible = false;
+  scene.add(wire);
+
+  const netGeometry = new THREE.BufferGeometry();
+  netGeometry.setAttribute('position', new THREE.BufferAttribute(f32(data.net.points), 3));
+  netGeometry.setIndex(new THREE.BufferAttribute(u32(data.net.lines), 1));
+  const net = new THREE.Group();
+  net.add(new THREE.LineSegments(netGeometry, new THREE.LineBasicMaterial({ color: 0xc03020 })));
+  net.add(new THREE.Points(netGeometry, new THREE.PointsMaterial({ color: 0xc03020, size: 6, sizeAttenuation: false })));
+  scene.add(net);
+
+  scene.add(new THREE.AmbientLight(0xffffff, 1.2));
+  const camera = new THREE.PerspectiveCamera(35, 1, 1e-3, 1e3);
+  const head = new THREE.DirectionalLight(0xffffff, 1.8);
+  camera.add(head);
+  scene.add(camera);
+
+  // frame the surface and its net, looking down on it from +z and a little from the side
+  netGeometry.computeBoundingSphere();
+  const sphere = geometry.boundingSphere.clone().union(netGeometry.boundingSphere);
+  const r = Math.max(sphere.radius, 1e-9);
+  camera.near = r / 100;
+  camera.far = r * 100;
+  camera.position.copy(sphere.center).add(new THREE.Vector3(0.9, -1.6, 2.6).normalize().multiplyScalar(4.2 * r));
+  camera.up.set(0, 0, 1);
+  const controls = new OrbitControls(camera, canvas);
+  controls.target.copy(sphere.center);
+
+  const resize = () => {
+    const w = canvas.clientWidth || 640, h = canvas.clientHeight || 480;
+    renderer.setSize(w, h, false);
+    camera.aspect = w / h;
+    camera.updateProjectionMatrix();
+  };
+  const render = () => renderer.render(scene, camera);
+  resize();
+  controls.update();
+  controls.addEventListener('change', render);
+  window.addEventListener('resize', () => { resize(); render(); });
+  for (const [id, object] of [['bpde-show-net', net], ['bpde-show-wire', wire]]) {
+    const box = document.getElementById(id);
+    object.visible = box.checked;
+    box.addEventListener('change', () => { object.visible = box.checked; render(); });
+  }
+  render();
+
+  // what was drawn: non-background pixels in the middle third of the canvas
+  const gl = renderer.getContext();
+  const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+  const x0 = Math.floor(w / 3), y0 = Math.floor(h / 3), cw = Math.floor(w / 3), ch = Math.floor(h / 3);
+  const pixels = new Uint8Array(4 * cw * ch);
+  gl.readPixels(x0, y0, cw, ch, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  let drawn = 0;
+  for (let k = 0; k < cw * ch; ++k)
+    if (Math.abs(pixels[4 * k] - 255) + Math.abs(pixels[4 * k + 1] - 255) + Math.abs(pixels[4 * k + 2] - 255) > 24) ++drawn;
+  const status = document.getElementById('bpde-status');
+  status.dataset.vertices = String(data.vertices);
+  status.dataset.triangles = String(data.triangles);
+  status.dataset.drawn = String(drawn);
+  status.dataset.sampled = String(cw * ch);
+  status.textContent = `${data.vertices} vertices, ${data.triangles} triangles`;
+  document.title = `${data.title} (${data.vertices} vertices)`;
+
+  legend(lo, hi);
+  reportTable(data.report);
+}
+
+try {
+  main();
+} catch (e) {
+  const status = document.getElementById('bpde-status');
+  status.dataset.error = String(e);
+  status.textContent = 'viewer error: ' + e;
+  document.title = 'bpde view: error';
+}
