@@ -1,6 +1,6 @@
 #pragma once
-// Surface and control-net files (FORMATS.md "Results"): OBJ and ASCII PLY, coordinates written
-// with 17 significant digits.
+// Surface and control-net files (FORMATS.md "Results"): OBJ and ASCII PLY, every number written
+// as the shortest decimal that reads back to the same double (std::to_chars), so files are exact.
 #include <string>
 
 #include "core/mesh.h"
