@@ -13,6 +13,7 @@ PACKAGES=(
   libbenchmark-dev       # Google Benchmark
   nlohmann-json3-dev     # JSON
   libcli11-dev           # command line
+  libsuitesparse-dev     # CHOLMOD: sparse Cholesky of the blend system
 )
 
 missing=()
