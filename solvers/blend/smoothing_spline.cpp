@@ -181,16 +181,23 @@ void SmoothingSplineSolver::Impl::assemble(const SmoothingSplineProblem& problem
   const int n = space.num_dofs();
   R = space.assemble_form(SecondOrderForm::from_a(problem.a));
   std::vector<Eigen::Triplet<double>> trip;
+  // C = εR + AᵀA, summed into the pattern of R: the 16 dofs of a point's element are coupled in R
+  // already, so no entry is inserted and no temporary of C's size is made.
+  C = R;
+  C *= problem.epsilon;
   for (Eigen::Index i = 0; i < problem.points.rows(); ++i) {
     std::array<int, 16> idx;
     std::array<double, 16> val;
     space.basis_at(problem.points(i, 0), problem.points(i, 1), 0, 0, idx, val);
-    for (int c = 0; c < 16; ++c)
-      if (val[c] != 0) trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
+    for (int c = 0; c < 16; ++c) {
+      if (val[c] == 0) continue;
+      trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
+      for (int r = 0; r < 16; ++r)
+        if (val[r] != 0) C.coeffRef(idx[r], idx[c]) += val[r] * val[c];
+    }
   }
   A.resize(problem.points.rows(), n);
   A.setFromTriplets(trip.begin(), trip.end());
-  C = Eigen::SparseMatrix<double>(A.transpose() * A) + problem.epsilon * R;
   C.makeCompressed();
 }
 
