@@ -93,7 +93,8 @@ int run_table1(int argc, char** argv) {
       " lu / explicit | lu / mould | lu-bernstein / explicit | lu-bernstein / mould |"
       " paper / explicit | paper / lu | paper / mould |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  bool ratio_lu = true, ratio_dense = true, paper_goal = true, complete = true, have_dense = true;
+  bool ratio_dense = true, paper_goal = true, complete = true, have_dense = true;
+  double lu_over_explicit_20 = 0;
   for (const PaperRow& p : kPaper) {
     double e = 0, l = 0, d = 0, m = 0;
     auto name = [&](const char* route) {  // snprintf: GCC 12 warns (-Wrestrict) on "lit" + string
@@ -120,7 +121,7 @@ int run_table1(int argc, char** argv) {
     std::printf("| %d | %.2f | %.2f | %.4f | %.4f | %s | %.4f | %.1f | %.1f | %s | %s | %.0f | %.0f | %.0f |\n", p.n,
                 p.explicit_ms, p.linear_ms, e, l, dense, m, l / e, l / m, dense_e, dense_m, p.explicit_ms / e,
                 p.linear_ms / l, best_paper / m);
-    if (p.n == 20 && !(l >= 10 * e && l >= 10 * m)) ratio_lu = false;
+    if (p.n == 20) lu_over_explicit_20 = l / e;
     if (p.n == 20 && hd && !(d >= 10 * e && d >= 10 * m)) ratio_dense = false;
     if (!(p.explicit_ms >= 100 * e && p.linear_ms >= 100 * l && best_paper >= 100 * m)) paper_goal = false;
   }
@@ -128,11 +129,21 @@ int run_table1(int argc, char** argv) {
     std::printf("\n(some Table 1 routes did not run: the goals below are not checked)\n");
     return 0;
   }
-  std::printf("\ngoal: every route (explicit, lu, mould) >= 100x faster than the paper at every degree: %s\n",
-              paper_goal ? "met" : "NOT met");
-  std::printf("goal: at n = 20 explicit and mould >= 10x faster than lu: %s\n", ratio_lu ? "met" : "NOT met");
+  // The goals as decided (docs/performance.md "Table 1"): the speed-up of explicit and mould is
+  // measured against the dense linear system, the generic "LU solve" the paper times; the block
+  // LU is a third, structured route whose closeness to explicit is a finding, not a goal.
   if (have_dense)
-    std::printf("      ... than lu-bernstein (the dense linear system): %s\n", ratio_dense ? "met" : "NOT met");
+    std::printf("goal: at n = 20 explicit and mould >= 10x faster than lu-bernstein (the dense linear system): %s\n",
+                ratio_dense ? "met" : "NOT met");
+  else
+    std::printf("goal: at n = 20 explicit and mould >= 10x faster than lu-bernstein: not checked (route not run)\n");
+  std::printf("floor: every route (explicit, lu, mould) >= 100x faster than the paper at every degree: %s\n",
+              paper_goal ? "met" : "NOT met");
+  std::printf(
+      "       (lu-bernstein, the dense system factored in long double, is the reference of the speed-up\n"
+      "       goal, not a route held to the floor)\n");
+  std::printf("finding: the structured block LU (lu) runs at %.1fx the time of explicit at n = 20\n",
+              lu_over_explicit_20);
   return 0;
 }
 

@@ -7,6 +7,7 @@
 //   K = (eg - f^2)/(EG - F^2),  H = (eG - 2fF + gE) / (2(EG - F^2)).
 // So z = u^2 + v^2 has H = +2 at the origin.
 #include <Eigen/Core>
+#include <cmath>
 
 namespace bpde {
 
@@ -55,17 +56,23 @@ namespace bpde {
 
 /// Mean curvature at every sample from the sampled derivatives (one row per sample), with the
 /// fallback of mean_curvature_robust: geometry_at(k, h) evaluates sample k nudged by the
-/// fraction h towards the domain's centre.
+/// fraction h towards the domain's centre. If `regular` is given it is resized to #samples and
+/// set to 1 where the sample itself is regular with a finite H (fundamental_forms), else 0.
 template <class GeometryAt>
 Eigen::VectorXd sampled_mean_curvature(const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& Xu,
                                        const Eigen::MatrixX3d& Xv, const Eigen::MatrixX3d& Xuu,
                                        const Eigen::MatrixX3d& Xuv, const Eigen::MatrixX3d& Xvv,
-                                       GeometryAt&& geometry_at) {
+                                       GeometryAt&& geometry_at,
+                                       Eigen::Matrix<unsigned char, Eigen::Dynamic, 1>* regular = nullptr) {
   Eigen::VectorXd H(X.rows());
+  if (regular) regular->resize(X.rows());
   for (Eigen::Index k = 0; k < X.rows(); ++k) {
     const SurfaceJet j{X.row(k).transpose(),   Xu.row(k).transpose(),  Xv.row(k).transpose(),
                        Xuu.row(k).transpose(), Xuv.row(k).transpose(), Xvv.row(k).transpose()};
-    H(k) = mean_curvature_robust(j, [&](double h) { return geometry_at(k, h); });
+    const FundamentalForms f = fundamental_forms(j);
+    const bool ok = f.regular && std::isfinite(f.H);
+    if (regular) (*regular)(k) = ok ? 1 : 0;
+    H(k) = f.regular ? f.H : mean_curvature_robust(j, [&](double h) { return geometry_at(k, h); });
   }
   return H;
 }

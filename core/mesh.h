@@ -11,10 +11,15 @@ namespace bpde {
 ///  - H: #V mean curvatures (FORMATS.md sign convention). At a singular parameter point (a
 ///    degenerate corner) the value is taken at a point nudged towards the domain's centre; it is
 ///    never NaN.
+///  - regular: #V flags, 1 where the parametrisation is regular at the sample itself (H is the
+///    curvature there), 0 where H was taken at a nudged point. The sample_mesh functions of the
+///    nets fill it (the one tabulated evaluation that the report statistics share with the files,
+///    energies/cmc.h); empty when a producer does not know, read as "all regular".
 struct TriangleMesh {
   Eigen::MatrixX3d V;
   Eigen::MatrixX3i F;
   Eigen::VectorXd H;
+  Eigen::Matrix<unsigned char, Eigen::Dynamic, 1> regular;
 };
 
 }  // namespace bpde

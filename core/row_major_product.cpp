@@ -31,96 +31,85 @@ __attribute__((target("avx2,fma"))) inline __m256i tail_mask(int left) {
   return _mm256_set_epi64x(left > 3 ? -1 : 0, left > 2 ? -1 : 0, left > 1 ? -1 : 0, -1);
 }
 
-// Rows of C in pairs: each loaded vector of B feeds two fused multiply-adds (one per row), and the
-// 12 accumulators plus two broadcasts and one load fit the 16 ymm registers.
+// One register block: R rows of C by V vectors of 4 columns, starting at column b, accumulated
+// over i = 0..k-1 (each entry in that order, one fused multiply-add per term). R*V accumulators,
+// R broadcasts and one load must fit the 16 ymm registers: R*V + R + 1 <= 16.
+template <int R, int V>
+__attribute__((target("avx2,fma"), always_inline)) inline void block_fma(const double* const* arow, const double* B,
+                                                                         int k, int ldb, int b, double* const* crow) {
+  __m256d acc[R][V];
+#pragma GCC unroll 8
+  for (int r = 0; r < R; ++r)
+#pragma GCC unroll 8
+    for (int v = 0; v < V; ++v) acc[r][v] = _mm256_setzero_pd();
+  for (int i = 0; i < k; ++i) {
+    const double* p = B + static_cast<long>(i) * ldb + b;
+    __m256d s[R];
+#pragma GCC unroll 8
+    for (int r = 0; r < R; ++r) s[r] = _mm256_broadcast_sd(arow[r] + i);
+#pragma GCC unroll 8
+    for (int v = 0; v < V; ++v) {
+      const __m256d x = _mm256_loadu_pd(p + 4 * v);
+#pragma GCC unroll 8
+      for (int r = 0; r < R; ++r) acc[r][v] = _mm256_fmadd_pd(s[r], x, acc[r][v]);
+    }
+  }
+#pragma GCC unroll 8
+  for (int r = 0; r < R; ++r)
+#pragma GCC unroll 8
+    for (int v = 0; v < V; ++v) _mm256_storeu_pd(crow[r] + b + 4 * v, acc[r][v]);
+}
+
+// The last 1..3 columns of R rows: masked loads read nothing past the end of a row.
+template <int R>
+__attribute__((target("avx2,fma"), always_inline)) inline void tail_fma(const double* const* arow, const double* B,
+                                                                        int k, int ldb, int b, int w,
+                                                                        double* const* crow) {
+  const __m256i mask = tail_mask(w - b);
+  __m256d acc[R];
+#pragma GCC unroll 8
+  for (int r = 0; r < R; ++r) acc[r] = _mm256_setzero_pd();
+  for (int i = 0; i < k; ++i) {
+    const __m256d x = _mm256_maskload_pd(B + static_cast<long>(i) * ldb + b, mask);
+#pragma GCC unroll 8
+    for (int r = 0; r < R; ++r) acc[r] = _mm256_fmadd_pd(_mm256_broadcast_sd(arow[r] + i), x, acc[r]);
+  }
+#pragma GCC unroll 8
+  for (int r = 0; r < R; ++r) _mm256_maskstore_pd(crow[r] + b, mask, acc[r]);
+}
+
+// R rows of C: blocks of V vectors (4V columns), then single vectors, then the masked tail.
+template <int R, int V>
+__attribute__((target("avx2,fma"))) void rows_fma(const double* A, int a, int k, int lda, const double* B, int w,
+                                                  int ldb, double* C, int ldc) {
+  const double* arow[R];
+  double* crow[R];
+  for (int r = 0; r < R; ++r) {
+    arow[r] = A + static_cast<long>(a + r) * lda;
+    crow[r] = C + static_cast<long>(a + r) * ldc;
+  }
+  int b = 0;
+  for (; b + 4 * V <= w; b += 4 * V) block_fma<R, V>(arow, B, k, ldb, b, crow);
+  for (; b + 4 <= w; b += 4) block_fma<R, 1>(arow, B, k, ldb, b, crow);
+  if (b < w) tail_fma<R>(arow, B, k, ldb, b, w, crow);
+}
+
+// Rows of C in pairs (each loaded vector of B feeds two fused multiply-adds; 12 accumulators);
+// an odd row count starts with one block of three rows (12 accumulators, each load feeding three:
+// the x, y, z rows of the mould product of solvers/pde/pde_lu.cpp); a single row alone runs 8
+// independent accumulators, enough to hide the FMA latency.
 __attribute__((target("avx2,fma"))) void product_fma(const double* A, int r, int k, int lda, const double* B, int w,
                                                      int ldb, double* C, int ldc) {
   int a = 0;
-  for (; a + 2 <= r; a += 2) {
-    double* c0 = C + static_cast<long>(a) * ldc;
-    double* c1 = c0 + ldc;
-    const double* a0 = A + static_cast<long>(a) * lda;
-    const double* a1 = a0 + lda;
-    int b = 0;
-    for (; b + 24 <= w; b += 24) {
-      __m256d x0 = _mm256_setzero_pd(), x1 = x0, x2 = x0, x3 = x0, x4 = x0, x5 = x0;
-      __m256d y0 = x0, y1 = x0, y2 = x0, y3 = x0, y4 = x0, y5 = x0;
-      for (int i = 0; i < k; ++i) {
-        const __m256d s = _mm256_broadcast_sd(a0 + i), t = _mm256_broadcast_sd(a1 + i);
-        const double* p = B + static_cast<long>(i) * ldb + b;
-        __m256d v = _mm256_loadu_pd(p);
-        x0 = _mm256_fmadd_pd(s, v, x0);
-        y0 = _mm256_fmadd_pd(t, v, y0);
-        v = _mm256_loadu_pd(p + 4);
-        x1 = _mm256_fmadd_pd(s, v, x1);
-        y1 = _mm256_fmadd_pd(t, v, y1);
-        v = _mm256_loadu_pd(p + 8);
-        x2 = _mm256_fmadd_pd(s, v, x2);
-        y2 = _mm256_fmadd_pd(t, v, y2);
-        v = _mm256_loadu_pd(p + 12);
-        x3 = _mm256_fmadd_pd(s, v, x3);
-        y3 = _mm256_fmadd_pd(t, v, y3);
-        v = _mm256_loadu_pd(p + 16);
-        x4 = _mm256_fmadd_pd(s, v, x4);
-        y4 = _mm256_fmadd_pd(t, v, y4);
-        v = _mm256_loadu_pd(p + 20);
-        x5 = _mm256_fmadd_pd(s, v, x5);
-        y5 = _mm256_fmadd_pd(t, v, y5);
-      }
-      _mm256_storeu_pd(c0 + b, x0);
-      _mm256_storeu_pd(c0 + b + 4, x1);
-      _mm256_storeu_pd(c0 + b + 8, x2);
-      _mm256_storeu_pd(c0 + b + 12, x3);
-      _mm256_storeu_pd(c0 + b + 16, x4);
-      _mm256_storeu_pd(c0 + b + 20, x5);
-      _mm256_storeu_pd(c1 + b, y0);
-      _mm256_storeu_pd(c1 + b + 4, y1);
-      _mm256_storeu_pd(c1 + b + 8, y2);
-      _mm256_storeu_pd(c1 + b + 12, y3);
-      _mm256_storeu_pd(c1 + b + 16, y4);
-      _mm256_storeu_pd(c1 + b + 20, y5);
-    }
-    for (; b + 4 <= w; b += 4) {
-      __m256d x0 = _mm256_setzero_pd(), y0 = x0;
-      for (int i = 0; i < k; ++i) {
-        const __m256d v = _mm256_loadu_pd(B + static_cast<long>(i) * ldb + b);
-        x0 = _mm256_fmadd_pd(_mm256_broadcast_sd(a0 + i), v, x0);
-        y0 = _mm256_fmadd_pd(_mm256_broadcast_sd(a1 + i), v, y0);
-      }
-      _mm256_storeu_pd(c0 + b, x0);
-      _mm256_storeu_pd(c1 + b, y0);
-    }
-    if (b < w) {  // 1..3 columns left: masked loads and stores
-      const __m256i mask = tail_mask(w - b);
-      __m256d x0 = _mm256_setzero_pd(), y0 = x0;
-      for (int i = 0; i < k; ++i) {
-        const __m256d v = _mm256_maskload_pd(B + static_cast<long>(i) * ldb + b, mask);
-        x0 = _mm256_fmadd_pd(_mm256_broadcast_sd(a0 + i), v, x0);
-        y0 = _mm256_fmadd_pd(_mm256_broadcast_sd(a1 + i), v, y0);
-      }
-      _mm256_maskstore_pd(c0 + b, mask, x0);
-      _mm256_maskstore_pd(c1 + b, mask, y0);
-    }
+  if (r == 1) {
+    rows_fma<1, 8>(A, 0, k, lda, B, w, ldb, C, ldc);
+    return;
   }
-  for (; a < r; ++a) {  // the last row when r is odd
-    double* c = C + static_cast<long>(a) * ldc;
-    const double* arow = A + static_cast<long>(a) * lda;
-    int b = 0;
-    for (; b + 4 <= w; b += 4) {
-      __m256d x0 = _mm256_setzero_pd();
-      for (int i = 0; i < k; ++i)
-        x0 = _mm256_fmadd_pd(_mm256_broadcast_sd(arow + i), _mm256_loadu_pd(B + static_cast<long>(i) * ldb + b), x0);
-      _mm256_storeu_pd(c + b, x0);
-    }
-    if (b < w) {
-      const __m256i mask = tail_mask(w - b);
-      __m256d x0 = _mm256_setzero_pd();
-      for (int i = 0; i < k; ++i)
-        x0 = _mm256_fmadd_pd(_mm256_broadcast_sd(arow + i),
-                             _mm256_maskload_pd(B + static_cast<long>(i) * ldb + b, mask), x0);
-      _mm256_maskstore_pd(c + b, mask, x0);
-    }
+  if (r % 2 == 1) {
+    rows_fma<3, 4>(A, 0, k, lda, B, w, ldb, C, ldc);
+    a = 3;
   }
+  for (; a + 2 <= r; a += 2) rows_fma<2, 6>(A, a, k, lda, B, w, ldb, C, ldc);
 }
 
 bool cpu_has_fma() {

@@ -1,5 +1,6 @@
 #include "energies/cmc.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -149,49 +150,63 @@ void check_sampling(int N, double margin) {
   if (!(margin >= 0.0 && margin < 0.5)) throw ParameterError("mean_curvature_stats: corner_margin must be in [0, 0.5)");
 }
 
-void accumulate(MeanCurvatureStats& s, const FundamentalForms& g, double& sum) {
-  if (!g.regular || !std::isfinite(g.H)) return;
-  if (s.count == 0) {
-    s.min = s.max = g.H;
-  } else {
-    s.min = std::min(s.min, g.H);
-    s.max = std::max(s.max, g.H);
-  }
-  sum += g.H;
-  ++s.count;
-}
-
 }  // namespace
+
+MeanCurvatureStats mean_curvature_stats(const TriangleMesh& mesh, SampleLayout layout, int N, double corner_margin,
+                                        bool skip_singular) {
+  check_sampling(N, corner_margin);
+  const Eigen::Index expected =
+      layout == SampleLayout::TensorGrid ? Eigen::Index(N + 1) * (N + 1) : Eigen::Index(N + 1) * (N + 2) / 2;
+  if (mesh.H.size() != expected || (mesh.regular.size() != 0 && mesh.regular.size() != expected))
+    throw SizeError("mean_curvature_stats: the mesh has " + std::to_string(mesh.H.size()) + " samples, expected " +
+                    std::to_string(expected) + " for N = " + std::to_string(N));
+  const bool use_flags = skip_singular && mesh.regular.size() == expected;
+  MeanCurvatureStats s;
+  double sum = 0;
+  auto take = [&](Eigen::Index id) {
+    if (use_flags && !mesh.regular(id)) return;
+    const double h = mesh.H(id);
+    if (skip_singular && !std::isfinite(h)) return;
+    if (s.count == 0) {
+      s.min = s.max = h;
+    } else {
+      s.min = std::min(s.min, h);
+      s.max = std::max(s.max, h);
+    }
+    sum += h;
+    ++s.count;
+  };
+  Eigen::Index id = 0;
+  if (layout == SampleLayout::TriangularGrid) {
+    const double lim = 1.0 - corner_margin + 1e-12;
+    for (int a = 0; a <= N; ++a)
+      for (int b = 0; b <= N - a; ++b, ++id) {
+        const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+        const double w = 1.0 - u - v;
+        if (u > lim || v > lim || w > lim) continue;
+        take(id);
+      }
+  } else {
+    const double lim = corner_margin - 1e-12;
+    for (int a = 0; a <= N; ++a)
+      for (int b = 0; b <= N; ++b, ++id) {
+        const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
+        if (std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim) continue;
+        take(id);
+      }
+  }
+  if (s.count > 0) s.mean = sum / s.count;
+  return s;
+}
 
 MeanCurvatureStats mean_curvature_stats(const TriangularNet& net, int N, double corner_margin) {
   check_sampling(N, corner_margin);
-  MeanCurvatureStats s;
-  double sum = 0;
-  const double lim = 1.0 - corner_margin + 1e-12;
-  for (int a = 0; a <= N; ++a)
-    for (int b = 0; b <= N - a; ++b) {
-      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
-      const double w = 1.0 - u - v;
-      if (u > lim || v > lim || w > lim) continue;
-      accumulate(s, net.geometry(u, v), sum);
-    }
-  if (s.count > 0) s.mean = sum / s.count;
-  return s;
+  return mean_curvature_stats(sample_mesh(net, N), SampleLayout::TriangularGrid, N, corner_margin);
 }
 
 MeanCurvatureStats mean_curvature_stats(const TensorNet& net, int N, double corner_margin) {
   check_sampling(N, corner_margin);
-  MeanCurvatureStats s;
-  double sum = 0;
-  const double lim = corner_margin - 1e-12;
-  for (int a = 0; a <= N; ++a)
-    for (int b = 0; b <= N; ++b) {
-      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
-      if (std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim) continue;
-      accumulate(s, net.geometry(u, v), sum);
-    }
-  if (s.count > 0) s.mean = sum / s.count;
-  return s;
+  return mean_curvature_stats(sample_mesh(net, N), SampleLayout::TensorGrid, N, corner_margin);
 }
 
 }  // namespace bpde

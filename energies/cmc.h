@@ -21,6 +21,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/mesh.h"
 #include "energies/volume.h"
 
 namespace bpde {
@@ -86,7 +87,21 @@ struct MeanCurvatureStats {
   double min = 0, max = 0, mean = 0;
   int count = 0;
 };
+/// Both evaluate the net once on the grid (sample_mesh: tabulated Bernstein values and derivatives,
+/// not per-point de Casteljau) and take the statistics of that mesh (below).
 MeanCurvatureStats mean_curvature_stats(const TriangularNet& net, int N = 50, double corner_margin = 0.1);
 MeanCurvatureStats mean_curvature_stats(const TensorNet& net, int N = 50, double corner_margin = 0.1);
+
+/// The order of the samples of a mesh: TensorGrid, the (N+1)^2 points a(N+1)+b at u = a/N,
+/// v = b/N (tensor and B-spline sample_mesh, parameters relative to the domain); TriangularGrid,
+/// the (N+1)(N+2)/2 points u = a/N, v = b/N, a + b <= N, a-major (triangular sample_mesh).
+enum class SampleLayout { TensorGrid, TriangularGrid };
+
+/// The same statistics from an already sampled mesh (mesh.H, and mesh.regular to skip singular
+/// samples when skip_singular is true; an empty mesh.regular counts every sample), so that the
+/// report and the surface files share one evaluation. Throws ParameterError as above and
+/// SizeError when the mesh does not have the layout's number of vertices for N.
+MeanCurvatureStats mean_curvature_stats(const TriangleMesh& mesh, SampleLayout layout, int N,
+                                        double corner_margin = 0.1, bool skip_singular = true);
 
 }  // namespace bpde

@@ -1,6 +1,7 @@
 #pragma once
-// Surface and control-net files (FORMATS.md "Results"): OBJ, PLY (ASCII with 17 significant
-// digits, or binary little-endian float32) and VTK XML PolyData (io/vtp_io.h).
+// Surface and control-net files (FORMATS.md "Results"): OBJ, PLY (ASCII, every number written as
+// the shortest decimal that reads back to the same double (std::to_chars), so files are exact; or
+// binary little-endian float32) and VTK XML PolyData (io/vtp_io.h).
 #include <array>
 #include <string>
 #include <vector>
@@ -13,7 +14,7 @@ namespace bpde {
 
 /// `v x y z` per vertex (in mesh order) and `f a b c` per triangle (1-based). Throws FileError.
 void write_obj(const std::string& path, const TriangleMesh& mesh);
-/// How surface.ply (and surface.vtp) store numbers: `ascii` (17 significant digits, doubles) or
+/// How surface.ply (and surface.vtp) store numbers: `ascii` (doubles, shortest round trip) or
 /// `binary` (PLY binary_little_endian with float32 x, y, z, mean_curvature; VTP base64 float32).
 enum class MeshFormat { Ascii, Binary };
 /// "ascii" or "binary" (ParseError naming `where` otherwise).

@@ -54,25 +54,6 @@ Json stats_json(const MeanCurvatureStats& st) {
   return {{"min", st.min}, {"max", st.max}, {"mean", st.mean}, {"count", st.count}};
 }
 
-// B-spline surfaces (blends): the tensor rule of energies/cmc.h (leave out samples with both
-// parameters within 0.1 of the domain's ends) applied to the already sampled mesh.
-Json bspline_stats(const TriangleMesh& mesh, int N) {
-  MeanCurvatureStats st;
-  double sum = 0;
-  for (int a = 0; a <= N; ++a)
-    for (int b = 0; b <= N; ++b) {
-      const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
-      if (std::min(u, 1 - u) < 0.1 - 1e-12 && std::min(v, 1 - v) < 0.1 - 1e-12) continue;
-      const double h = mesh.H(a * (N + 1) + b);
-      st.min = st.count ? std::min(st.min, h) : h;
-      st.max = st.count ? std::max(st.max, h) : h;
-      sum += h;
-      ++st.count;
-    }
-  if (st.count) st.mean = sum / st.count;
-  return stats_json(st);
-}
-
 Json base_report(const Job& job, const Summary& s) {
   Json r = {{"problem", to_string(job.problem.kind)}, {"converged", s.converged}, {"seconds", s.seconds}};
   if (!s.message.empty()) r["message"] = s.message;
@@ -362,10 +343,15 @@ void make_output_dir(const std::string& dir) {
   if (ec || !std::filesystem::is_directory(dir)) throw FileError("cannot create output directory '" + dir + "'");
 }
 
+// The statistics of the mesh that the surface files are written from (one tabulated evaluation).
+// Tensor and triangular nets skip the singular samples (energies/cmc.h); B-spline surfaces (blends)
+// count every sample, at its robust H, as they always have.
 Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
-  if (const auto* t = std::get_if<TensorNet>(&net)) return stats_json(bpde::mean_curvature_stats(*t, samples, 0.1));
-  if (const auto* t = std::get_if<TriangularNet>(&net)) return stats_json(bpde::mean_curvature_stats(*t, samples, 0.1));
-  return bspline_stats(mesh, samples);
+  if (std::holds_alternative<TensorNet>(net))
+    return stats_json(bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1));
+  if (std::holds_alternative<TriangularNet>(net))
+    return stats_json(bpde::mean_curvature_stats(mesh, SampleLayout::TriangularGrid, samples, 0.1));
+  return stats_json(bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1, false));
 }
 
 Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Configure and build bezierpde into ./build (Release) after installing what is missing.
 # Usage: scripts/build.sh [cmake --build targets...]
+# Builds for this machine (-DBPDE_NATIVE=ON: -march=native, docs/performance.md) unless
+# BPDE_NATIVE=OFF is set in the environment; packagers configure without it (CMake's default is
+# OFF, portable code).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 JOBS=${BPDE_JOBS:-$(nproc)}
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release ${BPDE_CMAKE_ARGS:-} >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DBPDE_NATIVE=${BPDE_NATIVE:-ON} ${BPDE_CMAKE_ARGS:-} >/dev/null
 if [ $# -gt 0 ]; then
   cmake --build build -j "$JOBS" --target "$@"
 else

@@ -19,6 +19,7 @@ PACKAGES=(
                          # OpenCASCADE 7.6: STEP export (io/step_export.cpp)
   chromium               # the browser test of view.html (headless)
   zlib1g-dev             # the browser test decodes Chromium's PNG screenshot
+  libsuitesparse-dev     # CHOLMOD: sparse Cholesky of the blend system
 )
 
 missing=()

@@ -6,7 +6,9 @@
 # doubles the time on a 2-core machine, so CI leaves it to this switch.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+# The suite is validated on the portable build (BPDE_NATIVE=OFF); a native build passing it is
+# not yet checked (docs/performance.md, section 2). Set BPDE_NATIVE=ON to test that build.
+BPDE_NATIVE=${BPDE_NATIVE:-OFF} bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc)"
 if [ "${BPDE_SANITIZE:-0}" = "1" ]; then
   cmake --preset asan >/dev/null

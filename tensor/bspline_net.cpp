@@ -267,10 +267,13 @@ TriangleMesh sample_mesh(const BSplineNet& net, int N) {
   mesh.V = grid(0, 0);
   const Eigen::MatrixX3d Xu = grid(1, 0), Xv = grid(0, 1), Xuu = grid(2, 0), Xuv = grid(1, 1), Xvv = grid(0, 2);
   const double cu = 0.5 * (net.u_min() + net.u_max()), cv = 0.5 * (net.v_min() + net.v_max());
-  mesh.H = sampled_mean_curvature(mesh.V, Xu, Xv, Xuu, Xuv, Xvv, [&](Eigen::Index k, double h) {
-    const double u = tu(k / (N + 1)), v = tv(k % (N + 1));
-    return net.geometry(u + h * (cu - u), v + h * (cv - v));
-  });
+  mesh.H = sampled_mean_curvature(
+      mesh.V, Xu, Xv, Xuu, Xuv, Xvv,
+      [&](Eigen::Index k, double h) {
+        const double u = tu(k / (N + 1)), v = tv(k % (N + 1));
+        return net.geometry(u + h * (cu - u), v + h * (cv - v));
+      },
+      &mesh.regular);
   mesh.F = grid_triangles(N);
   return mesh;
 }

@@ -186,10 +186,13 @@ TriangleMesh sample_mesh(const TensorNet& net, int N) {
   const Eigen::MatrixX3d Xu = net.evaluate_grid(t, t, 1, 0), Xv = net.evaluate_grid(t, t, 0, 1),
                          Xuu = net.evaluate_grid(t, t, 2, 0), Xuv = net.evaluate_grid(t, t, 1, 1),
                          Xvv = net.evaluate_grid(t, t, 0, 2);
-  mesh.H = sampled_mean_curvature(mesh.V, Xu, Xv, Xuu, Xuv, Xvv, [&](Eigen::Index k, double h) {
-    const double u = t(k / (N + 1)), v = t(k % (N + 1));
-    return net.geometry(u + h * (0.5 - u), v + h * (0.5 - v));
-  });
+  mesh.H = sampled_mean_curvature(
+      mesh.V, Xu, Xv, Xuu, Xuv, Xvv,
+      [&](Eigen::Index k, double h) {
+        const double u = t(k / (N + 1)), v = t(k % (N + 1));
+        return net.geometry(u + h * (0.5 - u), v + h * (0.5 - v));
+      },
+      &mesh.regular);
   mesh.F = grid_triangles(N);
   return mesh;
 }

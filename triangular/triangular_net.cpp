@@ -196,10 +196,13 @@ TriangleMesh sample_mesh(const TriangularNet& net, int N) {
   };
   const Eigen::MatrixX3d Xu = deriv_values(1, 0), Xv = deriv_values(0, 1), Xuu = deriv_values(2, 0),
                          Xuv = deriv_values(1, 1), Xvv = deriv_values(0, 2);
-  mesh.H = sampled_mean_curvature(mesh.V, Xu, Xv, Xuu, Xuv, Xvv, [&](Eigen::Index k, double h) {
-    const double u = uv(k, 0), v = uv(k, 1);
-    return net.geometry(u + h * (1.0 / 3 - u), v + h * (1.0 / 3 - v));
-  });
+  mesh.H = sampled_mean_curvature(
+      mesh.V, Xu, Xv, Xuu, Xuv, Xvv,
+      [&](Eigen::Index k, double h) {
+        const double u = uv(k, 0), v = uv(k, 1);
+        return net.geometry(u + h * (1.0 / 3 - u), v + h * (1.0 / 3 - v));
+      },
+      &mesh.regular);
   auto vid = [N](int a, int b) { return a * (N + 1) - a * (a - 1) / 2 + b; };
   mesh.F.resize(N * N, 3);
   int f = 0;

@@ -2,6 +2,9 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#ifdef BPDE_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -111,37 +114,10 @@ BSplineNet SmoothingSpline::to_bspline_net() const {
 
 TriangleMesh SmoothingSpline::sample(int N) const {
   if (N < 1 || N > 4096) throw ParameterError("samples must be in 1..4096");
-  TriangleMesh mesh;
-  const int nv = (N + 1) * (N + 1);
-  mesh.V.resize(nv, 3);
-  mesh.H.resize(nv);
-  for (int a = 0; a <= N; ++a)
-    for (int b = 0; b <= N; ++b) {
-      const double x = static_cast<double>(a) / N, y = static_cast<double>(b) / N;
-      const SurfaceJet j = jet(x, y);
-      const int id = a * (N + 1) + b;
-      mesh.V.row(id) = j.x.transpose();
-      FundamentalForms f = fundamental_forms(j);
-      double H = f.regular ? f.H : 0.0;
-      if (!f.regular)
-        for (double h : {1e-7, 1e-5, 1e-3, 1e-2}) {
-          f = fundamental_forms(jet(x + h * (0.5 - x), y + h * (0.5 - y)));
-          if (f.regular) {
-            H = f.H;
-            break;
-          }
-        }
-      mesh.H(id) = std::isfinite(H) ? H : 0.0;
-    }
-  mesh.F.resize(2 * N * N, 3);
-  int f = 0;
-  for (int a = 0; a < N; ++a)
-    for (int b = 0; b < N; ++b) {
-      const int p00 = a * (N + 1) + b, p10 = (a + 1) * (N + 1) + b, p11 = p10 + 1, p01 = p00 + 1;
-      mesh.F.row(f++) << p00, p10, p11;
-      mesh.F.row(f++) << p00, p11, p01;
-    }
-  return mesh;
+  // The spline is exactly its bicubic B-spline net over [0,1]^2 (BfsSpace::to_bspline): sample
+  // that, by the tabulated basis values and derivatives of tensor/bspline_net.h (one table per
+  // direction and order, then small products), not point by point.
+  return sample_mesh(to_bspline_net(), N);
 }
 
 // ------------------------------------------------------------------ solver
@@ -149,12 +125,18 @@ struct SmoothingSplineSolver::Impl {
   SmoothingSplineProblem key;  // k, l, a, epsilon, points
   SmoothingSplineOptions options;
   BfsSpace space{1, 1};
-  Eigen::SparseMatrix<double> R, A, C, Cabs;
+  Eigen::SparseMatrix<double> R, A, C;
   std::vector<int> constrained, free_dofs;
   std::vector<int> position;  // dof -> index in free_dofs, or -1
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-  Eigen::SparseMatrix<double> Cff, Cfc;
+#ifdef BPDE_HAVE_CHOLMOD
+  // Supernodal sparse Cholesky with CHOLMOD's fill-reducing ordering (AMD, or METIS when it does
+  // better); measured against SimplicialLDLT and the KKT LU in docs/performance.md ("Blend").
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> ldlt;
+#else
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;  // AMD ordering
+#endif
+  Eigen::SparseMatrix<double> Cfc;  // C_fc for the right-hand side (C_ff lives in the factor)
   double kkt_scale = 1.0;
   bool factored = false;
   std::string factor_message;
@@ -166,7 +148,7 @@ struct SmoothingSplineSolver::Impl {
   void split_dofs();
   /// The KKT matrix of eq. (8), equilibrated, by sparse LU.
   void factor_kkt();
-  /// The reduced SPD system C_ff on the free dofs by sparse LDLT (and C_fc for the right-hand side).
+  /// The reduced SPD system C_ff on the free dofs by sparse Cholesky (and C_fc for the right-hand side).
   void factor_reduced();
 
   // ---- solve
@@ -199,18 +181,24 @@ void SmoothingSplineSolver::Impl::assemble(const SmoothingSplineProblem& problem
   const int n = space.num_dofs();
   R = space.assemble_form(SecondOrderForm::from_a(problem.a));
   std::vector<Eigen::Triplet<double>> trip;
+  // C = εR + AᵀA, summed into the pattern of R: the 16 dofs of a point's element are coupled in R
+  // already, so no entry is inserted and no temporary of C's size is made.
+  C = R;
+  C *= problem.epsilon;
   for (Eigen::Index i = 0; i < problem.points.rows(); ++i) {
     std::array<int, 16> idx;
     std::array<double, 16> val;
     space.basis_at(problem.points(i, 0), problem.points(i, 1), 0, 0, idx, val);
-    for (int c = 0; c < 16; ++c)
-      if (val[c] != 0) trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
+    for (int c = 0; c < 16; ++c) {
+      if (val[c] == 0) continue;
+      trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
+      for (int r = 0; r < 16; ++r)
+        if (val[r] != 0) C.coeffRef(idx[r], idx[c]) += val[r] * val[c];
+    }
   }
   A.resize(problem.points.rows(), n);
   A.setFromTriplets(trip.begin(), trip.end());
-  C = Eigen::SparseMatrix<double>(A.transpose() * A) + problem.epsilon * R;
   C.makeCompressed();
-  Cabs = C.cwiseAbs();
 }
 
 void SmoothingSplineSolver::Impl::split_dofs() {
@@ -263,17 +251,30 @@ void SmoothingSplineSolver::Impl::factor_reduced() {
     for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it) {
       const int r = position[it.row()];
       if (r < 0) continue;
-      if (position[col] >= 0)
-        tf.emplace_back(r, position[col], it.value());
-      else
+      if (position[col] >= 0) {
+        if (r >= position[col]) tf.emplace_back(r, position[col], it.value());  // lower triangle: all the factor reads
+      } else {
         tc.emplace_back(r, cpos[col], it.value());
+      }
     }
-  Cff.resize(nf, nf);
+  Eigen::SparseMatrix<double> Cff(nf, nf);  // lower triangle only; freed once factored
   Cff.setFromTriplets(tf.begin(), tf.end());
+  std::vector<Eigen::Triplet<double>>().swap(tf);
   Cfc.resize(nf, nc);
   Cfc.setFromTriplets(tc.begin(), tc.end());
+#ifdef BPDE_HAVE_CHOLMOD
+  // METIS nested dissection, the fill-reducing ordering for the 2D grid of the BFS dofs (CHOLMOD's
+  // default tries AMD first and keeps it when its fill looks acceptable; docs/performance.md "Blend").
+  ldlt.cholmod().nmethods = 1;
+  ldlt.cholmod().method[0].ordering = CHOLMOD_METIS;
+  ldlt.cholmod().postorder = 1;
+#endif
   ldlt.compute(Cff);
+#ifdef BPDE_HAVE_CHOLMOD
+  factored = ldlt.info() == Eigen::Success;  // a Cholesky factor exists only for SPD matrices
+#else
   factored = ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > 0).all();
+#endif
   if (!factored)
     factor_message =
         "the reduced system is numerically singular (epsilon or a too small for the data "
@@ -328,7 +329,7 @@ SmoothingSplineSolver::Impl::Residuals SmoothingSplineSolver::Impl::residuals(co
                                                                               const Eigen::MatrixX3d& y) const {
   const int nc = static_cast<int>(constrained.size());
   Residuals res{C * alpha - F, 0.0, 0.0};
-  const Eigen::MatrixX3d scale = Cabs * alpha.cwiseAbs() + F.cwiseAbs();
+  const Eigen::MatrixX3d scale = C.cwiseAbs() * alpha.cwiseAbs() + F.cwiseAbs();  // |C| not stored
   double gmax = 0, smax = 0;
   for (int r : free_dofs) {
     gmax = std::max(gmax, res.g.row(r).cwiseAbs().maxCoeff());
@@ -371,7 +372,7 @@ void SmoothingSplineSolver::Impl::judge(const SmoothingSplineProblem& problem, c
   if (res.stationarity <= kConvergenceTolerance && res.constraint <= kConvergenceTolerance) {
     summary.message = options.method == SmoothingSplineOptions::Method::kKktLu
                           ? "solved the KKT system of eq. (8) by sparse LU"
-                          : "solved the reduced SPD system by sparse LDLT";
+                          : "solved the reduced SPD system by sparse Cholesky";
     summary.set_converged();
   } else {
     summary.set_failed(Status::NumericalLimit, "the linear solve is inaccurate: stationarity residual " +

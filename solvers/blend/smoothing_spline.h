@@ -63,10 +63,11 @@ struct SmoothingSplineProblem {
 
 struct SmoothingSplineOptions {
   enum class Method {
-    kKktLu,       ///< the Lagrange-multiplier system of eq. (8), sparse LU (default)
-    kElimination  ///< eliminate the constrained dofs, sparse LDLᵀ of the SPD reduced system
+    kKktLu,       ///< the Lagrange-multiplier system of eq. (8), sparse LU (indefinite)
+    kElimination  ///< eliminate the constrained dofs, sparse Cholesky of the SPD reduced system
+                  ///< (CHOLMOD supernodal, fill-reducing ordering; default: docs/performance.md)
   };
-  Method method = Method::kKktLu;  ///< default kKktLu
+  Method method = Method::kElimination;  ///< default kElimination
   int load_quadrature = 6;         ///< Gauss points per direction and element for (f, ω)_0; 1..50
   /// Throws ParameterError for an option out of range.
   void validate() const;

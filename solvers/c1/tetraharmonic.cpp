@@ -45,6 +45,8 @@ struct LuSolver {
   Eigen::MatrixXd G;                               // interior = G * fixed
   std::vector<std::vector<quad>> T;                // T_0, T_2, .., T_8 in quad (index d)
   std::unique_ptr<Eigen::HouseholderQR<MatL>> qr;  // of the interior columns, for refinement
+  std::vector<Eigen::MatrixXd> TD;  // T_0, T_2, .., T_8 rounded to double (index d/2)
+  Eigen::MatrixXd pinv;  // the least-squares operator qr->solve(.) as an (interior x (n+1)^2) matrix
 };
 
 // sum_t C(4,t) T_{8-2t} X T_{2t}^T in quad for one coordinate (X row-major (n+1)^2).
@@ -123,6 +125,14 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
       },
       [&](const MatL& R) -> MatL { return qr.solve(R); });
   s->G = G.cast<double>();
+  for (int d = 0; d <= 8; d += 2) {
+    Eigen::MatrixXd M(n1, n1);
+    for (int i = 0; i < n1; ++i)
+      for (int j = 0; j < n1; ++j)
+        M(i, j) = static_cast<double>(T[static_cast<size_t>(d)][static_cast<size_t>(i * n1 + j)]);
+    s->TD.push_back(std::move(M));
+  }
+  s->pinv = qr.solve(MatL::Identity(N, N)).cast<double>();
   s->T = std::move(T);
   return s;
 }
@@ -328,33 +338,56 @@ Eigen::MatrixX3d explicit_coefficients(const TensorNet& data) {
 
 namespace {
 
-// Per-solve refinement where G * data cancels (a small solution from a large G): residual of the
-// net in binary128, correction by the cached long-double QR, up to 3 steps.
+// Per-solve refinement where G * data cancels (a small solution from a large G), only for the
+// coordinates whose relative residual exceeds kRefineAbove, and only until it is below kRefineTo
+// (at most 3 steps), all in double: the residual sum_t C(4,t) T_{8-2t} X T_{2t}^T of the double net
+// (its rounding floor, ~1e-16 of the terms, is far below the 1e-12 that G * data leaves), the
+// correction by the cached least-squares operator as one matrix-vector product (its own relative
+// error, up to cond x 1e-16, applies to a correction that is itself ~1e-12 of the net). It used to
+// compute the residual in binary128 and correct all three coordinates 3 times by long-double
+// Householder solves whenever any residual exceeded 1e-12: 74-119x the explicit route from n = 16.
+// What it buys is measured in docs/performance.md ("Tetraharmonic lu").
+constexpr double kRefineAbove = 1e-12;
+constexpr double kRefineTo = 1e-16;
+
 void refine_lu_solution(const LuSolver& s, int n, TensorNet& net) {
-  const int N = (n + 1) * (n + 1);
-  std::vector<quad> Y(static_cast<size_t>(N));
+  const int n1 = n + 1, N = n1 * n1;
   for (int c = 0; c < 3; ++c) {
-    std::vector<quad> xq(static_cast<size_t>(N));
-    for (int r = 0; r < N; ++r) xq[static_cast<size_t>(r)] = net.points()(r, c);
-    for (int step = 0; step < 3; ++step) {
-      apply_operator(s.T, n, xq, Y);
-      VecLD res(N);
-      for (int r = 0; r < N; ++r) res(r) = static_cast<long double>(Y[static_cast<size_t>(r)]);
-      const VecLD d = s.qr->solve(res);
-      long double dmax = 0, xmax = 0;
-      for (size_t r = 0; r < s.interior.size(); ++r) {
-        xq[static_cast<size_t>(s.interior[r])] -= static_cast<quad>(d(static_cast<Eigen::Index>(r)));
-        dmax = std::max(dmax, std::abs(d(static_cast<Eigen::Index>(r))));
-        xmax = std::max(xmax, std::abs(static_cast<long double>(xq[static_cast<size_t>(s.interior[r])])));
-      }
-      if (dmax <= 1e-18L * xmax) break;
+    Eigen::MatrixXd X(n1, n1);
+    for (int r = 0; r < N; ++r) X(r / n1, r % n1) = net.points()(r, c);
+    // The size of the terms that cancel, sum_t C(4,t) |T_{8-2t}| |X| |T_{2t}|^T (as relative_residual).
+    const Eigen::MatrixXd Xa = X.cwiseAbs();
+    Eigen::MatrixXd mag = Eigen::MatrixXd::Zero(n1, n1);
+    for (int t = 0; t <= 4; ++t) {
+      if (8 - 2 * t > n || 2 * t > n) continue;
+      mag += kBinom4[t] * (s.TD[static_cast<size_t>(4 - t)].cwiseAbs() * Xa *
+                           s.TD[static_cast<size_t>(t)].cwiseAbs().transpose());
     }
-    for (int r : s.interior) net.points()(r, c) = static_cast<double>(xq[static_cast<size_t>(r)]);
+    const double scale = mag.maxCoeff();
+    if (!(scale > 0)) continue;
+    for (int step = 0; step <= 3; ++step) {
+      Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(n1, n1);
+      for (int t = 0; t <= 4; ++t) {
+        if (8 - 2 * t > n || 2 * t > n) continue;
+        Y.noalias() += kBinom4[t] * (s.TD[static_cast<size_t>(4 - t)] * X * s.TD[static_cast<size_t>(t)].transpose());
+      }
+      const double rel = Y.cwiseAbs().maxCoeff() / scale;
+      if (rel <= (step == 0 ? kRefineAbove : kRefineTo) || step == 3) break;
+      Eigen::VectorXd res(N);
+      for (int r = 0; r < N; ++r) res(r) = Y(r / n1, r % n1);
+      const Eigen::VectorXd d = s.pinv * res;
+      for (size_t r = 0; r < s.interior.size(); ++r) {
+        const int id = s.interior[r];
+        X(id / n1, id % n1) -= d(static_cast<Eigen::Index>(r));
+      }
+    }
+    for (int r : s.interior) net.points()(r, c) = X(r / n1, r % n1);
   }
 }
 
 // The LU method: interior = G * outer rings (the cached solution operator), refined if needed.
-TensorNet lu_solution(const TensorNet& data, const std::vector<int>& fixed) {
+// `residual` receives relative_residual of the returned net (computed once when no refinement runs).
+TensorNet lu_solution(const TensorNet& data, const std::vector<int>& fixed, bool refine, double& residual) {
   const int n = data.n();
   TensorNet net(n, n);
   const auto s = lu_solver(n);
@@ -364,7 +397,11 @@ TensorNet lu_solution(const TensorNet& data, const std::vector<int>& fixed) {
   for (size_t r = 0; r < s->interior.size(); ++r)
     net.points().row(s->interior[r]) = xi.row(static_cast<Eigen::Index>(r));
   for (int r : fixed) net.points().row(r) = data.points().row(r);
-  if (relative_residual(net) > 1e-12) refine_lu_solution(*s, n, net);
+  residual = relative_residual(net);
+  if (refine && residual > kRefineAbove) {
+    refine_lu_solution(*s, n, net);
+    residual = relative_residual(net);
+  }
   return net;
 }
 
@@ -373,13 +410,14 @@ TetraharmonicResult solve_tetraharmonic_untimed(const TensorNet& data, const Tet
   const int n = data.n();
   const bool explicit_method = options.method == TetraharmonicOptions::Method::Explicit;
   const std::vector<int> fixed = data.fixed_indices(FixedSet::BoundaryAdjacent);
+  double lu_residual = 0.0;
   TensorNet net = explicit_method ? from_factorial_power(n, n, tetraharmonic_detail::explicit_coefficients(data))
-                                  : lu_solution(data, fixed);
+                                  : lu_solution(data, fixed, options.refine, lu_residual);
   for (int r : fixed) net.points().row(r) = data.points().row(r);
 
   TetraharmonicResult result{net, {}};
   Summary& summary = result.summary;
-  summary.residual = relative_residual(net);
+  summary.residual = explicit_method ? relative_residual(net) : lu_residual;
   if (std::isfinite(summary.residual) && summary.residual <= kConvergenceTolerance) {
     summary.set_converged();
     summary.message =

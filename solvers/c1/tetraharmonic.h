@@ -35,7 +35,11 @@ namespace bpde {
 struct TetraharmonicOptions {
   enum class Method { Explicit, LU };
   Method method = Method::LU;  ///< default LU (FORMATS.md "method" defaults to "lu")
-  void validate() const;       ///< throws ParameterError for a method value out of the enum
+  /// LU only: refine a solution whose relative residual exceeds 1e-12 (the coordinates that need
+  /// it, towards 1e-16, at most 3 steps). Default true; false shows what the refinement buys
+  /// (bench Tetraharmonic/lu-unrefined, docs/performance.md).
+  bool refine = true;
+  void validate() const;  ///< throws ParameterError for a method value out of the enum
 };
 
 /// The FORMATS.md "tetraharmonic" problem: tensor nets, C1 data, n = m >= 4; methods explicit, lu.

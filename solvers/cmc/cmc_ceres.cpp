@@ -1,7 +1,9 @@
 // Ceres corrector of the CMC continuation (solvers/cmc/cmc.h): Levenberg–Marquardt on the residuals
-// F_I of triangular CMC eq. (11), one residual block per free control point, with analytic Jacobians
-// (the 3x3 blocks of the exact Hessian of D_H). The blocks share one evaluation of F and of the
-// Hessian per parameter vector (Ceres runs single-threaded here).
+// F of triangular CMC eq. (11), with the analytic Jacobian (the exact Hessian of D_H over the free
+// control points). All 3k residuals and the 3k unknowns form ONE residual block on ONE parameter
+// block, so Ceres sees the dense Jacobian as it is (one copy per evaluation) instead of k^2 small
+// 3x3 blocks, and solves the LM step with a dense solver (kLinearSolver below; measured in
+// docs/performance.md, "Ceres CMC route"). Ceres runs single-threaded here.
 #include <ceres/ceres.h>
 
 #include <cmath>
@@ -12,60 +14,38 @@
 namespace bpde::cmc_detail {
 namespace {
 
-struct SharedEvaluation {
-  CmcProblem* p = nullptr;
-  double H = 0.0;
-  Eigen::VectorXd y, F;
-  Eigen::MatrixXd J;
-  bool has_F = false, has_J = false, F_ok = false, J_ok = false;
+// DENSE_NORMAL_CHOLESKY: the LM step from J^T J + D by a dense Cholesky (Eigen), a third of the
+// flops of DENSE_QR on the augmented 6k x 3k matrix. It squares the conditioning of the Bernstein
+// Hessian, which costs at most an extra LM iteration at the degrees of the tests; measured against
+// DENSE_QR in docs/performance.md ("Ceres CMC route").
+constexpr ceres::LinearSolverType kLinearSolver = ceres::DENSE_NORMAL_CHOLESKY;
 
-  bool ensure(double const* const* params, bool need_J) {
-    const int k = p->k();
-    Eigen::VectorXd yn(3 * k);
-    for (int a = 0; a < k; ++a)
-      for (int c = 0; c < 3; ++c) yn(3 * a + c) = params[a][c];
-    if (!yn.allFinite()) return false;
-    if (!has_F || yn != y) {
-      y = yn;
-      p->set(y);
-      F = p->gradient(H);
-      F_ok = F.allFinite();
-      has_F = true;
-      has_J = false;
-    }
-    if (need_J && !has_J) {
-      p->set(y);
-      J = p->hessian(H);
-      J_ok = J.allFinite();
-      has_J = true;
-    }
-    return F_ok && (!need_J || J_ok);
-  }
-};
-
-class PointResidual final : public ceres::CostFunction {
+class AllResiduals final : public ceres::CostFunction {
  public:
-  PointResidual(SharedEvaluation* e, int a) : e_(e), a_(a) {
-    set_num_residuals(3);
-    for (int b = 0; b < e->p->k(); ++b) mutable_parameter_block_sizes()->push_back(3);
+  AllResiduals(CmcProblem* p, double H) : p_(p), H_(H) {
+    set_num_residuals(3 * p->k());
+    mutable_parameter_block_sizes()->push_back(3 * p->k());
   }
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    if (!e_->ensure(parameters, jacobians != nullptr)) return false;
-    for (int r = 0; r < 3; ++r) residuals[r] = e_->F(3 * a_ + r);
-    if (jacobians) {
-      const int k = e_->p->k();
-      for (int b = 0; b < k; ++b) {
-        if (!jacobians[b]) continue;
-        for (int r = 0; r < 3; ++r)
-          for (int s = 0; s < 3; ++s) jacobians[b][3 * r + s] = e_->J(3 * a_ + r, 3 * b + s);
-      }
+    const int n = 3 * p_->k();
+    const Eigen::Map<const Eigen::VectorXd> y(parameters[0], n);
+    if (!y.allFinite()) return false;
+    p_->set(y);
+    Eigen::Map<Eigen::VectorXd> F(residuals, n);
+    F = p_->gradient(H_);
+    if (!F.allFinite()) return false;
+    if (jacobians && jacobians[0]) {
+      // Ceres wants the Jacobian row-major.
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(jacobians[0], n, n);
+      J = p_->hessian(H_);
+      if (!J.allFinite()) return false;
     }
     return true;
   }
 
  private:
-  SharedEvaluation* e_;
-  int a_;
+  CmcProblem* p_;
+  double H_;
 };
 
 class StopAtTolerance final : public ceres::IterationCallback {
@@ -89,21 +69,16 @@ class StopAtTolerance final : public ceres::IterationCallback {
 CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
   CorrectorStats st = start_stats(p, H, o);
   if (st.ok || !std::isfinite(st.residual)) return st;
-  const int k = p.k();
   Eigen::VectorXd buf = p.get();
-  SharedEvaluation eval;
-  eval.p = &p;
-  eval.H = H;
   ceres::Problem::Options po;
   ceres::Problem problem(po);
-  std::vector<double*> blocks(static_cast<size_t>(k));
-  for (int b = 0; b < k; ++b) blocks[static_cast<size_t>(b)] = buf.data() + 3 * b;
-  for (int a = 0; a < k; ++a) problem.AddResidualBlock(new PointResidual(&eval, a), nullptr, blocks);
+  problem.AddResidualBlock(new AllResiduals(&p, H), nullptr, buf.data());
 
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
   so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  so.linear_solver_type = ceres::DENSE_QR;  // J^T J would square the Bernstein conditioning
+  so.linear_solver_type = kLinearSolver;
+  so.dense_linear_algebra_library_type = ceres::EIGEN;
   so.max_num_iterations = o.max_corrector_iterations;
   // J is square and non-singular on the branch: start as Gauss–Newton (= Newton on eq. (11)).
   so.initial_trust_region_radius = 1e12;

@@ -1,6 +1,9 @@
 // D_H = D + 2HV (triangular CMC Prop. 4, eq. (11)): value, gradient and Hessian.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 #include <Eigen/Dense>
 
 #include "cmc_test_util.h"
@@ -119,6 +122,69 @@ TEST(CmcFunctional, MeanCurvatureStatsOfAParaboloid) {
   EXPECT_LT(s2.count, s.count);
   EXPECT_LT(s2.max, 2.0);
   EXPECT_THROW(mean_curvature_stats(net, 0), ParameterError);
+}
+
+// The statistics come from the one tabulated sampling (sample_mesh); check them against the
+// per-point de Casteljau geometry of every qualifying sample, on a generic tensor and triangular
+// net, and the mesh overload against the net overload (the report uses the former).
+TEST(CmcFunctional, MeanCurvatureStatsMatchPerPointGeometry) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(-0.2, 0.2);
+  TensorNet t(7, 6);
+  for (int i = 0; i <= 7; ++i)
+    for (int j = 0; j <= 6; ++j) t.set_point(i, j, Eigen::Vector3d(i / 7.0 + U(rng), j / 6.0 + U(rng), U(rng)));
+  TriangularNet tr(6);
+  for (int r = 0; r < tr.size(); ++r) tr.points().row(r) << U(rng), U(rng), U(rng);
+  for (int r = 0; r < tr.size(); ++r) tr.points()(r, 0) += 5.0 * r / tr.size();
+  const int N = 17;
+  auto direct = [&](auto&& geometry_at, auto&& loop) {
+    MeanCurvatureStats s;
+    double sum = 0;
+    loop([&](double u, double v) {
+      const FundamentalForms g = geometry_at(u, v);
+      if (!g.regular) return;
+      s.min = s.count ? std::min(s.min, g.H) : g.H;
+      s.max = s.count ? std::max(s.max, g.H) : g.H;
+      sum += g.H;
+      ++s.count;
+    });
+    s.mean = sum / s.count;
+    return s;
+  };
+  const MeanCurvatureStats et = direct([&](double u, double v) { return t.geometry(u, v); },
+                                       [&](auto&& f) {
+                                         for (int a = 0; a <= N; ++a)
+                                           for (int b = 0; b <= N; ++b) {
+                                             const double u = double(a) / N, v = double(b) / N;
+                                             if (std::min(u, 1 - u) < 0.1 - 1e-12 && std::min(v, 1 - v) < 0.1 - 1e-12)
+                                               continue;
+                                             f(u, v);
+                                           }
+                                       });
+  const MeanCurvatureStats er = direct([&](double u, double v) { return tr.geometry(u, v); },
+                                       [&](auto&& f) {
+                                         for (int a = 0; a <= N; ++a)
+                                           for (int b = 0; b <= N - a; ++b) {
+                                             const double u = double(a) / N, v = double(b) / N;
+                                             if (u > 0.9 + 1e-12 || v > 0.9 + 1e-12 || 1 - u - v > 0.9 + 1e-12)
+                                               continue;
+                                             f(u, v);
+                                           }
+                                       });
+  for (const auto& [got, want] :
+       {std::pair{mean_curvature_stats(t, N, 0.1), et}, std::pair{mean_curvature_stats(tr, N, 0.1), er},
+        std::pair{mean_curvature_stats(sample_mesh(t, N), SampleLayout::TensorGrid, N, 0.1), et},
+        std::pair{mean_curvature_stats(sample_mesh(tr, N), SampleLayout::TriangularGrid, N, 0.1), er}}) {
+    ASSERT_GT(want.count, 0);
+    EXPECT_EQ(got.count, want.count);
+    const double scale = std::max(std::abs(want.min), std::abs(want.max));
+    EXPECT_NEAR(got.min, want.min, 1e-10 * scale);
+    EXPECT_NEAR(got.max, want.max, 1e-10 * scale);
+    EXPECT_NEAR(got.mean, want.mean, 1e-10 * scale);
+  }
+  // A mesh of the wrong size for N is refused.
+  EXPECT_THROW(mean_curvature_stats(sample_mesh(t, N), SampleLayout::TensorGrid, N + 1, 0.1), SizeError);
+  EXPECT_THROW(mean_curvature_stats(sample_mesh(t, N), SampleLayout::TriangularGrid, N, 0.1), SizeError);
 }
 
 }  // namespace

@@ -11,14 +11,15 @@ using namespace bpde;
 
 namespace {
 
-// Shapes that hit every path: row pairs and the odd last row, 24-column blocks, 4-column blocks
+// Shapes that hit every path: a single row (32-column blocks), row pairs (24-column blocks), the
+// three-row block of odd row counts (16-column blocks), 4-column blocks
 // and the 1-3 masked columns, strides larger than the width, and empty products.
 TEST(RowMajorProduct, MatchesTheDefinitionOnEveryShape) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
-  for (int r : {0, 1, 2, 3, 7, 50})
+  for (int r : {0, 1, 2, 3, 4, 5, 7, 50})
     for (int k : {0, 1, 5, 21})
-      for (int w : {0, 1, 2, 3, 4, 5, 23, 24, 25, 27, 50, 51}) {
+      for (int w : {0, 1, 2, 3, 4, 5, 15, 16, 17, 23, 24, 25, 27, 31, 32, 35, 50, 51}) {
         const int lda = k + 2, ldb = w + 3, ldc = w + 1;
         std::vector<double> A(static_cast<size_t>(r * lda + 1)), B(static_cast<size_t>(k * ldb + 1));
         for (double& x : A) x = U(rng);

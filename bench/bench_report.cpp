@@ -1,0 +1,75 @@
+// The cost of a job's report beside the cost of its solve (issue "speed where users feel it"):
+//   Solve/<kind>/<n>    run_job (or run_blend): the solve and the report quantities the solver
+//                       computes (energy, pde_residual), with the per-degree caches warm;
+//   Report/<kind>/<n>   write_job_result (or write_blend_outcome) into a temporary folder: the one
+//                       tabulated sampling of the surface (sample_net), the mean-curvature
+//                       statistics of that mesh, the CGAL checks, result.json and the three files.
+// Kinds: pde (tensor biharmonic, method lu), extremal (tensor biharmonic, boundary fixed),
+// cmc (triangular, sphere boundary, H = 1, newton), blend (k x k partition, no data points, the
+// parameter is k). Every job samples at 50 (the default). Compare Report/<kind>/<n> with
+// Solve/<kind>/<n> in the same run (docs/performance.md).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "bench_data.h"
+#include "jobs/run_blend.h"
+#include "jobs/run_job.h"
+
+namespace {
+
+using namespace bpde;
+
+std::string scratch_dir() {
+  static const std::string d = (std::filesystem::temp_directory_path() / "bpde_bench_report").string();
+  return d;
+}
+
+void SolveJob(benchmark::State& state, const std::string& kind) {
+  const Job job = bpde_bench::job(kind, static_cast<int>(state.range(0)));
+  run_job(job);  // warm the per-degree caches
+  for (auto _ : state) benchmark::DoNotOptimize(run_job(job));
+}
+
+void ReportJob(benchmark::State& state, const std::string& kind) {
+  const Job job = bpde_bench::job(kind, static_cast<int>(state.range(0)));
+  const SolveOutcome out = run_job(job);
+  for (auto _ : state) benchmark::DoNotOptimize(write_job_result(scratch_dir(), job, out));
+}
+
+void SolveBlend(benchmark::State& state) {
+  const BlendConfig c = bpde_bench::blend_config(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(run_blend(c));
+}
+
+void ReportBlend(benchmark::State& state) {
+  const BlendConfig c = bpde_bench::blend_config(static_cast<int>(state.range(0)));
+  const BlendOutcome out = run_blend(c);
+  for (auto _ : state) benchmark::DoNotOptimize(write_blend_outcome(scratch_dir(), c, out));
+}
+
+void Degrees(benchmark::internal::Benchmark* b) {
+  for (int n : {5, 10, 15, 20, 25}) b->Arg(n);
+  b->Unit(benchmark::kMillisecond);
+}
+void CmcDegrees(benchmark::internal::Benchmark* b) {
+  for (int n : {6, 10, 16, 20}) b->Arg(n);
+  b->Unit(benchmark::kMillisecond);
+}
+void BlendSizes(benchmark::internal::Benchmark* b) {
+  for (int k : {8, 16, 32}) b->Arg(k);
+  b->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(SolveJob, pde, std::string("pde"))->Name("Solve/pde")->Apply(Degrees);
+BENCHMARK_CAPTURE(ReportJob, pde, std::string("pde"))->Name("Report/pde")->Apply(Degrees);
+BENCHMARK_CAPTURE(SolveJob, extremal, std::string("extremal"))->Name("Solve/extremal")->Apply(Degrees);
+BENCHMARK_CAPTURE(ReportJob, extremal, std::string("extremal"))->Name("Report/extremal")->Apply(Degrees);
+BENCHMARK_CAPTURE(SolveJob, cmc, std::string("cmc"))->Name("Solve/cmc")->Apply(CmcDegrees);
+BENCHMARK_CAPTURE(ReportJob, cmc, std::string("cmc"))->Name("Report/cmc")->Apply(CmcDegrees);
+BENCHMARK(SolveBlend)->Name("Solve/blend")->Apply(BlendSizes);
+BENCHMARK(ReportBlend)->Name("Report/blend")->Apply(BlendSizes);
