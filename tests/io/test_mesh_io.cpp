@@ -80,7 +80,10 @@ TEST(MeshIo, ObjAndPlyNumbersReadBackBitExact) {
   std::filesystem::create_directories(dir);
   const TriangleMesh m = awkward_mesh();
   write_obj((dir / "s.obj").string(), m);
-  write_ply((dir / "s.ply").string(), m);
+  SurfaceFields fields;
+  fields.H = m.H;
+  fields.regular.setOnes(m.V.rows());
+  write_ply((dir / "s.ply").string(), m, fields);
 
   const std::vector<std::string> obj = lines((dir / "s.obj").string());
   int v = 0, f = 0;
@@ -105,9 +108,10 @@ TEST(MeshIo, ObjAndPlyNumbersReadBackBitExact) {
   EXPECT_EQ(ply[3], "element vertex " + std::to_string(m.V.rows()));
   for (Eigen::Index k = 0; k < m.V.rows(); ++k) {
     const std::vector<double> x = numbers(ply[r + 1 + static_cast<size_t>(k)], 0);
-    ASSERT_EQ(x.size(), 4u);
+    ASSERT_EQ(x.size(), 5u);  // x y z mean_curvature regular
     for (int c = 0; c < 3; ++c) EXPECT_TRUE(same_bits(x[c], m.V(k, c))) << ply[r + 1 + k];
     EXPECT_TRUE(same_bits(x[3], m.H(k))) << ply[r + 1 + k];
+    EXPECT_EQ(x[4], 1.0) << ply[r + 1 + k];
   }
   EXPECT_EQ(ply[r + 1 + static_cast<size_t>(m.V.rows())], "3 0 1 2");
   // Shortest round trip: 0.1 is written as "0.1", not 0.10000000000000001.
