@@ -18,13 +18,14 @@ namespace {
 
 void check_samples(int samples) {
   if (samples < 1 || samples > kMaxSamples)
-    throw ParameterError("--samples must be in 1.." + std::to_string(kMaxSamples) + ", got " + std::to_string(samples));
+    throw ParameterError(samples_limit_message("--samples", samples));
 }
 
 }  // namespace
 
 int cmd_solve(const std::string& job_path, const std::string& out_dir) {
   const Job job = read_job_file(job_path);
+  check_output_dir(out_dir);
   const SolveOutcome out = run_job(job);
   return write_outcome(out_dir, job, out);
 }
@@ -32,9 +33,9 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir) {
 int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples) {
   check_samples(samples);
   const Net net = read_net_file(net_path);
+  check_output_dir(out_dir, surface_file_names());
   const TriangleMesh mesh = sample_net(net, samples);
-  make_output_dir(out_dir);
-  write_surface_files(out_dir, net, mesh);
+  write_output_files(out_dir, nullptr, net, mesh);
   return 0;
 }
 
@@ -59,12 +60,14 @@ int cmd_plate(double aspect, int degree, const std::string& method) {
 
 int cmd_blend(const std::string& config_path, const std::string& out_dir) {
   const BlendConfig config = read_blend_config(config_path);
+  check_output_dir(out_dir);
   const BlendOutcome out = run_blend(config);
   return write_blend_outcome(out_dir, config, out);
 }
 
 int cmd_demo(const std::string& out_dir) {
   const Job job = demo_job();
+  check_output_dir(out_dir);
   const SolveOutcome out = run_job(job);
   const WrittenResult written = write_job_result(out_dir, job, out);
   std::fputs(demo_summary(written.result["report"], out_dir).c_str(), stdout);

@@ -18,6 +18,7 @@
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
 #include "io/mesh_io.h"
+#include "io/output_folder.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
 #include "solvers/c1/biharmonic_load.h"
@@ -349,10 +350,25 @@ Status checked_status(const Summary& s) {
 
 SolveOutcome run_job(const Job& job) { return checked_solver(job, "job").run(job); }
 
-void make_output_dir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw FileError("cannot create output directory '" + dir + "'");
+const std::vector<std::string>& result_file_names() {
+  static const std::vector<std::string> names = {"result.json", "surface.obj", "surface.ply", "net.obj"};
+  return names;
+}
+
+const std::vector<std::string>& surface_file_names() {
+  static const std::vector<std::string> names = {"surface.obj", "surface.ply", "net.obj"};
+  return names;
+}
+
+void check_output_dir(const std::string& dir, const std::vector<std::string>& names) { OutputFolder::check(dir, names); }
+
+void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh) {
+  OutputFolder out(dir, result ? result_file_names() : surface_file_names());
+  if (result) write_json_file(out.file("result.json"), *result);
+  write_obj(out.file("surface.obj"), mesh);
+  write_ply(out.file("surface.ply"), mesh);
+  write_net_obj(out.file("net.obj"), net);
+  out.commit();
 }
 
 Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
@@ -371,9 +387,7 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
   if (!report.contains("check")) report["check"] = check_report(mesh);
   Json result = {{"net", net_to_json(net)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
-  make_output_dir(dir);
-  write_json_file(dir + "/result.json", result);
-  write_surface_files(dir, net, mesh);
+  write_output_files(dir, &result, net, mesh);
   return {std::move(result), exit_code(status)};
 }
 
