@@ -110,7 +110,7 @@ BSplineNet SmoothingSpline::to_bspline_net() const {
 }
 
 TriangleMesh SmoothingSpline::sample(int N) const {
-  if (N < 1 || N > 4096) throw ParameterError("samples must be in 1..4096");
+  if (N < 1 || N > kMaxSamples) throw ParameterError(samples_limit_message("samples", N));
   TriangleMesh mesh;
   const int nv = (N + 1) * (N + 1);
   mesh.V.resize(nv, 3);

@@ -139,7 +139,7 @@ std::string fold_message(double h, bool gram_singular) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
   if (gram_singular)
-    return std::string("continuation stopped at H ≈ ") + buf +
+    return std::string("numerical limit: continuation stopped at H ≈ ") + buf +
            ": the Dirichlet Gram over the free points is numerically singular at this degree "
            "(Bernstein conditioning grows like 4^n), so eq. (11) cannot be resolved to the "
            "tolerance; use a lower degree";
