@@ -13,6 +13,7 @@ PACKAGES=(
   libbenchmark-dev       # Google Benchmark
   nlohmann-json3-dev     # JSON
   libcli11-dev           # command line
+  clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for the fuzz targets (fuzz/, scripts/fuzz.sh)
 )
 
 missing=()

@@ -15,25 +15,6 @@
 
 namespace bpde {
 
-CmcSolver parse_cmc_solver(const std::string& name) {
-  if (name == "newton") return CmcSolver::Newton;
-  if (name == "ceres") return CmcSolver::Ceres;
-  if (name == "nlopt") return CmcSolver::NLopt;
-  throw ParameterError("unknown cmc solver \"" + name + "\" (expected newton, ceres or nlopt)");
-}
-
-std::string to_string(CmcSolver s) {
-  switch (s) {
-    case CmcSolver::Newton:
-      return "newton";
-    case CmcSolver::Ceres:
-      return "ceres";
-    case CmcSolver::NLopt:
-      return "nlopt";
-  }
-  return "?";
-}
-
 void CmcOptions::validate() const {
   if (!std::isfinite(H)) throw NonFiniteError("cmc: H must be a finite number");
   if (V && !std::isfinite(*V)) throw NonFiniteError("cmc: V must be a finite number");
