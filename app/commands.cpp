@@ -6,9 +6,11 @@
 #include "app/inputs.h"
 #include "core/errors.h"
 #include "io/blend_config.h"
+#include "io/html_view.h"
 #include "io/mesh_io.h"
-#include "jobs/job_progress.h"
+#include "io/output_folder.h"
 #include "io/step_export.h"
+#include "jobs/job_progress.h"
 #include "jobs/exports.h"
 #include "jobs/run_blend.h"
 #include "jobs/run_demo.h"
@@ -23,7 +25,7 @@ namespace {
 
 void check_samples(int samples) {
   if (samples < 1 || samples > kMaxSamples)
-    throw ParameterError("--samples must be in 1.." + std::to_string(kMaxSamples) + ", got " + std::to_string(samples));
+    throw ParameterError(samples_limit_message("--samples", samples));
 }
 
 // sample_net with its progress stage.
@@ -39,6 +41,10 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir, const Sol
   Job job = read_job_input(job_path);
   if (flags.samples) job.samples = *flags.samples;
   if (flags.html) job.export_html = true;
+  Exports exports;
+  exports.html = job.export_html;
+  exports.step = job.export_step;
+  check_output_dir(out_dir, output_file_names(true, exports));
   const SolveOutcome out = run_job(job);
   const WrittenResult written = write_job_result(out_dir, job, out);
   if (!flags.quiet) std::fputs(solve_summary(written.result, job_path, out_dir).c_str(), stdout);
@@ -49,10 +55,10 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
   check_samples(samples);
   const MeshFormat format = mesh_format_from_string(mesh_format, "--mesh-format");
   const Net net = read_net_input(net_path);
+  check_output_dir(out_dir, surface_file_names());
   const TriangleMesh mesh = sampled(net, samples);
-  make_output_dir(out_dir);
   const ProgressStage stage(job_progress(), "writing files");
-  write_surface_files(out_dir, net, mesh, format);
+  write_output_files(out_dir, nullptr, net, mesh, format);
   return 0;
 }
 
@@ -83,6 +89,7 @@ int cmd_plate(double aspect, int degree, const std::string& method) {
 
 int cmd_blend(const std::string& config_path, const std::string& out_dir) {
   const BlendConfig config = read_blend_input(config_path);
+  check_output_dir(out_dir);
   const BlendOutcome out = run_blend(config);
   return write_blend_outcome(out_dir, config, out);
 }
@@ -93,9 +100,10 @@ int cmd_view(const std::string& dir, int samples) {
   const Json result = read_json_file(path);
   json_read::require_object(result, path);
   const Net net = net_from_json(json_read::field(result, path, "net"), path + ".net");
-  Exports exports;
-  exports.html = true;
-  write_exports(dir, net, sample_net(net, samples), result, exports);
+  const Json report = result.contains("report") ? result["report"] : Json::object();
+  OutputFolder out(dir, {"view.html"});
+  write_view_html(out.file("view.html"), net, sample_net(net, samples), report, view_title(net, report));
+  out.commit();
   return 0;
 }
 
@@ -106,6 +114,7 @@ int cmd_export(const std::string& net_path, const std::string& step_path) {
 
 int cmd_demo(const std::string& out_dir) {
   const Job job = demo_job();
+  check_output_dir(out_dir);
   const SolveOutcome out = run_job(job);
   const WrittenResult written = write_job_result(out_dir, job, out);
   std::fputs(demo_summary(written.result["report"], out_dir).c_str(), stdout);

@@ -27,7 +27,9 @@ class InvalidInput : public Error {
 };
 
 /// Malformed JSON, a value of the wrong JSON type, an unknown field, a missing field.
-class ParseError : public InvalidInput {
+/// (InvalidInput is a virtual base here and in NonFiniteError, so that NumberOverflowError can be
+/// both with one InvalidInput.)
+class ParseError : public virtual InvalidInput {
  public:
   using InvalidInput::InvalidInput;
 };
@@ -51,9 +53,17 @@ class SizeError : public InvalidInput {
 };
 
 /// NaN or infinite numbers, or numbers that overflow.
-class NonFiniteError : public InvalidInput {
+class NonFiniteError : public virtual InvalidInput {
  public:
   using InvalidInput::InvalidInput;
+};
+
+/// A JSON number that does not fit in a double (1e999, -1e400): the text cannot be read as the
+/// JSON it claims to be (a ParseError) and its value would be infinite (a NonFiniteError). Every
+/// JSON reader of io/ throws this one type, so a caller may catch it as either.
+class NumberOverflowError : public ParseError, public NonFiniteError {
+ public:
+  explicit NumberOverflowError(const std::string& what) : InvalidInput(what), ParseError(what), NonFiniteError(what) {}
 };
 
 /// A parameter outside its valid set: a singular G, epsilon <= 0, a non-elliptic operator for a

@@ -1,8 +1,30 @@
 #pragma once
 // A sampled surface: vertices, triangles and the mean curvature at each vertex.
 #include <Eigen/Core>
+#include <cstddef>
+#include <string>
 
 namespace bpde {
+
+/// Largest mesh resolution N of every sampled output (`samples` of jobs and blend configs,
+/// `--samples` of `bpde sample` and `bpde check`): a mesh of N has (N+1)^2 vertices, and the whole
+/// run (the mesh, the CGAL checks, the files) needs about kBytesPerSampleVertex bytes per vertex
+/// (measured: 123 MB at N = 500, 7.6 GB at N = 4096), so N = 2000 is about 1.8 GB.
+inline constexpr int kMaxSamples = 2000;
+inline constexpr std::size_t kBytesPerSampleVertex = 450;
+
+/// The message of a resolution out of 1..kMaxSamples, with the memory it would need; `what`
+/// names the field (e.g. "samples").
+inline std::string samples_limit_message(const std::string& what, long long samples) {
+  const double n1 = static_cast<double>(samples) + 1.0;
+  const double gb = n1 * n1 * static_cast<double>(kBytesPerSampleVertex) / 1e9;
+  std::string s = what + " must be in 1.." + std::to_string(kMaxSamples) + ", got " + std::to_string(samples);
+  if (samples > kMaxSamples)
+    s += " (a mesh of N samples needs about " + std::to_string(kBytesPerSampleVertex) + " (N+1)^2 bytes: " +
+         std::to_string(static_cast<long long>(gb * 10 + 0.5) / 10) + "." +
+         std::to_string(static_cast<long long>(gb * 10 + 0.5) % 10) + " GB here)";
+  return s;
+}
 
 /// Triangle mesh of a sampled patch.
 ///  - V: #V by 3 vertex positions, in the sampling order of FORMATS.md ("bpde sample").

@@ -3,10 +3,8 @@
 #include "io/json_io.h"
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "core/errors.h"
 
@@ -38,19 +36,9 @@ double number(const json& j, const std::string& where) {
   return v;
 }
 
-int integer(const json& j, const std::string& where) {
-  if (j.is_number_integer()) {
-    const auto v = j.get<long long>();
-    if (v < -1000000000LL || v > 1000000000LL) throw ParameterError(where + " is out of range");
-    return static_cast<int>(v);
-  }
-  if (j.is_number_float()) {
-    const double v = j.get<double>();
-    if (std::isfinite(v) && v == std::floor(v) && std::abs(v) <= 1e9) return static_cast<int>(v);
-    throw ParseError(where + " must be an integer");
-  }
-  throw ParseError(where + " must be an integer, not " + type_name(j));
-}
+// Integers (partition, samples) are read as every reader reads them (json_read::integer: exact
+// for 0..2^64-1, at most kMaxJsonInteger in magnitude).
+int integer(const json& j, const std::string& where) { return json_read::integer(j, where); }
 
 /// An array of rows of `width` numbers.
 Eigen::MatrixXd rows(const json& j, int width, const std::string& where) {
@@ -189,32 +177,16 @@ BlendConfig blend_config_from_json(const json& j) {
   read_points(j, p);
   if (j.contains("samples")) {
     cfg.samples = integer(j["samples"], "samples");
-    if (cfg.samples < 1 || cfg.samples > 4096) throw ParameterError("samples must be in 1..4096");
+    if (cfg.samples < 1 || cfg.samples > kMaxSamples) throw ParameterError(samples_limit_message("samples", cfg.samples));
   }
   p.validate();  // the solver's own checks (nothing left to fail here, kept as a safety net)
   return cfg;
 }
 
-BlendConfig parse_blend_config(const std::string& text) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::out_of_range& e) {
-    throw NonFiniteError(std::string("blend config: a number overflows: ") + e.what());
-  } catch (const json::exception& e) {
-    throw ParseError(std::string("blend config: malformed JSON: ") + e.what());
-  }
-  return blend_config_from_json(j);
-}
+// Both go through the bounded reader of io/json_io.h (size, depth, duplicate keys, overflow).
+BlendConfig parse_blend_config(const std::string& text) { return blend_config_from_json(parse_json(text, "blend config")); }
 
-BlendConfig read_blend_config(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError("cannot read the blend config `" + path + "`");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw FileError("cannot read the blend config `" + path + "`");
-  return parse_blend_config(ss.str());
-}
+BlendConfig read_blend_config(const std::string& path) { return blend_config_from_json(read_json_file(path)); }
 
 json blend_config_to_json(const BlendConfig& cfg) {
   const SmoothingSplineProblem& p = cfg.problem;

@@ -14,9 +14,12 @@
 //   and g(x,0), g_y(x,0) at the nodes (docs/errata.md, smoothing PDE splines §6);
 // - points / data: the approximation points A ⊂ [0,1]² and their values β; optional (default
 //   empty), equal lengths;
-// - samples: optional mesh resolution N (default 50, 1..4096).
-// Parsing is strict: an unknown field, a missing field or a value of the wrong JSON type is a
-// ParseError; a number that overflows (1e999) or is not finite is a NonFiniteError; arrays of the
+// - samples: optional mesh resolution N (default 50, 1..kMaxSamples = 2000 of core/mesh.h: a mesh
+//   of N needs about 450 (N+1)^2 bytes; 4096 took 7.6 GB).
+// Parsing is strict and bounded like every JSON reader (io/json_io.h parse_json: 64 MiB, 256
+// levels, a duplicate key is a ParseError): an unknown field, a missing field or a value of the
+// wrong JSON type is a ParseError; a number that overflows (1e999: NumberOverflowError) or is not
+// finite is a NonFiniteError; arrays of the
 // wrong length are a SizeError; ε <= 0, a outside [1e-6, 1e6], a partition or samples out of range or a point
 // outside [0,1]² is a ParameterError. Every message names the field (a JSON path such as
 // `edges.y0.value[3][1]`).

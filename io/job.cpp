@@ -189,8 +189,7 @@ Job parse_job(const Json& j, const std::string& source) {
   if (j.contains("samples")) {
     job.samples = integer(j["samples"], source + ".samples");
     if (job.samples < 1 || job.samples > kMaxSamples)
-      throw ParameterError(source + ".samples: must be in 1.." + std::to_string(kMaxSamples) + ", got " +
-                           std::to_string(job.samples));
+      throw ParameterError(samples_limit_message(source + ".samples", job.samples));
   }
   if (j.contains("mesh_format"))
     job.mesh_format = mesh_format_from_string(string(j["mesh_format"], source + ".mesh_format"), source + ".mesh_format");

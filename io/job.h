@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/fixed_set.h"
+#include "core/mesh.h"
 #include "energies/energy_spec.h"
 #include "io/json_io.h"
 #include "io/mesh_io.h"
@@ -44,8 +45,7 @@ struct Job {
   bool export_html = false;
 };
 
-/// Largest accepted `samples` (a 2000^2 grid is 4M vertices; more is almost surely a mistake).
-inline constexpr int kMaxSamples = 2000;
+// kMaxSamples (core/mesh.h): the largest accepted `samples`, bounded by the memory it needs.
 
 /// An ENERGY object (FORMATS.md). `allow_operator`: the "operator" form is accepted (pde only).
 EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_operator);

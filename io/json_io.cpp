@@ -1,6 +1,7 @@
 #include "io/json_io.h"
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -75,6 +76,9 @@ Json parse_json(const std::string& text, const std::string& source) {
   } catch (const TooDeep&) {
     throw ParseError(source + ": arrays and objects nest deeper than the limit of " + std::to_string(kMaxJsonDepth) +
                      " levels");
+  } catch (const nlohmann::json::out_of_range& e) {
+    // 406: "number overflow parsing '1e999'" (the only out_of_range the parser raises)
+    throw NumberOverflowError(source + ": a number overflows a double: " + clean_nlohmann(e.what()));
   } catch (const nlohmann::json::exception& e) {
     throw ParseError(source + ": malformed JSON: " + clean_nlohmann(e.what()));
   }
@@ -142,13 +146,24 @@ double number(const Json& j, const std::string& path) {
 
 int integer(const Json& j, const std::string& path) {
   if (!j.is_number()) throw ParseError(path + ": expected an integer, got " + type_of(j));
+  // nlohmann stores 0..2^64-1 as unsigned and only negative integers as signed: reading an
+  // unsigned one as long long turned 2^64-1 into -1 (which then passed the range check).
+  if (j.is_number_unsigned()) {
+    const auto v = j.get<std::uint64_t>();
+    if (v > static_cast<std::uint64_t>(kMaxJsonInteger))
+      throw ParseError(path + ": integer " + std::to_string(v) + " is out of range (|n| <= " +
+                       std::to_string(kMaxJsonInteger) + ")");
+    return static_cast<int>(v);
+  }
   if (j.is_number_integer()) {
-    const auto v = j.get<long long>();
-    if (v < -1000000000LL || v > 1000000000LL) throw ParseError(path + ": integer out of range");
+    const auto v = j.get<std::int64_t>();
+    if (v < -kMaxJsonInteger || v > kMaxJsonInteger)
+      throw ParseError(path + ": integer " + std::to_string(v) + " is out of range (|n| <= " +
+                       std::to_string(kMaxJsonInteger) + ")");
     return static_cast<int>(v);
   }
   const double x = j.get<double>();
-  if (!std::isfinite(x) || x != std::floor(x) || std::abs(x) > 1e9)
+  if (!std::isfinite(x) || x != std::floor(x) || std::abs(x) > kMaxJsonInteger)
     throw ParseError(path + ": expected an integer, got " + j.dump());
   return static_cast<int>(x);
 }
@@ -197,8 +212,8 @@ int degree_value(const Json& j, const std::string& path) {
 
 std::array<int, 2> degree_pair(const Json& j, const std::string& path) {
   if (!j.is_array() || j.size() != 2)
-    // Not j.dump(): it recurses once per nesting level, and blend configs reach this reader
-    // through their own parser (no depth limit there).
+    // Not j.dump(): it recurses once per nesting level, and a Json built in code (not read
+    // through parse_json) has no depth limit.
     throw ParseError(path + ": expected [n, m], got " +
                      (j.is_structured() ? std::string(j.type_name()) + " of " + std::to_string(j.size()) + " elements"
                                         : j.dump().substr(0, 40)));

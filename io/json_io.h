@@ -6,6 +6,7 @@
 // numbers that overflow (1e999), non-finite values, degrees out of 1..64 (checked before the
 // point count) and wrong point counts all throw InvalidInput subclasses whose message names the
 // JSON path, e.g. `net.points[3][1]: expected a number`.
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
@@ -25,9 +26,14 @@ using Net = std::variant<TensorNet, TriangularNet, BSplineNet>;
 /// levels deep (ParseError). Both are bad input (exit 2).
 inline constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;  // 64 MiB
 inline constexpr int kMaxJsonDepth = 256;
+/// Largest magnitude of an integer field (degrees, samples, partition): json_read::integer
+/// refuses larger ones (ParseError naming the number as written, 18446744073709551615 included).
+inline constexpr std::int64_t kMaxJsonInteger = 1000000000;
 
-/// Parse JSON text; `source` names it in errors (a file name). Throws ParseError, or FileError
-/// when the text exceeds kMaxJsonBytes.
+/// Parse JSON text; `source` names it in errors (a file name). Throws ParseError (malformed,
+/// too deep, a duplicate key), NumberOverflowError (a number beyond double range, such as 1e999:
+/// both a ParseError and a NonFiniteError), or FileError when the text exceeds kMaxJsonBytes.
+/// Every reader of io/ (nets, jobs, blend configs, `--energy`) parses through this function.
 Json parse_json(const std::string& text, const std::string& source);
 /// Read and parse a file (at most kMaxJsonBytes + 1 bytes are read, so endless input such as
 /// /dev/zero stops there). Throws FileError (missing, unreadable, too large) or ParseError.
@@ -42,7 +48,7 @@ void require_object(const Json& j, const std::string& path);
 void check_keys(const Json& j, const std::string& path, std::initializer_list<const char*> allowed);
 const Json& field(const Json& j, const std::string& path, const char* key);  // required
 double number(const Json& j, const std::string& path);                       // finite number
-int integer(const Json& j, const std::string& path);                         // integral number
+int integer(const Json& j, const std::string& path);                         // |integer| <= kMaxJsonInteger
 std::string string(const Json& j, const std::string& path);
 bool boolean(const Json& j, const std::string& path);
 /// An array of `len` numbers (len < 0: any length).

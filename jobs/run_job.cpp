@@ -18,8 +18,12 @@
 #include "energies/triangular_gram.h"
 #include "energies/volume.h"
 #include "io/mesh_io.h"
-#include "jobs/job_progress.h"
+#include "io/html_view.h"
+#include "io/output_folder.h"
+#include "io/step_export.h"
+#include "io/vtp_io.h"
 #include "jobs/exports.h"
+#include "jobs/job_progress.h"
 #include "solvers/bspline/bspline_extremal.h"
 #include "solvers/bspline/bspline_pde.h"
 #include "solvers/c1/biharmonic_load.h"
@@ -337,10 +341,39 @@ SolveOutcome run_job(const Job& job) {
   return out;
 }
 
-void make_output_dir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw FileError("cannot create output directory '" + dir + "'");
+const std::vector<std::string>& result_file_names() {
+  static const std::vector<std::string> names = {"result.json", "surface.obj", "surface.ply", "surface.vtp",
+                                                 "net.obj"};
+  return names;
+}
+
+const std::vector<std::string>& surface_file_names() {
+  static const std::vector<std::string> names = {"surface.obj", "surface.ply", "surface.vtp", "net.obj"};
+  return names;
+}
+
+std::vector<std::string> output_file_names(bool with_result, const Exports& exports) {
+  std::vector<std::string> names = with_result ? result_file_names() : surface_file_names();
+  if (exports.step) names.push_back("surface.step");
+  if (exports.html) names.push_back("view.html");
+  return names;
+}
+
+void check_output_dir(const std::string& dir, const std::vector<std::string>& names) { OutputFolder::check(dir, names); }
+
+void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh,
+                        MeshFormat format, const Exports& exports) {
+  OutputFolder out(dir, output_file_names(result != nullptr, exports));
+  if (result) write_json_file(out.file("result.json"), *result);
+  const SurfaceFields fields = surface_fields(net, mesh);
+  write_obj(out.file("surface.obj"), mesh);
+  write_ply(out.file("surface.ply"), mesh, fields, format);
+  write_vtp(out.file("surface.vtp"), mesh, fields, format);
+  write_net_obj(out.file("net.obj"), net);
+  const Json report = result && result->contains("report") ? (*result)["report"] : Json::object();
+  if (exports.step) write_step(out.file("surface.step"), net);
+  if (exports.html) write_view_html(out.file("view.html"), net, mesh, report, view_title(net, report));
+  out.commit();
 }
 
 // The statistics of the mesh that the surface files are written from (one tabulated evaluation).
@@ -359,7 +392,7 @@ Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }
 // result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
 // statistics and the CGAL figures unless the solver already set them.
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                           const Json& extra, Status status, MeshFormat format) {
+                           const Json& extra, Status status, MeshFormat format, const Exports& exports) {
   if (!report.contains("mean_curvature")) {
     const ProgressStage stage(job_progress(), "mean curvature");
     report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
@@ -371,9 +404,7 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
   const ProgressStage stage(job_progress(), "writing files");
   Json result = {{"net", net_to_json(net)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
-  make_output_dir(dir);
-  write_json_file(dir + "/result.json", result);
-  write_surface_files(dir, net, mesh, format);
+  write_output_files(dir, &result, net, mesh, format, exports);
   return {std::move(result), exit_code(status)};
 }
 
@@ -382,13 +413,10 @@ WrittenResult write_job_result(const std::string& dir, const Job& job, const Sol
     const ProgressStage stage(job_progress(), "sampling");
     return sample_net(out.net, job.samples);
   }();
-  WrittenResult written =
-      write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status, job.mesh_format);
   Exports exports;
   exports.html = job.export_html;
   exports.step = job.export_step;
-  write_exports(dir, out.net, mesh, written.result, exports);
-  return written;
+  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status, job.mesh_format, exports);
 }
 
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {

@@ -10,9 +10,11 @@
 // to that solver's requirements (solvers/requirements.h, declared next to each solver's Options).
 // The same table validates a job when it is read and dispatches it when it runs.
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 #include "io/job.h"
+#include "jobs/exports.h"
 #include "solvers/requirements.h"
 #include "solvers/summary.h"
 
@@ -59,8 +61,24 @@ Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples)
 /// The object `bpde check` prints for a mesh (CGAL figures).
 Json check_report(const TriangleMesh& mesh);
 
-/// Create DIR with its parents (FileError if that fails).
-void make_output_dir(const std::string& dir);
+/// The files of a result folder: result.json and the surface files (result_file_names), or the
+/// surface files alone (`bpde sample`: surface.obj, surface.ply, surface.vtp, net.obj);
+/// output_file_names adds the requested exports (surface.step, view.html).
+const std::vector<std::string>& result_file_names();
+const std::vector<std::string>& surface_file_names();
+std::vector<std::string> output_file_names(bool with_result, const Exports& exports);
+
+/// Throw FileError now when DIR cannot receive `names` (io/output_folder.h OutputFolder::check),
+/// so that a command fails before it runs a solver whose result it could not write.
+void check_output_dir(const std::string& dir, const std::vector<std::string>& names = result_file_names());
+
+/// Write DIR all or nothing (io/output_folder.h): result.json (unless `result` is null) and the
+/// surface files of `net` and its sampled `mesh` (PLY and VTP in `format`), and the requested
+/// exports (DIR/surface.step, DIR/view.html showing result's report). DIR is created with its
+/// parents if missing; an existing DIR keeps its other files. On FileError DIR and its parents are
+/// as they were.
+void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh,
+                        MeshFormat format = MeshFormat::Ascii, const Exports& exports = {});
 
 /// What was written: the whole result.json object and the exit code.
 struct WrittenResult {
@@ -68,11 +86,12 @@ struct WrittenResult {
   int exit_code = 0;
 };
 
-/// Write DIR/result.json and surface.obj, surface.ply, surface.vtp, net.obj (DIR created with its
-/// parents; PLY and VTP in `format`). The report gains `mean_curvature` and `check` unless already
-/// present. The exit code is exit_code(status).
+/// Write DIR/result.json and surface.obj, surface.ply, surface.vtp, net.obj (write_output_files:
+/// all or nothing; PLY and VTP in `format`). The report gains `mean_curvature` and `check` unless
+/// already present. The exit code is exit_code(status).
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                           const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii);
+                           const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii,
+                           const Exports& exports = {});
 /// write_result for a job's outcome, sampled at job.samples, in job.mesh_format, and the job's
 /// exports (job.export_step: DIR/surface.step; job.export_html: DIR/view.html; jobs/exports.h).
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out);

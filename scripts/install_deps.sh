@@ -20,6 +20,7 @@ PACKAGES=(
   chromium               # the browser test of view.html (headless)
   zlib1g-dev             # the browser test decodes Chromium's PNG screenshot
   libsuitesparse-dev     # CHOLMOD: sparse Cholesky of the blend system
+  clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for the fuzz targets (fuzz/, scripts/fuzz.sh)
 )
 
 missing=()

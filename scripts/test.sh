@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The whole test suite: installs what is missing, builds everything (library, bpde, tests,
-# benchmarks, examples) and runs every test with CTest.
+# benchmarks, examples), runs every test with CTest, then builds and runs the fuzz targets briefly.
 # With BPDE_SANITIZE=1 it then builds and runs the same suite under AddressSanitizer and
 # UndefinedBehaviorSanitizer (the `asan` preset of CMakePresets.json, in ./build-asan). That pass
 # doubles the time on a 2-core machine, so CI leaves it to this switch.
@@ -10,6 +10,9 @@ cd "$(dirname "$0")/.."
 # not yet checked (docs/performance.md, section 2). Set BPDE_NATIVE=ON to test that build.
 BPDE_NATIVE=${BPDE_NATIVE:-OFF} bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc)"
+# The libFuzzer targets of the readers (fuzz/, clang, ./build-fuzz): 20000 inputs each, failing on
+# any crash or sanitizer report (docs/robustness.md; the long run is `bash scripts/fuzz.sh`).
+bash scripts/fuzz.sh 20000
 if [ "${BPDE_SANITIZE:-0}" = "1" ]; then
   cmake --preset asan >/dev/null
   cmake --build --preset asan -j "$(nproc)"

@@ -22,6 +22,12 @@ bool SolverRequirements::takes(NetKind k) const { return std::find(nets.begin(),
 
 bool SolverRequirements::takes(FixedSet f) const { return std::find(fixed.begin(), fixed.end(), f) != fixed.end(); }
 
+const MaxDegree* SolverRequirements::max_degree(NetKind k) const {
+  for (const MaxDegree& d : max_degrees)
+    if (d.net == k) return &d;
+  return nullptr;
+}
+
 int SolverRequirements::min_degree(NetKind k, FixedSet f) const {
   for (const MinDegree& d : min_degrees)
     if (d.net == k && d.fixed == f) return d.degree;
@@ -93,6 +99,9 @@ void check_requirements(const SolverRequirements& r, const NetShape& net, FixedS
 
   const bool triangular = net.kind == NetKind::Triangular;
   if (r.square && !triangular && net.n != net.m) degree(r.problem + " needs n = m, got " + pair(net.n, net.m));
+  if (const MaxDegree* top = r.max_degree(net.kind); top && (net.n > top->degree || net.m > top->degree))
+    degree(r.problem + " on a " + kind + " net takes degrees up to " + std::to_string(top->degree) + " (" +
+           top->reason + "), got " + (triangular ? std::to_string(net.n) : pair(net.n, net.m)));
   const int need = r.min_degree(net.kind, fixed);
   if (need <= 0) return;
   const std::string at_least = std::to_string(need);

@@ -33,6 +33,15 @@ struct MinDegree {
   int degree;
 };
 
+/// The largest degree a solver takes on one net kind (both degrees of a tensor or B-spline net),
+/// and why: the size or the conditioning past which it cannot deliver in reasonable time, memory
+/// or precision. Checked up front (DegreeError, exit 2), like the minimum degrees.
+struct MaxDegree {
+  NetKind net;
+  int degree;
+  std::string reason;  ///< e.g. "the Bernstein Gram system is numerically singular above"
+};
+
 struct SolverRequirements {
   /// How messages name the problem, e.g. `problem "extremal"` (FORMATS.md problem kinds).
   std::string problem;
@@ -44,6 +53,9 @@ struct SolverRequirements {
   std::string fixed_reason;
   /// Minimum degrees per (net kind, fixed set); no entry means no minimum.
   std::vector<MinDegree> min_degrees;
+  /// Largest degrees per net kind (a documented limit of the method: docs/FORMATS.md "Input
+  /// limits"); no entry means none below kMaxDegree.
+  std::vector<MaxDegree> max_degrees;
   /// Tensor nets must have n = m.
   bool square = false;
   /// The method names offered for this problem ("explicit", "lu"; "newton", "ceres", "nlopt");
@@ -56,16 +68,19 @@ struct SolverRequirements {
   bool takes(FixedSet f) const;
   /// The minimum degree for (k, f), 0 when there is none.
   int min_degree(NetKind k, FixedSet f) const;
+  /// The maximum degree entry for k, nullptr when there is none.
+  const MaxDegree* max_degree(NetKind k) const;
 };
 
 /// Check a net and fixed set (and, unless `method` is empty, a method name) against `r`, in this
 /// order: the fixed set is defined for the net kind ("u-boundaries" is not, on triangular nets),
-/// the net kind, the fixed set, the method (UnsupportedProblem for each); n = m, the minimum
-/// degree (DegreeError). Every message starts with `where: `. The degree message names the net
+/// the net kind, the fixed set, the method (UnsupportedProblem for each); n = m, the maximum
+/// degree, the minimum degree (DegreeError). Every message starts with `where: `. The degree message names the net
 /// kind and the fixed set when the minimum depends on the fixed set, e.g.
 ///   job: problem "extremal" on a tensor net with boundary data needs degrees >= 2, got [1, 1]
 ///   job: problem "pde" needs degrees >= 2, got [1, 3]
 ///   job: problem "tetraharmonic" needs n = m >= 4, got 3
+///   job: problem "cmc" on a triangular net takes degrees up to 24 (<reason>), got 64
 void check_requirements(const SolverRequirements& r, const NetShape& net, FixedSet fixed, const std::string& method,
                         const std::string& where);
 

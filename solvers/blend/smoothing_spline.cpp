@@ -113,7 +113,7 @@ BSplineNet SmoothingSpline::to_bspline_net() const {
 }
 
 TriangleMesh SmoothingSpline::sample(int N) const {
-  if (N < 1 || N > 4096) throw ParameterError("samples must be in 1..4096");
+  if (N < 1 || N > kMaxSamples) throw ParameterError(samples_limit_message("samples", N));
   // The spline is exactly its bicubic B-spline net over [0,1]^2 (BfsSpace::to_bspline): sample
   // that, by the tabulated basis values and derivatives of tensor/bspline_net.h (one table per
   // direction and order, then small products), not point by point.

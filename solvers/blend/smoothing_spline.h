@@ -91,7 +91,7 @@ class SmoothingSpline {
   /// The (N+1)² vertices at (x, y) = (a/N, b/N), index a(N+1) + b (FORMATS.md tensor order),
   /// 2N² triangles counter-clockwise in the (x, y) plane, and the mean curvature at every vertex
   /// (FORMATS.md sign; at a singular point it is taken at a point nudged towards (½, ½); never
-  /// NaN). Throws ParameterError unless 1 <= N <= 4096.
+  /// NaN). Throws ParameterError unless 1 <= N <= kMaxSamples (core/mesh.h).
   TriangleMesh sample(int N) const;
 
   /// The same surface as a FORMATS.md "bspline" net of degree (3, 3) (BfsSpace::to_bspline).

@@ -15,25 +15,6 @@
 
 namespace bpde {
 
-CmcSolver parse_cmc_solver(const std::string& name) {
-  if (name == "newton") return CmcSolver::Newton;
-  if (name == "ceres") return CmcSolver::Ceres;
-  if (name == "nlopt") return CmcSolver::NLopt;
-  throw ParameterError("unknown cmc solver \"" + name + "\" (expected newton, ceres or nlopt)");
-}
-
-std::string to_string(CmcSolver s) {
-  switch (s) {
-    case CmcSolver::Newton:
-      return "newton";
-    case CmcSolver::Ceres:
-      return "ceres";
-    case CmcSolver::NLopt:
-      return "nlopt";
-  }
-  return "?";
-}
-
 void CmcOptions::validate() const {
   if (!std::isfinite(H)) throw NonFiniteError("cmc: H must be a finite number");
   if (V && !std::isfinite(*V)) throw NonFiniteError("cmc: V must be a finite number");
@@ -139,7 +120,7 @@ std::string fold_message(double h, bool gram_singular) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
   if (gram_singular)
-    return std::string("continuation stopped at H ≈ ") + buf +
+    return std::string("numerical limit: continuation stopped at H ≈ ") + buf +
            ": the Dirichlet Gram over the free points is numerically singular at this degree "
            "(Bernstein conditioning grows like 4^n), so eq. (11) cannot be resolved to the "
            "tolerance; use a lower degree";

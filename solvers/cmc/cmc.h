@@ -66,9 +66,20 @@ struct CmcOptions {
 /// The FORMATS.md "cmc" problem: triangular or tensor nets, any fixed set the net defines;
 /// triangular n >= 3 with C0 data and >= 6 with C1 data, tensor n, m >= 2 and >= 4; solvers
 /// newton, ceres, nlopt (the V form: nlopt only, CmcOptions::validate).
+/// Largest degrees of a cmc job: above them the Dirichlet Gram over the free points is no longer
+/// Cholesky-factorable (condition ~4^n; docs/cmc.md "Numerical limit"), so eq. (11) cannot be
+/// resolved to 1e-11, and the continuation spends minutes (tensor n = 30: 2 min; triangular
+/// n = 40: 100 s; n = 64 ran past 5 min and 2.2 GB) before it stops with a numerical limit.
+inline constexpr int kMaxCmcTensorDegree = 16;
+inline constexpr int kMaxCmcTriangularDegree = 25;
+
 inline SolverRequirements cmc_requirements() {
   SolverRequirements r;
   r.problem = "problem \"cmc\"";
+  r.max_degrees = {{NetKind::Tensor, kMaxCmcTensorDegree,
+                    "above it the Dirichlet Gram over the free points is numerically singular"},
+                   {NetKind::Triangular, kMaxCmcTriangularDegree,
+                    "above it the Dirichlet Gram over the free points is numerically singular"}};
   r.nets = {NetKind::Triangular, NetKind::Tensor};
   r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
   r.min_degrees = {{NetKind::Triangular, FixedSet::Boundary, 3},

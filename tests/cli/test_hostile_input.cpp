@@ -11,9 +11,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -197,4 +200,231 @@ TEST(HostileInput, HighDegreePdeReportsTheNumericalLimit) {
     EXPECT_EQ(report["converged"], true);
     EXPECT_LE(report["pde_residual"].get<double>(), 1e-11);
   }
+}
+
+namespace {
+// Every entry under `dir` (recursively): relative path -> bytes, or "<dir>" for a folder.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> s;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    s[fs::relative(e.path(), dir).string()] = e.is_directory() ? "<dir>" : slurp(e.path());
+  return s;
+}
+
+// No staging folder may be left beside an output folder.
+void expect_no_staging(const fs::path& parent) {
+  for (const auto& e : fs::directory_iterator(parent))
+    EXPECT_EQ(e.path().filename().string().rfind(".bpde-staging", 0), std::string::npos) << e.path();
+}
+
+const char* kBlendConfig = R"({"kind": "blend", "partition": [1, 1], "a": 1, "epsilon": 0.01,
+  "edges": {"y0": {"value": [[0,0,0],[1,0,0]], "dy": [[0,1,0],[0,1,0]]},
+            "y1": {"value": [[0,1,0],[1,1,0]], "dy": [[0,1,0],[0,1,0]]}}, "samples": 4})";
+
+// The four commands that write an output folder, with their arguments up to `--out`.
+std::vector<std::pair<std::string, std::string>> writing_commands() {
+  const fs::path job = write("atomic_job.json", high_degree_pde_job(4, "lu"));
+  const fs::path net = write("atomic_net.json", kTensor);
+  const fs::path blend = write("atomic_blend.json", kBlendConfig);
+  return {{"solve", "solve " + job.string()},
+          {"sample", "sample " + net.string() + " --samples 4"},
+          {"blend", "blend " + blend.string()},
+          {"demo", "demo"}};
+}
+}  // namespace
+
+// DIR/surface.obj was a directory: the command exited 2 but left result.json (and surface.obj of
+// sample) behind. Now every writing command leaves an existing DIR byte for byte as it was.
+TEST(HostileInput, UnwritableOutputLeavesTheFolderAsItWas) {
+  for (const auto& [name, args] : writing_commands())
+    for (const char* blocked : {"surface.obj", "surface.ply", "net.obj"}) {
+      const fs::path out = tmpdir() / ("atomic_" + name);
+      fs::remove_all(out);
+      fs::create_directories(out / blocked);
+      std::ofstream(out / blocked / "inside.txt") << "mine\n";
+      std::ofstream(out / "result.json") << "{\"old\": true}\n";
+      std::ofstream(out / "keep.txt") << "untouched\n";
+      const auto before = snapshot(out);
+      const CmdResult r = run(args + " --out " + out.string());
+      EXPECT_EQ(r.status, 2) << name << " " << blocked << ": " << r.err;
+      EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+      EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_EQ(snapshot(out), before) << name << " " << blocked;
+      expect_no_staging(tmpdir());
+    }
+  // The output folder itself a file: refused, the file as it was.
+  const fs::path file = write("atomic_file", "a file\n");
+  for (const auto& [name, args] : writing_commands()) {
+    const CmdResult r = run(args + " --out " + file.string());
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_EQ(slurp(file), "a file\n");
+  }
+}
+
+// A successful run into an existing DIR replaces its result files and keeps its other files; a
+// missing DIR is created with its parents; no staging folder stays behind.
+TEST(HostileInput, OutputFolderIsReplacedOnlyOnSuccess) {
+  for (const auto& [name, args] : writing_commands()) {
+    const fs::path out = tmpdir() / ("replace_" + name);
+    fs::remove_all(out);
+    fs::create_directories(out);
+    std::ofstream(out / "surface.obj") << "old surface\n";
+    std::ofstream(out / "keep.txt") << "untouched\n";
+    const CmdResult r = run(args + " --out " + out.string());
+    ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+    EXPECT_EQ(slurp(out / "keep.txt"), "untouched\n");
+    const std::string obj = slurp(out / "surface.obj");
+    EXPECT_NE(obj, "old surface\n") << name;
+    EXPECT_NE(obj.find("\nv "), std::string::npos) << name;
+    EXPECT_TRUE(fs::exists(out / "surface.ply"));
+    EXPECT_TRUE(fs::exists(out / "net.obj"));
+    EXPECT_EQ(fs::exists(out / "result.json"), name != "sample");
+    expect_no_staging(tmpdir());
+    const fs::path nested = tmpdir() / ("nested_" + name) / "a" / "b";
+    fs::remove_all(tmpdir() / ("nested_" + name));
+    const CmdResult n = run(args + " --out " + nested.string());
+    ASSERT_EQ(n.status, 0) << name << ": " << n.err;
+    EXPECT_TRUE(fs::exists(nested / "surface.obj"));
+    expect_no_staging(nested.parent_path());
+  }
+}
+
+// A failing run with a long or nested output name created the missing parents and left them
+// behind empty.
+TEST(HostileInput, FailedRunsCreateNoParentFolders) {
+  for (const auto& [name, args] : writing_commands()) {
+    const fs::path top = tmpdir() / ("parents_" + name);
+    fs::remove_all(top);
+    const fs::path too_long = top / "a" / "b" / std::string(300, 'x');
+    const CmdResult r = run(args + " --out " + too_long.string());
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("longer than"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(top)) << name;
+    // Bad input with a nested missing output folder: nothing created either.
+    const CmdResult b = run("solve " + write("bad_job.json", "{").string() + " --out " + (top / "c" / "d").string());
+    EXPECT_EQ(b.status, 2);
+    EXPECT_FALSE(fs::exists(top)) << name;
+    // A parent that is a file.
+    const fs::path file = write("parent_file", "x\n");
+    const CmdResult f = run(args + " --out " + (file / "sub").string());
+    EXPECT_EQ(f.status, 2) << name << ": " << f.err;
+    EXPECT_EQ(slurp(file), "x\n");
+  }
+}
+
+namespace {
+// A job on a triangular net of degree n whose boundary is a bent triangle (interior points 0).
+std::string triangular_job(int n, const std::string& problem) {
+  std::ostringstream s;
+  s.precision(17);
+  s << R"({"net": {"type": "triangular", "degree": )" << n << R"(, "points": [)";
+  bool first = true;
+  for (int i = n; i >= 0; --i)
+    for (int j = n - i; j >= 0; --j) {
+      const int k = n - i - j;
+      const double u = double(i) / n, v = double(j) / n;
+      const double z = (i == 0 || j == 0 || k == 0) ? 0.2 * std::sin(3 * u) * std::cos(2 * v) : 0.0;
+      s << (first ? "" : ", ") << "[" << u + 0.5 * v << ", " << v * 0.8660254037844386 << ", " << z << "]";
+      first = false;
+    }
+  s << R"(]}, "problem": )" << problem << R"(, "samples": 8})";
+  return s.str();
+}
+
+std::string tensor_job(int n, const std::string& problem) {
+  std::ostringstream s;
+  s.precision(17);
+  s << R"({"net": {"type": "tensor", "degree": [)" << n << ", " << n << R"(], "points": [)";
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const bool edge = i == 0 || j == 0 || i == n || j == n;
+      s << (i + j ? ", " : "") << "[" << double(i) / n << ", " << double(j) / n << ", "
+        << (edge ? 0.2 * std::sin(3.0 * i / n) * std::cos(2.0 * j / n) : 0.0) << "]";
+    }
+  s << R"(]}, "problem": )" << problem << R"(, "samples": 8})";
+  return s.str();
+}
+
+// `job` must run (exit 0, converged) and `over` must be refused up front naming the limit.
+void expect_limit(const std::string& name, const std::string& job, const std::string& over, const std::string& limit) {
+  const fs::path out = tmpdir() / ("limit_ok_" + name);
+  const CmdResult ok = run("solve " + write("limit_ok_" + name + ".json", job).string() + " --out " + out.string());
+  EXPECT_EQ(ok.status, 0) << name << ": " << ok.err;
+  const fs::path bad = prepared_out("limit_" + name);
+  expect_bad_input("solve " + write("limit_over_" + name + ".json", over).string() + " --out " + bad.string(), bad,
+                   "takes degrees up to " + limit);
+}
+}  // namespace
+
+// The triangular Dirichlet extremal exited 2 ("Q_ff is singular") at n = 25 and 30, valid degrees
+// by the contract; a triangular cmc at degree 64 ran past 5 minutes and 2.2 GB. Now each solver's
+// degree limit is documented and checked up front (exit 2 naming it), the same for every kind.
+TEST(HostileInput, DegreeLimitsAreCheckedUpFront) {
+  const std::string dirichlet = R"({"kind": "extremal", "energy": {"name": "dirichlet"}})";
+  const std::string cmc = R"({"kind": "cmc", "H": 0.5, "solver": "newton"})";
+  expect_limit("tri_extremal", triangular_job(20, dirichlet), triangular_job(21, dirichlet), "20");
+  expect_limit("tri_cmc", triangular_job(25, cmc), triangular_job(26, cmc), "25");
+  expect_limit("tensor_cmc", tensor_job(16, cmc), tensor_job(17, cmc), "16");
+  const fs::path out = prepared_out("limit_far");
+  for (int n : {25, 30, 64})
+    expect_bad_input("solve " + write("tri_far.json", triangular_job(n, dirichlet)).string() + " --out " + out.string(),
+                     out, "takes degrees up to 20");
+  expect_bad_input("solve " + write("tri_cmc64.json", triangular_job(64, cmc)).string() + " --out " + out.string(), out,
+                   "takes degrees up to 25");
+  // The C1 methods' dense solve (86 s at 40): 41 is refused before anything runs.
+  for (const char* c1 : {R"({"kind": "tetraharmonic"})", R"({"kind": "biharmonic-load"})"}) {
+    std::string job = tensor_job(41, c1);
+    job.replace(job.find(R"("problem": )"), 11, R"("fixed": "boundary+adjacent", "problem": )");
+    expect_bad_input("solve " + write("c1_41.json", job).string() + " --out " + out.string(), out,
+                     "takes degrees up to 40");
+  }
+}
+
+// samples: 4096 in a blend config ran 15 minutes and 7.6 GB: the limit is the jobs' 2000, and the
+// message gives the memory the request would need; 2^64-1 is reported as written.
+TEST(HostileInput, SamplesAreBoundedByTheMemoryTheyNeed) {
+  const fs::path out = prepared_out("samples");
+  std::string blend = kBlendConfig;
+  const auto with_samples = [&](const std::string& n) {
+    std::string t = blend;
+    t.replace(t.find(R"("samples": 4)"), 12, "\"samples\": " + n);
+    return t;
+  };
+  expect_bad_input("blend " + write("blend4096.json", with_samples("4096")).string() + " --out " + out.string(), out,
+                   "samples must be in 1..2000, got 4096 (a mesh of N samples needs about 450 (N+1)^2 bytes: 7.6 GB");
+  expect_bad_input("blend " + write("blend2001.json", with_samples("2001")).string() + " --out " + out.string(), out,
+                   "1..2000, got 2001");
+  expect_bad_input("blend " + write("blend0.json", with_samples("0")).string() + " --out " + out.string(), out,
+                   "1..2000, got 0");
+  expect_bad_input("blend " + write("blendmax.json", with_samples("18446744073709551615")).string() + " --out " +
+                       out.string(),
+                   out, "18446744073709551615");
+  const fs::path job = write("job_u64.json", R"({"net": )" + std::string(kTensor) +
+                                                 R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}},)"
+                                                 R"( "samples": 18446744073709551615})");
+  expect_bad_input("solve " + job.string() + " --out " + out.string(), out, "integer 18446744073709551615 is out");
+  const fs::path deg = write("deg_u64.json", R"({"type": "tensor", "degree": [18446744073709551615, 1], "points": []})");
+  const CmdResult r = run("check " + deg.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("18446744073709551615"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("-1"), std::string::npos) << r.err;
+}
+
+// A blend config with a key twice was accepted (the last value won); jobs already refused it.
+TEST(HostileInput, DuplicateKeysAreBadInputInEveryReader) {
+  const fs::path out = prepared_out("dup");
+  std::string blend = kBlendConfig;
+  for (const char* dup : {R"("epsilon": 0.5)", R"("samples": 8)"}) {
+    std::string t = blend;
+    t.insert(t.rfind('}'), std::string(", ") + dup);
+    expect_bad_input("blend " + write("dup_blend.json", t).string() + " --out " + out.string(), out, "duplicate key");
+  }
+  std::string net = kTensor;
+  net.insert(net.rfind('}'), R"(, "degree": [1, 1])");
+  expect_bad_input("sample " + write("dup_net.json", net).string() + " --out " + out.string(), out, "duplicate key");
+  const fs::path job = write("dup_job.json", R"({"net": )" + std::string(kTensor) +
+                                                 R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"},)"
+                                                 R"( "kind": "extremal"}})");
+  expect_bad_input("solve " + job.string() + " --out " + out.string(), out, "duplicate key");
 }

@@ -1,0 +1,29 @@
+// The names of the cmc solvers (solvers/cmc/cmc.h), apart from the solvers themselves: the job
+// reader (io/job.cpp) needs them, and the fuzz targets (fuzz/) link the readers without Ceres.
+#include <string>
+
+#include "core/errors.h"
+#include "solvers/cmc/cmc.h"
+
+namespace bpde {
+
+CmcSolver parse_cmc_solver(const std::string& name) {
+  if (name == "newton") return CmcSolver::Newton;
+  if (name == "ceres") return CmcSolver::Ceres;
+  if (name == "nlopt") return CmcSolver::NLopt;
+  throw ParameterError("unknown cmc solver \"" + name + "\" (expected newton, ceres or nlopt)");
+}
+
+std::string to_string(CmcSolver s) {
+  switch (s) {
+    case CmcSolver::Newton:
+      return "newton";
+    case CmcSolver::Ceres:
+      return "ceres";
+    case CmcSolver::NLopt:
+      return "nlopt";
+  }
+  return "?";
+}
+
+}  // namespace bpde
