@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/sweep_command.h"
 #include "jobs/exit_status.h"
 
 int main(int argc, char** argv) {
@@ -53,6 +54,12 @@ int main(int argc, char** argv) {
   blend->add_option("config", in, "CONFIG.json")->required();
   blend->add_option("--out", out, "Output directory")->required();
 
+  int sweep_jobs = 0;
+  auto* sweep = app.add_subcommand("sweep", "Run a parameter sweep (FORMATS.md \"Sweeps\"): DIR/jobs/*, results.csv/.jsonl");
+  sweep->add_option("sweep", in, "SWEEP.json")->required();
+  sweep->add_option("--out", out, "Output directory (rerunning skips the jobs already done)")->required();
+  sweep->add_option("--jobs", sweep_jobs, "Jobs run at once (default 0: every core)");
+
   std::string demo_out = "out/demo";
   auto* demo = app.add_subcommand("demo", "Run the built-in default job (the README's main command)");
   demo->add_option("--out", demo_out, "Output directory (default out/demo)");
@@ -77,6 +84,7 @@ int main(int argc, char** argv) {
     if (*plate) return cmd_plate(aspect, degree, method);
     if (*blend) return cmd_blend(in, out);
     if (*demo) return cmd_demo(demo_out);
+    if (*sweep) return cmd_sweep(in, out, sweep_jobs);
   } catch (...) {
     // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.
     const bpde::ErrorExit x = bpde::error_exit(std::current_exception());
