@@ -13,6 +13,9 @@ PACKAGES=(
   libbenchmark-dev       # Google Benchmark
   nlohmann-json3-dev     # JSON
   libcli11-dev           # command line
+  python3-dev pybind11-dev python3-pybind11  # the Python module bezierpde (build/python)
+  python3-numpy python3-pytest               # its arrays and its tests
+  python3-distributed python3-pandas         # bezierpde.sweep on Dask; its table as a DataFrame
 )
 
 missing=()
