@@ -21,7 +21,7 @@ for f in "${files[@]}"; do
     if [ "${1:-}" = "--check" ]; then
       echo "old include style: $f"
     else
-      sed -E -i "s#${PATTERN}#\\1bezierpde/\\2/#" "$f"
+      sed -E -i "s@${PATTERN}@\\1bezierpde/\\2/@" "$f"
       echo "rewrote: $f"
     fi
   fi
