@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   blend->add_option("--out", out, "Output directory")->required();
 
   int sweep_jobs = 0;
-  auto* sweep = app.add_subcommand("sweep", "Run a parameter sweep (FORMATS.md \"Sweeps\"): DIR/jobs/*, results.csv/.jsonl");
+  auto* sweep = app.add_subcommand("sweep", "Run a parameter sweep (FORMATS.md \"Sweeps\"): DIR/jobs/*, results.csv");
   sweep->add_option("sweep", in, "SWEEP.json")->required();
   sweep->add_option("--out", out, "Output directory (rerunning skips the jobs already done)")->required();
   sweep->add_option("--jobs", sweep_jobs, "Jobs run at once (default 0: every core)");

@@ -61,8 +61,9 @@ int cmd_sweep(const std::string& sweep_path, const std::string& out_dir, int job
   int failed = 0;
   for (const Json& r : rows)
     if (r.value("exit_code", 3) != 0) ++failed;
-  std::fprintf(stdout, "%d jobs, %d converged, %d not: %s/results.csv, %s/results.jsonl\n", static_cast<int>(rows.size()),
-               static_cast<int>(rows.size()) - failed, failed, out_dir.c_str(), out_dir.c_str());
+  std::fprintf(stdout, "%d jobs, %d converged, %d not: %s/results.csv, %s/results.jsonl\n",
+               static_cast<int>(rows.size()), static_cast<int>(rows.size()) - failed, failed, out_dir.c_str(),
+               out_dir.c_str());
   return failed ? 1 : 0;
 }
 

@@ -86,13 +86,15 @@ int builder_degree(const Json& degree, bool tensor) {
   int n = 0;
   if (tensor && degree.is_array()) {
     const std::vector<double> d = json_read::numbers(degree, where, 2);
-    if (d[0] != d[1]) throw DegreeError(where + ": the sphere-square boundary is built with n = m, got [" +
-                                        std::to_string(d[0]) + ", " + std::to_string(d[1]) + "]");
+    if (d[0] != d[1])
+      throw DegreeError(where + ": the sphere-square boundary is built with n = m, got [" + std::to_string(d[0]) +
+                        ", " + std::to_string(d[1]) + "]");
     n = json_read::integer(degree[0], where + "[0]");
   } else {
     n = json_read::integer(degree, where);
   }
-  if (n < 1 || n > 64) throw DegreeError(where + ": a reference boundary is built at degree 1..64, got " + std::to_string(n));
+  if (n < 1 || n > 64)
+    throw DegreeError(where + ": a reference boundary is built at degree 1..64, got " + std::to_string(n));
   return n;
 }
 
@@ -175,9 +177,13 @@ std::string csv_cell(const Json& v) {
 
 }  // namespace
 
-const std::vector<std::string> kSweepResultColumns = {
-    "status",  "exit_code", "converged", "energy", "residual", "H", "H_min", "H_max", "H_mean", "check_self_intersections",
-    "check_closed", "check_volume", "seconds", "error"};
+const std::vector<std::string> kSweepResultColumns = {"status",       "exit_code",
+                                                      "converged",    "energy",
+                                                      "residual",     "H",
+                                                      "H_min",        "H_max",
+                                                      "H_mean",       "check_self_intersections",
+                                                      "check_closed", "check_volume",
+                                                      "seconds",      "error"};
 
 SweepSpec sweep_from_json(const Json& j, const std::string& source, const std::string& base_dir) {
   json_read::require_object(j, source);
@@ -399,7 +405,8 @@ std::vector<Json> run_sweep(const SweepSpec& spec, const std::string& out_dir, c
       progress.row = nullptr;
     }
   };
-  unsigned n = options.jobs > 0 ? static_cast<unsigned>(options.jobs) : std::max(1u, std::thread::hardware_concurrency());
+  unsigned n =
+      options.jobs > 0 ? static_cast<unsigned>(options.jobs) : std::max(1u, std::thread::hardware_concurrency());
   n = std::min<unsigned>(n, static_cast<unsigned>(std::max<size_t>(1, todo.size())));
   std::vector<std::thread> pool;
   for (unsigned i = 1; i < n; ++i) pool.emplace_back(worker);

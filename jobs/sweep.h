@@ -23,8 +23,8 @@
 namespace bpde {
 
 struct SweepAxis {
-  std::string path;         ///< dotted path into the job, e.g. "problem.H"
-  std::vector<Json> values; ///< non-empty
+  std::string path;          ///< dotted path into the job, e.g. "problem.H"
+  std::vector<Json> values;  ///< non-empty
 };
 
 struct SweepSpec {
@@ -86,10 +86,10 @@ Json run_sweep_job(const SweepJob& job, const std::string& dir);
 Json finished_sweep_row(const SweepJob& job, const std::string& dir);
 
 struct SweepProgress {
-  int done = 0;     ///< finished jobs, including the ones resumed
+  int done = 0;  ///< finished jobs, including the ones resumed
   int total = 0;
-  int resumed = 0;  ///< jobs skipped because they were already done
-  double seconds = 0.0;  ///< wall time since the sweep started
+  int resumed = 0;            ///< jobs skipped because they were already done
+  double seconds = 0.0;       ///< wall time since the sweep started
   const Json* row = nullptr;  ///< the row just finished (null for the initial call)
 };
 

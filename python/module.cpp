@@ -209,18 +209,22 @@ PYBIND11_MODULE(_core, m) {
 
   // Exceptions (one hierarchy, mirroring core/errors.h).
   static PyObject* Error = new_exception(m, "Error", PyExc_Exception, "Every error of bezierpde.");
-  static PyObject* InvalidInput = new_exception(m, "InvalidInput", py::make_tuple(py::handle(Error), py::handle(PyExc_ValueError)),
-                                                "Bad input (the command's exit 2).");
-  static PyObject* ParseError = new_exception(m, "ParseError", InvalidInput, "Malformed JSON or a field of the wrong type.");
+  static PyObject* InvalidInput =
+      new_exception(m, "InvalidInput", py::make_tuple(py::handle(Error), py::handle(PyExc_ValueError)),
+                    "Bad input (the command's exit 2).");
+  static PyObject* ParseError =
+      new_exception(m, "ParseError", InvalidInput, "Malformed JSON or a field of the wrong type.");
   static PyObject* FileError = new_exception(m, "FileError", InvalidInput, "A file that cannot be read or written.");
   static PyObject* DegreeError = new_exception(m, "DegreeError", InvalidInput, "A degree the problem does not take.");
-  static PyObject* SizeError = new_exception(m, "SizeError", InvalidInput, "A wrong number of points or an input too large.");
+  static PyObject* SizeError =
+      new_exception(m, "SizeError", InvalidInput, "A wrong number of points or an input too large.");
   static PyObject* NonFiniteError = new_exception(m, "NonFiniteError", InvalidInput, "A NaN or infinite number.");
   static PyObject* ParameterError = new_exception(m, "ParameterError", InvalidInput, "A parameter out of its range.");
   static PyObject* UnsupportedProblem =
       new_exception(m, "UnsupportedProblem", InvalidInput, "A combination of net, data and problem no solver takes.");
-  static PyObject* InternalError = new_exception(m, "InternalError", py::make_tuple(py::handle(Error), py::handle(PyExc_RuntimeError)),
-                                                 "A broken invariant (the command's exit 3), never bad input.");
+  static PyObject* InternalError =
+      new_exception(m, "InternalError", py::make_tuple(py::handle(Error), py::handle(PyExc_RuntimeError)),
+                    "A broken invariant (the command's exit 3), never bad input.");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -260,7 +264,8 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly(
           "text", [](bpde::Status s) { return std::string(bpde::to_string(s)); },
           "The FORMATS.md name: \"converged\", \"fold\", ...");
-  py::class_<bpde::Summary>(m, "Summary", "How a solve ended: status, converged, iterations, residual, message, seconds.")
+  py::class_<bpde::Summary>(m, "Summary",
+                            "How a solve ended: status, converged, iterations, residual, message, seconds.")
       .def(py::init<>())
       .def_readonly("status", &bpde::Summary::status)
       .def_readonly("converged", &bpde::Summary::converged)
@@ -269,8 +274,9 @@ PYBIND11_MODULE(_core, m) {
       .def_readonly("message", &bpde::Summary::message)
       .def_readonly("seconds", &bpde::Summary::seconds)
       .def("__repr__", [](const bpde::Summary& s) {
-        return "Summary(status=" + std::string(bpde::to_string(s.status)) + ", iterations=" +
-               std::to_string(s.iterations) + ", residual=" + py::repr(py::float_(s.residual)).cast<std::string>() +
+        return "Summary(status=" + std::string(bpde::to_string(s.status)) +
+               ", iterations=" + std::to_string(s.iterations) +
+               ", residual=" + py::repr(py::float_(s.residual)).cast<std::string>() +
                (s.message.empty() ? "" : ", message=" + py::repr(py::str(s.message)).cast<std::string>()) + ")";
       });
 
@@ -523,8 +529,8 @@ PYBIND11_MODULE(_core, m) {
       .def_readonly("net", &bpde::ClampedPlateResult::net)
       .def_readonly("load", &bpde::ClampedPlateResult::load)
       .def_readonly("summary", &bpde::ClampedPlateResult::summary);
-  m.def("solve_clamped_plate", &bpde::solve_clamped_plate, py::arg("options"),
-        py::call_guard<py::gil_scoped_release>(), "Clamped plate under uniform load (C1 methods §6).");
+  m.def("solve_clamped_plate", &bpde::solve_clamped_plate, py::arg("options"), py::call_guard<py::gil_scoped_release>(),
+        "Clamped plate under uniform load (C1 methods §6).");
 
   // Sweeps: the one expansion (jobs/sweep.h), and one job run as the command runs it.
   m.def(

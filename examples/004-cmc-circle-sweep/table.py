@@ -21,8 +21,9 @@ if __name__ == "__main__":
     if "--dask" in sys.argv:
         from dask.distributed import Client, LocalCluster
 
-        with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster, Client(cluster) as client:
-            table = bezierpde.sweep(spec, client=client, out=out_dir)
+        with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster:
+            with Client(cluster) as client:
+                table = bezierpde.sweep(spec, client=client, out=out_dir)
     else:
         table = bezierpde.sweep(spec, out=out_dir, jobs=2)
     table = table.rename(columns={"net.degree": "degree", "H": "H reached"})

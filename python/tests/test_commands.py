@@ -76,7 +76,9 @@ def test_sample_energy_check_equal_the_command(examples, tmp_path, index):
     assert bits(bezierpde.check(bezierpde.net_from_dict(job["net"]), samples=15)) == bits(json.loads(out))
 
 
-@pytest.mark.parametrize("aspect,degree,method", [(1.0, 8, "admissible-load"), (2.0, 10, "ritz"), (0.5, 6, "admissible-load")])
+@pytest.mark.parametrize(
+    "aspect,degree,method", [(1.0, 8, "admissible-load"), (2.0, 10, "ritz"), (0.5, 6, "admissible-load")]
+)
 def test_plate_equals_the_command(aspect, degree, method):
     code, out, err = run_bpde("plate", "--aspect", aspect, "--degree", degree, "--method", method)
     assert code == 0, err
@@ -110,7 +112,8 @@ def test_solver_entry_points_with_options_and_summary(examples):
     assert s_e.converged and s_l.converged and s_e.status.text == "converged"
     assert np.max(np.abs(net_e.points - net_l.points)) < 1e-9
     net_cli, _ = bezierpde.solve(job)
-    assert np.array_equal(bezierpde.points(net_cli), (net_e if job["problem"].get("method") == "explicit" else net_l).points)
+    by_method = net_e if job["problem"].get("method") == "explicit" else net_l
+    assert np.array_equal(bezierpde.points(net_cli), by_method.points)
     # Tetraharmonic and the clamped plate.
     path, job, _ = next(e for e in examples if e[0].endswith("arch-fig7-tetraharmonic.json"))
     net_t, s_t = bezierpde.solve_tetraharmonic(bezierpde.net_from_dict(job["net"]))

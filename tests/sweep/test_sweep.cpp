@@ -207,8 +207,13 @@ TEST(SweepRun, RowsThreadsResume) {
 TEST(SweepCsv, QuotingAndNumbers) {
   bpde::SweepSpec spec;
   spec.axes.push_back({"net.degree", {Json::parse("[3, 4]")}});
-  Json row = {{"index", 0}, {"job", "job-0000"}, {"net.degree", Json::parse("[3,4]")}, {"energy", 0.1},
-              {"error", "a, \"quoted\" message"}, {"converged", false}, {"residual", nullptr}};
+  Json row = {{"index", 0},
+              {"job", "job-0000"},
+              {"net.degree", Json::parse("[3,4]")},
+              {"energy", 0.1},
+              {"error", "a, \"quoted\" message"},
+              {"converged", false},
+              {"residual", nullptr}};
   const std::string csv = bpde::sweep_csv(spec, {row});
   const std::string line = csv.substr(csv.find('\n') + 1);
   EXPECT_EQ(line.rfind("0,job-0000,\"[3,4]\",,,false,0.10000000000000001,,", 0), 0u) << line;
