@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "app/progress_line.h"
 #include "app/version.h"
+#include "app/sweep_command.h"
 #include "jobs/exit_status.h"
 #include "jobs/job_progress.h"
 
@@ -80,6 +81,12 @@ int main(int argc, char** argv) {
   exp->add_option("net", in, "NET.json")->required();
   exp->add_option("--step", step_path, "FILE.step")->required();
 
+  int sweep_jobs = 0;
+  auto* sweep = app.add_subcommand("sweep", "Run a parameter sweep (FORMATS.md \"Sweeps\"): DIR/jobs/*, results.csv");
+  sweep->add_option("sweep", in, "SWEEP.json")->required();
+  sweep->add_option("--out", out, "Output directory (rerunning skips the jobs already done)")->required();
+  sweep->add_option("--jobs", sweep_jobs, "Jobs run at once (default 0: every core)");
+
   std::string demo_out = "out/demo";
   auto* demo = app.add_subcommand("demo", "Run the built-in default job (the README's main command)");
   demo->add_option("--out", demo_out, "Output directory (default out/demo)");
@@ -118,6 +125,7 @@ int main(int argc, char** argv) {
     if (*view) return cmd_view(in, samples);
     if (*exp) return cmd_export(in, step_path);
     if (*demo) return cmd_demo(demo_out);
+    if (*sweep) return cmd_sweep(in, out, sweep_jobs);
   } catch (...) {
     // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.
     const bpde::ErrorExit x = bpde::error_exit(std::current_exception());

@@ -21,6 +21,9 @@ PACKAGES=(
   zlib1g-dev             # the browser test decodes Chromium's PNG screenshot
   libsuitesparse-dev     # CHOLMOD: sparse Cholesky of the blend system
   clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for the fuzz targets (fuzz/, scripts/fuzz.sh)
+  python3-dev pybind11-dev python3-pybind11  # the Python module bezierpde (build/python)
+  python3-numpy python3-pytest               # its arrays and its tests
+  python3-distributed python3-pandas         # bezierpde.sweep on Dask; its table as a DataFrame
 )
 
 missing=()

@@ -1,0 +1,445 @@
+#include "bezierpde/jobs/sweep.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/jobs/exit_status.h"
+#include "bezierpde/jobs/run_job.h"
+
+namespace bpde {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split_path(const std::string& path) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : path) {
+    if (c == '.') {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+bool all_digits(const std::string& s) {
+  if (s.empty()) return false;
+  for (char c : s)
+    if (c < '0' || c > '9') return false;
+  return true;
+}
+
+// Set `path` (dotted, see sweep.h) in `j` to `v`; ParameterError naming `where` if a segment
+// indexes something that is neither an object nor an array holding that index.
+void set_path(Json& j, const std::string& path, const Json& v, const std::string& where) {
+  Json* cur = &j;
+  const std::vector<std::string> seg = split_path(path);
+  for (size_t k = 0; k < seg.size(); ++k) {
+    const std::string& s = seg[k];
+    Json* next = nullptr;
+    if (cur->is_array() && all_digits(s)) {
+      const size_t i = s.size() > 6 ? cur->size() : std::stoul(s);
+      if (i >= cur->size())
+        throw ParameterError(where + ": \"" + path + "\": index " + s + " out of range (the array has " +
+                             std::to_string(cur->size()) + " elements)");
+      next = &(*cur)[i];
+    } else if (cur->is_object() || cur->is_null()) {
+      next = &(*cur)[s];
+    } else {
+      throw ParameterError(where + ": \"" + path + "\": \"" + s + "\" indexes a " + cur->type_name());
+    }
+    cur = next;
+  }
+  *cur = v;
+}
+
+const Json* get_path(const Json& j, const std::string& path) {
+  const Json* cur = &j;
+  for (const std::string& s : split_path(path)) {
+    if (cur->is_object() && cur->contains(s)) {
+      cur = &(*cur)[s];
+    } else if (cur->is_array() && all_digits(s) && s.size() <= 6 && std::stoul(s) < cur->size()) {
+      cur = &(*cur)[std::stoul(s)];
+    } else {
+      return nullptr;
+    }
+  }
+  return cur;
+}
+
+int builder_degree(const Json& degree, bool tensor) {
+  const std::string where = "net.degree";
+  int n = 0;
+  if (tensor && degree.is_array()) {
+    const std::vector<double> d = json_read::numbers(degree, where, 2);
+    if (d[0] != d[1])
+      throw DegreeError(where + ": the sphere-square boundary is built with n = m, got [" + std::to_string(d[0]) +
+                        ", " + std::to_string(d[1]) + "]");
+    n = json_read::integer(degree[0], where + "[0]");
+  } else {
+    n = json_read::integer(degree, where);
+  }
+  if (n < 1 || n > 64)
+    throw DegreeError(where + ": a reference boundary is built at degree 1..64, got " + std::to_string(n));
+  return n;
+}
+
+struct BuilderRegistry {
+  std::mutex mutex;
+  std::map<std::string, SweepBoundaryBuilder> builders;
+  BuilderRegistry() {
+    builders["circle-three-arcs"] = [](const Json& d) {
+      return net_to_json(circle_three_arcs(builder_degree(d, false)));
+    };
+    builders["sphere-triangle"] = [](const Json& d) {
+      return net_to_json(triangular_boundary(builder_degree(d, false), sphere_triangle));
+    };
+    builders["sphere-square"] = [](const Json& d) {
+      return net_to_json(tensor_boundary(builder_degree(d, true), sphere_square));
+    };
+  }
+};
+
+BuilderRegistry& registry() {
+  static BuilderRegistry r;
+  return r;
+}
+
+std::string job_id(int index, size_t total) {
+  int width = 4;
+  for (size_t t = 10000; t < total; t *= 10) ++width;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "job-%0*d", width, index);
+  return buf;
+}
+
+Json field_or_null(const Json& j, const char* key) { return j.is_object() && j.contains(key) ? j[key] : Json(nullptr); }
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+Json base_row(const SweepJob& job) {
+  Json row = Json::object();
+  row["index"] = job.index;
+  row["job"] = job.id;
+  for (auto it = job.values.begin(); it != job.values.end(); ++it) row[it.key()] = it.value();
+  for (const std::string& c : kSweepResultColumns) row[c] = nullptr;
+  return row;
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw FileError(tmp + ": cannot write");
+    f << text;
+    if (!f) throw FileError(tmp + ": cannot write");
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw FileError(path + ": cannot write (" + ec.message() + ")");
+}
+
+std::string csv_cell(const Json& v) {
+  if (v.is_null()) return "";
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_number_integer()) return std::to_string(v.get<long long>());
+  if (v.is_number_unsigned()) return std::to_string(v.get<unsigned long long>());
+  if (v.is_number_float()) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v.get<double>());
+    return buf;
+  }
+  const std::string s = v.is_string() ? v.get<std::string>() : v.dump();
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"') q += '"';
+    q += c;
+  }
+  return q + "\"";
+}
+
+}  // namespace
+
+const std::vector<std::string> kSweepResultColumns = {"status",       "exit_code",
+                                                      "converged",    "energy",
+                                                      "residual",     "H",
+                                                      "H_min",        "H_max",
+                                                      "H_mean",       "check_self_intersections",
+                                                      "check_closed", "check_volume",
+                                                      "seconds",      "error"};
+
+SweepSpec sweep_from_json(const Json& j, const std::string& source, const std::string& base_dir) {
+  json_read::require_object(j, source);
+  json_read::check_keys(j, source, {"base", "axes", "boundary"});
+  SweepSpec spec;
+  const Json& base = json_read::field(j, source, "base");
+  if (base.is_string()) {
+    const fs::path p = fs::path(base_dir) / base.get<std::string>();
+    spec.base = read_json_file(p.string());
+  } else {
+    spec.base = base;
+  }
+  json_read::require_object(spec.base, source + ".base");
+  if (j.contains("boundary")) {
+    spec.boundary = json_read::string(j["boundary"], source + ".boundary");
+    const std::vector<std::string> names = sweep_boundary_names();
+    if (std::find(names.begin(), names.end(), spec.boundary) == names.end()) {
+      std::string list;
+      for (const std::string& n : names) {
+        if (!list.empty()) list += ", ";
+        list += n;
+      }
+      throw ParameterError(source + ".boundary: unknown boundary \"" + spec.boundary + "\" (known: " + list + ")");
+    }
+  }
+  long total = 1;
+  if (j.contains("axes")) {
+    const Json& axes = j["axes"];
+    json_read::require_object(axes, source + ".axes");
+    for (auto it = axes.begin(); it != axes.end(); ++it) {
+      const std::string where = source + ".axes." + it.key();
+      const std::vector<std::string> seg = split_path(it.key());
+      for (const std::string& s : seg)
+        if (s.empty()) throw ParseError(where + ": an axis is a dotted path of non-empty keys");
+      if (!it.value().is_array() || it.value().empty())
+        throw ParseError(where + ": expected a non-empty array of values");
+      SweepAxis axis;
+      axis.path = it.key();
+      for (const Json& v : it.value()) axis.values.push_back(v);
+      total *= static_cast<long>(axis.values.size());
+      if (total > kMaxSweepJobs)
+        throw SizeError(source + ".axes: more than " + std::to_string(kMaxSweepJobs) + " jobs");
+      spec.axes.push_back(std::move(axis));
+    }
+  }
+  return spec;
+}
+
+SweepSpec read_sweep_file(const std::string& path) {
+  const Json j = read_json_file(path);
+  const fs::path dir = fs::path(path).parent_path();
+  return sweep_from_json(j, path, dir.empty() ? "." : dir.string());
+}
+
+std::vector<SweepJob> expand_sweep(const SweepSpec& spec) {
+  size_t total = 1;
+  for (const SweepAxis& a : spec.axes) total *= a.values.size();
+  std::vector<SweepJob> jobs(total);
+  for (size_t k = 0; k < total; ++k) {
+    SweepJob& job = jobs[k];
+    job.index = static_cast<int>(k);
+    job.id = job_id(job.index, total);
+    job.job = spec.base;
+    // Mixed radix, the last axis fastest.
+    size_t rest = k;
+    std::vector<size_t> digit(spec.axes.size());
+    for (size_t a = spec.axes.size(); a-- > 0;) {
+      digit[a] = rest % spec.axes[a].values.size();
+      rest /= spec.axes[a].values.size();
+    }
+    try {
+      for (size_t a = 0; a < spec.axes.size(); ++a) {
+        const Json& v = spec.axes[a].values[digit[a]];
+        job.values[spec.axes[a].path] = v;
+        set_path(job.job, spec.axes[a].path, v, job.id);
+      }
+      if (!spec.boundary.empty()) {
+        const Json* degree = get_path(job.job, "net.degree");
+        if (!degree) throw ParseError(job.id + ": net.degree: required by the boundary \"" + spec.boundary + "\"");
+        job.job["net"] = build_sweep_boundary(spec.boundary, *degree);
+      }
+    } catch (const InvalidInput& e) {
+      job.error = e.what();
+    }
+  }
+  return jobs;
+}
+
+void register_sweep_boundary(const std::string& name, SweepBoundaryBuilder builder) {
+  std::lock_guard<std::mutex> lock(registry().mutex);
+  registry().builders[name] = std::move(builder);
+}
+
+std::vector<std::string> sweep_boundary_names() {
+  std::lock_guard<std::mutex> lock(registry().mutex);
+  std::vector<std::string> names;
+  for (const auto& [name, b] : registry().builders) names.push_back(name);
+  return names;
+}
+
+Json build_sweep_boundary(const std::string& name, const Json& degree) {
+  SweepBoundaryBuilder b;
+  {
+    std::lock_guard<std::mutex> lock(registry().mutex);
+    auto it = registry().builders.find(name);
+    if (it == registry().builders.end()) throw ParameterError("boundary: unknown boundary \"" + name + "\"");
+    b = it->second;
+  }
+  return b(degree);
+}
+
+std::vector<std::string> sweep_columns(const SweepSpec& spec) {
+  std::vector<std::string> c = {"index", "job"};
+  for (const SweepAxis& a : spec.axes) c.push_back(a.path);
+  c.insert(c.end(), kSweepResultColumns.begin(), kSweepResultColumns.end());
+  return c;
+}
+
+Json run_sweep_job(const SweepJob& job, const std::string& dir) {
+  const double t0 = now_seconds();
+  Json row = base_row(job);
+  try {
+    make_output_dir(dir);
+    for (const char* f : {"row.json", "result.json", "surface.obj", "surface.ply", "net.obj"}) {
+      std::error_code ec;
+      fs::remove(fs::path(dir) / f, ec);
+    }
+    write_json_file(dir + "/job.json", job.job);
+    if (!job.error.empty()) throw ParameterError(job.error);
+    const Job parsed = job_from_json(job.job, job.id);
+    const SolveOutcome out = run_job(parsed);
+    const WrittenResult written = write_job_result(dir, parsed, out);
+    const Json& rep = written.result["report"];
+    row["status"] = to_string(out.status);
+    row["exit_code"] = written.exit_code;
+    row["converged"] = out.converged;
+    row["energy"] = field_or_null(rep, "energy");
+    row["residual"] = rep.contains("residual") ? rep["residual"] : field_or_null(rep, "pde_residual");
+    row["H"] = field_or_null(rep, "H");
+    const Json mc = field_or_null(rep, "mean_curvature");
+    row["H_min"] = field_or_null(mc, "min");
+    row["H_max"] = field_or_null(mc, "max");
+    row["H_mean"] = field_or_null(mc, "mean");
+    const Json ck = field_or_null(rep, "check");
+    row["check_self_intersections"] = field_or_null(ck, "self_intersections");
+    row["check_closed"] = field_or_null(ck, "closed");
+    row["check_volume"] = field_or_null(ck, "volume");
+    if (!out.converged) row["error"] = field_or_null(rep, "message");
+  } catch (...) {
+    const ErrorExit e = error_exit(std::current_exception());
+    row["status"] = e.code == 2 ? "invalid-input" : "internal-error";
+    row["exit_code"] = e.code;
+    row["converged"] = false;
+    std::string line = e.line;
+    while (!line.empty() && line.back() == '\n') line.pop_back();
+    row["error"] = line;
+  }
+  row["seconds"] = now_seconds() - t0;
+  try {
+    write_text_atomically(dir + "/row.json", row.dump() + "\n");
+  } catch (...) {
+    // The row is still returned: a folder that cannot take row.json only loses the resume.
+  }
+  return row;
+}
+
+Json finished_sweep_row(const SweepJob& job, const std::string& dir) {
+  try {
+    if (!fs::exists(dir + "/row.json") || !fs::exists(dir + "/job.json")) return nullptr;
+    if (read_json_file(dir + "/job.json") != job.job) return nullptr;
+    Json row = read_json_file(dir + "/row.json");
+    if (!row.is_object() || !row.contains("exit_code") || !row["exit_code"].is_number_integer()) return nullptr;
+    const int code = row["exit_code"].get<int>();
+    if (code < 0 || code > 2) return nullptr;
+    if (row.value("job", std::string()) != job.id) return nullptr;
+    return row;
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+std::vector<Json> run_sweep(const SweepSpec& spec, const std::string& out_dir, const SweepRunOptions& options) {
+  if (options.jobs < 0) throw ParameterError("jobs: expected >= 0, got " + std::to_string(options.jobs));
+  const std::vector<SweepJob> jobs = expand_sweep(spec);
+  make_output_dir(out_dir + "/jobs");
+  const double t0 = now_seconds();
+  std::vector<Json> rows(jobs.size());
+  std::vector<size_t> todo;
+  int resumed = 0;
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    Json row = options.resume ? finished_sweep_row(jobs[k], out_dir + "/jobs/" + jobs[k].id) : Json(nullptr);
+    if (row.is_null()) {
+      todo.push_back(k);
+    } else {
+      rows[k] = std::move(row);
+      ++resumed;
+    }
+  }
+  std::mutex mutex;
+  SweepProgress progress;
+  progress.total = static_cast<int>(jobs.size());
+  progress.done = resumed;
+  progress.resumed = resumed;
+  if (options.on_progress) options.on_progress(progress);
+
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (;;) {
+      const size_t t = next.fetch_add(1);
+      if (t >= todo.size()) return;
+      const size_t k = todo[t];
+      Json row = run_sweep_job(jobs[k], out_dir + "/jobs/" + jobs[k].id);
+      std::lock_guard<std::mutex> lock(mutex);
+      rows[k] = std::move(row);
+      ++progress.done;
+      progress.seconds = now_seconds() - t0;
+      progress.row = &rows[k];
+      if (options.on_progress) options.on_progress(progress);
+      progress.row = nullptr;
+    }
+  };
+  unsigned n =
+      options.jobs > 0 ? static_cast<unsigned>(options.jobs) : std::max(1u, std::thread::hardware_concurrency());
+  n = std::min<unsigned>(n, static_cast<unsigned>(std::max<size_t>(1, todo.size())));
+  std::vector<std::thread> pool;
+  for (unsigned i = 1; i < n; ++i) pool.emplace_back(worker);
+  worker();
+  for (std::thread& th : pool) th.join();
+  write_sweep_tables(out_dir, spec, rows);
+  return rows;
+}
+
+std::string sweep_csv(const SweepSpec& spec, const std::vector<Json>& rows) {
+  const std::vector<std::string> cols = sweep_columns(spec);
+  std::string out;
+  for (size_t c = 0; c < cols.size(); ++c) {
+    if (c) out += ',';
+    out += csv_cell(Json(cols[c]));
+  }
+  out += "\n";
+  for (const Json& row : rows) {
+    for (size_t c = 0; c < cols.size(); ++c) {
+      if (c) out += ',';
+      out += csv_cell(field_or_null(row, cols[c].c_str()));
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+void write_sweep_tables(const std::string& out_dir, const SweepSpec& spec, const std::vector<Json>& rows) {
+  make_output_dir(out_dir);
+  write_text_atomically(out_dir + "/results.csv", sweep_csv(spec, rows));
+  std::string jsonl;
+  for (const Json& row : rows) jsonl += row.dump() + "\n";
+  write_text_atomically(out_dir + "/results.jsonl", jsonl);
+}
+
+}  // namespace bpde

@@ -1,0 +1,130 @@
+"""The exception hierarchy (core/errors.h mirrored), array shapes and views, the GIL."""
+
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import bezierpde
+
+
+def circle_job(degree=4, H=-1.0):
+    spec = {"base": {"net": {"type": "triangular", "degree": degree}, "fixed": "boundary",
+                     "problem": {"kind": "cmc", "H": H}, "samples": 10},
+            "boundary": "circle-three-arcs"}
+    jobs, _ = bezierpde.expand_sweep(spec)
+    return jobs[0]["job"]
+
+
+def test_hierarchy():
+    for name in ("ParseError", "FileError", "DegreeError", "SizeError", "NonFiniteError", "ParameterError",
+                 "UnsupportedProblem"):
+        cls = getattr(bezierpde, name)
+        assert issubclass(cls, bezierpde.InvalidInput) and cls.__module__ == "bezierpde"
+    assert issubclass(bezierpde.InvalidInput, ValueError) and issubclass(bezierpde.InvalidInput, bezierpde.Error)
+    assert issubclass(bezierpde.InternalError, RuntimeError) and issubclass(bezierpde.InternalError, bezierpde.Error)
+    assert not issubclass(bezierpde.InternalError, ValueError)
+
+
+@pytest.mark.parametrize(
+    "mutate,cls,words",
+    [
+        (lambda j: j.update(net=3), bezierpde.ParseError, "job.net"),
+        (lambda j: j["net"].update(degree=1), bezierpde.SizeError, "points"),
+        (lambda j: j["problem"].update(H=float("nan")), bezierpde.NonFiniteError, "finite"),
+        (lambda j: j.update(problem={"kind": "tetraharmonic"}), bezierpde.UnsupportedProblem, "tensor net"),
+        (lambda j: j["problem"].update(solver="simplex"), bezierpde.ParseError, "simplex"),
+        (lambda j: j.update(samples=0), bezierpde.InvalidInput, "samples"),
+        (lambda j: j.update(colour="red"), bezierpde.ParseError, "colour"),
+    ],
+)
+def test_bad_jobs_raise_the_typed_exception(mutate, cls, words):
+    job = circle_job()
+    mutate(job)
+    with pytest.raises(cls) as e:
+        bezierpde.solve(job)
+    assert words in str(e.value)
+
+
+def test_other_bad_input():
+    with pytest.raises(bezierpde.DegreeError):
+        bezierpde.plate(1.0, 2, "admissible-load")
+    with pytest.raises(bezierpde.ParseError):
+        bezierpde.plate(1.0, 8, "magic")
+    with pytest.raises(bezierpde.ParameterError):
+        bezierpde.plate(1000.0, 8, "ritz")
+    with pytest.raises(bezierpde.FileError):
+        bezierpde.solve(circle_job(), out="/proc/no/such/dir")
+    with pytest.raises(bezierpde.ParameterError):
+        bezierpde.sample(circle_job()["net"], samples=0)
+    with pytest.raises(bezierpde.InvalidInput):
+        bezierpde.energy(circle_job()["net"], "no-such-energy")
+    with pytest.raises(bezierpde.ParseError):
+        bezierpde.solve({"net": {1: 2}})
+    with pytest.raises(bezierpde.SizeError):
+        deep = []
+        for _ in range(300):
+            deep = [deep]
+        bezierpde.solve({"net": deep})
+    with pytest.raises(bezierpde.SizeError):
+        bezierpde.TriangularNet(4).points = np.zeros((3, 3))
+    with pytest.raises(bezierpde.InvalidInput):
+        bezierpde.sweep({"base": circle_job(), "axes": {"problem.H": []}})
+
+
+def test_arrays_shapes_and_views():
+    job = circle_job(degree=5)
+    net, report = bezierpde.solve(job)
+    V, F, H = bezierpde.sample(net, samples=10)
+    assert V.shape == (66, 3) and V.dtype == np.float64
+    assert F.shape == (100, 3) and F.dtype == np.int32 and F.min() == 0 and F.max() == 65
+    assert H.shape == (66,) and H.dtype == np.float64
+    # the arrays own the C++ buffers (no copy was made, none is shared)
+    assert not V.flags["OWNDATA"] and V.base is not None
+    tensor = bezierpde.TensorNet(2, 3)
+    assert tensor.points.shape == (12, 3)
+    # points is a view: writing through it changes the net
+    tri = bezierpde.net_from_dict(net)
+    assert isinstance(tri, bezierpde.TriangularNet) and tri.points.shape == (21, 3)
+    P = tri.points
+    P[0, 2] = 0.5
+    assert tri.points[0, 2] == 0.5 and tri.to_dict()["points"][0][2] == 0.5
+    tri.points = np.asarray(bezierpde.points(net))
+    assert np.array_equal(tri.points, bezierpde.points(net))
+    assert np.allclose(tri.evaluate(1.0, 0.0), tri.points[0])
+    # numpy input: a C-ordered array and a list give the same net
+    a = bezierpde.TriangularNet(5, np.ascontiguousarray(bezierpde.points(net)))
+    assert np.array_equal(a.points, tri.points)
+    assert bezierpde.check_mesh(V, F)["self_intersections"] == 0
+
+
+def test_the_gil_is_released_during_solves():
+    # While one solve runs in C++ on a thread, another Python thread keeps running: it records
+    # time stamps, and some fall inside the solve (none could if the solve held the GIL).
+    job = circle_job(degree=16, H=-0.5)
+    ticks, span = [], []
+    stop = threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            stop.wait(0.001)
+
+    def solver():
+        t0 = time.perf_counter()
+        span.append(bezierpde.solve(job)[1]["converged"])
+        span.extend([t0, time.perf_counter()])
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    s = threading.Thread(target=solver)
+    s.start()
+    s.join()
+    stop.set()
+    t.join()
+    converged, t0, t1 = span
+    assert converged
+    margin = 0.1 * (t1 - t0)
+    inside = [x for x in ticks if t0 + margin < x < t1 - margin]
+    assert len(inside) >= 3, (len(inside), t1 - t0)
