@@ -7,6 +7,10 @@
 namespace bpde {
 namespace {
 
+// Larger rules cost more than they gain: a change still above the tolerance at 64 points per
+// direction means a nearly singular corner.
+constexpr int kMaxAreaPoints = 64;
+
 std::shared_ptr<const AreaForm> form_for(bool triangular, int n, int m, int q) {
   return triangular ? AreaForm::cached_triangular(n, q) : AreaForm::cached_tensor(n, m, q);
 }
@@ -33,15 +37,19 @@ AreaRule choose_area_rule(bool triangular, int n, int m, const Eigen::MatrixX3d&
                           double tolerance, int start_q) {
   const int deg = std::max(n, m);
   int q = start_q > 0 ? start_q : (deg + 1) / 2 + 3;
-  std::shared_ptr<const AreaForm> cur = form_for(triangular, n, m, std::min(q, 200));
+  std::shared_ptr<const AreaForm> cur = form_for(triangular, n, m, std::min(q, kMaxAreaPoints));
   AreaRule r;
   while (true) {
-    const int qn = std::min(200, q + (q + 2) / 3);
+    const int qn = std::min(kMaxAreaPoints, q + (q + 2) / 3);
     std::shared_ptr<const AreaForm> next = form_for(triangular, n, m, qn);
-    r.form = next;
+    r.form = cur;
     r.change = change_between(*cur, *next, P, idx);
     r.ok = r.change <= tolerance;
-    if (r.ok || qn == 200) return r;
+    if (r.ok) return r;
+    if (qn == kMaxAreaPoints) {
+      r.form = next;
+      return r;
+    }
     q = qn;
     cur = next;
   }

@@ -7,13 +7,15 @@
 #include <cmath>
 #include <memory>
 
+#include "solvers/cmc/cmc_area_problem.h"
 #include "solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {
 namespace {
 
+template <class Problem>
 struct SharedEvaluation {
-  CmcProblem* p = nullptr;
+  Problem* p = nullptr;
   double H = 0.0;
   Eigen::VectorXd y, F;
   Eigen::MatrixXd J;
@@ -43,9 +45,10 @@ struct SharedEvaluation {
   }
 };
 
+template <class Problem>
 class PointResidual final : public ceres::CostFunction {
  public:
-  PointResidual(SharedEvaluation* e, int a) : e_(e), a_(a) {
+  PointResidual(SharedEvaluation<Problem>* e, int a) : e_(e), a_(a) {
     set_num_residuals(3);
     for (int b = 0; b < e->p->k(); ++b) mutable_parameter_block_sizes()->push_back(3);
   }
@@ -64,13 +67,14 @@ class PointResidual final : public ceres::CostFunction {
   }
 
  private:
-  SharedEvaluation* e_;
+  SharedEvaluation<Problem>* e_;
   int a_;
 };
 
+template <class Problem>
 class StopAtTolerance final : public ceres::IterationCallback {
  public:
-  StopAtTolerance(CmcProblem* p, const Eigen::VectorXd* buf, double H, double tol)
+  StopAtTolerance(Problem* p, const Eigen::VectorXd* buf, double H, double tol)
       : p_(p), buf_(buf), H_(H), tol_(tol) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
     p_->set(*buf_);
@@ -79,26 +83,27 @@ class StopAtTolerance final : public ceres::IterationCallback {
   }
 
  private:
-  CmcProblem* p_;
+  Problem* p_;
   const Eigen::VectorXd* buf_;
   double H_, tol_;
 };
 
-}  // namespace
-
-CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
-  CorrectorStats st = start_stats(p, H, o);
+template <class Problem>
+CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
+  CorrectorStats st;
+  st.residual = p.residual(H);
+  st.ok = st.residual <= o.tolerance;
   if (st.ok || !std::isfinite(st.residual)) return st;
   const int k = p.k();
   Eigen::VectorXd buf = p.get();
-  SharedEvaluation eval;
+  SharedEvaluation<Problem> eval;
   eval.p = &p;
   eval.H = H;
   ceres::Problem::Options po;
   ceres::Problem problem(po);
   std::vector<double*> blocks(static_cast<size_t>(k));
   for (int b = 0; b < k; ++b) blocks[static_cast<size_t>(b)] = buf.data() + 3 * b;
-  for (int a = 0; a < k; ++a) problem.AddResidualBlock(new PointResidual(&eval, a), nullptr, blocks);
+  for (int a = 0; a < k; ++a) problem.AddResidualBlock(new PointResidual<Problem>(&eval, a), nullptr, blocks);
 
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
@@ -115,7 +120,7 @@ CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
   so.update_state_every_iteration = true;
-  StopAtTolerance cb(&p, &buf, H, o.tolerance);
+  StopAtTolerance<Problem> cb(&p, &buf, H, o.tolerance);
   so.callbacks.push_back(&cb);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
@@ -125,5 +130,10 @@ CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
   return st;
 }
+
+}  // namespace
+
+CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) { return ceres_correct_impl(p, H, o); }
+CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o) { return ceres_correct_impl(p, H, o); }
 
 }  // namespace bpde::cmc_detail
