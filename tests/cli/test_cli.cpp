@@ -13,7 +13,12 @@
 #include <string>
 #include <type_traits>
 
+#include <Eigen/Core>
+#include <cmath>
+
+#include "boundaries/reference_boundaries.h"
 #include "core/errors.h"
+#include "io/json_io.h"
 #include "jobs/exit_status.h"
 #include "jobs/run_job.h"
 #include "tests/cli/cli_run.h"
@@ -359,4 +364,42 @@ TEST(Cli, BSplinePdeTakesBoundaryAdjacentData) {
   const bpde::Json& P = res["net"]["points"];
   ASSERT_EQ(P.size(), z.size());
   for (size_t k = 0; k < z.size(); ++k) EXPECT_NEAR(P[k][2].get<double>(), z[k], 1e-10) << k;
+}
+
+// The area functional as a job (FORMATS.md, problem "cmc" with "functional": "area"): the
+// helicoid piece of tests/cmc/test_cmc_area.cpp at tensor degree 6, H = 0; and the bad input.
+TEST(Cli, CmcAreaJobReportsTheAreaFunctional) {
+  auto helicoid = [](double u, double v) {
+    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
+    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
+  };
+  const std::string net = bpde::net_to_json(bpde::tensor_boundary(6, helicoid)).dump();
+  auto job = [&](const std::string& problem, const std::string& extra = "") {
+    return "{\"net\": " + net + extra + ", \"problem\": " + problem + "}";
+  };
+  const fs::path out = tmpdir() / "area";
+  const CmdResult r =
+      run("solve " + write("area.json", job(R"({"kind": "cmc", "H": 0, "functional": "area"})")).string() +
+          " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const bpde::Json rep = bpde::read_json_file((out / "result.json").string())["report"];
+  EXPECT_EQ(rep["functional"], "area");
+  EXPECT_TRUE(rep["converged"].get<bool>());
+  EXPECT_NEAR(rep["energy"].get<double>(), rep["area"].get<double>(), 1e-14);  // H = 0: A_H = A
+  EXPECT_GT(rep["D"].get<double>(), rep["area"].get<double>());                  // D >= A, not conformal
+  EXPECT_TRUE(rep.contains("volume") && rep.contains("mean_curvature") && rep.contains("residual"));
+  // The Dirichlet default is unchanged: no "area" functional in its report.
+  const CmdResult d = run("solve " + write("dir.json", job(R"({"kind": "cmc", "H": 0})")).string() + " --out " +
+                          (tmpdir() / "dir").string());
+  ASSERT_EQ(d.status, 0) << d.err;
+  EXPECT_EQ(bpde::read_json_file((tmpdir() / "dir" / "result.json").string())["report"]["functional"], "dirichlet");
+  const fs::path none = tmpdir() / "never";
+  auto bad = [&](const std::string& j, const std::string& needle) {
+    expect_bad_input("solve " + write("bad.json", j).string() + " --out " + none.string(), needle);
+    EXPECT_FALSE(fs::exists(none));
+  };
+  bad(job(R"({"kind": "cmc", "H": 0, "functional": "areal"})"), "functional");
+  bad(job(R"({"kind": "cmc", "H": 0, "functional": "area", "solver": "nlopt"})"), "nlopt");
+  bad(job(R"({"kind": "cmc", "H": 0, "functional": "area"})", R"(, "fixed": "u-boundaries")"), "fixed");
+  bad(job(R"({"kind": "cmc", "V": 1, "functional": "area", "solver": "ceres"})"), "newton");
 }
