@@ -27,14 +27,17 @@
 //  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (solvers/cmc/area_functional.h),
 //    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
 //    surface). The start is the D_H critical point at the requested H (the continuation above),
-//    corrected on A_H; when that fails (no D_H branch point, or the correction leaves the branch),
-//    the A_H branch is continued in H itself from the critical point of A at H = 0, which starts at
-//    the Dirichlet extremal.
+//    corrected on A_H through a vanishing Dirichlet regulariser: F_ε = A_H + ε(D - A) for
+//    ε = 1, 1e-1, 1e-3, ... → 0 (each stage by the corrector below; F_1 = D_H). When that fails
+//    (no D_H branch point, or the regulariser cannot be taken below 1e-4), the A_H branch is
+//    continued in H itself from the critical point of A at H = 0, started at the Dirichlet
+//    extremal, with a positive-definiteness test per step (before the fold).
 //  - V mode: minimise A subject to V = V0, continued in V from the critical point of A at H = 0;
 //    the multiplier H (∇A + 2H∇V = 0 on the free points) is reported.
-//  - The corrector (newton) is a regularised Newton method: (∇²A_H + μ C) δ = -∇A_H with C the
-//    Dirichlet Gram over the free points and μ = θ · (relative residual), θ raised ×10 after a step
-//    that does not decrease A_H (and residual) and lowered after good ones. The Hessian of A_H is
+//  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
+//    over the free points and μ = θ · (relative residual); a step is accepted when F falls as
+//    predicted (ratio > 0.1) or ‖∇F‖₂ falls, with up to three chord corrections by the same factor;
+//    θ moves by ×4 / ×10 as in a trust region (solvers/cmc/cmc_area.cpp). The Hessian of A_H is
 //    nearly singular in the tangential directions (reparametrisations keep A_H); μ → 0 with the
 //    residual keeps the convergence quadratic (Levenberg–Marquardt in the sense of Yamashita and
 //    Fukushima) while fixing the tangential part of the step. ceres: Ceres Levenberg–Marquardt on
