@@ -1,10 +1,10 @@
 #include "jobs/run_demo.h"
 
+#include <Eigen/Core>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <numbers>
-#include <Eigen/Core>
 
 #include "boundaries/reference_boundaries.h"
 

@@ -41,7 +41,8 @@ void duffy_rule(const std::vector<Tri>& tris, int q, Eigen::MatrixX2d& uv, Eigen
 }
 
 void check_q(int q) {
-  if (q < 1 || q > 200) throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
+  if (q < 1 || q > 200)
+    throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
 }
 
 // Row-wise cross products of two #nodes x 3 matrices.
@@ -103,8 +104,8 @@ AreaForm AreaForm::triangular(int n, int q) {
 
 AreaForm AreaForm::tensor(int n, int m, int q) {
   if (n < 1 || n > kMaxDegree || m < 1 || m > kMaxDegree)
-    throw DegreeError("AreaForm: tensor degree (" + std::to_string(n) + ", " + std::to_string(m) +
-                      ") is outside 1.." + std::to_string(kMaxDegree));
+    throw DegreeError("AreaForm: tensor degree (" + std::to_string(n) + ", " + std::to_string(m) + ") is outside 1.." +
+                      std::to_string(kMaxDegree));
   check_q(q);
   const Eigen::Vector2d M(0.5, 0.5);
   std::vector<Tri> tris;

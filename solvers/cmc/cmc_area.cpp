@@ -399,8 +399,8 @@ struct AreaSolve {
     while (!control.reached_target()) {
       if (!control.attempt())
         return {control.h(), false, Status::NoConvergence,
-                "A_H continuation stopped at H ≈ " + num(control.h()) + " after max_continuation_steps = " +
-                    std::to_string(o.max_continuation_steps) + " attempts"};
+                "A_H continuation stopped at H ≈ " + num(control.h()) +
+                    " after max_continuation_steps = " + std::to_string(o.max_continuation_steps) + " attempts"};
       const StepController::Step step = control.propose();
       const bool last = step.hn == Ht;
       const Eigen::VectorXd pred = y + tangent * step.s;
@@ -546,8 +546,14 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     dirichlet_solve(base, fixed_idx);
     const Eigen::MatrixX3d extremal = base.P;
     const Eigen::MatrixXd Cff = base.f->gram()(base.free, base.free);
-    AreaSolve<Net> s{data, o, AreaProblem{base, nullptr, kron(Cff, Eigen::Matrix3d::Identity())}, is_triangular(data),
-                     data.n(), is_triangular(data) ? data.n() : static_cast<int>(0), 1.0, res.summary};
+    AreaSolve<Net> s{data,
+                     o,
+                     AreaProblem{base, nullptr, kron(Cff, Eigen::Matrix3d::Identity())},
+                     is_triangular(data),
+                     data.n(),
+                     is_triangular(data) ? data.n() : static_cast<int>(0),
+                     1.0,
+                     res.summary};
     if constexpr (std::is_same_v<Net, TensorNet>) s.m = data.m();
     if constexpr (std::is_same_v<Net, TriangularNet>) s.m = data.n();
     AreaOutcome out;
@@ -562,7 +568,8 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       std::string note;
       if (s.from_dirichlet(o.H, note)) {
         out = {o.H, true, Status::Converged,
-               "the D_H critical point at H = " + num(o.H) + " corrected on A_H" + (note.empty() ? "" : " (" + note + ")")};
+               "the D_H critical point at H = " + num(o.H) + " corrected on A_H" +
+                   (note.empty() ? "" : " (" + note + ")")};
       } else {
         out = s.continuation(extremal, fixed_idx, res.continuation_steps);
         if (out.ok) out.message += " (" + note + ")";
@@ -582,8 +589,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
                        " points per direction (a nearly singular parametrisation at a corner)"};
           break;
         }
-        const CorrectorStats st =
-            o.V ? s.bordered_correct(*o.V, out.H) : s.correct(out.H);
+        const CorrectorStats st = o.V ? s.bordered_correct(*o.V, out.H) : s.correct(out.H);
         if (!st.ok) {
           out = {out.H, false, Status::NumericalLimit,
                  "the correction with the refined quadrature rule (q = " +
@@ -610,8 +616,8 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     const Regularity reg = regularity(net, res.A);
     if (out.ok && !(res.summary.residual <= o.tolerance)) {
       out = {out.H, false, Status::NumericalLimit,
-             "the final net misses the first variation of A_H by " + num(res.summary.residual) + " (relative) after: " +
-                 out.message};
+             "the final net misses the first variation of A_H by " + num(res.summary.residual) +
+                 " (relative) after: " + out.message};
     }
     if (!reg.ok) {
       out.ok = false;

@@ -11,9 +11,9 @@
 namespace bpde::cmc_detail {
 
 struct AreaProblem {
-  CmcProblem base;                      ///< the Dirichlet Gram and V, the free points and P
-  std::shared_ptr<const AreaForm> a;    ///< the quadrature rule in use
-  Eigen::MatrixXd C;                    ///< the Dirichlet Gram over the free points ⊗ Id_3
+  CmcProblem base;                    ///< the Dirichlet Gram and V, the free points and P
+  std::shared_ptr<const AreaForm> a;  ///< the quadrature rule in use
+  Eigen::MatrixXd C;                  ///< the Dirichlet Gram over the free points ⊗ Id_3
   /// The weight of the Dirichlet regulariser: the functional is F_ε = A_H + ε(D - A)
   /// = (1-ε)A + εD + 2HV (ε = 1: the paper's D_H; ε = 0: A_H).
   double eps = 0.0;

@@ -98,8 +98,8 @@ TEST(CmcArea, MinimalSurfaceIsTheHelicoidPiece) {
     return e;
   };
   EXPECT_TRUE(r.summary.converged) << r.summary.message;  // measured: residual 1.9e-12
-  EXPECT_LE(off(r.net), 1e-7);                             // measured: 8.9e-9 at n = 8
-  EXPECT_GT(off(d.net), 1e-3);  // the Dirichlet extremal: 8.2e-3
+  EXPECT_LE(off(r.net), 1e-7);                            // measured: 8.9e-9 at n = 8
+  EXPECT_GT(off(d.net), 1e-3);                            // the Dirichlet extremal: 8.2e-3
 }
 
 }  // namespace
