@@ -43,6 +43,9 @@ struct AreaProblem {
 /// the first variation of A_H itself is below target.
 CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o, int max_iterations, double& theta,
                                    double target);
+/// The final Newton phase on A_H (ε = 0) with the Hessian solve truncated to the modes above a relative
+/// eigenvalue cut (cmc_area.cpp); ok when the first variation reaches o.tolerance.
+CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
 /// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);
 
