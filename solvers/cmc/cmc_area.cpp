@@ -175,11 +175,11 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
   // Dirichlet Gram, so the cut does not depend on how the free points are scaled), v_iᵀ C v_j = δ_ij;
   // the kept step is -Σ_{|λ_i| > c λ_max} (v_iᵀ g / λ_i) v_i (the least-C-norm Newton step in the span
   // of the kept modes), the dropped step the same sum over the soft (tangential) modes. Each
-  // iteration tries the cuts c = 1e-5, ..., 1e-10 and the fractions t = 0 ... 1 of the dropped step,
-  // each trial followed by up to six chord corrections in the kept modes (back to the floor of the
+  // iteration tries the cuts c = 1e-5, ..., 1e-10 and the fractions t = 0, 0.003, ..., 1 of the
+  // dropped step, each trial followed by up to 16 chord corrections in the kept modes (back to the floor of the
   // curved valley), and keeps the trial with the smallest Euclidean norm of the gradient (the
   // max-norm residual can stall while it falls); it stops when none lowers it. Measured (docs/cmc.md):
-  // the normal part goes in one or two steps, the soft part only by ~10 % a step.
+  // the normal part goes in one or two steps, the soft part linearly (a few % to ~10 % a step).
   CorrectorStats st;
   const double e0 = p.eps;
   p.eps = 0.0;
@@ -214,9 +214,9 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
       // The dropped (soft) modes by a fraction t of their Newton step, each trial followed by up
       // to three chord corrections in the kept modes, which bring it back to the floor of the
       // curved valley.
-      for (double t : {0.0, 0.1, 0.2, 0.4, 0.7, 1.0}) {
+      for (double t : {0.0, 0.003, 0.01, 0.03, 0.1, 0.2, 0.4, 1.0}) {
         Eigen::VectorXd d = kept + t * dropped;
-        for (int chord = 0; chord <= 6; ++chord) {
+        for (int chord = 0; chord <= 16; ++chord) {
           p.set(y + d);
           Eigen::VectorXd gn;
           const double rn =
