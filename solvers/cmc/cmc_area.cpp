@@ -219,8 +219,7 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
         for (int chord = 0; chord <= 16; ++chord) {
           p.set(y + d);
           Eigen::VectorXd gn;
-          const double rn =
-              p.a->min_normal(p.P()) > 0.0 ? p.residual(H, &gn) : std::numeric_limits<double>::infinity();
+          const double rn = p.a->min_normal(p.P()) > 0.0 ? p.residual(H, &gn) : std::numeric_limits<double>::infinity();
           if (!std::isfinite(rn)) break;
           if (gn.norm() < best) {
             best = gn.norm();
