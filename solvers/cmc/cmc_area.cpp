@@ -468,6 +468,9 @@ struct AreaSolve {
     if (o.solver != CmcSolver::Ceres && p.residual_at(h, 0.0) > o.tolerance) {
       const CorrectorStats st = area_truncated_newton(p, h, o, 2 * o.max_corrector_iterations);
       summary.iterations += st.iterations;
+      if (st.ok)
+        note += std::string(note.empty() ? "" : "; ") + "finished by the truncated Newton phase in " +
+                std::to_string(st.iterations) + " iteration(s)";
     }
     // No stability test here: the point is tied to the D_H branch point by the homotopy, and a
     // spherical patch larger than a hemisphere is a critical point of A_H but not a minimum.

@@ -176,6 +176,12 @@ TEST(Cli, CmcPastTheFoldExitsOneWithTheDocumentedMessage) {
   const CmdResult demo = run("demo --out " + (tmpdir() / "demo").string());
   ASSERT_EQ(demo.status, 0) << demo.err;
   const std::string res = slurp_file(tmpdir() / "demo" / "result.json");
+  // the demo's area result (degree 8, A + 2HV) reaches the tolerance and says so
+  const auto cl = demo.out.find("  converged ");
+  ASSERT_NE(cl, std::string::npos) << demo.out;
+  const std::string line = demo.out.substr(cl, demo.out.find('\n', cl) - cl);
+  EXPECT_EQ(line.substr(line.find_last_not_of(' ') - 2, 3), "yes") << line;
+  EXPECT_NE(slurp_file(tmpdir() / "demo" / "area" / "result.json").find("\"converged\": true"), std::string::npos);
   const auto p = res.find("\"net\"");
   ASSERT_NE(p, std::string::npos);
   // reuse the demo's net as the data of a job with H far past the fold
