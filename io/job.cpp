@@ -135,9 +135,16 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     check_keys(j, path, {"kind"});
     p.kind = ProblemKind::BiharmonicLoad;
   } else if (kind == "cmc") {
-    check_keys(j, path, {"kind", "H", "V", "solver"});
+    check_keys(j, path, {"kind", "H", "V", "solver", "functional"});
     const bool hasH = j.contains("H"), hasV = j.contains("V");
     if (hasH == hasV) throw ParseError(path + ": a cmc problem gives exactly one of \"H\" and \"V\"");
+    if (j.contains("functional")) {
+      const std::string f = string(j["functional"], path + ".functional");
+      if (f != "dirichlet" && f != "area")
+        throw ParseError(path + ".functional: unknown functional \"" + f + "\" (expected dirichlet or area)");
+      p.functional = parse_cmc_functional(f);
+    }
+    const bool area = p.functional == CmcFunctionalKind::Area;
     if (j.contains("solver")) {
       const std::string s = string(j["solver"], path + ".solver");
       if (s != "newton" && s != "ceres" && s != "nlopt")
@@ -150,8 +157,10 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     } else {
       p.kind = ProblemKind::CmcV;
       p.V = number(j["V"], path + ".V");
-      if (!j.contains("solver")) p.solver = CmcSolver::NLopt;
-      if (p.solver != CmcSolver::NLopt)
+      if (!j.contains("solver")) p.solver = area ? CmcSolver::Newton : CmcSolver::NLopt;
+      if (area && p.solver != CmcSolver::Newton)
+        throw UnsupportedProblem(path + ": an area cmc problem with \"V\" needs \"solver\": \"newton\"");
+      if (!area && p.solver != CmcSolver::NLopt)
         throw UnsupportedProblem(path + ": a cmc problem with \"V\" needs \"solver\": \"nlopt\"");
     }
   } else {

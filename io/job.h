@@ -28,6 +28,8 @@ struct Problem {
   CmcSolver solver = CmcSolver::Newton;  ///< cmc (default newton)
   double H = 0.0;                        ///< cmc with "H"
   double V = 0.0;                        ///< cmc with "V"
+  /// cmc: "dirichlet" (D_H, default) or "area" (A_H)
+  CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
 };
 
 struct Job {

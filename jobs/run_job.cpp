@@ -131,6 +131,7 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   o.fixed = job.fixed;
   o.solver = job.problem.solver;
   o.progress = job_progress();
+  o.functional = job.problem.functional;
   if (job.problem.kind == ProblemKind::CmcV)
     o.V = job.problem.V;
   else
@@ -138,7 +139,9 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   const CmcResult<NetT> r = solve_cmc(net, o);
   SolveOutcome out = outcome(job, r.net, r.summary);
   out.report["solver"] = to_string(o.solver);
-  out.report["energy"] = finite_or_null(r.DH);
+  out.report["energy"] = finite_or_null(r.energy);
+  out.report["functional"] = to_string(o.functional);
+  out.report["area"] = finite_or_null(r.A);
   out.report["D"] = finite_or_null(r.D);
   out.report["volume"] = finite_or_null(r.V);
   out.report["H"] = finite_or_null(r.H);
@@ -229,6 +232,12 @@ Solver select_tensor_pde(const Problem& p) {
   return {pde_lu_requirements(e), on<TensorNet, pde_lu>};
 }
 
+// The cmc requirements of the job's functional (the area functional takes boundary and
+// boundary+adjacent data, solvers newton and ceres).
+SolverRequirements cmc_requirements_for(const Problem& p) {
+  return p.functional == CmcFunctionalKind::Area ? cmc_area_requirements() : cmc_requirements();
+}
+
 const Route kRoutes[] = {
     {ProblemKind::Extremal, NetKind::Tensor,
      [](const Problem&) {
@@ -256,20 +265,20 @@ const Route kRoutes[] = {
        return Solver{biharmonic_load_requirements(), on<TensorNet, biharmonic_load>};
      }},
     {ProblemKind::CmcH, NetKind::Triangular,
-     [](const Problem&) {
-       return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>};
+     [](const Problem& p) {
+       return Solver{cmc_requirements_for(p), on<TriangularNet, cmc<TriangularNet>>};
      }},
     {ProblemKind::CmcH, NetKind::Tensor,
-     [](const Problem&) {
-       return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>};
+     [](const Problem& p) {
+       return Solver{cmc_requirements_for(p), on<TensorNet, cmc<TensorNet>>};
      }},
     {ProblemKind::CmcV, NetKind::Triangular,
-     [](const Problem&) {
-       return Solver{cmc_requirements(), on<TriangularNet, cmc<TriangularNet>>};
+     [](const Problem& p) {
+       return Solver{cmc_requirements_for(p), on<TriangularNet, cmc<TriangularNet>>};
      }},
     {ProblemKind::CmcV, NetKind::Tensor,
-     [](const Problem&) {
-       return Solver{cmc_requirements(), on<TensorNet, cmc<TensorNet>>};
+     [](const Problem& p) {
+       return Solver{cmc_requirements_for(p), on<TensorNet, cmc<TensorNet>>};
      }},
 };
 

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "energies/cmc.h"
+#include "solvers/cmc/area_functional.h"
 #include "solvers/cmc/cmc_problem.h"
 #include "solvers/summary.h"
 
@@ -18,7 +19,14 @@ namespace bpde {
 void CmcOptions::validate() const {
   if (!std::isfinite(H)) throw NonFiniteError("cmc: H must be a finite number");
   if (V && !std::isfinite(*V)) throw NonFiniteError("cmc: V must be a finite number");
-  if (V && solver != CmcSolver::NLopt)
+  if (functional == CmcFunctionalKind::Area) {
+    if (solver == CmcSolver::NLopt)
+      throw UnsupportedProblem("cmc: the area functional is solved by the newton or the ceres solver");
+    if (V && solver != CmcSolver::Newton)
+      throw UnsupportedProblem("cmc: the volume-constrained area problem (V) is solved by the newton solver only");
+    if (fixed == FixedSet::UBoundaries)
+      throw UnsupportedProblem("cmc: the area functional needs fixed \"boundary\" or \"boundary+adjacent\"");
+  } else if (V && solver != CmcSolver::NLopt)
     throw UnsupportedProblem("cmc: the volume-constrained problem (V) is solved by the nlopt solver only");
   if (!(tolerance > 0.0 && tolerance <= 1e-3)) throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
   if (max_corrector_iterations < 1) throw ParameterError("cmc: max_corrector_iterations must be >= 1");
@@ -114,8 +122,6 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
   }
 }
 
-namespace {
-
 std::string fold_message(double h, bool gram_singular) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
@@ -150,14 +156,6 @@ std::shared_ptr<const CmcFunctional> functional_for(const TensorNet& net) {
   return CmcFunctional::cached_tensor(net.n(), net.m());
 }
 
-// Dirichlet extremal into p.P (Cholesky, or pivoted LDL^T when rounding makes the Bernstein Gram
-// indefinite). Returns the factor used for the tangent at H = 0 and a Cholesky factor L of the
-// (if needed slightly shifted) free Gram for the NLopt preconditioner.
-struct DirichletFactor {
-  std::unique_ptr<SymFactor> gram;
-  Eigen::MatrixXd L;
-};
-
 DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
   const Eigen::MatrixXd& C = p.f->gram();
   const int k = p.k();
@@ -183,16 +181,14 @@ DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx
   return f;
 }
 
-template <class Net>
-Net make_net(const Net& data, const Eigen::MatrixX3d& P);
-template <>
 TriangularNet make_net(const TriangularNet& data, const Eigen::MatrixX3d& P) {
   return TriangularNet(data.n(), P);
 }
-template <>
 TensorNet make_net(const TensorNet& data, const Eigen::MatrixX3d& P) {
   return TensorNet(data.n(), data.m(), P);
 }
+
+namespace {
 
 // How a solve ended, before the final checks of finish().
 struct Outcome {
@@ -210,6 +206,8 @@ void finish(CmcResult<Net>& res, const Net& data, const CmcProblem& p, const Cmc
   res.D = p.f->dirichlet(p.P);
   res.V = p.f->volume(p.P);
   res.DH = res.D + 2.0 * out.H * res.V;
+  res.energy = res.DH;
+  res.A = area(make_net(data, p.P));
   res.net = make_net(data, p.P);
   res.summary.residual = p.residual(out.H);
   if (out.ok && !(res.summary.residual <= o.tolerance)) {
@@ -253,6 +251,8 @@ Eigen::VectorXd initial_tangent(const CmcProblem& p, const SymFactor& gram) {
   return tangent;
 }
 
+}  // namespace
+
 // First step: the whole way to Ht, but not beyond |H| = 16 / (size of the data), the scale where
 // a fold can occur (steps double after easy corrector runs, so large |H| are reached quickly).
 double first_step(double Ht, const Eigen::MatrixX3d& P, const std::vector<int>& fixed_idx) {
@@ -267,44 +267,7 @@ double first_step(double Ht, const Eigen::MatrixX3d& P, const std::vector<int>& 
   return step;
 }
 
-// The step control of the continuation in H (cmc.h): proposes the next H on the way from 0 to the
-// target; an accepted step doubles the next one after an easy corrector run (<= 4 iterations) and
-// keeps it otherwise; a rejected step halves it, until it falls below min_step relative to
-// max(1, |H reached|) (the fold). At most max_continuation_steps attempts.
-class StepController {
- public:
-  struct Step {
-    double s;   ///< the step in H
-    double hn;  ///< the H proposed: h + s, exactly the target on the last step
-  };
-  StepController(double target, double first_step, const CmcOptions& o)
-      : target_(target), step_(first_step), min_step_(o.min_step), max_attempts_(o.max_continuation_steps) {}
-
-  bool reached_target() const { return h_ == target_; }
-  /// The last H accepted.
-  double h() const { return h_; }
-  /// Counts an attempt; false once max_continuation_steps attempts are used up.
-  bool attempt() { return ++attempts_ <= max_attempts_; }
-  Step propose() const {
-    double s = step_;
-    if (std::abs(target_ - h_) <= std::abs(s) * (1 + 1e-12)) s = target_ - h_;
-    return {s, (target_ - h_ == s) ? target_ : h_ + s};
-  }
-  void accept(const Step& st, int corrector_iterations) {
-    h_ = st.hn;
-    step_ = corrector_iterations <= 4 ? 2 * st.s : st.s;
-  }
-  /// Halves the step; false when it collapsed (a fold at h()).
-  bool reject(const Step& st) {
-    step_ = st.s / 2;
-    return !(std::abs(step_) < min_step_ * std::max(1.0, std::abs(h_)));
-  }
-
- private:
-  double target_, step_, min_step_;
-  int max_attempts_, attempts_ = 0;
-  double h_ = 0.0;
-};
+namespace {
 
 // The chosen corrector at fixed H from the predicted point in p.P.
 CorrectorStats correct(CmcProblem& p, double H, const CmcOptions& o, const Eigen::MatrixXd& L) {
@@ -319,12 +282,16 @@ CorrectorStats correct(CmcProblem& p, double H, const CmcOptions& o, const Eigen
   return {};
 }
 
+}  // namespace
+
 // Stay on the branch: the corrector may move the predicted point by at most half the step (the
 // tangent predictor is second-order accurate, so small steps always pass on the branch).
 bool on_branch(const Eigen::VectorXd& y, const Eigen::VectorXd& pred, const Eigen::VectorXd& yn) {
   const double dev = (yn - pred).norm(), move = (yn - y).norm();
   return dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
 }
+
+namespace {
 
 // Positive definite Hessian at H (strict local minimum: still before the first fold); known from
 // the corrector when corrector_pd == 1. When the continuation goes on (!last), the factor also
@@ -386,6 +353,7 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFacto
 
 template <class Net>
 CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
+  if (o.functional == CmcFunctionalKind::Area) return solve_area(data, o);
   CmcResult<Net> res;
   {
     ScopedTimer timer(res.summary.seconds);

@@ -23,6 +23,35 @@
 // to the size of its terms (CmcFunctional::residual), and in V mode also |V - V0| <= tolerance *
 // (1/3 ∫ |<x_u ∧ x_v, x>|).
 //
+// The area functional (options.functional = Area; docs/cmc.md, "The area functional"):
+//  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (solvers/cmc/area_functional.h),
+//    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
+//    surface). The start is the D_H critical point at the requested H (the continuation above),
+//    corrected on A_H through a vanishing Dirichlet regulariser: F_ε = A_H + ε(D - A) for
+//    ε = 1, 1e-1, 1e-3, ... → 0 (each stage by the corrector below; F_1 = D_H). When that fails
+//    (no D_H branch point, or the regulariser cannot be taken below 1e-4), the A_H branch is
+//    continued in H itself from the critical point of A at H = 0, started at the Dirichlet
+//    extremal, with a positive-definiteness test per step (before the fold).
+//  - V mode: minimise A subject to V = V0, continued in V from the critical point of A at H = 0;
+//    the multiplier H (∇A + 2H∇V = 0 on the free points) is reported.
+//  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
+//    over the free points and μ = θ · (relative residual); a step is accepted when F falls as
+//    predicted (ratio > 0.1) or ‖∇F‖₂ falls, with up to three chord corrections by the same factor;
+//    θ moves by ×4 / ×10 as in a trust region (solvers/cmc/cmc_area.cpp). The Hessian of A_H is
+//    nearly singular in the tangential directions (reparametrisations keep A_H); μ → 0 with the
+//    residual keeps the convergence quadratic (Levenberg–Marquardt in the sense of Yamashita and
+//    Fukushima) while fixing the tangential part of the step. ceres: Ceres Levenberg–Marquardt on
+//    the residual blocks ∇A_H of each free point with the exact Hessian blocks as Jacobians.
+//  - converged = true means the first variation ∇A_H over the free points holds to
+//    options.tolerance relative to the size of its terms (the rows of AreaForm's gradient scale
+//    plus 2|H| those of V), measured with a quadrature rule whose own measured error is below the
+//    tolerance (solvers/cmc/area_rule.h), AND the parametrisation is regular: |x_u ∧ x_v| on a
+//    40 x 40 sample grid away from the corners (margin 0.05) is at least 1e-3 of its mean and no
+//    two neighbouring samples have opposite normals. A degenerating surface is reported with
+//    converged = false, status NoConvergence, and a message that says "degenerate
+//    parametrisation".
+//  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode: newton).
+//
 // Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
 // V with a solver other than nlopt (UnsupportedProblem), degree too low for the fixed set
 // (DegreeError: triangular n >= 3 with C0 data, n >= 6 with C1 data; tensor n, m >= 2 with C0 data
@@ -41,6 +70,13 @@
 namespace bpde {
 
 enum class CmcSolver { Newton, Ceres, NLopt };
+/// The functional whose critical points are sought: the paper's D_H = D + 2HV (default) or the
+/// geometric A_H = A + 2HV.
+enum class CmcFunctionalKind { Dirichlet, Area };
+
+/// "dirichlet" | "area" (ParameterError otherwise).
+CmcFunctionalKind parse_cmc_functional(const std::string& name);
+std::string to_string(CmcFunctionalKind f);
 
 /// "newton" | "ceres" | "nlopt" (ParameterError otherwise).
 CmcSolver parse_cmc_solver(const std::string& name);
@@ -50,6 +86,7 @@ struct CmcOptions {
   double H = 0.0;                            ///< target mean curvature (H mode); default 0
   std::optional<double> V;                   ///< target volume (V mode); default unset
   CmcSolver solver = CmcSolver::Newton;      ///< default newton
+  CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;  ///< default dirichlet
   FixedSet fixed = FixedSet::Boundary;       ///< default boundary (C0 data)
   double tolerance = kConvergenceTolerance;  ///< relative eq. (11) residual; default 1e-11, in (0, 1e-3]
   int max_corrector_iterations = 30;         ///< per continuation step; default 30, >= 1
@@ -59,13 +96,15 @@ struct CmcOptions {
   /// reached|, total = |H requested| (core/progress.h); default none.
   ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range),
-  /// UnsupportedProblem (V mode with a solver other than nlopt).
+  /// UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with nlopt, area V
+  /// mode with a solver other than newton).
   void validate() const;
 };
 
 /// The FORMATS.md "cmc" problem: triangular or tensor nets, any fixed set the net defines;
 /// triangular n >= 3 with C0 data and >= 6 with C1 data, tensor n, m >= 2 and >= 4; solvers
-/// newton, ceres, nlopt (the V form: nlopt only, CmcOptions::validate).
+/// newton, ceres, nlopt (the V form: nlopt only, CmcOptions::validate). With "functional":
+/// "area": fixed boundary or boundary+adjacent, solvers newton and ceres (cmc_area_requirements).
 /// Largest degrees of a cmc job: above them the Dirichlet Gram over the free points is no longer
 /// Cholesky-factorable (condition ~4^n; docs/cmc.md "Numerical limit"), so eq. (11) cannot be
 /// resolved to 1e-11, and the continuation spends minutes (tensor n = 30: 2 min; triangular
@@ -91,6 +130,18 @@ inline SolverRequirements cmc_requirements() {
   return r;
 }
 
+inline SolverRequirements cmc_area_requirements() {
+  SolverRequirements r = cmc_requirements();
+  r.problem = "problem \"cmc\" with \"functional\": \"area\"";
+  r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent};
+  r.min_degrees = {{NetKind::Triangular, FixedSet::Boundary, 3},
+                   {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6},
+                   {NetKind::Tensor, FixedSet::Boundary, 2},
+                   {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4}};
+  r.methods = {"newton", "ceres"};
+  return r;
+}
+
 template <class Net>
 struct CmcResult {
   Net net;                     ///< the critical point (or the last point of the branch if not converged)
@@ -98,6 +149,10 @@ struct CmcResult {
   double D = 0.0;              ///< Dirichlet energy
   double V = 0.0;              ///< volume 1/3 ∫ <x_u ∧ x_v, x>
   double DH = 0.0;             ///< D + 2HV
+  double A = 0.0;              ///< area ∫|x_u ∧ x_v| (computed for both functionals)
+  double energy = 0.0;         ///< the value of the functional solved: D_H or A_H = A + 2HV
+  CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
+  int quadrature_points = 0;   ///< area: Gauss points per direction of the rule used (area_rule.h)
   int continuation_steps = 0;  ///< accepted continuation steps (H mode)
   /// converged, iterations (corrector iterations in all), residual, message; status Fold past the
   /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),

@@ -1,6 +1,7 @@
 // Ceres corrector of the CMC continuation (solvers/cmc/cmc.h): Levenberg–Marquardt on the residuals
 // F of triangular CMC eq. (11), with the analytic Jacobian (the exact Hessian of D_H over the free
-// control points). All 3k residuals and the 3k unknowns form ONE residual block on ONE parameter
+// control points); the same for the first variation of A_H = A + 2HV (cmc_area_problem.h), whose
+// Jacobian is the exact Hessian of A_H by quadrature. All 3k residuals and the 3k unknowns form ONE residual block on ONE parameter
 // block, so Ceres sees the dense Jacobian as it is (one copy per evaluation) instead of k^2 small
 // 3x3 blocks, and solves the LM step with a dense solver (kLinearSolver below; measured in
 // docs/performance.md, "Ceres CMC route"). Ceres runs single-threaded here.
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <memory>
 
+#include "solvers/cmc/cmc_area_problem.h"
 #include "solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {
@@ -20,9 +22,10 @@ namespace {
 // DENSE_QR in docs/performance.md ("Ceres CMC route").
 constexpr ceres::LinearSolverType kLinearSolver = ceres::DENSE_NORMAL_CHOLESKY;
 
+template <class Problem>
 class AllResiduals final : public ceres::CostFunction {
  public:
-  AllResiduals(CmcProblem* p, double H) : p_(p), H_(H) {
+  AllResiduals(Problem* p, double H) : p_(p), H_(H) {
     set_num_residuals(3 * p->k());
     mutable_parameter_block_sizes()->push_back(3 * p->k());
   }
@@ -44,13 +47,14 @@ class AllResiduals final : public ceres::CostFunction {
   }
 
  private:
-  CmcProblem* p_;
+  Problem* p_;
   double H_;
 };
 
+template <class Problem>
 class StopAtTolerance final : public ceres::IterationCallback {
  public:
-  StopAtTolerance(CmcProblem* p, const Eigen::VectorXd* buf, double H, double tol)
+  StopAtTolerance(Problem* p, const Eigen::VectorXd* buf, double H, double tol)
       : p_(p), buf_(buf), H_(H), tol_(tol) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
     p_->set(*buf_);
@@ -59,20 +63,19 @@ class StopAtTolerance final : public ceres::IterationCallback {
   }
 
  private:
-  CmcProblem* p_;
+  Problem* p_;
   const Eigen::VectorXd* buf_;
   double H_, tol_;
 };
 
-}  // namespace
-
-CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
+template <class Problem>
+CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
   CorrectorStats st = start_stats(p, H, o);
   if (st.ok || !std::isfinite(st.residual)) return st;
   Eigen::VectorXd buf = p.get();
   ceres::Problem::Options po;
   ceres::Problem problem(po);
-  problem.AddResidualBlock(new AllResiduals(&p, H), nullptr, buf.data());
+  problem.AddResidualBlock(new AllResiduals<Problem>(&p, H), nullptr, buf.data());
 
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
@@ -90,7 +93,7 @@ CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
   so.update_state_every_iteration = true;
-  StopAtTolerance cb(&p, &buf, H, o.tolerance);
+  StopAtTolerance<Problem> cb(&p, &buf, H, o.tolerance);
   so.callbacks.push_back(&cb);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
@@ -100,5 +103,10 @@ CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) {
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
   return st;
 }
+
+}  // namespace
+
+CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) { return ceres_correct_impl(p, H, o); }
+CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o) { return ceres_correct_impl(p, H, o); }
 
 }  // namespace bpde::cmc_detail

@@ -49,7 +49,8 @@ struct CorrectorStats {
 
 /// The stats of the start point of a corrector: its eq. (11) residual at H, ok when it already
 /// meets the tolerance. A corrector starts iterating only when `!ok` and the residual is finite.
-inline CorrectorStats start_stats(CmcProblem& p, double H, const CmcOptions& o) {
+template <class Problem>  // CmcProblem or AreaProblem (cmc_area_problem.h)
+CorrectorStats start_stats(Problem& p, double H, const CmcOptions& o) {
   CorrectorStats st;
   st.residual = p.residual(H);
   st.ok = st.residual <= o.tolerance;
@@ -70,5 +71,74 @@ CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
 
 /// H = -<∇D,∇V>/(2|∇V|^2) over the free points (0 if ∇V = 0).
 double multiplier(const CmcProblem& p);
+
+
+// ---- shared by the D_H and the A_H routes (cmc.cpp, cmc_area.cpp)
+
+std::string fold_message(double h, bool gram_singular);
+void check_degree(const TriangularNet& net, FixedSet fixed);
+void check_degree(const TensorNet& net, FixedSet fixed);
+std::shared_ptr<const CmcFunctional> functional_for(const TriangularNet& net);
+std::shared_ptr<const CmcFunctional> functional_for(const TensorNet& net);
+TriangularNet make_net(const TriangularNet& data, const Eigen::MatrixX3d& P);
+TensorNet make_net(const TensorNet& data, const Eigen::MatrixX3d& P);
+
+// Dirichlet extremal into p.P (Cholesky, or pivoted LDL^T when rounding makes the Bernstein Gram
+// indefinite). Returns the factor used for the tangent at H = 0 and a Cholesky factor L of the
+// (if needed slightly shifted) free Gram for the NLopt preconditioner.
+struct DirichletFactor {
+  std::unique_ptr<SymFactor> gram;
+  Eigen::MatrixXd L;
+};
+
+DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx);
+
+/// First step: the whole way to Ht, but not beyond |H| = 16 / (size of the fixed data).
+double first_step(double Ht, const Eigen::MatrixX3d& P, const std::vector<int>& fixed_idx);
+/// The corrector moved the prediction pred (from y) to yn by at most half the step.
+bool on_branch(const Eigen::VectorXd& y, const Eigen::VectorXd& pred, const Eigen::VectorXd& yn);
+
+// The step control of the continuation in H (cmc.h): proposes the next H on the way from 0 to the
+// target; an accepted step doubles the next one after an easy corrector run (<= 4 iterations) and
+// keeps it otherwise; a rejected step halves it, until it falls below min_step relative to
+// max(1, |H reached|) (the fold). At most max_continuation_steps attempts.
+class StepController {
+ public:
+  struct Step {
+    double s;   ///< the step in H
+    double hn;  ///< the H proposed: h + s, exactly the target on the last step
+  };
+  StepController(double target, double first_step, const CmcOptions& o)
+      : target_(target), step_(first_step), min_step_(o.min_step), max_attempts_(o.max_continuation_steps) {}
+
+  bool reached_target() const { return h_ == target_; }
+  /// The last H accepted.
+  double h() const { return h_; }
+  /// Counts an attempt; false once max_continuation_steps attempts are used up.
+  bool attempt() { return ++attempts_ <= max_attempts_; }
+  Step propose() const {
+    double s = step_;
+    if (std::abs(target_ - h_) <= std::abs(s) * (1 + 1e-12)) s = target_ - h_;
+    return {s, (target_ - h_ == s) ? target_ : h_ + s};
+  }
+  void accept(const Step& st, int corrector_iterations) {
+    h_ = st.hn;
+    step_ = corrector_iterations <= 4 ? 2 * st.s : st.s;
+  }
+  /// Halves the step; false when it collapsed (a fold at h()).
+  bool reject(const Step& st) {
+    step_ = st.s / 2;
+    return !(std::abs(step_) < min_step_ * std::max(1.0, std::abs(h_)));
+  }
+
+ private:
+  double target_, step_, min_step_;
+  int max_attempts_, attempts_ = 0;
+  double h_ = 0.0;
+};
+
+/// The area functional (cmc.h, "The area functional"; cmc_area.cpp). options are validated.
+CmcResult<TriangularNet> solve_area(const TriangularNet& data, const CmcOptions& options);
+CmcResult<TensorNet> solve_area(const TensorNet& data, const CmcOptions& options);
 
 }  // namespace bpde::cmc_detail

@@ -1,4 +1,4 @@
-// The names of the cmc solvers (solvers/cmc/cmc.h), apart from the solvers themselves: the job
+// The names of the cmc solvers and functionals (solvers/cmc/cmc.h), apart from the solvers themselves: the job
 // reader (io/job.cpp) needs them, and the fuzz targets (fuzz/) link the readers without Ceres.
 #include <string>
 
@@ -25,5 +25,13 @@ std::string to_string(CmcSolver s) {
   }
   return "?";
 }
+
+CmcFunctionalKind parse_cmc_functional(const std::string& name) {
+  if (name == "dirichlet") return CmcFunctionalKind::Dirichlet;
+  if (name == "area") return CmcFunctionalKind::Area;
+  throw ParameterError("unknown cmc functional \"" + name + "\" (expected dirichlet or area)");
+}
+
+std::string to_string(CmcFunctionalKind f) { return f == CmcFunctionalKind::Area ? "area" : "dirichlet"; }
 
 }  // namespace bpde

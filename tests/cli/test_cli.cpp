@@ -13,7 +13,12 @@
 #include <string>
 #include <type_traits>
 
+#include <Eigen/Core>
+#include <cmath>
+
+#include "boundaries/reference_boundaries.h"
 #include "core/errors.h"
+#include "io/json_io.h"
 #include "jobs/exit_status.h"
 #include "jobs/run_job.h"
 #include "tests/cli/cli_run.h"
@@ -171,6 +176,12 @@ TEST(Cli, CmcPastTheFoldExitsOneWithTheDocumentedMessage) {
   const CmdResult demo = run("demo --out " + (tmpdir() / "demo").string());
   ASSERT_EQ(demo.status, 0) << demo.err;
   const std::string res = slurp_file(tmpdir() / "demo" / "result.json");
+  // the demo's area result (degree 8, A + 2HV) reaches the tolerance and says so
+  const auto cl = demo.out.find("  converged ");
+  ASSERT_NE(cl, std::string::npos) << demo.out;
+  const std::string line = demo.out.substr(cl, demo.out.find('\n', cl) - cl);
+  EXPECT_EQ(line.substr(line.find_last_not_of(' ') - 2, 3), "yes") << line;
+  EXPECT_NE(slurp_file(tmpdir() / "demo" / "area" / "result.json").find("\"converged\": true"), std::string::npos);
   const auto p = res.find("\"net\"");
   ASSERT_NE(p, std::string::npos);
   // reuse the demo's net as the data of a job with H far past the fold
@@ -359,4 +370,42 @@ TEST(Cli, BSplinePdeTakesBoundaryAdjacentData) {
   const bpde::Json& P = res["net"]["points"];
   ASSERT_EQ(P.size(), z.size());
   for (size_t k = 0; k < z.size(); ++k) EXPECT_NEAR(P[k][2].get<double>(), z[k], 1e-10) << k;
+}
+
+// The area functional as a job (FORMATS.md, problem "cmc" with "functional": "area"): the
+// helicoid piece of tests/cmc/test_cmc_area.cpp at tensor degree 6, H = 0; and the bad input.
+TEST(Cli, CmcAreaJobReportsTheAreaFunctional) {
+  auto helicoid = [](double u, double v) {
+    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
+    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
+  };
+  const std::string net = bpde::net_to_json(bpde::tensor_boundary(6, helicoid)).dump();
+  auto job = [&](const std::string& problem, const std::string& extra = "") {
+    return "{\"net\": " + net + extra + ", \"problem\": " + problem + "}";
+  };
+  const fs::path out = tmpdir() / "area";
+  const CmdResult r =
+      run("solve " + write("area.json", job(R"({"kind": "cmc", "H": 0, "functional": "area"})")).string() +
+          " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const bpde::Json rep = bpde::read_json_file((out / "result.json").string())["report"];
+  EXPECT_EQ(rep["functional"], "area");
+  EXPECT_TRUE(rep["converged"].get<bool>());
+  EXPECT_NEAR(rep["energy"].get<double>(), rep["area"].get<double>(), 1e-14);  // H = 0: A_H = A
+  EXPECT_GT(rep["D"].get<double>(), rep["area"].get<double>());                  // D >= A, not conformal
+  EXPECT_TRUE(rep.contains("volume") && rep.contains("mean_curvature") && rep.contains("residual"));
+  // The Dirichlet default is unchanged: no "area" functional in its report.
+  const CmdResult d = run("solve " + write("dir.json", job(R"({"kind": "cmc", "H": 0})")).string() + " --out " +
+                          (tmpdir() / "dir").string());
+  ASSERT_EQ(d.status, 0) << d.err;
+  EXPECT_EQ(bpde::read_json_file((tmpdir() / "dir" / "result.json").string())["report"]["functional"], "dirichlet");
+  const fs::path none = tmpdir() / "never";
+  auto bad = [&](const std::string& j, const std::string& needle) {
+    expect_bad_input("solve " + write("bad.json", j).string() + " --out " + none.string(), needle);
+    EXPECT_FALSE(fs::exists(none));
+  };
+  bad(job(R"({"kind": "cmc", "H": 0, "functional": "areal"})"), "functional");
+  bad(job(R"({"kind": "cmc", "H": 0, "functional": "area", "solver": "nlopt"})"), "nlopt");
+  bad(job(R"({"kind": "cmc", "H": 0, "functional": "area"})", R"(, "fixed": "u-boundaries")"), "fixed");
+  bad(job(R"({"kind": "cmc", "V": 1, "functional": "area", "solver": "ceres"})"), "newton");
 }

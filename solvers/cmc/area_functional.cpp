@@ -1,0 +1,252 @@
+#include "solvers/cmc/area_functional.h"
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "core/bernstein.h"
+#include "core/errors.h"
+#include "core/keyed_cache.h"
+#include "core/quadrature.h"
+#include "energies/triangular_gram.h"
+#include "tensor/tensor_net.h"
+#include "triangular/triangular_net.h"
+
+namespace bpde {
+namespace {
+
+using Tri = std::array<Eigen::Vector2d, 3>;  // {collapsed corner C, P1, P2}
+
+// Nodes and weights of the Duffy rules on the triangles (u, v) = C + s(P1 - C) + s t(P2 - P1),
+// Jacobian s |det(P1 - C, P2 - C)|, with q x q Gauss–Legendre points in (s, t).
+void duffy_rule(const std::vector<Tri>& tris, int q, Eigen::MatrixX2d& uv, Eigen::VectorXd& w) {
+  const QuadratureRule1D g = gauss_legendre01(q);
+  const Eigen::Index per = static_cast<Eigen::Index>(q) * q;
+  uv.resize(per * static_cast<Eigen::Index>(tris.size()), 2);
+  w.resize(uv.rows());
+  Eigen::Index r = 0;
+  for (const Tri& T : tris) {
+    const Eigen::Vector2d e1 = T[1] - T[0], e2 = T[2] - T[1];
+    const double det = std::abs(e1(0) * (T[2] - T[0])(1) - e1(1) * (T[2] - T[0])(0));
+    for (int a = 0; a < q; ++a)
+      for (int b = 0; b < q; ++b, ++r) {
+        const double s = g.x(a), t = g.x(b);
+        uv.row(r) = (T[0] + s * e1 + s * t * e2).transpose();
+        w(r) = g.w(a) * g.w(b) * s * det;
+      }
+  }
+}
+
+void check_q(int q) {
+  if (q < 1 || q > 200)
+    throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
+}
+
+// Row-wise cross products of two #nodes x 3 matrices.
+Eigen::MatrixX3d cross_rows(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b) {
+  Eigen::MatrixX3d c(a.rows(), 3);
+  c.col(0) = a.col(1).cwiseProduct(b.col(2)) - a.col(2).cwiseProduct(b.col(1));
+  c.col(1) = a.col(2).cwiseProduct(b.col(0)) - a.col(0).cwiseProduct(b.col(2));
+  c.col(2) = a.col(0).cwiseProduct(b.col(1)) - a.col(1).cwiseProduct(b.col(0));
+  return c;
+}
+
+Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
+  Eigen::MatrixX3d out(A.rows(), 3);
+  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A * P.col(c);
+  return out;
+}
+
+Eigen::MatrixX3d times_t(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& W) {
+  Eigen::MatrixX3d out(A.cols(), 3);
+  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A.transpose() * W.col(c);
+  return out;
+}
+
+// x_u, x_v, N = x_u ∧ x_v and |N| at the nodes.
+struct NodeFrame {
+  Eigen::MatrixX3d Xu, Xv, N;
+  Eigen::VectorXd len;
+};
+
+NodeFrame frame(const Eigen::MatrixXd& Bu, const Eigen::MatrixXd& Bv, const Eigen::MatrixX3d& P) {
+  NodeFrame f;
+  f.Xu = times(Bu, P);
+  f.Xv = times(Bv, P);
+  f.N = cross_rows(f.Xu, f.Xv);
+  f.len = f.N.rowwise().norm();
+  return f;
+}
+
+constexpr std::size_t kAreaCacheSize = 32;
+
+}  // namespace
+
+AreaForm AreaForm::triangular(int n, int q) {
+  if (n < 1 || n > kMaxDegree)
+    throw DegreeError("AreaForm: triangular degree " + std::to_string(n) + " is outside 1.." +
+                      std::to_string(kMaxDegree));
+  check_q(q);
+  const Eigen::Vector2d A(1, 0), B(0, 1), C(0, 0), G(1.0 / 3, 1.0 / 3);
+  const Eigen::Vector2d mAB = (A + B) / 2, mAC = (A + C) / 2, mBC = (B + C) / 2;
+  const std::vector<Tri> tris = {{A, mAB, G}, {A, mAC, G}, {B, mAB, G}, {B, mBC, G}, {C, mAC, G}, {C, mBC, G}};
+  Eigen::MatrixX2d uv;
+  AreaForm f;
+  duffy_rule(tris, q, uv, f.w_);
+  f.q_ = q;
+  f.Bu_ = triangular_basis_table(n, uv, 1, 0);
+  f.Bv_ = triangular_basis_table(n, uv, 0, 1);
+  return f;
+}
+
+AreaForm AreaForm::tensor(int n, int m, int q) {
+  if (n < 1 || n > kMaxDegree || m < 1 || m > kMaxDegree)
+    throw DegreeError("AreaForm: tensor degree (" + std::to_string(n) + ", " + std::to_string(m) + ") is outside 1.." +
+                      std::to_string(kMaxDegree));
+  check_q(q);
+  const Eigen::Vector2d M(0.5, 0.5);
+  std::vector<Tri> tris;
+  for (int cu = 0; cu <= 1; ++cu)
+    for (int cv = 0; cv <= 1; ++cv) {
+      const Eigen::Vector2d corner(cu, cv);
+      tris.push_back({corner, Eigen::Vector2d(0.5, cv), M});
+      tris.push_back({corner, Eigen::Vector2d(cu, 0.5), M});
+    }
+  Eigen::MatrixX2d uv;
+  AreaForm f;
+  duffy_rule(tris, q, uv, f.w_);
+  f.q_ = q;
+  const Eigen::VectorXd us = uv.col(0), vs = uv.col(1);
+  const Eigen::MatrixXd Tu0 = bernstein_table(n, us, 0), Tu1 = bernstein_table(n, us, 1);
+  const Eigen::MatrixXd Tv0 = bernstein_table(m, vs, 0), Tv1 = bernstein_table(m, vs, 1);
+  const Eigen::Index Q = uv.rows(), Np = (n + 1) * (m + 1);
+  f.Bu_.resize(Q, Np);
+  f.Bv_.resize(Q, Np);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= m; ++j) {
+      const Eigen::Index c = i * (m + 1) + j;
+      f.Bu_.col(c) = Tu1.col(i).cwiseProduct(Tv0.col(j));
+      f.Bv_.col(c) = Tu0.col(i).cwiseProduct(Tv1.col(j));
+    }
+  return f;
+}
+
+std::shared_ptr<const AreaForm> AreaForm::cached_triangular(int n, int q) {
+  static KeyedCache<std::pair<int, int>, AreaForm> cache(kAreaCacheSize);
+  return cache.get({n, q}, [](const std::pair<int, int>& k) { return triangular(k.first, k.second); });
+}
+
+std::shared_ptr<const AreaForm> AreaForm::cached_tensor(int n, int m, int q) {
+  static KeyedCache<std::array<int, 3>, AreaForm> cache(kAreaCacheSize);
+  return cache.get({n, m, q}, [](const std::array<int, 3>& k) { return tensor(k[0], k[1], k[2]); });
+}
+
+std::size_t AreaForm::memory_bytes() const {
+  return sizeof(double) * static_cast<std::size_t>(w_.size() + Bu_.size() + Bv_.size());
+}
+
+void AreaForm::check(const Eigen::MatrixX3d& P) const {
+  if (P.rows() != Bu_.cols())
+    throw SizeError("AreaForm: " + std::to_string(P.rows()) + " points given, the net has " +
+                    std::to_string(Bu_.cols()));
+}
+
+double AreaForm::value(const Eigen::MatrixX3d& P) const {
+  check(P);
+  return w_.dot(frame(Bu_, Bv_, P).len);
+}
+
+double AreaForm::min_normal(const Eigen::MatrixX3d& P) const {
+  check(P);
+  const NodeFrame f = frame(Bu_, Bv_, P);
+  const double A = w_.dot(f.len), dom = w_.sum();
+  if (!(A > 0.0) || !std::isfinite(A)) return 0.0;
+  return f.len.minCoeff() / (A / dom);
+}
+
+Eigen::MatrixX3d AreaForm::gradient(const Eigen::MatrixX3d& P) const {
+  check(P);
+  const NodeFrame f = frame(Bu_, Bv_, P);
+  const Eigen::MatrixX3d nh = f.len.cwiseInverse().asDiagonal() * f.N;
+  const Eigen::MatrixX3d a = w_.asDiagonal() * cross_rows(f.Xv, nh);
+  const Eigen::MatrixX3d b = w_.asDiagonal() * cross_rows(nh, f.Xu);
+  return times_t(Bu_, a) + times_t(Bv_, b);
+}
+
+void AreaForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
+                                       Eigen::MatrixX3d* S) const {
+  check(P);
+  for (int I : idx)
+    if (I < 0 || I >= size()) throw SizeError("AreaForm: point index out of range");
+  const NodeFrame f = frame(Bu_, Bv_, P);
+  const Eigen::MatrixX3d nh = f.len.cwiseInverse().asDiagonal() * f.N;
+  const Eigen::MatrixX3d a = cross_rows(f.Xv, nh), b = cross_rows(nh, f.Xu);
+  const Eigen::MatrixXd Bus = Bu_(Eigen::all, idx), Bvs = Bv_(Eigen::all, idx);
+  if (G) *G = times_t(Bus, w_.asDiagonal() * a) + times_t(Bvs, w_.asDiagonal() * b);
+  if (S) {
+    const Eigen::MatrixX3d aa = w_.asDiagonal() * a.cwiseAbs(), bb = w_.asDiagonal() * b.cwiseAbs();
+    *S = times_t(Bus.cwiseAbs(), aa) + times_t(Bvs.cwiseAbs(), bb);
+  }
+}
+
+Eigen::MatrixXd AreaForm::hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+  check(P);
+  for (int I : idx)
+    if (I < 0 || I >= size()) throw SizeError("AreaForm: point index out of range");
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size()), Q = w_.size();
+  const NodeFrame f = frame(Bu_, Bv_, P);
+  const Eigen::MatrixXd Bus = Bu_(Eigen::all, idx), Bvs = Bv_(Eigen::all, idx);
+  // R(2q + r, 3a + c) = sqrt(w/|N|) [ (B_a)_u (x_v ∧ t_r) + (B_a)_v (t_r ∧ x_u) ]_c, t_0, t_1 ⊥ n̂.
+  Eigen::MatrixXd R(2 * Q, 3 * k);
+  Eigen::MatrixX3d nh(Q, 3);
+  for (Eigen::Index q = 0; q < Q; ++q) {
+    const Eigen::Vector3d n = f.N.row(q).transpose() / f.len(q);
+    nh.row(q) = n.transpose();
+    // An orthonormal tangent pair: t0 along x_u's component ⊥ n̂ (x_u ⊥ n̂ already), t1 = n̂ ∧ t0.
+    Eigen::Vector3d t0 = f.Xu.row(q).transpose();
+    const double l0 = t0.norm();
+    if (l0 > 0) {
+      t0 /= l0;
+    } else {
+      t0 = n.unitOrthogonal();
+    }
+    const Eigen::Vector3d t1 = n.cross(t0);
+    const double s = std::sqrt(w_(q) / f.len(q));
+    const Eigen::Vector3d xu = f.Xu.row(q).transpose(), xv = f.Xv.row(q).transpose();
+    const Eigen::Vector3d U0 = s * xv.cross(t0), W0 = s * t0.cross(xu);
+    const Eigen::Vector3d U1 = s * xv.cross(t1), W1 = s * t1.cross(xu);
+    for (Eigen::Index a = 0; a < k; ++a) {
+      const double bu = Bus(q, a), bv = Bvs(q, a);
+      R.block<1, 3>(2 * q, 3 * a) = (bu * U0 + bv * W0).transpose();
+      R.block<1, 3>(2 * q + 1, 3 * a) = (bu * U1 + bv * W1).transpose();
+    }
+  }
+  Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
+  Hs.selfadjointView<Eigen::Lower>().rankUpdate(R.transpose());
+  Hs.triangularView<Eigen::StrictlyUpper>() = Hs.transpose();
+  // ((B_I)_u (B_L)_v - (B_I)_v (B_L)_u) <n̂, e_c ∧ e_d> = sum_k eps(c,d,k) n̂_k (...).
+  for (int kk = 0; kk < 3; ++kk) {
+    const Eigen::MatrixXd M = Bus.transpose() * (w_.cwiseProduct(nh.col(kk))).asDiagonal() * Bvs;
+    const Eigen::MatrixXd A = M - M.transpose();
+    const int c = (kk + 1) % 3, d = (kk + 2) % 3;  // eps(c, d, kk) = +1
+    for (Eigen::Index I = 0; I < k; ++I)
+      for (Eigen::Index L = 0; L < k; ++L) {
+        Hs(3 * I + c, 3 * L + d) += A(I, L);
+        Hs(3 * I + d, 3 * L + c) -= A(I, L);
+      }
+  }
+  return Hs;
+}
+
+double area(const TriangularNet& net) {
+  return AreaForm::cached_triangular(net.n(), std::min(200, 3 * net.n() + 8))->value(net.points());
+}
+double area(const TensorNet& net) {
+  return AreaForm::cached_tensor(net.n(), net.m(), std::min(200, 3 * std::max(net.n(), net.m()) + 8))
+      ->value(net.points());
+}
+
+}  // namespace bpde

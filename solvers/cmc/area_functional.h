@@ -1,0 +1,90 @@
+#pragma once
+// The area A(x) = ∫ |x_u ∧ x_v| du dv of a triangular or tensor Bézier patch, with its exact
+// gradient and Hessian with respect to the control points, by a fixed quadrature rule. This is the
+// geometric half of A_H = A + 2HV (docs/cmc.md, "The area functional"); V is energies/volume.h.
+//
+// Conventions: triangular nets as triangular/triangular_net.h (barycentric order: i from n down to
+// 0, then j from n-i down to 0, k = n-i-j; P_{n00} is row 0, P_{00n} the last row; the third index
+// belongs to w = 1-u-v; derivatives in u and v); tensor nets as tensor/tensor_net.h (P_ij at row
+// i(m+1)+j, i along u). Point matrices P are N x 3. Restricted gradients and Hessians over point
+// indices idx use the entry 3a + c for (idx[a], coordinate c).
+//
+// With N = x_u ∧ x_v and n̂ = N/|N| (at each quadrature node):
+//   dA/dP_L = ∫ (B_L)_u (x_v ∧ n̂) + (B_L)_v (n̂ ∧ x_u),
+//   d²A/dP_I,c dP_L,d = ∫ <J_I e_c, (Id - n̂n̂ᵀ) J_L e_d>/|N| + ((B_I)_u (B_L)_v - (B_I)_v (B_L)_u) <n̂, e_c ∧ e_d>,
+// where J_L = (B_L)_v [x_u]_x - (B_L)_u [x_v]_x is the Jacobian of N with respect to P_L. The first
+// term is assembled as RᵀR with two rows per node (the two tangent directions t ⊥ n̂:
+// R = √w <t, J_L e_c>/√|N|), one dense symmetric rank-k product; the second as three products
+// Buᵀ diag(w n̂_k) Bv. Both are the exact derivatives of the quadrature value (tested against finite
+// differences), so Newton on them converges quadratically to the critical point of the discrete A.
+//
+// The rules. A is not polynomial (|N| is a square root), so no rule is exact; the caller chooses q
+// by the measured error (solvers/cmc/area_rule.h). The rules are built so that the error falls
+// exponentially in q also where |N| vanishes at a corner of the domain (the three arcs of the
+// paper's Fig. 1 meet at 180°, so x_u ∥ x_v there):
+//   - triangle: the six triangles cut by the centroid and the edge midpoints, each mapped from the
+//     unit square by the Duffy map collapsed at its corner of T (u, v) = C + s(P1 - C) + s t(P2 - P1)
+//     with q x q Gauss–Legendre points: 6q² nodes. Near a corner |N| ≈ |a u + b v| is homogeneous of
+//     degree 1, which the collapse turns into s·(smooth).
+//   - square: each quadrant (corner, edge midpoints, centre) split by its diagonal into two
+//     triangles collapsed at the corner of the square: 8q² nodes.
+// The node tables (Bernstein derivatives at the nodes, #nodes x N) are built once per (degree, q).
+//
+// A node where |N| = 0 (a degenerate parametrisation) makes the gradient and Hessian non-finite:
+// callers check min_normal() first (solvers/cmc/cmc_area.cpp reports it as not converged).
+#include <Eigen/Core>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace bpde {
+
+class AreaForm {
+ public:
+  /// Degree-n triangular nets, q Gauss points per direction on each of the six sub-triangles.
+  /// DegreeError unless 1 <= n <= kMaxDegree; ParameterError unless 1 <= q <= 200.
+  static AreaForm triangular(int n, int q);
+  /// Degree-(n,m) tensor nets, q points per direction on each of the eight sub-triangles.
+  static AreaForm tensor(int n, int m, int q);
+  /// Shared, cached instances (thread-safe; the most recently used 32 (kind, degree, q) are kept).
+  static std::shared_ptr<const AreaForm> cached_triangular(int n, int q);
+  static std::shared_ptr<const AreaForm> cached_tensor(int n, int m, int q);
+
+  /// Number of control points N.
+  int size() const { return static_cast<int>(Bu_.cols()); }
+  /// Number of quadrature nodes.
+  int nodes() const { return static_cast<int>(w_.size()); }
+  /// Gauss points per direction of each sub-triangle.
+  int points_per_direction() const { return q_; }
+  std::size_t memory_bytes() const;
+
+  /// A for the N x 3 points P (SizeError when P has the wrong number of rows).
+  double value(const Eigen::MatrixX3d& P) const;
+  /// min over the nodes of |x_u ∧ x_v| divided by the mean of |x_u ∧ x_v| = A / (domain area); 0
+  /// when A = 0. A regular parametrisation keeps it away from 0 (except near degenerate corners,
+  /// where the collapsed rules put nodes at distance ~1e-3 of the corner).
+  double min_normal(const Eigen::MatrixX3d& P) const;
+  /// N x 3 matrix of dA/dP_L.
+  Eigen::MatrixX3d gradient(const Eigen::MatrixX3d& P) const;
+  /// k x 3 rows idx of the gradient (G) and the size of their terms (S):
+  /// S_L = ∫ |(B_L)_u| |x_v ∧ n̂| + |(B_L)_v| |n̂ ∧ x_u| (componentwise). Either pointer may be null.
+  void gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
+                               Eigen::MatrixX3d* S) const;
+  /// 3k x 3k Hessian over the points idx (symmetric).
+  Eigen::MatrixXd hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
+
+ private:
+  void check(const Eigen::MatrixX3d& P) const;
+  int q_ = 1;
+  Eigen::VectorXd w_;
+  Eigen::MatrixXd Bu_, Bv_;  // #nodes x N: (B_I)_u, (B_I)_v at the nodes
+};
+
+class TriangularNet;
+class TensorNet;
+/// A of a net by a rule fine enough for double precision on regular patches (q = 3n + 8, the
+/// larger degree for tensor nets; tests/cmc/test_area_functional.cpp).
+double area(const TriangularNet& net);
+double area(const TensorNet& net);
+
+}  // namespace bpde

@@ -1,0 +1,740 @@
+// The area functional of the cmc problem (cmc.h, "The area functional"): critical points of
+// A_H = A + 2HV and the volume-constrained minimum of A, by a regularised Newton method.
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "core/errors.h"
+#include "core/kron.h"
+#include "solvers/cmc/area_rule.h"
+#include "solvers/cmc/cmc.h"
+#include "solvers/cmc/cmc_area_problem.h"
+#include "solvers/summary.h"
+
+namespace bpde::cmc_detail {
+namespace {
+
+Eigen::VectorXd to_vector(const Eigen::MatrixX3d& G) {
+  Eigen::VectorXd g(3 * G.rows());
+  for (Eigen::Index a = 0; a < G.rows(); ++a) g.segment<3>(3 * a) = G.row(a).transpose();
+  return g;
+}
+
+std::string num(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", x == 0.0 ? 0.0 : x);
+  return buf;
+}
+
+}  // namespace
+
+double AreaProblem::value(double H) const {
+  double f = a->value(base.P) + 2.0 * H * base.f->volume(base.P);
+  if (eps != 0.0) f += eps * (base.f->dirichlet(base.P) - a->value(base.P));
+  return f;
+}
+
+Eigen::VectorXd AreaProblem::gradient(double H) const {
+  Eigen::VectorXd g;
+  residual_at(H, eps, &g);
+  return g;
+}
+
+Eigen::MatrixXd AreaProblem::hessian(double H) const {
+  Eigen::MatrixXd K = a->hessian(base.P, base.free);
+  if (eps != 0.0) K = (1.0 - eps) * K + eps * C;
+  if (H != 0.0) K += 2.0 * H * base.f->volume_form().hessian(base.P, base.free);
+  return K;
+}
+
+double AreaProblem::residual_at(double H, double e, Eigen::VectorXd* g) const {
+  Eigen::MatrixX3d G, S;
+  a->gradient_rows_and_scale(base.P, base.free, &G, &S);
+  if (e != 0.0) {
+    const Eigen::MatrixXd Cf = base.f->gram()(base.free, Eigen::all);
+    Eigen::MatrixX3d GD(G.rows(), 3), SD(G.rows(), 3);
+    for (int c = 0; c < 3; ++c) {
+      GD.col(c) = Cf * base.P.col(c);
+      SD.col(c) = Cf.cwiseAbs() * base.P.col(c).cwiseAbs();
+    }
+    G = (1.0 - e) * G + e * GD;
+    S = (1.0 - e) * S + e * SD;
+  }
+  if (H != 0.0) {
+    Eigen::MatrixX3d GV, SV;
+    base.f->volume_form().gradient_rows_and_scale(base.P, base.free, &GV, &SV);
+    G += 2.0 * H * GV;
+    S += 2.0 * std::abs(H) * SV;
+  }
+  if (g) *g = to_vector(G);
+  if (G.size() == 0) return 0.0;
+  const double nm = G.cwiseAbs().maxCoeff(), den = S.maxCoeff();
+  if (!std::isfinite(nm) || !std::isfinite(den)) return std::numeric_limits<double>::infinity();
+  if (den == 0.0) return nm == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  return nm / den;
+}
+
+CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o, int max_iterations, double& theta,
+                                   double target) {
+  // Levenberg–Marquardt on A_H: (K + μC) δ = -g, μ = θ r (r the relative residual, C the Dirichlet
+  // Gram). The step is judged by the ratio ρ of the actual to the predicted change of A_H
+  // (m(δ) = g·δ + ½ δᵀKδ): accepted when ρ > 0.1; θ falls ×4 when ρ > 0.75 and rises ×4 when
+  // ρ < 0.25 (×10 on a rejection or when K + μC is not positive definite). Once the predicted
+  // change is below the rounding noise of A_H (1e-13 of the size of its terms), the step is
+  // accepted when it lowers the residual instead. The surface must stay regular at the nodes.
+  CorrectorStats st;
+  Eigen::VectorXd g;
+  st.residual = p.residual(H, &g);
+  double f = p.value(H);
+  const double fscale = std::abs(p.area()) + 2.0 * std::abs(H) * std::abs(p.base.f->volume(p.P())) + 1e-300;
+  int stalled = 0;
+  for (int it = 0;; ++it) {
+    if (!std::isfinite(st.residual)) return st;
+    if (st.residual <= o.tolerance || (target > 0 && p.eps != 0.0 && p.residual_at(H, 0.0) <= target)) {
+      st.ok = true;
+      return st;
+    }
+    const Eigen::MatrixXd K = p.hessian(H);
+    if (it >= max_iterations || stalled >= 4) return st;
+    if (!K.allFinite()) return st;
+    const Eigen::VectorXd y = p.get();
+    bool accepted = false;
+    for (int tries = 0; tries < 20 && !accepted; ++tries) {
+      const double mu = theta * st.residual;
+      Eigen::LLT<Eigen::MatrixXd> llt(K + mu * p.C);
+      if (llt.info() != Eigen::Success) {
+        theta *= 10;
+        continue;
+      }
+      Eigen::VectorXd d = -llt.solve(g);
+      if (!d.allFinite()) {
+        theta *= 10;
+        continue;
+      }
+      // Chord corrections with the same factor (at most 3, while the residual falls): they bring
+      // a long step in the soft (tangential) directions back to the floor of the curved valley.
+      p.set(y + d);
+      Eigen::VectorXd gn;
+      double rn = p.residual(H, &gn);
+      for (int c = 0; c < 3 && std::isfinite(rn); ++c) {
+        const Eigen::VectorXd dc = -llt.solve(gn);
+        if (!dc.allFinite()) break;
+        p.set(y + d + dc);
+        Eigen::VectorXd gc;
+        const double rc = p.residual(H, &gc);
+        if (!(rc < rn)) {
+          p.set(y + d);
+          break;
+        }
+        d += dc;
+        rn = rc;
+        gn = gc;
+      }
+      const double pred = g.dot(d) + 0.5 * d.dot(K * d);
+      const double fn = p.value(H);
+      bool ok = std::isfinite(fn) && std::isfinite(rn) && p.a->min_normal(p.P()) > 0.0;
+      double rho = 0.0;
+      if (ok) {
+        // A fall of the residual is always accepted; A_H must fall as predicted otherwise (while
+        // the prediction is above the rounding noise of A_H).
+        // (the Euclidean norm of the gradient: a short step along -(K + μC)^{-1} g always lowers it
+        // when K is positive semidefinite, the max-norm of the residual not necessarily)
+        const bool falls = gn.norm() < g.norm();
+        rho = std::abs(pred) > 1e-12 * fscale ? (fn - f) / pred : 0.0;
+        ok = falls || rho > 0.1;
+        if (falls && !(rho > 0.1)) rho = 0.5;
+      }
+      if (ok) {
+        accepted = true;
+        stalled = rn < st.residual ? 0 : stalled + 1;
+        if (rho == 0.5 && stalled > 0) stalled = 0;  // the gradient norm fell
+        f = fn;
+        g = gn;
+        st.residual = rn;
+        if (rho > 0.75) theta = std::max(theta / 4, 1e-8);
+        if (rho < 0.25) theta *= 4;
+      } else {
+        p.set(y);
+        theta *= 10;
+      }
+    }
+    ++st.iterations;
+    if (!accepted) return st;
+  }
+}
+
+CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations) {
+  // Newton on A_H (ε = 0) restricted to the well-conditioned part of the Hessian. K v = λ C v (C the
+  // Dirichlet Gram, so the cut does not depend on how the free points are scaled), v_iᵀ C v_j = δ_ij;
+  // the kept step is -Σ_{|λ_i| > c λ_max} (v_iᵀ g / λ_i) v_i (the least-C-norm Newton step in the span
+  // of the kept modes), the dropped step the same sum over the soft (tangential) modes. Each
+  // iteration tries the cuts c = 1e-5, ..., 1e-10 and the fractions t = 0, 0.003, ..., 1 of the
+  // dropped step, each trial followed by up to 16 chord corrections in the kept modes (back to the floor of the
+  // curved valley), and keeps the trial with the smallest Euclidean norm of the gradient (the
+  // max-norm residual can stall while it falls); it stops when none lowers it. Measured (docs/cmc.md):
+  // the normal part goes in one or two steps, the soft part linearly (a few % to ~10 % a step).
+  CorrectorStats st;
+  const double e0 = p.eps;
+  p.eps = 0.0;
+  Eigen::VectorXd g;
+  st.residual = p.residual(H, &g);
+  for (int it = 0; it < max_iterations && std::isfinite(st.residual) && st.residual > o.tolerance; ++it) {
+    const Eigen::MatrixXd K = p.hessian(H);
+    if (!K.allFinite()) break;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, p.C);
+    if (es.info() != Eigen::Success) break;
+    const Eigen::VectorXd& lam = es.eigenvalues();
+    const Eigen::MatrixXd& Vm = es.eigenvectors();
+    const double lmax = lam.cwiseAbs().maxCoeff();
+    if (!(lmax > 0) || !std::isfinite(lmax)) break;
+    const Eigen::VectorXd c = Vm.transpose() * g;
+    const Eigen::VectorXd y = p.get();
+    // Merit: the Euclidean norm of the gradient (the max-norm residual can stall while it falls).
+    double best = g.norm(), best_r = st.residual;
+    Eigen::VectorXd best_y, best_g;
+    for (double cut = 1e-5; cut >= 1e-10; cut *= 0.1) {
+      Eigen::VectorXd kept = Eigen::VectorXd::Zero(y.size()), dropped = kept;
+      std::vector<Eigen::Index> keep;
+      for (Eigen::Index i = 0; i < lam.size(); ++i) {
+        if (std::abs(lam(i)) > cut * lmax) {
+          kept -= (c(i) / lam(i)) * Vm.col(i);
+          keep.push_back(i);
+        } else if (lam(i) != 0.0) {
+          dropped -= (c(i) / lam(i)) * Vm.col(i);
+        }
+      }
+      if (!kept.allFinite() || !dropped.allFinite()) continue;
+      // The dropped (soft) modes by a fraction t of their Newton step, each trial followed by up
+      // to three chord corrections in the kept modes, which bring it back to the floor of the
+      // curved valley.
+      for (double t : {0.0, 0.003, 0.01, 0.03, 0.1, 0.2, 0.4, 1.0}) {
+        Eigen::VectorXd d = kept + t * dropped;
+        for (int chord = 0; chord <= 16; ++chord) {
+          p.set(y + d);
+          Eigen::VectorXd gn;
+          const double rn = p.a->min_normal(p.P()) > 0.0 ? p.residual(H, &gn) : std::numeric_limits<double>::infinity();
+          if (!std::isfinite(rn)) break;
+          if (gn.norm() < best) {
+            best = gn.norm();
+            best_r = rn;
+            best_y = p.get();
+            best_g = gn;
+          }
+          const Eigen::VectorXd cn = Vm.transpose() * gn;
+          for (Eigen::Index i : keep) d -= (cn(i) / lam(i)) * Vm.col(i);
+        }
+      }
+    }
+    ++st.iterations;
+    if (best_y.size() == 0) {
+      p.set(y);
+      break;
+    }
+    p.set(best_y);
+    g = best_g;
+    st.residual = best_r;
+  }
+  st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
+  p.eps = e0;
+  return st;
+}
+
+namespace {
+
+// ---------------------------------------------------------------- regularity
+
+struct Regularity {
+  bool ok = true;
+  double min_ratio = 0;  ///< min |N| / mean |N| on the grid
+  bool flipped = false;  ///< two neighbouring samples with opposite normals
+};
+
+template <class Net>
+Eigen::Vector3d normal_at(const Net& net, double u, double v) {
+  return net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1));
+}
+
+// |x_u ∧ x_v| on a 40 x 40 grid away from the corners (margin 0.05), relative to the mean A/|domain|.
+Regularity regularity(const TriangularNet& net, double A) {
+  const int Ns = 40;
+  const double lim = 1 - 0.05 + 1e-12, mean = A / 0.5;
+  Regularity r;
+  r.min_ratio = std::numeric_limits<double>::infinity();
+  std::vector<Eigen::Vector3d> N(static_cast<size_t>((Ns + 1) * (Ns + 1)));
+  std::vector<char> use(N.size(), 0);
+  auto id = [&](int a, int b) { return static_cast<size_t>(a * (Ns + 1) + b); };
+  for (int a = 0; a <= Ns; ++a)
+    for (int b = 0; b <= Ns - a; ++b) {
+      const double u = double(a) / Ns, v = double(b) / Ns, w = 1 - u - v;
+      if (u > lim || v > lim || w > lim) continue;
+      N[id(a, b)] = normal_at(net, u, v);
+      use[id(a, b)] = 1;
+      r.min_ratio = std::min(r.min_ratio, N[id(a, b)].norm() / mean);
+    }
+  for (int a = 0; a <= Ns; ++a)
+    for (int b = 0; b <= Ns - a; ++b) {
+      if (!use[id(a, b)]) continue;
+      if (a + 1 + b <= Ns && use[id(a + 1, b)] && N[id(a, b)].dot(N[id(a + 1, b)]) < 0) r.flipped = true;
+      if (a + b + 1 <= Ns && use[id(a, b + 1)] && N[id(a, b)].dot(N[id(a, b + 1)]) < 0) r.flipped = true;
+    }
+  r.ok = std::isfinite(r.min_ratio) && r.min_ratio >= 1e-3 && !r.flipped;
+  return r;
+}
+
+Regularity regularity(const TensorNet& net, double A) {
+  const int Ns = 40;
+  const double lim = 0.05 - 1e-12, mean = A;
+  Regularity r;
+  r.min_ratio = std::numeric_limits<double>::infinity();
+  std::vector<Eigen::Vector3d> N(static_cast<size_t>((Ns + 1) * (Ns + 1)));
+  std::vector<char> use(N.size(), 0);
+  auto id = [&](int a, int b) { return static_cast<size_t>(a * (Ns + 1) + b); };
+  for (int a = 0; a <= Ns; ++a)
+    for (int b = 0; b <= Ns; ++b) {
+      const double u = double(a) / Ns, v = double(b) / Ns;
+      if (std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim) continue;
+      N[id(a, b)] = normal_at(net, u, v);
+      use[id(a, b)] = 1;
+      r.min_ratio = std::min(r.min_ratio, N[id(a, b)].norm() / mean);
+    }
+  for (int a = 0; a <= Ns; ++a)
+    for (int b = 0; b <= Ns; ++b) {
+      if (!use[id(a, b)]) continue;
+      if (a < Ns && use[id(a + 1, b)] && N[id(a, b)].dot(N[id(a + 1, b)]) < 0) r.flipped = true;
+      if (b < Ns && use[id(a, b + 1)] && N[id(a, b)].dot(N[id(a, b + 1)]) < 0) r.flipped = true;
+    }
+  r.ok = std::isfinite(r.min_ratio) && r.min_ratio >= 1e-3 && !r.flipped;
+  return r;
+}
+
+// ---------------------------------------------------------------- the solve
+
+struct AreaOutcome {
+  double H = 0.0;
+  bool ok = false;
+  Status why = Status::NoConvergence;
+  std::string message;
+};
+
+bool is_triangular(const TriangularNet&) { return true; }
+bool is_triangular(const TensorNet&) { return false; }
+
+template <class Net>
+struct AreaSolve {
+  const Net& data;
+  const CmcOptions& o;
+  AreaProblem p;
+  bool tri;
+  int n, m;
+  double theta = 1.0;
+  Summary& summary;
+
+  // Rule chosen at the current net with the rule tolerance (0.1 x the residual tolerance).
+  bool choose_rule(int start_q = 0) {
+    const AreaRule r = choose_area_rule(tri, n, m, p.P(), p.base.free, 0.1 * o.tolerance, start_q);
+    p.a = r.form;
+    return r.ok;
+  }
+
+  CorrectorStats correct(double H) {
+    CorrectorStats st;
+    if (o.solver == CmcSolver::Ceres) {
+      st = ceres_correct(p, H, o);
+    } else {
+      st = area_newton_correct(p, H, o, 2 * o.max_corrector_iterations, theta, 0.0);
+      if (!st.ok && p.eps == 0.0 && std::isfinite(st.residual)) {
+        // LM stalls in the tangential valley: finish with the truncated Newton phase.
+        const CorrectorStats t = area_truncated_newton(p, H, o, o.max_corrector_iterations);
+        st.iterations += t.iterations;
+        st.ok = t.ok;
+        st.residual = t.residual;
+      }
+    }
+    summary.iterations += st.iterations;
+    return st;
+  }
+
+  // Positive definite Hessian (regularised by 1e-8 C against the tangential near-null directions):
+  // a strict local minimum of A_H, before the fold of the branch.
+  bool strict_minimum(double H, Eigen::VectorXd* tangent, double shift = 1e-8) {
+    const Eigen::MatrixXd K = p.hessian(H) + shift * p.C;
+    Eigen::LLT<Eigen::MatrixXd> llt(K);
+    if (llt.info() != Eigen::Success) return false;
+    if (tangent) *tangent = -2.0 * llt.solve(p.volume_gradient());
+    return true;
+  }
+
+  // The vanishing Dirichlet regulariser: from a critical point of F_1 = D_H in p (and H), solve
+  // F_ε = A_H + ε(D - A) for ε = 1, 1/10, 1/100, ... (each stage by `stage`, started from the
+  // previous stage's point) until the first variation of A_H itself meets the tolerance; ε then
+  // drops to 0 for a last stage. A failed stage is retried with a ratio closer to 1 (√ of the
+  // last); successful ones square the ratio again (not below 1/100). F_ε is well conditioned in the
+  // tangential directions for ε > 0, where A_H alone is nearly singular.
+  template <class Stage>
+  bool homotopy(double& H, Stage stage, std::string& note) {
+    double eps = 1.0, ratio = 0.1;
+    int failures = 0;
+    p.eps = eps;
+    if (!stage(H, eps)) {
+      note = "the start is not a critical point of D_H";
+      return false;
+    }
+    while (true) {
+      if (p.residual_at(H, 0.0) <= o.tolerance || eps == 0.0) break;
+      double next = eps * ratio;
+      if (next < 1e-16) next = 0.0;
+      const Eigen::VectorXd y = p.get();
+      const double Hs = H;
+      p.eps = next;
+      const bool sok = stage(H, next);
+      if (sok) {
+        eps = next;
+        ratio = std::max(ratio * ratio, 1e-2);
+      } else {
+        p.set(y);
+        H = Hs;
+        p.eps = eps;
+        ratio = std::sqrt(ratio);
+        if (ratio > 0.7 || ++failures > 12) {
+          // Keep the last stage: its first variation of A_H is ≈ ε |∇(D - A)| (reported by the
+          // caller as a numerical limit when above the tolerance).
+          note = "the Dirichlet regulariser could not be removed below ε = " + num(eps);
+          p.eps = 0.0;
+          return eps <= 1e-4;
+        }
+      }
+    }
+    p.eps = 0.0;
+    if (p.residual_at(H, 0.0) <= o.tolerance) return true;
+    const Eigen::VectorXd y = p.get();
+    const double Hs = H, r0 = p.residual_at(H, 0.0);
+    if (!stage(H, 0.0) && !(p.residual_at(H, 0.0) < r0)) {
+      p.set(y);
+      H = Hs;
+    }
+    if (p.residual_at(H, 0.0) > o.tolerance) note = "the last stage (ε = 0) stopped above the tolerance";
+    return true;
+  }
+
+  // The stage tolerance: the F_ε residual that keeps the A_H residual (≈ ε |∇(D - A)|) on track.
+  CmcOptions stage_options(double e) const {
+    CmcOptions so = o;
+    so.tolerance = std::max(0.5 * o.tolerance, std::min(1e-6, 1e-3 * e));
+    return so;
+  }
+
+  // A at H = 0 from the net in p (the Dirichlet extremal).
+  bool minimal_surface() {
+    choose_rule();
+    return correct(0.0).ok;
+  }
+
+  // H mode, route 1: the D_H critical point at H, corrected on A_H.
+  bool from_dirichlet(double H, std::string& note) {
+    CmcOptions od = o;
+    od.functional = CmcFunctionalKind::Dirichlet;
+    od.solver = CmcSolver::Newton;
+    od.V.reset();
+    const CmcResult<Net> d = solve_cmc(data, od);
+    if (!d.summary.converged) {
+      note = "no D_H critical point at H";
+      return false;
+    }
+    p.base.P = d.net.points();
+    choose_rule();
+    double h = H;
+    const bool ok = homotopy(
+        h,
+        [&](double hh, double e) {
+          p.eps = e;
+          const CmcOptions so = stage_options(e);
+          double th = 1e-3;
+          CorrectorStats st = o.solver == CmcSolver::Ceres
+                                  ? ceres_correct(p, hh, so)
+                                  : area_newton_correct(p, hh, so, 2 * o.max_corrector_iterations, th, o.tolerance);
+          summary.iterations += st.iterations;
+          return st.ok;
+        },
+        note);
+    p.eps = 0.0;
+    if (!ok) return false;
+    if (o.solver != CmcSolver::Ceres && p.residual_at(h, 0.0) > o.tolerance) {
+      const CorrectorStats st = area_truncated_newton(p, h, o, 2 * o.max_corrector_iterations);
+      summary.iterations += st.iterations;
+      if (st.ok)
+        note += std::string(note.empty() ? "" : "; ") + "finished by the truncated Newton phase in " +
+                std::to_string(st.iterations) + " iteration(s)";
+    }
+    // No stability test here: the point is tied to the D_H branch point by the homotopy, and a
+    // spherical patch larger than a hemisphere is a critical point of A_H but not a minimum.
+    return true;
+  }
+
+  // H mode, route 2: continuation in H on A_H from the critical point of A at H = 0.
+  AreaOutcome continuation(const Eigen::MatrixX3d& start, const std::vector<int>& fixed_idx, int& steps) {
+    const double Ht = o.H;
+    p.base.P = start;
+    if (!minimal_surface())
+      return {0.0, false, Status::NoConvergence, "no critical point of the area (H = 0) from the Dirichlet extremal"};
+    Eigen::VectorXd tangent;
+    if (!strict_minimum(0.0, &tangent))
+      return {0.0, false, Status::NoConvergence, "the critical point of the area at H = 0 is not a strict minimum"};
+    Eigen::VectorXd y = p.get();
+    StepController control(Ht, first_step(Ht, p.P(), fixed_idx), o);
+    while (!control.reached_target()) {
+      if (!control.attempt())
+        return {control.h(), false, Status::NoConvergence,
+                "A_H continuation stopped at H ≈ " + num(control.h()) +
+                    " after max_continuation_steps = " + std::to_string(o.max_continuation_steps) + " attempts"};
+      const StepController::Step step = control.propose();
+      const bool last = step.hn == Ht;
+      const Eigen::VectorXd pred = y + tangent * step.s;
+      p.set(pred);
+      const CorrectorStats st = correct(step.hn);
+      Eigen::VectorXd next;
+      if (st.ok && on_branch(y, pred, p.get()) && strict_minimum(step.hn, last ? nullptr : &next)) {
+        y = p.get();
+        if (!last) tangent = next;
+        ++steps;
+        control.accept(step, st.iterations);
+      } else {
+        p.set(y);
+        if (!control.reject(step))
+          return {control.h(), false, Status::Fold,
+                  "no critical point of A_H on the branch from H = 0 beyond H ≈ " + num(control.h())};
+      }
+    }
+    return {Ht, true, Status::Converged,
+            "A_H continued from H = 0 to H = " + num(Ht) + " in " + std::to_string(steps) + " step(s)"};
+  }
+
+  // V mode: bordered regularised Newton on (Y, H) for ∇A + 2H∇V = 0, V = V0, at fixed V0.
+  CorrectorStats bordered_correct(double V0, double& H) {
+    CorrectorStats st;
+    const VolumeForm& vf = p.base.f->volume_form();
+    auto resid = [&](double h, Eigen::VectorXd& g, double& c) {
+      const double rg = p.residual(h, &g);
+      c = vf.value(p.P()) - V0;
+      const double vs = vf.value_scale(p.P());
+      return std::max(rg, vs > 0 ? std::abs(c) / vs : std::abs(c));
+    };
+    Eigen::VectorXd g;
+    double c = 0;
+    st.residual = resid(H, g, c);
+    for (int it = 0;; ++it) {
+      if (!std::isfinite(st.residual)) return st;
+      if (st.residual <= o.tolerance) {
+        st.ok = true;
+        return st;
+      }
+      if (it >= 2 * o.max_corrector_iterations) return st;
+      const Eigen::MatrixXd K = p.hessian(H);
+      const Eigen::VectorXd gV = p.volume_gradient(), y = p.get();
+      bool accepted = false;
+      for (int tries = 0; tries < 16 && !accepted; ++tries) {
+        const SymFactor fac(K + theta * st.residual * p.C);
+        const Eigen::VectorXd a = fac.solve(g), b = fac.solve(gV);
+        const double den = 2.0 * gV.dot(b);
+        if (!(std::abs(den) > 0) || !a.allFinite() || !b.allFinite()) {
+          theta *= 10;
+          continue;
+        }
+        const double dH = (c - gV.dot(a)) / den;
+        p.set(y - a - 2.0 * dH * b);
+        Eigen::VectorXd gn;
+        double cn = 0;
+        const double rn = p.a->min_normal(p.P()) > 0 ? resid(H + dH, gn, cn) : std::numeric_limits<double>::infinity();
+        if (std::isfinite(rn) && rn < st.residual) {
+          accepted = true;
+          H += dH;
+          g = gn;
+          c = cn;
+          st.residual = rn;
+          theta = std::max(theta / 4, 1e-6);
+        } else {
+          p.set(y);
+          theta *= 10;
+        }
+      }
+      ++st.iterations;
+      summary.iterations += 1;
+      if (!accepted) return st;
+    }
+  }
+
+  // V mode: continuation in V from the critical point of A at H = 0 (V = V_min) to V0.
+  AreaOutcome volume_continuation(const Eigen::MatrixX3d& start, int& steps) {
+    const double V0 = *o.V;
+    p.base.P = start;
+    if (!minimal_surface())
+      return {0.0, false, Status::NoConvergence, "no critical point of the area (H = 0) from the Dirichlet extremal"};
+    const VolumeForm& vf = p.base.f->volume_form();
+    const double Vmin = vf.value(p.P());
+    double H = 0.0;
+    // The tangent per unit V: K dY + 2 gV dH = 0, gV·dY = 1.
+    auto tangent = [&](double h, Eigen::VectorXd& dY, double& dH) {
+      const SymFactor fac(p.hessian(h) + 1e-8 * p.C);
+      const Eigen::VectorXd gV = p.volume_gradient(), b = fac.solve(gV);
+      const double s = gV.dot(b);
+      if (!(std::abs(s) > 0) || !b.allFinite()) return false;
+      dY = b / s;
+      dH = -1.0 / (2.0 * s);
+      return true;
+    };
+    Eigen::VectorXd dY;
+    double dH = 0;
+    if (!tangent(H, dY, dH))
+      return {0.0, false, Status::NoConvergence, "the volume has no gradient at the critical point of the area"};
+    Eigen::VectorXd y = p.get();
+    const double target = V0 - Vmin;
+    if (target == 0.0) return {0.0, true, Status::Converged, "V0 is the volume of the critical point of the area"};
+    StepController control(target, target, o);
+    while (!control.reached_target()) {
+      if (!control.attempt())
+        return {H, false, Status::NoConvergence,
+                "volume continuation stopped at V ≈ " + num(Vmin + control.h()) + " after max_continuation_steps"};
+      const StepController::Step step = control.propose();
+      const Eigen::VectorXd pred = y + dY * step.s;
+      double Hn = H + dH * step.s;
+      p.set(pred);
+      const CorrectorStats st = bordered_correct(Vmin + step.hn, Hn);
+      if (st.ok && on_branch(y, pred, p.get()) && tangent(Hn, dY, dH)) {
+        y = p.get();
+        H = Hn;
+        ++steps;
+        control.accept(step, st.iterations);
+      } else {
+        p.set(y);
+        tangent(H, dY, dH);
+        if (!control.reject(step))
+          return {H, false, Status::NoConvergence,
+                  "no volume-constrained critical point of the area beyond V ≈ " + num(Vmin + control.h())};
+      }
+    }
+    return {H, true, Status::Converged,
+            "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) + " step(s)"};
+  }
+};
+
+template <class Net>
+CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
+  CmcResult<Net> res;
+  res.functional = CmcFunctionalKind::Area;
+  {
+    ScopedTimer timer(res.summary.seconds);
+    o.validate();
+    check_degree(data, o.fixed);
+    const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
+    CmcProblem base{functional_for(data), data.free_indices(o.fixed), data.points()};
+    require_finite_rows(base.P, fixed_idx, "cmc");
+    for (int r : base.free) base.P.row(r).setZero();
+    dirichlet_solve(base, fixed_idx);
+    const Eigen::MatrixX3d extremal = base.P;
+    const Eigen::MatrixXd Cff = base.f->gram()(base.free, base.free);
+    AreaSolve<Net> s{data,
+                     o,
+                     AreaProblem{base, nullptr, kron(Cff, Eigen::Matrix3d::Identity())},
+                     is_triangular(data),
+                     data.n(),
+                     is_triangular(data) ? data.n() : static_cast<int>(0),
+                     1.0,
+                     res.summary};
+    if constexpr (std::is_same_v<Net, TensorNet>) s.m = data.m();
+    if constexpr (std::is_same_v<Net, TriangularNet>) s.m = data.n();
+    AreaOutcome out;
+    if (o.V) {
+      out = s.volume_continuation(extremal, res.continuation_steps);
+    } else if (o.H == 0.0) {
+      s.p.base.P = extremal;
+      out.ok = s.minimal_surface();
+      out.message = out.ok ? "critical point of the area (H = 0) from the Dirichlet extremal"
+                           : "no critical point of the area (H = 0) from the Dirichlet extremal";
+    } else {
+      std::string note;
+      if (s.from_dirichlet(o.H, note)) {
+        out = {o.H, true, Status::Converged,
+               "the D_H critical point at H = " + num(o.H) + " corrected on A_H" +
+                   (note.empty() ? "" : " (" + note + ")")};
+      } else {
+        out = s.continuation(extremal, fixed_idx, res.continuation_steps);
+        if (out.ok) out.message += " (" + note + ")";
+      }
+    }
+    if (!o.V) out.H = out.ok ? o.H : out.H;
+    // The final rule check: refine while the rule's measured error is above its tolerance at the
+    // final net, and correct again with the finer rule.
+    if (out.ok) {
+      for (int round = 0; round < 4; ++round) {
+        const int q = s.p.a->points_per_direction();
+        const bool rule_ok = s.choose_rule(q);
+        if (s.p.a->points_per_direction() == q) {
+          if (!rule_ok)
+            out = {out.H, false, Status::NumericalLimit,
+                   "the area quadrature does not reach its error tolerance with " + std::to_string(q) +
+                       " points per direction (a nearly singular parametrisation at a corner)"};
+          break;
+        }
+        const CorrectorStats st = o.V ? s.bordered_correct(*o.V, out.H) : s.correct(out.H);
+        if (!st.ok) {
+          out = {out.H, false, Status::NumericalLimit,
+                 "the correction with the refined quadrature rule (q = " +
+                     std::to_string(s.p.a->points_per_direction()) + ") did not converge"};
+          break;
+        }
+      }
+    }
+    const Net net = make_net(data, s.p.P());
+    res.net = net;
+    res.H = out.H;
+    res.D = base.f->dirichlet(s.p.P());
+    res.V = base.f->volume(s.p.P());
+    res.DH = res.D + 2.0 * out.H * res.V;
+    res.A = s.p.area();
+    res.energy = res.A + 2.0 * out.H * res.V;
+    res.quadrature_points = s.p.a->points_per_direction();
+    res.summary.residual = s.p.residual(out.H);
+    if (o.V) {
+      const VolumeForm& vf = base.f->volume_form();
+      const double vs = vf.value_scale(s.p.P());
+      res.summary.residual = std::max(res.summary.residual, std::abs(res.V - *o.V) / (vs > 0 ? vs : 1.0));
+    }
+    const Regularity reg = regularity(net, res.A);
+    if (out.ok && !(res.summary.residual <= o.tolerance)) {
+      out = {out.H, false, Status::NumericalLimit,
+             "the final net misses the first variation of A_H by " + num(res.summary.residual) +
+                 " (relative) after: " + out.message};
+    }
+    if (!reg.ok) {
+      out.ok = false;
+      out.why = Status::NoConvergence;
+      out.message = "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(reg.min_ratio) +
+                    " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
+                    " (not a CMC surface); " + out.message;
+    }
+    if (out.ok) {
+      res.summary.message = out.message;
+      res.summary.set_converged();
+    } else {
+      res.summary.set_failed(out.why, out.message);
+    }
+  }
+  return res;
+}
+
+}  // namespace
+
+CmcResult<TriangularNet> solve_area(const TriangularNet& data, const CmcOptions& options) {
+  return solve_area_impl(data, options);
+}
+CmcResult<TensorNet> solve_area(const TensorNet& data, const CmcOptions& options) {
+  return solve_area_impl(data, options);
+}
+
+}  // namespace bpde::cmc_detail

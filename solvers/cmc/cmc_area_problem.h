@@ -1,0 +1,52 @@
+#pragma once
+// Internal to solvers/cmc/*.cpp: the A_H = A + 2HV problem over the free control points (cmc.h,
+// "The area functional"), in the vector layout of cmc_problem.h (y(3a + c) = P(free[a], c)).
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "solvers/cmc/area_functional.h"
+#include "solvers/cmc/cmc_problem.h"
+
+namespace bpde::cmc_detail {
+
+struct AreaProblem {
+  CmcProblem base;                    ///< the Dirichlet Gram and V, the free points and P
+  std::shared_ptr<const AreaForm> a;  ///< the quadrature rule in use
+  Eigen::MatrixXd C;                  ///< the Dirichlet Gram over the free points ⊗ Id_3
+  /// The weight of the Dirichlet regulariser: the functional is F_ε = A_H + ε(D - A)
+  /// = (1-ε)A + εD + 2HV (ε = 1: the paper's D_H; ε = 0: A_H).
+  double eps = 0.0;
+
+  int k() const { return base.k(); }
+  Eigen::VectorXd get() const { return base.get(); }
+  void set(const Eigen::VectorXd& y) { base.set(y); }
+  const Eigen::MatrixX3d& P() const { return base.P; }
+  double area() const { return a->value(base.P); }
+  /// F_ε (A_H when eps = 0).
+  double value(double H) const;
+  /// Free rows of ∇F_ε (3k).
+  Eigen::VectorXd gradient(double H) const;
+  /// 3k x 3k Hessian of F_ε over the free points.
+  Eigen::MatrixXd hessian(double H) const;
+  /// Free rows of ∇V (3k).
+  Eigen::VectorXd volume_gradient() const { return base.volume_gradient(); }
+  /// max |∇F_ε| / max ((1-ε)S_A + ε Σ_J|C_IJ||P_J| + 2|H| S_V) over the free rows (AreaForm /
+  /// VolumeForm scales); the gradient into g when given; +inf when not finite.
+  double residual(double H, Eigen::VectorXd* g = nullptr) const { return residual_at(H, eps, g); }
+  /// The same with another ε (ε = 0: the first variation of A_H).
+  double residual_at(double H, double e, Eigen::VectorXd* g = nullptr) const;
+};
+
+/// The regularised Newton corrector of F_ε at fixed H from problem.P (cmc.h). theta carries the
+/// regularisation factor from one call to the next. With target > 0 and ε > 0 it also stops when
+/// the first variation of A_H itself is below target.
+CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o, int max_iterations, double& theta,
+                                   double target);
+/// The final Newton phase on A_H (ε = 0) with the Hessian solve truncated to the modes above a relative
+/// eigenvalue cut (cmc_area.cpp); ok when the first variation reaches o.tolerance.
+CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
+/// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
+CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);
+
+}  // namespace bpde::cmc_detail
