@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "jobs/run_job.h"
+#include "bezierpde/jobs/run_job.h"
 
 namespace bpde::app {
 

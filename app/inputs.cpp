@@ -1,7 +1,7 @@
 #include "app/inputs.h"
 
-#include "core/errors.h"
-#include "jobs/run_job.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/jobs/run_job.h"
 
 namespace bpde::app {
 

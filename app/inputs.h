@@ -8,8 +8,8 @@
 //   a blend     {"kind": "blend", ...} or {"partition", ...} bpde blend
 #include <string>
 
-#include "io/blend_config.h"
-#include "io/job.h"
+#include "bezierpde/io/blend_config.h"
+#include "bezierpde/io/job.h"
 
 namespace bpde::app {
 

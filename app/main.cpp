@@ -14,8 +14,8 @@
 #include "app/progress_line.h"
 #include "app/version.h"
 #include "app/sweep_command.h"
-#include "jobs/exit_status.h"
-#include "jobs/job_progress.h"
+#include "bezierpde/jobs/exit_status.h"
+#include "bezierpde/jobs/job_progress.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)", "bpde"};

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/progress.h"
+#include "bezierpde/core/progress.h"
 
 namespace bpde::app {
 

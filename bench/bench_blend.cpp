@@ -8,7 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_data.h"
-#include "solvers/blend/smoothing_spline.h"
+#include "bezierpde/solvers/blend/smoothing_spline.h"
 
 namespace {
 

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "solvers/c1/biharmonic_load.h"
-#include "solvers/c1/clamped_plate.h"
-#include "solvers/c1/tetraharmonic.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
+#include "bezierpde/solvers/c1/clamped_plate.h"
+#include "bezierpde/solvers/c1/tetraharmonic.h"
 
 namespace {
 

@@ -5,9 +5,9 @@
 // volume quadrature tables) is cached by CmcFunctional and built before timing.
 #include <benchmark/benchmark.h>
 
-#include "boundaries/reference_boundaries.h"
-#include "energies/cmc.h"
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace {
 

@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "boundaries/reference_boundaries.h"
-#include "io/blend_config.h"
-#include "jobs/run_job.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/io/blend_config.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde_bench {
 

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "solvers/extremal.h"
+#include "bezierpde/solvers/extremal.h"
 
 namespace {
 

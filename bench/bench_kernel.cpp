@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 #include <random>
 
-#include "core/row_major_product.h"
+#include "bezierpde/core/row_major_product.h"
 
 namespace {
 

@@ -14,9 +14,9 @@
 
 #include <cmath>
 
-#include "solvers/pde/pde_explicit.h"
-#include "solvers/pde/pde_lu.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/solvers/pde/pde_explicit.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace {
 

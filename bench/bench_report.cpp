@@ -15,8 +15,8 @@
 #include <string>
 
 #include "bench_data.h"
-#include "jobs/run_blend.h"
-#include "jobs/run_job.h"
+#include "bezierpde/jobs/run_blend.h"
+#include "bezierpde/jobs/run_job.h"
 
 namespace {
 

@@ -9,8 +9,8 @@
 
 #include <random>
 
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "bench_data.h"
-#include "jobs/run_blend.h"
+#include "bezierpde/jobs/run_blend.h"
 
 namespace {
 

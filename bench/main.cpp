@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-#include "core/row_major_product.h"
+#include "bezierpde/core/row_major_product.h"
 #include "table1_report.h"
 
 int main(int argc, char** argv) {

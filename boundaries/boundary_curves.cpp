@@ -1,13 +1,13 @@
-#include "boundaries/boundary_curves.h"
+#include "bezierpde/boundaries/boundary_curves.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "tensor/bspline_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/tensor/bspline_net.h"
 
 namespace bpde {
 namespace {

@@ -1,12 +1,12 @@
-#include "boundaries/fit_boundary.h"
+#include "bezierpde/boundaries/fit_boundary.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

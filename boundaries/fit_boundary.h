@@ -52,9 +52,9 @@
 #include <string>
 #include <vector>
 
-#include "boundaries/boundary_curves.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/boundaries/boundary_curves.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 

@@ -12,9 +12,9 @@
 #include <functional>
 #include <numbers>
 
-#include "core/bernstein.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 

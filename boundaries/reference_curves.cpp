@@ -1,4 +1,4 @@
-#include "boundaries/reference_curves.h"
+#include "bezierpde/boundaries/reference_curves.h"
 
 #include <numbers>
 

@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <functional>
 
-#include "boundaries/fit_boundary.h"
+#include "bezierpde/boundaries/fit_boundary.h"
 
 namespace bpde {
 

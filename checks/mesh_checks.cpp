@@ -19,7 +19,7 @@
 //     surface must be closed up to those loops; each loop is capped by a fan from its centroid,
 //     whose contribution is -(1/3) <c - o, A> with A the loop's area vector.
 //  7. cone volume: (1/6) sum det(a, b, c) over the input triangles, in input coordinates.
-#include "checks/mesh_checks.h"
+#include "bezierpde/checks/mesh_checks.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
@@ -35,7 +35,7 @@
 #include <unordered_map>
 #include <utility>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

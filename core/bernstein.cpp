@@ -1,4 +1,4 @@
-#include "core/bernstein.h"
+#include "bezierpde/core/bernstein.h"
 
 #include <array>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <mutex>
 #include <vector>
 
-#include "core/bernstein_ops.h"
-#include "core/binomial.h"
-#include "core/errors.h"
+#include "bezierpde/core/bernstein_ops.h"
+#include "bezierpde/core/binomial.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

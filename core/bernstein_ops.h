@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "core/binomial.h"
-#include "core/errors.h"
+#include "bezierpde/core/binomial.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

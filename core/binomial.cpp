@@ -1,4 +1,4 @@
-#include "core/binomial.h"
+#include "bezierpde/core/binomial.h"
 
 #include <array>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <mutex>
 #include <string>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

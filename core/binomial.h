@@ -13,7 +13,7 @@
 //
 // Errors: DegreeError for n > kMaxBinomialRow. Out of the triangle (n < 0, k < 0 or k > n) the
 // value is 0.
-#include "core/scalar_types.h"
+#include "bezierpde/core/scalar_types.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "core/differential_geometry.h"
+#include "bezierpde/core/differential_geometry.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

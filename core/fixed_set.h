@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

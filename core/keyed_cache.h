@@ -31,8 +31,8 @@
 #include <type_traits>
 #include <utility>
 
-#include "core/bernstein.h"  // kMaxDegree
-#include "core/errors.h"
+#include "bezierpde/core/bernstein.h"  // kMaxDegree
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

@@ -1,9 +1,9 @@
-#include "core/quadrature.h"
+#include "bezierpde/core/quadrature.h"
 
 #include <cmath>
 #include <numbers>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

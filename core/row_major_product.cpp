@@ -1,8 +1,8 @@
-#include "core/row_major_product.h"
+#include "bezierpde/core/row_major_product.h"
 
 #include <sstream>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define BPDE_X86_DISPATCH 1

@@ -21,8 +21,8 @@
 #include <memory>
 #include <vector>
 
-#include "core/mesh.h"
-#include "energies/volume.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/energies/volume.h"
 
 namespace bpde {
 

@@ -1,11 +1,11 @@
-#include "energies/energy_spec.h"
+#include "bezierpde/energies/energy_spec.h"
 
 #include <Eigen/LU>
 
 #include <cmath>
 #include <sstream>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

@@ -1,9 +1,9 @@
-#include "energies/quadratic_energy.h"
+#include "bezierpde/energies/quadratic_energy.h"
 
 #include <string>
 
-#include "core/errors.h"
-#include "energies/tensor_gram.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/energies/tensor_gram.h"
 
 namespace bpde {
 

@@ -11,8 +11,8 @@
 // Sun–Zhu (fourth order); docs/errata.md, explicit PDE solutions §2 (laplacian-squared vs biharmonic).
 #include <Eigen/Core>
 
-#include "energies/energy_spec.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

@@ -1,12 +1,12 @@
-#include "energies/tensor_gram.h"
+#include "bezierpde/energies/tensor_gram.h"
 
 #include <cmath>
 #include <map>
 #include <string>
 #include <utility>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

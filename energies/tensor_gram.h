@@ -22,7 +22,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "energies/energy_spec.h"
+#include "bezierpde/energies/energy_spec.h"
 
 namespace bpde {
 

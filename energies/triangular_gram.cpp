@@ -1,12 +1,12 @@
-#include "energies/triangular_gram.h"
+#include "bezierpde/energies/triangular_gram.h"
 
 #include <cmath>
 #include <string>
 
-#include "core/bernstein.h"
-#include "core/binomial.h"
-#include "core/errors.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/binomial.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 namespace {

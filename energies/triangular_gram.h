@@ -20,7 +20,7 @@
 #include <array>
 #include <vector>
 
-#include "energies/energy_spec.h"
+#include "bezierpde/energies/energy_spec.h"
 
 namespace bpde {
 

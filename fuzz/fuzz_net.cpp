@@ -4,7 +4,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "io/json_io.h"
+#include "bezierpde/io/json_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return bpde::fuzz::run_reader(data, size, [](const std::string& text) {

@@ -10,7 +10,7 @@
 #include <exception>
 #include <string>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde::fuzz {
 

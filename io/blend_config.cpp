@@ -1,12 +1,12 @@
-#include "io/blend_config.h"
+#include "bezierpde/io/blend_config.h"
 
-#include "io/json_io.h"
+#include "bezierpde/io/json_io.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

@@ -26,7 +26,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-#include "solvers/blend/smoothing_spline.h"
+#include "bezierpde/solvers/blend/smoothing_spline.h"
 
 namespace bpde {
 

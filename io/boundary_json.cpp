@@ -1,13 +1,13 @@
-#include "io/boundary_json.h"
+#include "bezierpde/io/boundary_json.h"
 
 #include <cmath>
 #include <optional>
 #include <utility>
 
-#include "boundaries/reference_boundaries.h"
-#include "boundaries/reference_curves.h"
-#include "core/bernstein.h"
-#include "core/errors.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/boundaries/reference_curves.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "boundaries/fit_boundary.h"
-#include "io/json_io.h"
+#include "bezierpde/boundaries/fit_boundary.h"
+#include "bezierpde/io/json_io.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "io/html_view.h"
+#include "bezierpde/io/html_view.h"
 
 #include <bit>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "bpde_viewer_assets.h"  // generated at build time (CMakeLists.txt): kTemplate, kBundle, kThreeVersion
-#include "core/errors.h"
-#include "io/base64.h"
-#include "io/mesh_io.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/base64.h"
+#include "bezierpde/io/mesh_io.h"
 
 namespace bpde {
 namespace {

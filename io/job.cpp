@@ -1,10 +1,10 @@
-#include "io/job.h"
+#include "bezierpde/io/job.h"
 
 #include <cmath>
 
-#include "core/errors.h"
-#include "io/boundary_json.h"
-#include "io/step_export.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/boundary_json.h"
+#include "bezierpde/io/step_export.h"
 
 namespace bpde {
 

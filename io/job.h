@@ -5,12 +5,12 @@
 #include <optional>
 #include <string>
 
-#include "core/fixed_set.h"
-#include "core/mesh.h"
-#include "energies/energy_spec.h"
-#include "io/json_io.h"
-#include "io/mesh_io.h"
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/core/fixed_set.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "io/json_io.h"
+#include "bezierpde/io/json_io.h"
 
 #include <cmath>
 #include <cstdint>
@@ -8,8 +8,8 @@
 #include <sstream>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <variant>
 
-#include "tensor/bspline_net.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/tensor/bspline_net.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "io/mesh_io.h"
+#include "bezierpde/io/mesh_io.h"
 
 #include <bit>
 #include <charconv>
@@ -11,8 +11,8 @@
 #include <system_error>
 #include <vector>
 
-#include "core/errors.h"
-#include "io/vtp_io.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/vtp_io.h"
 
 namespace bpde {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh.h"
-#include "io/json_io.h"
-#include "io/surface_fields.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/io/surface_fields.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "io/output_folder.h"
+#include "bezierpde/io/output_folder.h"
 
 #include <unistd.h>
 
@@ -9,7 +9,7 @@
 #include <system_error>
 #include <utility>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

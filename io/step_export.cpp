@@ -1,5 +1,5 @@
 // The one OpenCASCADE translation unit (io/step_export.h).
-#include "io/step_export.h"
+#include "bezierpde/io/step_export.h"
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRep_Tool.hxx>
@@ -24,8 +24,8 @@
 #include <mutex>
 #include <vector>
 
-#include "core/errors.h"
-#include "triangular/tensor_form.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/triangular/tensor_form.h"
 
 namespace bpde {
 namespace {

@@ -17,8 +17,8 @@
 #include <type_traits>
 #include <variant>
 
-#include "core/errors.h"
-#include "io/json_io.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/json_io.h"
 
 namespace bpde {
 

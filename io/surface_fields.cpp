@@ -1,11 +1,11 @@
-#include "io/surface_fields.h"
+#include "bezierpde/io/surface_fields.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 
-#include "core/differential_geometry.h"
-#include "core/errors.h"
+#include "bezierpde/core/differential_geometry.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

@@ -5,8 +5,8 @@
 #include <Eigen/Core>
 #include <cstdint>
 
-#include "core/mesh.h"
-#include "io/json_io.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/io/json_io.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "io/vtp_io.h"
+#include "bezierpde/io/vtp_io.h"
 
 #include <bit>
 #include <charconv>
@@ -7,8 +7,8 @@
 #include <fstream>
 #include <vector>
 
-#include "core/errors.h"
-#include "io/base64.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/base64.h"
 
 namespace bpde {
 namespace {

@@ -12,9 +12,9 @@
 // header_type="UInt64": each array is preceded by its byte count as a little-endian UInt64).
 #include <string>
 
-#include "core/mesh.h"
-#include "io/mesh_io.h"
-#include "io/surface_fields.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/io/surface_fields.h"
 
 namespace bpde {
 

@@ -1,8 +1,8 @@
-#include "jobs/exit_status.h"
+#include "bezierpde/jobs/exit_status.h"
 
 #include <new>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

@@ -1,7 +1,7 @@
-#include "jobs/exports.h"
+#include "bezierpde/jobs/exports.h"
 
-#include "io/html_view.h"
-#include "io/step_export.h"
+#include "bezierpde/io/html_view.h"
+#include "bezierpde/io/step_export.h"
 
 namespace bpde {
 

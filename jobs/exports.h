@@ -3,8 +3,8 @@
 // bezierpde extensions): DIR/view.html (io/html_view.h) and DIR/surface.step (io/step_export.h).
 #include <string>
 
-#include "core/mesh.h"
-#include "io/json_io.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/io/json_io.h"
 
 namespace bpde {
 

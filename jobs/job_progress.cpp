@@ -1,4 +1,4 @@
-#include "jobs/job_progress.h"
+#include "bezierpde/jobs/job_progress.h"
 
 #include <utility>
 

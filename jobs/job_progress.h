@@ -3,7 +3,7 @@
 // the solvers' Options (CmcOptions::progress), write_result reports its stages (sampling,
 // checking, writing). Null unless a caller installs one with a JobProgressScope, so that the job
 // functions keep their signatures and cost nothing when progress is off.
-#include "core/progress.h"
+#include "bezierpde/core/progress.h"
 
 namespace bpde {
 

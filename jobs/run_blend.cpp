@@ -1,7 +1,7 @@
-#include "jobs/run_blend.h"
+#include "bezierpde/jobs/run_blend.h"
 
-#include "jobs/run_job.h"
-#include "solvers/blend/smoothing_spline.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/solvers/blend/smoothing_spline.h"
 
 namespace bpde {
 

@@ -3,11 +3,11 @@
 // of a blend config, its report, and the files it writes.
 #include <string>
 
-#include "core/mesh.h"
-#include "io/blend_config.h"
-#include "io/json_io.h"
-#include "solvers/summary.h"
-#include "tensor/bspline_net.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/io/blend_config.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/bspline_net.h"
 
 namespace bpde {
 

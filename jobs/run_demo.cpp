@@ -1,4 +1,4 @@
-#include "jobs/run_demo.h"
+#include "bezierpde/jobs/run_demo.h"
 
 #include <Eigen/Core>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "boundaries/reference_boundaries.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
 
 namespace bpde {
 

@@ -3,8 +3,8 @@
 // the command prints from their results.
 #include <string>
 
-#include "io/job.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/io/job.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 

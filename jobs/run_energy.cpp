@@ -1,13 +1,13 @@
-#include "jobs/run_energy.h"
+#include "bezierpde/jobs/run_energy.h"
 
 #include <cmath>
 
-#include "core/errors.h"
-#include "energies/cmc.h"
-#include "energies/quadratic_energy.h"
-#include "energies/triangular_gram.h"
-#include "io/job.h"
-#include "solvers/bspline/bspline_extremal.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/energies/quadratic_energy.h"
+#include "bezierpde/energies/triangular_gram.h"
+#include "bezierpde/io/job.h"
+#include "bezierpde/solvers/bspline/bspline_extremal.h"
 
 namespace bpde {
 

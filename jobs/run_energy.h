@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "io/json_io.h"
+#include "bezierpde/io/json_io.h"
 
 namespace bpde {
 

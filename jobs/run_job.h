@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh.h"
-#include "io/job.h"
-#include "jobs/exports.h"
-#include "solvers/requirements.h"
-#include "solvers/summary.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/io/job.h"
+#include "bezierpde/jobs/exports.h"
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/solvers/summary.h"
 
 namespace bpde {
 

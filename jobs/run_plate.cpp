@@ -1,10 +1,10 @@
-#include "jobs/run_plate.h"
+#include "bezierpde/jobs/run_plate.h"
 
 #include <cmath>
 
-#include "core/errors.h"
-#include "jobs/run_job.h"
-#include "solvers/c1/clamped_plate.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/solvers/c1/clamped_plate.h"
 
 namespace bpde {
 

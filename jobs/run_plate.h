@@ -3,8 +3,8 @@
 // command's arguments, the solve, and the JSON object the command prints.
 #include <string>
 
-#include "io/json_io.h"
-#include "solvers/summary.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/solvers/summary.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "jobs/solve_summary.h"
+#include "bezierpde/jobs/solve_summary.h"
 
 #include <cstdio>
 

@@ -3,7 +3,7 @@
 // the same figures as `bpde demo` prints, for any problem.
 #include <string>
 
-#include "io/json_io.h"
+#include "bezierpde/io/json_io.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/extremal.h"
+#include "bezierpde/solvers/extremal.h"
 
 #include <Eigen/Cholesky>
 #include <algorithm>
@@ -6,13 +6,13 @@
 #include <sstream>
 #include <utility>
 
-#include "core/bernstein.h"
-#include "core/bernstein_ops.h"
-#include "core/errors.h"
-#include "core/keyed_cache.h"
-#include "core/quadrature.h"
-#include "core/symmetric_factor.h"
-#include "energies/tensor_gram.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/bernstein_ops.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/keyed_cache.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/core/symmetric_factor.h"
+#include "bezierpde/energies/tensor_gram.h"
 
 namespace bpde {
 

@@ -1,8 +1,8 @@
-#include "solvers/requirements.h"
+#include "bezierpde/solvers/requirements.h"
 
 #include <algorithm>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/fixed_set.h"
+#include "bezierpde/core/fixed_set.h"
 
 namespace bpde {
 

@@ -1,11 +1,11 @@
-#include "tensor/bspline_net.h"
+#include "bezierpde/tensor/bspline_net.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

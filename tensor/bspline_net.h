@@ -7,9 +7,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "core/differential_geometry.h"
-#include "core/fixed_set.h"
-#include "core/mesh.h"
+#include "bezierpde/core/differential_geometry.h"
+#include "bezierpde/core/fixed_set.h"
+#include "bezierpde/core/mesh.h"
 
 namespace bpde {
 

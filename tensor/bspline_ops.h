@@ -15,8 +15,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "tensor/bspline_net.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/tensor/bspline_net.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

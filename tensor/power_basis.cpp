@@ -1,9 +1,9 @@
-#include "tensor/power_basis.h"
+#include "bezierpde/tensor/power_basis.h"
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "core/keyed_cache.h"
-#include "core/row_major_product.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/keyed_cache.h"
+#include "bezierpde/core/row_major_product.h"
 
 #include <string>
 

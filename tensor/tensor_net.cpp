@@ -1,13 +1,13 @@
-#include "tensor/tensor_net.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "core/row_major_product.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/row_major_product.h"
 
 namespace bpde {
 namespace {

@@ -1,6 +1,6 @@
-#include "triangular/tensor_form.h"
+#include "bezierpde/triangular/tensor_form.h"
 
-#include "core/binomial.h"
+#include "bezierpde/core/binomial.h"
 
 namespace bpde {
 

@@ -13,8 +13,8 @@
 // copies of P_{n00} (the collapsed edge s = 1); its edges s = 0, t = 0 and t = 1 are the
 // triangle's edges u = 0 (from P_{00n} to P_{0n0}), v = 0 (P_{00n} to P_{n00}) and w = 0
 // (P_{0n0} to P_{n00}).
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 

@@ -1,12 +1,12 @@
-#include "triangular/triangular_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/bernstein.h"
-#include "core/binomial.h"
-#include "core/errors.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/binomial.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

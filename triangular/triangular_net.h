@@ -14,9 +14,9 @@
 #include <array>
 #include <vector>
 
-#include "core/differential_geometry.h"
-#include "core/fixed_set.h"
-#include "core/mesh.h"
+#include "bezierpde/core/differential_geometry.h"
+#include "bezierpde/core/fixed_set.h"
+#include "bezierpde/core/mesh.h"
 
 namespace bpde {
 

@@ -38,8 +38,8 @@
 #include <string>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace c1ex {
 

@@ -27,11 +27,11 @@
 
 #include "configurations.h"
 #include "examples/common/generated.h"
-#include "io/json_io.h"
-#include "io/mesh_io.h"
-#include "jobs/run_job.h"
-#include "solvers/c1/biharmonic_load.h"
-#include "solvers/c1/tetraharmonic.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
+#include "bezierpde/solvers/c1/tetraharmonic.h"
 
 namespace {
 

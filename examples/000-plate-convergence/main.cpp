@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "examples/common/generated.h"
-#include "solvers/c1/clamped_plate.h"
+#include "bezierpde/solvers/c1/clamped_plate.h"
 
 namespace {
 

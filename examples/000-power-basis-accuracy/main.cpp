@@ -12,10 +12,10 @@
 #include <cstdio>
 #include <random>
 
-#include "core/bernstein.h"
+#include "bezierpde/core/bernstein.h"
 #include "examples/common/generated.h"
-#include "tensor/power_basis.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/tensor/power_basis.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 int main() {
   std::mt19937 rng(2026);

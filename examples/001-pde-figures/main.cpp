@@ -10,13 +10,13 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "energies/quadratic_energy.h"
+#include "bezierpde/energies/quadratic_energy.h"
 #include "examples/common/generated.h"
-#include "io/mesh_io.h"
-#include "jobs/run_job.h"
-#include "solvers/extremal.h"
-#include "solvers/pde/pde_lu.h"
-#include "solvers/pde/pde_residual.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/solvers/extremal.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;

@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
-#include "energies/energy_spec.h"
+#include "bezierpde/energies/energy_spec.h"
 #include "examples/common/generated.h"
-#include "solvers/bspline/bspline_extremal.h"
-#include "solvers/bspline/bspline_pde.h"
-#include "tensor/bspline_net.h"
-#include "tensor/bspline_ops.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/solvers/bspline/bspline_extremal.h"
+#include "bezierpde/solvers/bspline/bspline_pde.h"
+#include "bezierpde/tensor/bspline_net.h"
+#include "bezierpde/tensor/bspline_ops.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 using namespace bpde;
 

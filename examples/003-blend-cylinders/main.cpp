@@ -19,11 +19,11 @@
 #include <numbers>
 #include <string>
 
-#include "checks/mesh_checks.h"
-#include "core/errors.h"
+#include "bezierpde/checks/mesh_checks.h"
+#include "bezierpde/core/errors.h"
 #include "examples/common/generated.h"
-#include "io/blend_config.h"
-#include "solvers/blend/smoothing_spline.h"
+#include "bezierpde/io/blend_config.h"
+#include "bezierpde/solvers/blend/smoothing_spline.h"
 
 using namespace bpde;
 

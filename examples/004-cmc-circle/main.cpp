@@ -17,12 +17,12 @@
 #include <string>
 #include <vector>
 
-#include "boundaries/reference_boundaries.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
 #include "examples/common/generated.h"
-#include "io/json_io.h"
-#include "io/mesh_io.h"
-#include "jobs/run_job.h"
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace fs = std::filesystem;
 using bpde::Json;

@@ -1,4 +1,4 @@
-#include "solvers/blend/bfs_element.h"
+#include "bezierpde/solvers/blend/bfs_element.h"
 
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/quadrature.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/blend/smoothing_spline.h"
+#include "bezierpde/solvers/blend/smoothing_spline.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

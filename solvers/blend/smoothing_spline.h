@@ -30,11 +30,11 @@
 #include <string>
 #include <vector>
 
-#include "core/differential_geometry.h"
-#include "core/mesh.h"
-#include "solvers/blend/bfs_element.h"
-#include "solvers/summary.h"
-#include "tensor/bspline_net.h"
+#include "bezierpde/core/differential_geometry.h"
+#include "bezierpde/core/mesh.h"
+#include "bezierpde/solvers/blend/bfs_element.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/bspline_net.h"
 
 namespace bpde {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/fixed_set.h"
-#include "solvers/summary.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/fixed_set.h"
+#include "bezierpde/solvers/summary.h"
 
 namespace bpde::detail {
 

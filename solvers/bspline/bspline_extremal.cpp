@@ -1,4 +1,4 @@
-#include "solvers/bspline/bspline_extremal.h"
+#include "bezierpde/solvers/bspline/bspline_extremal.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
@@ -8,9 +8,9 @@
 #include <sstream>
 #include <string>
 
-#include "core/errors.h"
-#include "core/quadrature.h"
-#include "solvers/bspline/bspline_common.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/solvers/bspline/bspline_common.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/bspline/bspline_pde.h"
+#include "bezierpde/solvers/bspline/bspline_pde.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
@@ -8,11 +8,11 @@
 #include <sstream>
 #include <string>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "solvers/bspline/bspline_common.h"
-#include "solvers/bspline/bspline_extremal.h"
-#include "tensor/bspline_ops.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/bspline/bspline_common.h"
+#include "bezierpde/solvers/bspline/bspline_extremal.h"
+#include "bezierpde/tensor/bspline_ops.h"
 
 namespace bpde {
 namespace {

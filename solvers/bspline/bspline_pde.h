@@ -29,12 +29,12 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "core/fixed_set.h"
-#include "energies/energy_spec.h"
-#include "solvers/pde/pde_residual.h"
-#include "solvers/requirements.h"
-#include "solvers/summary.h"
-#include "tensor/bspline_net.h"
+#include "bezierpde/core/fixed_set.h"
+#include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/bspline_net.h"
 
 namespace bpde {
 

@@ -18,10 +18,10 @@
 // it is: docs/c1.md, "How the C¹ solvers work".
 #include <Eigen/Core>
 
-#include "solvers/c1/c1_requirements.h"
-#include "solvers/requirements.h"
-#include "solvers/summary.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/solvers/c1/c1_requirements.h"
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

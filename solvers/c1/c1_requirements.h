@@ -4,7 +4,7 @@
 // adjacent rows, "fixed": "boundary+adjacent"), n = m >= 4 (Theorem 1).
 #include <string>
 
-#include "solvers/requirements.h"
+#include "bezierpde/solvers/requirements.h"
 
 namespace bpde {
 

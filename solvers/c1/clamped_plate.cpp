@@ -1,4 +1,4 @@
-#include "solvers/c1/clamped_plate.h"
+#include "bezierpde/solvers/c1/clamped_plate.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/bernstein_ops.h"
-#include "core/errors.h"
-#include "core/kron.h"
-#include "core/quadrature.h"
-#include "solvers/c1/biharmonic_load.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/bernstein_ops.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/kron.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
 
 namespace bpde {
 namespace {

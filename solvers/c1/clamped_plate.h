@@ -17,8 +17,8 @@
 // beside the paper's: docs/c1.md.
 #include <string>
 
-#include "solvers/summary.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

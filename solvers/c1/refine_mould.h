@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/scalar_types.h"
+#include "bezierpde/core/scalar_types.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/c1/tetraharmonic.h"
+#include "bezierpde/solvers/c1/tetraharmonic.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -9,14 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/bernstein_ops.h"
-#include "core/errors.h"
-#include "core/keyed_cache.h"
-#include "core/kron.h"
-#include "solvers/c1/biharmonic_load.h"
-#include "solvers/c1/refine_mould.h"
-#include "tensor/power_basis.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/bernstein_ops.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/keyed_cache.h"
+#include "bezierpde/core/kron.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
+#include "bezierpde/solvers/c1/refine_mould.h"
+#include "bezierpde/tensor/power_basis.h"
 
 namespace bpde {
 namespace {

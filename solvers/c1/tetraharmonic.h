@@ -25,10 +25,10 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "solvers/c1/c1_requirements.h"
-#include "solvers/requirements.h"
-#include "solvers/summary.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/solvers/c1/c1_requirements.h"
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/cmc/area_rule.h"
+#include "bezierpde/solvers/cmc/area_rule.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-#include "solvers/cmc/area_functional.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -8,11 +8,11 @@
 #include <memory>
 #include <string>
 
-#include "core/errors.h"
-#include "energies/cmc.h"
-#include "solvers/cmc/area_functional.h"
-#include "solvers/cmc/cmc_problem.h"
-#include "solvers/summary.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/summary.h"
 
 namespace bpde {
 

@@ -60,12 +60,12 @@
 #include <optional>
 #include <string>
 
-#include "core/fixed_set.h"
-#include "core/progress.h"
-#include "solvers/requirements.h"
-#include "solvers/summary.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/core/fixed_set.h"
+#include "bezierpde/core/progress.h"
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 

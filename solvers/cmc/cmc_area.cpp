@@ -11,12 +11,12 @@
 #include <type_traits>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/kron.h"
-#include "solvers/cmc/area_rule.h"
-#include "solvers/cmc/cmc.h"
-#include "solvers/cmc/cmc_area_problem.h"
-#include "solvers/summary.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/kron.h"
+#include "bezierpde/solvers/cmc/area_rule.h"
+#include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/summary.h"
 
 namespace bpde::cmc_detail {
 namespace {

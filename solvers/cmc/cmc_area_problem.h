@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
-#include "solvers/cmc/area_functional.h"
-#include "solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {
 

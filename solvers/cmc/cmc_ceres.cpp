@@ -10,8 +10,8 @@
 #include <cmath>
 #include <memory>
 
-#include "solvers/cmc/cmc_area_problem.h"
-#include "solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {
 namespace {

@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-#include "solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "core/symmetric_factor.h"
-#include "energies/cmc.h"
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/core/symmetric_factor.h"
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde::cmc_detail {
 

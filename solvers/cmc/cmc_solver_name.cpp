@@ -2,8 +2,8 @@
 // reader (io/job.cpp) needs them, and the fuzz targets (fuzz/) link the readers without Ceres.
 #include <string>
 
-#include "core/errors.h"
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde {
 

@@ -1,8 +1,8 @@
-#include "solvers/pde/harmonic_pde.h"
+#include "bezierpde/solvers/pde/harmonic_pde.h"
 
 #include <cmath>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

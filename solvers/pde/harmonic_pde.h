@@ -16,10 +16,10 @@
 //
 // The solve is the Bernstein least-squares system of solvers/pde/pde_lu.h (PdeMould with
 // FixedSet::UBoundaries); use a PdeMould directly to solve many data sets of one degree.
-#include "energies/energy_spec.h"
-#include "solvers/pde/pde_lu.h"
-#include "solvers/requirements.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

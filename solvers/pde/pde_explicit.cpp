@@ -1,4 +1,4 @@
-#include "solvers/pde/pde_explicit.h"
+#include "bezierpde/solvers/pde/pde_explicit.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -6,11 +6,11 @@
 #include <sstream>
 #include <string>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "core/row_major_product.h"
-#include "solvers/pde/pde_residual.h"
-#include "tensor/power_basis.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/row_major_product.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
+#include "bezierpde/tensor/power_basis.h"
 
 namespace bpde {
 namespace {

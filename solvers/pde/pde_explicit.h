@@ -32,11 +32,11 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "energies/energy_spec.h"
-#include "solvers/pde/pde_lu.h"  // PdeSolution
-#include "solvers/requirements.h"
-#include "solvers/summary.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/solvers/pde/pde_lu.h"  // PdeSolution
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

@@ -1,4 +1,4 @@
-#include "solvers/pde/pde_lu.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -7,12 +7,12 @@
 #include <sstream>
 #include <string>
 
-#include "core/bernstein.h"
-#include "core/bernstein_ops.h"
-#include "core/errors.h"
-#include "core/keyed_cache.h"
-#include "core/row_major_product.h"
-#include "tensor/power_basis.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/bernstein_ops.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/keyed_cache.h"
+#include "bezierpde/core/row_major_product.h"
+#include "bezierpde/tensor/power_basis.h"
 
 namespace bpde {
 namespace {

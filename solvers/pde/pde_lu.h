@@ -34,12 +34,12 @@
 #include <string>
 #include <vector>
 
-#include "core/fixed_set.h"
-#include "energies/energy_spec.h"
-#include "solvers/pde/pde_residual.h"
-#include "solvers/requirements.h"
-#include "solvers/summary.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/core/fixed_set.h"
+#include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
+#include "bezierpde/solvers/requirements.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

@@ -1,10 +1,10 @@
-#include "solvers/pde/pde_residual.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 

@@ -19,9 +19,9 @@
 //            the Euler–Lagrange operator is minus this, which does not change the residual)
 #include <vector>
 
-#include "energies/energy_spec.h"
-#include "solvers/summary.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/solvers/summary.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde {
 

@@ -4,8 +4,8 @@
 #include <Eigen/Dense>
 #include <random>
 
-#include "core/errors.h"
-#include "solvers/blend/bfs_element.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/blend/bfs_element.h"
 
 namespace bpde {
 namespace {

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "core/errors.h"
-#include "io/blend_config.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/blend_config.h"
 
 namespace bpde {
 namespace {

@@ -2,8 +2,8 @@
 // docs/errata.md: u(x,0) = f(x,1), u_y(x,0) = f_y(x,1), u(x,1) = g(x,0), u_y(x,1) = g_y(x,0)).
 #include <gtest/gtest.h>
 
-#include "core/errors.h"
-#include "io/blend_config.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/blend_config.h"
 
 using namespace bpde;
 

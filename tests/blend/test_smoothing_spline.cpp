@@ -6,9 +6,9 @@
 #include <numbers>
 #include <random>
 
-#include "core/errors.h"
-#include "core/quadrature.h"
-#include "solvers/blend/smoothing_spline.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/solvers/blend/smoothing_spline.h"
 
 namespace bpde {
 namespace {

@@ -7,8 +7,8 @@
 #include <limits>
 #include <numbers>
 
-#include "boundaries/boundary_curves.h"
-#include "core/errors.h"
+#include "bezierpde/boundaries/boundary_curves.h"
+#include "bezierpde/core/errors.h"
 
 namespace {
 

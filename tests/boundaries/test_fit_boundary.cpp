@@ -7,11 +7,11 @@
 #include <numbers>
 #include <string>
 
-#include "boundaries/fit_boundary.h"
-#include "boundaries/reference_boundaries.h"
-#include "boundaries/reference_curves.h"
-#include "core/bernstein.h"
-#include "core/errors.h"
+#include "bezierpde/boundaries/fit_boundary.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/boundaries/reference_curves.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
 #include "tests/random_points.h"
 
 namespace {

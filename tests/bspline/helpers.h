@@ -8,10 +8,10 @@
 #include <random>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "tensor/bspline_net.h"
-#include "tensor/bspline_ops.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/tensor/bspline_net.h"
+#include "bezierpde/tensor/bspline_ops.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde::testing {
 

@@ -5,8 +5,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "core/errors.h"
-#include "solvers/bspline/bspline_extremal.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/bspline/bspline_extremal.h"
 #include "tests/bspline/helpers.h"
 
 using namespace bpde;

@@ -6,8 +6,8 @@
 #include <limits>
 #include <vector>
 
-#include "core/errors.h"
-#include "tensor/bspline_net.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/tensor/bspline_net.h"
 
 using namespace bpde;
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 #include "tests/bspline/helpers.h"
 
 using namespace bpde;

@@ -5,9 +5,9 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "core/errors.h"
-#include "solvers/bspline/bspline_extremal.h"
-#include "solvers/bspline/bspline_pde.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/bspline/bspline_extremal.h"
+#include "bezierpde/solvers/bspline/bspline_pde.h"
 #include "tests/bspline/helpers.h"
 
 using namespace bpde;

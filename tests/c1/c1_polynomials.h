@@ -4,8 +4,8 @@
 #include <complex>
 #include <vector>
 
-#include "tensor/power_basis.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/tensor/power_basis.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde::testing {
 

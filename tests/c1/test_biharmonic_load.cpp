@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "c1_polynomials.h"
-#include "core/errors.h"
-#include "solvers/c1/biharmonic_load.h"
-#include "solvers/c1/tetraharmonic.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
+#include "bezierpde/solvers/c1/tetraharmonic.h"
 
 namespace bpde {
 namespace {

@@ -7,10 +7,10 @@
 #include <limits>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "solvers/c1/biharmonic_load.h"
-#include "solvers/c1/clamped_plate.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
+#include "bezierpde/solvers/c1/clamped_plate.h"
 
 namespace bpde {
 namespace {

@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <numbers>
 
-#include "core/bernstein.h"
-#include "core/quadrature.h"
-#include "solvers/c1/biharmonic_load.h"
-#include "solvers/c1/tetraharmonic.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
+#include "bezierpde/solvers/c1/tetraharmonic.h"
 
 namespace bpde {
 namespace {

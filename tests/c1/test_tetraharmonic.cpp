@@ -8,10 +8,10 @@
 #include <limits>
 
 #include "c1_polynomials.h"
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "solvers/c1/tetraharmonic.h"
-#include "tensor/power_basis.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/solvers/c1/tetraharmonic.h"
+#include "bezierpde/tensor/power_basis.h"
 
 namespace bpde {
 namespace {

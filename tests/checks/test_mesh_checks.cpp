@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include "checks/mesh_checks.h"
-#include "core/errors.h"
+#include "bezierpde/checks/mesh_checks.h"
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 namespace {

@@ -3,9 +3,9 @@
 
 #include <vector>
 
-#include "checks/mesh_checks.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/checks/mesh_checks.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 namespace {

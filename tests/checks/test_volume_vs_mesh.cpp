@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "boundaries/reference_boundaries.h"
-#include "checks/mesh_checks.h"
-#include "energies/volume.h"
-#include "io/json_io.h"
-#include "io/mesh_io.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/checks/mesh_checks.h"
+#include "bezierpde/energies/volume.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/io/mesh_io.h"
 
 using namespace bpde;
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "io/json_io.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/tensor/tensor_net.h"
 #include "tests/cli/cli_run.h"
 #include "tests/random_points.h"
 

@@ -16,11 +16,11 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "boundaries/reference_boundaries.h"
-#include "core/errors.h"
-#include "io/json_io.h"
-#include "jobs/exit_status.h"
-#include "jobs/run_job.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/jobs/exit_status.h"
+#include "bezierpde/jobs/run_job.h"
 #include "tests/cli/cli_run.h"
 
 namespace fs = std::filesystem;

@@ -6,11 +6,11 @@
 #include <numbers>
 #include <random>
 
-#include "boundaries/reference_boundaries.h"
-#include "core/bernstein.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/tensor/tensor_net.h"
 #include "tests/random_points.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde::testing {
 

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "cmc_test_util.h"
-#include "core/errors.h"
-#include "core/quadrature.h"
-#include "solvers/cmc/area_functional.h"
-#include "solvers/cmc/area_rule.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/solvers/cmc/area_rule.h"
 
 namespace bpde {
 namespace {

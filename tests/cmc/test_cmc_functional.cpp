@@ -7,10 +7,10 @@
 #include <Eigen/Dense>
 
 #include "cmc_test_util.h"
-#include "core/errors.h"
-#include "core/quadrature.h"
-#include "energies/cmc.h"
-#include "energies/triangular_gram.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/energies/triangular_gram.h"
 
 namespace bpde {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cmc_test_util.h"
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde {
 namespace {

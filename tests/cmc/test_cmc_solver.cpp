@@ -6,9 +6,9 @@
 #include <cstdio>
 
 #include "cmc_test_util.h"
-#include "core/errors.h"
-#include "energies/cmc.h"
-#include "solvers/cmc/cmc.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde {
 namespace {

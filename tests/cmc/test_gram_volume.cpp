@@ -5,9 +5,9 @@
 #include <Eigen/Dense>
 
 #include "cmc_test_util.h"
-#include "core/quadrature.h"
-#include "energies/triangular_gram.h"
-#include "energies/volume.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/energies/triangular_gram.h"
+#include "bezierpde/energies/volume.h"
 
 namespace bpde {
 namespace {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "core/quadrature.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
 
 using namespace bpde;
 

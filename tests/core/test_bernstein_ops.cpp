@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/bernstein_ops.h"
-#include "core/errors.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/bernstein_ops.h"
+#include "bezierpde/core/errors.h"
 
 using namespace bpde;
 

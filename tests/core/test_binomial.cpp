@@ -9,8 +9,8 @@
 #include <thread>
 #include <vector>
 
-#include "core/binomial.h"
-#include "core/errors.h"
+#include "bezierpde/core/binomial.h"
+#include "bezierpde/core/errors.h"
 
 using namespace bpde;
 

@@ -9,8 +9,8 @@
 #include <thread>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/keyed_cache.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/keyed_cache.h"
 
 using namespace bpde;
 

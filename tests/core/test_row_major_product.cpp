@@ -4,8 +4,8 @@
 #include <random>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/row_major_product.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/row_major_product.h"
 
 using namespace bpde;
 

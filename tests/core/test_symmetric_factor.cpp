@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/symmetric_factor.h"
+#include "bezierpde/core/symmetric_factor.h"
 
 using namespace bpde;
 

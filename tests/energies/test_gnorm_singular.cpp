@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/errors.h"
-#include "energies/energy_spec.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/energies/energy_spec.h"
 
 using namespace bpde;
 

@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "core/errors.h"
-#include "energies/quadratic_energy.h"
-#include "energies/tensor_gram.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/energies/quadratic_energy.h"
+#include "bezierpde/energies/tensor_gram.h"
 #include "tests/random_points.h"
 
 namespace bpde {

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <vector>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "core/quadrature.h"
-#include "energies/quadratic_energy.h"
-#include "energies/tensor_gram.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/energies/quadratic_energy.h"
+#include "bezierpde/energies/tensor_gram.h"
 
 namespace bpde {
 namespace {

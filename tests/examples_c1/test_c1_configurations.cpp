@@ -8,10 +8,10 @@
 #include <string>
 
 #include "examples/000-c1-configurations/configurations.h"
-#include "io/mesh_io.h"
-#include "jobs/run_job.h"
-#include "solvers/c1/biharmonic_load.h"
-#include "solvers/c1/tetraharmonic.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/solvers/c1/biharmonic_load.h"
+#include "bezierpde/solvers/c1/tetraharmonic.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "solvers/c1/clamped_plate.h"
+#include "bezierpde/solvers/c1/clamped_plate.h"
 
 namespace {
 

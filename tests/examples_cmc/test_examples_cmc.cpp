@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <string>
 
-#include "io/json_io.h"
-#include "io/mesh_io.h"
-#include "jobs/run_job.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/jobs/run_job.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace fs = std::filesystem;
 using namespace bpde;

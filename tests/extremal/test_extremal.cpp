@@ -6,11 +6,11 @@
 #include <cmath>
 #include <random>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "energies/quadratic_energy.h"
-#include "energies/tensor_gram.h"
-#include "solvers/extremal.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/energies/quadratic_energy.h"
+#include "bezierpde/energies/tensor_gram.h"
+#include "bezierpde/solvers/extremal.h"
 #include "tests/random_points.h"
 
 namespace bpde {

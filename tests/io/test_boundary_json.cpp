@@ -6,8 +6,8 @@
 #include <numbers>
 #include <string>
 
-#include "core/errors.h"
-#include "io/boundary_json.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/boundary_json.h"
 
 namespace {
 

@@ -2,10 +2,10 @@
 // kind of bad input as typed exceptions.
 #include <gtest/gtest.h>
 
-#include "core/errors.h"
-#include "io/job.h"
-#include "io/json_io.h"
-#include "jobs/run_job.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/job.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/jobs/run_job.h"
 
 using namespace bpde;
 

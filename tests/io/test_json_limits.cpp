@@ -8,9 +8,9 @@
 #include <functional>
 #include <string>
 
-#include "core/errors.h"
-#include "io/blend_config.h"
-#include "io/json_io.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/blend_config.h"
+#include "bezierpde/io/json_io.h"
 
 using namespace bpde;
 namespace fs = std::filesystem;

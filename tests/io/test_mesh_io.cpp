@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "io/mesh_io.h"
+#include "bezierpde/io/mesh_io.h"
 
 using namespace bpde;
 

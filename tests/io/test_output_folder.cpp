@@ -1,5 +1,5 @@
 // OutputFolder (io/output_folder.h): an output folder is written all or nothing.
-#include "io/output_folder.h"
+#include "bezierpde/io/output_folder.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 
 using namespace bpde;
 namespace fs = std::filesystem;

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/differential_geometry.h"
-#include "io/mesh_io.h"
-#include "io/surface_fields.h"
-#include "io/vtp_io.h"
-#include "jobs/run_demo.h"
-#include "jobs/run_job.h"
+#include "bezierpde/core/differential_geometry.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/io/surface_fields.h"
+#include "bezierpde/io/vtp_io.h"
+#include "bezierpde/jobs/run_demo.h"
+#include "bezierpde/jobs/run_job.h"
 #include "mesh_readers.h"
 
 using namespace bpde;

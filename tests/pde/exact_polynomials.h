@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "solvers/pde/pde_lu.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 namespace bpde::testing {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "exact_polynomials.h"
-#include "solvers/pde/pde_explicit.h"
-#include "solvers/pde/pde_lu.h"
+#include "bezierpde/solvers/pde/pde_explicit.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
 
 namespace bpde {
 namespace {

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <random>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 #include "exact_polynomials.h"
-#include "solvers/pde/harmonic_pde.h"
-#include "solvers/pde/pde_residual.h"
-#include "tensor/power_basis.h"
+#include "bezierpde/solvers/pde/harmonic_pde.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
+#include "bezierpde/tensor/power_basis.h"
 
 namespace bpde {
 namespace {

@@ -2,9 +2,9 @@
 // docs/pde_accuracy.md "Numerical limit").
 #include <gtest/gtest.h>
 
-#include "solvers/pde/pde_explicit.h"
-#include "solvers/pde/pde_lu.h"
-#include "solvers/pde/pde_residual.h"
+#include "bezierpde/solvers/pde/pde_explicit.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
 #include "tests/pde/exact_polynomials.h"
 
 using namespace bpde;

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <random>
 
-#include "core/errors.h"
+#include "bezierpde/core/errors.h"
 #include "exact_polynomials.h"
-#include "solvers/pde/pde_explicit.h"
-#include "solvers/pde/pde_lu.h"
-#include "solvers/pde/pde_residual.h"
-#include "tensor/power_basis.h"
+#include "bezierpde/solvers/pde/pde_explicit.h"
+#include "bezierpde/solvers/pde/pde_lu.h"
+#include "bezierpde/solvers/pde/pde_residual.h"
+#include "bezierpde/tensor/power_basis.h"
 
 namespace bpde {
 namespace {

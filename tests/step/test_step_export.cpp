@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <random>
 
-#include "core/errors.h"
-#include "io/step_export.h"
-#include "triangular/tensor_form.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/step_export.h"
+#include "bezierpde/triangular/tensor_form.h"
 
 using namespace bpde;
 namespace fs = std::filesystem;

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "tensor/power_basis.h"
-#include "tensor/tensor_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/tensor/power_basis.h"
+#include "bezierpde/tensor/tensor_net.h"
 
 using namespace bpde;
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 using namespace bpde;
 
