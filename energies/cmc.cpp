@@ -1,4 +1,4 @@
-#include "energies/cmc.h"
+#include "bezierpde/energies/cmc.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +6,14 @@
 #include <string>
 #include <utility>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "core/keyed_cache.h"
-#include "core/kron.h"
-#include "energies/triangular_gram.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/columns3.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/keyed_cache.h"
+#include "bezierpde/core/kron.h"
+#include "bezierpde/energies/triangular_gram.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 namespace {
@@ -85,14 +86,6 @@ Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H, cons
     }
   return Hs;
 }
-
-namespace {
-Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
-  Eigen::MatrixX3d out(A.rows(), 3);
-  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A * P.col(c);
-  return out;
-}
-}  // namespace
 
 Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx) const {
   if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");

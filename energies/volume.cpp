@@ -1,44 +1,19 @@
-#include "energies/volume.h"
+#include "bezierpde/energies/volume.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 
-#include "core/bernstein.h"
-#include "core/binomial.h"
-#include "core/errors.h"
-#include "core/quadrature.h"
-#include "energies/triangular_gram.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/columns3.h"
+#include "bezierpde/core/binomial.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/energies/triangular_gram.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
-namespace {
-
-// Row-wise cross products of two #nodes x 3 matrices.
-Eigen::MatrixX3d cross_rows(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b) {
-  Eigen::MatrixX3d c(a.rows(), 3);
-  c.col(0) = a.col(1).cwiseProduct(b.col(2)) - a.col(2).cwiseProduct(b.col(1));
-  c.col(1) = a.col(2).cwiseProduct(b.col(0)) - a.col(0).cwiseProduct(b.col(2));
-  c.col(2) = a.col(0).cwiseProduct(b.col(1)) - a.col(1).cwiseProduct(b.col(0));
-  return c;
-}
-
-// A * P for a 3-column P as three matrix-vector products (no GEMM packing of the large A).
-Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
-  Eigen::MatrixX3d out(A.rows(), 3);
-  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A * P.col(c);
-  return out;
-}
-
-// A^T * W for a 3-column W.
-Eigen::MatrixX3d times_t(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& W) {
-  Eigen::MatrixX3d out(A.cols(), 3);
-  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A.transpose() * W.col(c);
-  return out;
-}
-
-}  // namespace
 
 VolumeForm VolumeForm::triangular(int n) {
   if (n < 1 || n > kMaxDegree)

@@ -21,6 +21,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Create a folder of the sweep's own layout (DIR, DIR/jobs, DIR/jobs/<id>) with its parents; a
+// job's files go into its folder all or nothing (write_job_result, io/output_folder.h).
+void make_output_dir(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw FileError("cannot create the folder '" + dir + "'");
+}
+
 std::vector<std::string> split_path(const std::string& path) {
   std::vector<std::string> out;
   std::string cur;
@@ -307,7 +315,7 @@ Json run_sweep_job(const SweepJob& job, const std::string& dir) {
   Json row = base_row(job);
   try {
     make_output_dir(dir);
-    for (const char* f : {"row.json", "result.json", "surface.obj", "surface.ply", "net.obj"}) {
+    for (const char* f : {"row.json", "result.json", "surface.obj", "surface.ply", "surface.vtp", "net.obj"}) {
       std::error_code ec;
       fs::remove(fs::path(dir) / f, ec);
     }

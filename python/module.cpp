@@ -337,8 +337,7 @@ PYBIND11_MODULE(_core, m) {
           py::gil_scoped_release release;
           mesh = bpde::sample_net(n, samples);
           if (out) {
-            bpde::make_output_dir(*out);
-            bpde::write_surface_files(*out, n, mesh);
+            bpde::write_output_files(*out, nullptr, n, mesh);  // as `bpde sample`: all or nothing
           }
         }
         return mesh_tuple(std::move(mesh));

@@ -8,4 +8,4 @@ cd "$(dirname "$0")/.."
 if [ ! -d build ]; then bash scripts/build.sh; fi
 targets=$(ls examples/*/main.cpp | sed -E 's|examples/([^/]*)/main.cpp|example_\1|; s|[^A-Za-z0-9_]|_|g')
 cmake --build build -j "$(nproc)" --target $targets
-python3 scripts/docs.py --build build "$@"
+python3 scripts/docs.py --build "$PWD/build" "$@"

@@ -1,4 +1,4 @@
-#include "solvers/cmc/area_functional.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
 
 #include <Eigen/Geometry>
 #include <array>
@@ -7,13 +7,14 @@
 #include <string>
 #include <utility>
 
-#include "core/bernstein.h"
-#include "core/errors.h"
-#include "core/keyed_cache.h"
-#include "core/quadrature.h"
-#include "energies/triangular_gram.h"
-#include "tensor/tensor_net.h"
-#include "triangular/triangular_net.h"
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/columns3.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/keyed_cache.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/energies/triangular_gram.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 namespace {
@@ -43,27 +44,6 @@ void duffy_rule(const std::vector<Tri>& tris, int q, Eigen::MatrixX2d& uv, Eigen
 void check_q(int q) {
   if (q < 1 || q > 200)
     throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
-}
-
-// Row-wise cross products of two #nodes x 3 matrices.
-Eigen::MatrixX3d cross_rows(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b) {
-  Eigen::MatrixX3d c(a.rows(), 3);
-  c.col(0) = a.col(1).cwiseProduct(b.col(2)) - a.col(2).cwiseProduct(b.col(1));
-  c.col(1) = a.col(2).cwiseProduct(b.col(0)) - a.col(0).cwiseProduct(b.col(2));
-  c.col(2) = a.col(0).cwiseProduct(b.col(1)) - a.col(1).cwiseProduct(b.col(0));
-  return c;
-}
-
-Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& P) {
-  Eigen::MatrixX3d out(A.rows(), 3);
-  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A * P.col(c);
-  return out;
-}
-
-Eigen::MatrixX3d times_t(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& W) {
-  Eigen::MatrixX3d out(A.cols(), 3);
-  for (int c = 0; c < 3; ++c) out.col(c).noalias() = A.transpose() * W.col(c);
-  return out;
 }
 
 // x_u, x_v, N = x_u ∧ x_v and |N| at the nodes.

@@ -91,6 +91,7 @@ TEST(ExamplesFinite, NoConvergedAnswerHasANonFiniteNumber) {
   for (const auto& e : fs::recursive_directory_iterator(fs::path(BPDE_SOURCE_DIR) / "examples")) {
     if (e.path().extension() != ".json") continue;
     const auto input = nlohmann::json::parse(slurp(e.path()));
+    if (input.is_object() && input.contains("axes")) continue;  // a sweep: its jobs are examples' jobs
     const bool blend = input.is_object() && input.value("kind", "") == "blend";
     const fs::path out = tmpdir() / ("example_" + e.path().parent_path().filename().string() + "_" +
                                      e.path().stem().string());

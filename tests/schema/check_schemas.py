@@ -47,6 +47,7 @@ def validator(name):
 
 
 JOB, BLEND, NET = validator("job.schema.json"), validator("blend.schema.json"), validator("net.schema.json")
+SWEEP = validator("sweep.schema.json")
 
 
 def schema_errors(v, doc):
@@ -59,7 +60,7 @@ if not examples:
     failures.append("no example JSON found under examples/")
 for path in examples:
     doc = load(path)
-    v = BLEND if doc.get("kind") == "blend" else JOB
+    v = BLEND if doc.get("kind") == "blend" else SWEEP if "axes" in doc else JOB
     for e in schema_errors(v, doc):
         failures.append(f"{path.relative_to(SOURCE)}: {e}")
 
@@ -93,6 +94,8 @@ def mutate(doc, path, value=None, delete=False):
 job = load(SOURCE / "examples" / "001-pde-figures" / "fig1-biharmonic.json")
 cmc = load(SOURCE / "examples" / "004-cmc-circle" / "n4-b-H-1.json")
 blend = load(SOURCE / "examples" / "003-blend-cylinders" / "fig2a.json")
+curves = load(SOURCE / "examples" / "004-cmc-circle" / "circle_curves.json")
+builder = mutate(load(SOURCE / "examples" / "004-cmc-circle" / "circle_builder.json"), ["boundary", "degree"], 4)
 net = {"type": "triangular", "degree": 1, "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
 
 cases = [
@@ -116,6 +119,16 @@ cases = [
     ("cmc job with both H and V", "solve", JOB, mutate(cmc, ["problem", "V"], 1.0), False),
     ("cmc job with V and solver newton", "solve", JOB, mutate(mutate(cmc, ["problem", "H"], delete=True),
                                                             ["problem", "V"], 1.0), False),
+    ("boundary-form job as it is", "solve", JOB, curves, True),
+    ("job with both net and boundary", "solve", JOB, mutate(curves, ["net"], net), False),
+    ("boundary: unknown curve type", "solve", JOB, mutate(curves, ["boundary", "edges", 2, "type"], "spline"), False),
+    ("boundary: unknown builder", "solve", JOB, mutate(builder, ["boundary", "builder"], "circle"), False),
+    ("area cmc job as it is", "solve", JOB, mutate(builder, ["problem", "functional"], "area"), True),
+    ("cmc job: unknown functional", "solve", JOB, mutate(builder, ["problem", "functional"], "areas"), False),
+    ("area cmc job with solver nlopt", "solve", JOB,
+     mutate(mutate(builder, ["problem", "functional"], "area"), ["problem", "solver"], "nlopt"), False),
+    ("job: unknown mesh_format", "solve", JOB, mutate(job, ["mesh_format"], "float"), False),
+    ("job: unknown export", "solve", JOB, mutate(job, ["export"], ["iges"]), False),
     ("blend config as it is", "blend", BLEND, blend, True),
     ("blend: unknown field", "blend", BLEND, mutate(blend, ["b"], 1), False),
     ("blend: missing epsilon", "blend", BLEND, mutate(blend, ["epsilon"], delete=True), False),

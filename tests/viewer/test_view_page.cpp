@@ -4,10 +4,10 @@
 
 #include <cstring>
 
-#include "io/html_view.h"
-#include "io/mesh_io.h"
-#include "jobs/run_demo.h"
-#include "jobs/run_job.h"
+#include "bezierpde/io/html_view.h"
+#include "bezierpde/io/mesh_io.h"
+#include "bezierpde/jobs/run_demo.h"
+#include "bezierpde/jobs/run_job.h"
 #include "tests/io/mesh_readers.h"
 
 using namespace bpde;
@@ -80,7 +80,8 @@ TEST(ViewPage, SelfContainedWithTheMeshAsFloat32) {
   const auto& tri = std::get<TriangularNet>(out.net);
   EXPECT_EQ(NP.size(), 3u * tri.points().rows());
   EXPECT_EQ(NL.size(), 2 * net_segments(out.net).size());
-  EXPECT_EQ(NL.size(), 2u * 3 * 4 * 5 / 2);  // degree 4: 3 n(n+1)/2 segments
+  const size_t n = static_cast<size_t>(tri.n());
+  EXPECT_EQ(NL.size(), 2u * 3 * n * (n + 1) / 2);  // degree n: 3 n(n+1)/2 segments
   // the colour range is the report's (away from the corners), and the report is carried whole
   EXPECT_EQ(data["range"], Json::array({-2.5, -0.5}));
   EXPECT_EQ(data["report"]["note"], report["note"]);
