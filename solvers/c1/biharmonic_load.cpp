@@ -187,12 +187,7 @@ BiharmonicLoadResult solve_biharmonic_load_untimed(const TensorNet& data) {
 
 BiharmonicLoadResult solve_biharmonic_load(const TensorNet& data, const BiharmonicLoadOptions& options) {
   options.validate();
-  BiharmonicLoadResult result;
-  {
-    ScopedTimer timer(result.summary.seconds);
-    result = solve_biharmonic_load_untimed(data);
-  }
-  return result;
+  return timed_solve([&] { return solve_biharmonic_load_untimed(data); });
 }
 
 TensorNet complete_admissible_load(const TensorNet& load) {

@@ -435,12 +435,7 @@ TetraharmonicResult solve_tetraharmonic_untimed(const TensorNet& data, const Tet
 
 TetraharmonicResult solve_tetraharmonic(const TensorNet& data, const TetraharmonicOptions& options) {
   options.validate();
-  TetraharmonicResult result;
-  {
-    ScopedTimer timer(result.summary.seconds);
-    result = solve_tetraharmonic_untimed(data, options);
-  }
-  return result;
+  return timed_solve([&] { return solve_tetraharmonic_untimed(data, options); });
 }
 
 }  // namespace bpde

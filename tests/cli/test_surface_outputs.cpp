@@ -39,11 +39,14 @@ TEST(CliSurfaceOutputs, SampleWritesBinaryPlyAndVtpOnRequest) {
   EXPECT_FALSE(fs::exists(bad));
 }
 
+// A Dirichlet extremal job on a biquadratic net, without its closing brace (tests add fields).
+const char* const kDirichletJob =
+    R"({"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+    R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]}, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, )"
+    R"("samples": 4)";
+
 TEST(CliSurfaceOutputs, JobMeshFormatIsReadAndCheckedBeforeAnythingRuns) {
-  const char* net = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
-                    R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
-  const std::string job = std::string(R"({"net": )") + net +
-                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "samples": 4, )";
+  const std::string job = std::string(kDirichletJob) + ", ";
   const fs::path good = write("mf.json", job + R"("mesh_format": "binary"})");
   const fs::path out = tmpdir() / "mf_out";
   CmdResult r = run("solve " + good.string() + " --out " + out.string());
@@ -59,10 +62,7 @@ TEST(CliSurfaceOutputs, JobMeshFormatIsReadAndCheckedBeforeAnythingRuns) {
 }
 
 TEST(CliSurfaceOutputs, HtmlExportAndViewWriteThePage) {
-  const char* net = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
-                    R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
-  const std::string job = std::string(R"({"net": )") + net +
-                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "samples": 4)";
+  const std::string job = kDirichletJob;
   const fs::path with_export = write("ex.json", job + R"(, "export": ["html"]})");
   const fs::path out = tmpdir() / "ex_out";
   CmdResult r = run("solve " + with_export.string() + " --out " + out.string());
