@@ -29,6 +29,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import colors as mcolors  # noqa: E402
+from matplotlib import ticker as mticker  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
 
 from . import _core  # noqa: E402
@@ -52,6 +53,7 @@ class Panel:
     elev: float = 30.0
     azim: float = -60.0
     samples: int = 24
+    clim: tuple = None  # its colour range (with shared=False); default colour_range of its H
 
 
 @dataclasses.dataclass
@@ -62,6 +64,7 @@ class Series:
     x: list
     y: list
     style: str = "o-"
+    color: object = None
 
 
 def net_dict(net):
@@ -151,8 +154,15 @@ def _axes3d(fig, rows, cols, k, panel):
     ax = fig.add_subplot(rows, cols, k, projection="3d")
     ax.view_init(elev=panel.elev, azim=panel.azim)
     ax.set_title(panel.title, fontsize=8, pad=0)
+    ax.set_facecolor((1, 1, 1, 0))  # transparent: a neighbour's colour bar labels stay visible
     ax.set_axis_off()  # the shape, as the papers draw it; axes and ticks only clutter a small picture
     return ax
+
+
+def pair_range(*panels):
+    """colour_range of the H of several panels together (a scale common to them, as the C¹
+    methods paper plots the two surfaces of a figure)."""
+    return colour_range(np.concatenate([_mesh(p)[2] for p in panels]))
 
 
 def _mesh(panel):
@@ -160,11 +170,13 @@ def _mesh(panel):
     return np.asarray(V), np.asarray(F), np.asarray(H)
 
 
-def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size=None, shared=True, nets_only=False):
+def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size=None, shared=True, nets_only=False,
+             colour_by="H", colour_label=None):
     """Writes `path` (PNG): one column per Panel; the first row the surface coloured by mean
     curvature H (one colour bar, range `clim` or colour_range of every panel's H; with
     shared=False one bar per panel, for surfaces of different H), the second row (when net_row)
     the control net over the surface in grey. nets_only: the control nets alone (no colour bar).
+    colour_by="z" colours by height instead (a load or a deflection plotted as a graph).
 
     Returns (width, height) in pixels. Up to 4 panels per row; more wrap onto further row pairs.
     """
@@ -172,6 +184,9 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
     if nets_only:
         net_row = False
     meshes = [_mesh(p) for p in panels]
+    label = colour_label or ("mean curvature H" if colour_by == "H" else "z")
+    if colour_by == "z":
+        meshes = [(V, F, V[:, 2].copy()) for V, F, _ in meshes]
     if clim is None:
         clim = colour_range(np.concatenate([m[2] for m in meshes]))
     cmap = plt.get_cmap(CMAP)
@@ -189,7 +204,7 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
             _net(ax, V, F, Pn, segs)
             continue
         ax = _axes3d(fig, rows, cols, row * cols + col + 1, p)
-        lim = clim if shared else colour_range(H)
+        lim = clim if shared else (p.clim or colour_range(H))
         norm = mcolors.Normalize(*lim)
         Hf = np.where(np.isfinite(H), H, np.nan)[F].mean(axis=1)
         rgba = cmap(norm(np.nan_to_num(Hf, nan=0.5 * (lim[0] + lim[1]))))
@@ -197,9 +212,10 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
         ax.add_collection3d(Poly3DCollection(V[F], facecolors=rgba, edgecolors="none", linewidths=0))
         _box(ax, V)
         if not shared:
-            cb = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.55, pad=0.0, aspect=15)
+            cb = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.55, pad=0.0, aspect=15,
+                              format=mticker.FormatStrFormatter("%.3g"), ticks=mticker.MaxNLocator(4))
             cb.ax.tick_params(labelsize=6)
-            cb.set_label("H", fontsize=7)
+            cb.set_label(label.split()[-1], fontsize=7)
         if net_row:
             ax = _axes3d(fig, rows, cols, (row + 1) * cols + col + 1, dataclasses.replace(p, title="control net"))
             _net(ax, V, F, Pn, segs)
@@ -209,7 +225,7 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
     if shared:
         cax = fig.add_axes([bar + 15.0 / w, 0.25, 12.0 / w, 0.5])
         cb = fig.colorbar(plt.cm.ScalarMappable(norm=mcolors.Normalize(*clim), cmap=cmap), cax=cax)
-        cb.set_label("mean curvature H", fontsize=8)
+        cb.set_label(label, fontsize=8)
         cb.ax.tick_params(labelsize=7)
     if suptitle:
         fig.suptitle(suptitle, fontsize=10)
@@ -233,7 +249,7 @@ def plot(path, series, xlabel="degree n", ylabel="", title="", logy=False, logx=
     for s in series:
         x, y = np.asarray(s.x, dtype=float), np.asarray(s.y, dtype=float)
         keep = np.isfinite(y) & ((y > 0) if logy else True)
-        ax.plot(x[keep], y[keep], s.style, label=s.label, ms=4, lw=1.2)
+        ax.plot(x[keep], y[keep], s.style, label=s.label, ms=4, lw=1.2, color=s.color)
     for y, label in hlines:
         ax.axhline(y, ls="--", c="gray", lw=1, label=label)
     if logy:
@@ -277,6 +293,69 @@ def png_size(path):
     if head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
         raise ValueError(f"{path} is not a PNG file")
     return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
+# ------------------------------------------------------------------ CMC branches
+
+def with_H(job, H):
+    """A copy of a CMC JOB dict with problem.H = H."""
+    import copy
+
+    j = copy.deepcopy(job)
+    j["problem"]["H"] = float(H)
+    return j
+
+
+def fold_H(job, H_far):
+    """The H where the branch of `job` from H = 0 towards `H_far` ends (the report's H of a run
+    that stops at the fold), or H_far when it gets there."""
+    _, report = _core_solve(with_H(job, H_far))
+    return float(report["H"])
+
+
+def branch(job, H_values):
+    """(H, V) along the branch of `job` from H = 0: one solve per H (continuation from 0 each
+    time), converged points only; V is the report's enclosed volume."""
+    Hs, Vs = [], []
+    for H in H_values:
+        _, report = _core_solve(with_H(job, H))
+        if report.get("converged") and report.get("volume") is not None:
+            Hs.append(float(report["H"]))
+            Vs.append(float(report["volume"]))
+    return Hs, Vs
+
+
+def fold_diagram(path, curves, title="", folds=(), size=(560, 420)):
+    """Writes `path`: H against V for each (label, H list, V list) of `curves`; `folds`: (label,
+    [(V, H), ...]) marked points. Returns (width, height)."""
+    fig, ax = plt.subplots(figsize=(size[0] / DPI, size[1] / DPI), dpi=DPI)
+    for label, Hs, Vs in curves:
+        order = np.argsort(Vs)
+        ax.plot(np.asarray(Vs)[order], np.asarray(Hs)[order], "-", lw=1.4, label=label)
+    for label, pts in folds:
+        if pts:
+            v, h = zip(*pts)
+            ax.plot(v, h, "kx", ms=6, label=label)
+    ax.axhline(0, c="gray", lw=0.6)
+    ax.axvline(0, c="gray", lw=0.6)
+    ax.set_xlabel("V (enclosed volume ⅓∫⟨x_u∧x_v, x⟩)")
+    ax.set_ylabel("H")
+    if title:
+        ax.set_title(title, fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return save(fig, path)
+
+
+def energy_volume(net, H):
+    """V of a net (bezierpde.energy "cmc"), for points of a branch that solve_cmc returns."""
+    return float(_core.energy(net_dict(net), "cmc", H)["V"])
+
+
+def _core_solve(job):
+    r = _core.solve_result(job, None)
+    return r["net"], r["report"]
 
 
 # ------------------------------------------------------------------ the example programs' tables
