@@ -35,7 +35,7 @@ def scaled(net, height):
 
 def main():
     out = fg.out_dir(default=HERE)
-    panels = [fg.Panel(scaled(plate(1.0, 11, m).net, 0.3), f"w, {m}, n = 11, a = 1 (z × {0.3 / plate(1.0, 11, m).center_deflection:.0f})")
+    panels = [fg.Panel(scaled(plate(1.0, 11, m).net, 0.3), f"{m}, n = 11 (z × {0.3 / plate(1.0, 11, m).center_deflection:.0f})")
               for m in ("admissible-load", "ritz")]
     fg.wrote(out / "plate.png", fg.surfaces(out / "plate.png", panels, shared=False))
     # Fig. X: the load of the admissible-load plate, n = 7, 9, 11, 15, one scale and one range
