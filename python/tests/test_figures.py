@@ -52,3 +52,42 @@ def test_png_size_rejects_a_non_png(tmp_path):
     good = tmp_path / "y.png"
     size = figures.plot(good, [figures.Series("a", [1, 2, 3], [1e-3, 1e-6, 1e-9])], logy=True, size=(300, 200))
     assert size == figures.png_size(good) == (300, 200)
+
+
+def test_net_lines_count_the_edges_of_the_net():
+    from bezierpde import figures
+
+    n = 5  # triangular: 3 n (n + 1) / 2 edges of the control triangulation, each point once
+    tri = {"type": "triangular", "degree": n, "points": [[i, 0, 0] for i in range((n + 1) * (n + 2) // 2)]}
+    P, segs = figures.net_lines(tri)
+    assert P.shape == ((n + 1) * (n + 2) // 2, 3) and segs.shape == (3 * n * (n + 1) // 2, 2, 3)
+    # every segment joins two points whose FORMATS.md indices differ by one unit move
+    index, r = {}, 0
+    for i in range(n, -1, -1):
+        for j in range(n - i, -1, -1):
+            index[r] = (i, j, n - i - j)
+            r += 1
+    for a, b in segs:
+        I, J = index[int(a[0])], index[int(b[0])]
+        assert sorted(abs(x - y) for x, y in zip(I, J)) == [0, 1, 1]
+    ten = {"type": "tensor", "degree": [3, 2], "points": [[0, 0, 0]] * 12}
+    assert figures.net_lines(ten)[1].shape == (3 * 3 + 4 * 2, 2, 3)  # rows of 3 edges, columns of 2
+
+
+def test_colour_range_ignores_corner_spikes_and_widens_a_constant():
+    from bezierpde import figures
+
+    H = [1.0] * 98 + [-2e4, 3e4]
+    lo, hi = figures.colour_range(H)
+    assert lo < 1.0 < hi and hi - lo < 0.01
+    lo, hi = figures.colour_range(list(range(101)))
+    assert abs(lo - 5) < 1e-9 and abs(hi - 95) < 1e-9
+
+
+def test_tables_of_a_generated_section():
+    from bezierpde import figures
+
+    text = "x\n<!-- generated: t; machine-dependent: ms -->\n| n | err \\| x |\n|---|---|\n| 4 | < 1e-13 |\n<!-- end -->\n"
+    rows = figures.parse_tables(text)["t"]["tables"][0]
+    assert rows == [{"n": "4", "err | x": "< 1e-13"}]
+    assert figures.number(rows[0]["err | x"]) == 1e-13 and figures.number("−1.5 reached") == -1.5
