@@ -9,7 +9,8 @@ module; ``bash scripts/figures.sh [EXAMPLE ...]`` runs them and writes the PNGs 
     >>> figures.surfaces("fig.png", [figures.Panel(net, "H = -1")])
     >>> figures.plot("conv.png", [figures.Series("ritz", degrees, errors)], logy=True)
 
-Pictures are kept small (at most 800 x 600 pixels, a palette of at most 256 colours when Pillow is
+The mean-curvature colour scale leaves out outliers (colour_range: Tukey's fences), such as the
+huge |H| at corners where x_u ∥ x_v. Pictures are kept small (at most 800 x 600 pixels, a palette of at most 256 colours when Pillow is
 present) so that they can be committed.
 """
 
@@ -115,15 +116,17 @@ def net_lines(net):
     return P, np.asarray(segs, dtype=np.float64).reshape(-1, 2, 3)
 
 
-def colour_range(values, lo=5.0, hi=95.0):
-    """(vmin, vmax) for a mean-curvature colour scale: the lo..hi percentiles of the finite values
-    (the corners where x_u ∥ x_v carry huge |H| and would flatten every other colour), widened to
-    a width of at least 1e-3 (1 + |median|) so that a constant H still gets a scale."""
+def colour_range(values):
+    """(vmin, vmax) for a mean-curvature colour scale: Tukey's fences [q1 − 1.5 IQR, q3 + 1.5 IQR]
+    of the finite values, within their min and max (the corners where x_u ∥ x_v carry huge |H|
+    would otherwise flatten every other colour), widened to a width of at least
+    1e-3 (1 + |median|) so that a constant H still gets a scale."""
     v = np.asarray(values, dtype=np.float64)
     v = v[np.isfinite(v)]
     if v.size == 0:
         return -1.0, 1.0
-    a, b = np.percentile(v, [lo, hi])
+    q1, q3 = np.percentile(v, [25.0, 75.0])
+    a, b = max(float(v.min()), q1 - 1.5 * (q3 - q1)), min(float(v.max()), q3 + 1.5 * (q3 - q1))
     mid, half = 0.5 * (a + b), 0.5 * (b - a)
     half = max(half, 0.5e-3 * (1.0 + abs(float(np.median(v)))))
     return float(mid - half), float(mid + half)

@@ -80,8 +80,10 @@ def test_colour_range_ignores_corner_spikes_and_widens_a_constant():
     H = [1.0] * 98 + [-2e4, 3e4]
     lo, hi = figures.colour_range(H)
     assert lo < 1.0 < hi and hi - lo < 0.01
-    lo, hi = figures.colour_range(list(range(101)))
-    assert abs(lo - 5) < 1e-9 and abs(hi - 95) < 1e-9
+    lo, hi = figures.colour_range(list(range(101)))  # no outliers: the whole range
+    assert (lo, hi) == (0.0, 100.0)
+    lo, hi = figures.colour_range(list(range(101)) + [1000.0])  # one far outlier: left out
+    assert hi < 200
 
 
 def test_tables_of_a_generated_section():
