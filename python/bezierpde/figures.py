@@ -116,6 +116,21 @@ def net_lines(net):
     return P, np.asarray(segs, dtype=np.float64).reshape(-1, 2, 3)
 
 
+def net_rings(net):
+    """Per control point, its ring: 0 on the boundary, 1 adjacent to it, 2 further in (the
+    `fixed` sets of FORMATS.md: "boundary" is ring 0, "boundary+adjacent" rings 0 and 1)."""
+    d = net_dict(net)
+    if d["type"] == "triangular":
+        n = int(d["degree"])
+        return np.array([min(i, j, n - i - j, 2) for i in range(n, -1, -1) for j in range(n - i, -1, -1)])
+    if d["type"] == "bspline":
+        p, q = d["degree"]
+        rows, cols = len(d["knots"][0]) - p - 1, len(d["knots"][1]) - q - 1
+    else:
+        rows, cols = d["degree"][0] + 1, d["degree"][1] + 1
+    return np.array([min(i, j, rows - 1 - i, cols - 1 - j, 2) for i in range(rows) for j in range(cols)])
+
+
 def colour_range(values):
     """(vmin, vmax) for a mean-curvature colour scale: Tukey's fences [q1 − 1.5 IQR, q3 + 1.5 IQR]
     of the finite values, within their min and max (the corners where x_u ∥ x_v carry huge |H|
@@ -204,7 +219,7 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
         Pn, segs = net_lines(p.net)
         if nets_only:
             ax = _axes3d(fig, rows, cols, row * cols + col + 1, p)
-            _net(ax, V, F, Pn, segs)
+            _net(ax, V, F, Pn, segs, net_rings(p.net))
             continue
         ax = _axes3d(fig, rows, cols, row * cols + col + 1, p)
         lim = clim if shared else (p.clim or colour_range(H))
@@ -221,7 +236,7 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
             cb.set_label(label.split()[-1], fontsize=7)
         if net_row:
             ax = _axes3d(fig, rows, cols, (row + 1) * cols + col + 1, dataclasses.replace(p, title="control net"))
-            _net(ax, V, F, Pn, segs)
+            _net(ax, V, F, Pn, segs, net_rings(p.net))
     shared = shared and not nets_only
     bar = 1.0 - (110.0 if shared else 10.0) / w  # the colour bar and its labels take the last 110 pixels
     fig.subplots_adjust(left=0.0, right=bar, bottom=0.02, top=0.90 if suptitle else 0.96, wspace=0.02, hspace=0.12)
@@ -235,12 +250,17 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
     return save(fig, path)
 
 
-def _net(ax, V, F, Pn, segs):
+def _net(ax, V, F, Pn, segs, rings):
+    """The control net over the surface in grey; points as the C¹ methods paper draws them:
+    boundary dark, adjacent ring lighter, interior points white."""
     grey = np.tile([0.82, 0.82, 0.85, 0.35], (len(F), 1))
     grey[:, :3] *= _shade(V, F)[:, None]
     ax.add_collection3d(Poly3DCollection(V[F], facecolors=grey, edgecolors="none", linewidths=0))
     ax.add_collection3d(Line3DCollection(segs, colors="k", linewidths=0.6))
-    ax.scatter(Pn[:, 0], Pn[:, 1], Pn[:, 2], s=4, c="k", depthshade=False)
+    for ring, colour in ((0, "k"), (1, "0.55"), (2, "w")):
+        Q = Pn[rings == ring]
+        if len(Q):
+            ax.scatter(Q[:, 0], Q[:, 1], Q[:, 2], s=6, c=colour, edgecolors="k", linewidths=0.4, depthshade=False)
     _box(ax, np.vstack([V, Pn]))
 
 
