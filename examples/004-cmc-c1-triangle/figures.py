@@ -9,11 +9,11 @@ along the branch from H = 0 for n = 6, 7, 8, 10, with the folds the example prog
 import os
 import pathlib
 import sys
-import tempfile  # noqa: F401
+import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, os.environ.get("BPDE_PYTHON_DIR", str(HERE.parents[1] / "build" / "python")))
-import numpy as np  # noqa: E402,F401
+import numpy as np  # noqa: E402
 
 import bezierpde  # noqa: E402
 from bezierpde import figures as fg  # noqa: E402

@@ -9,12 +9,10 @@ example_004_cmc_sphere_convergence computes them in this run.
 import os
 import pathlib
 import sys
-import tempfile  # noqa: F401
+import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, os.environ.get("BPDE_PYTHON_DIR", str(HERE.parents[1] / "build" / "python")))
-import numpy as np  # noqa: E402,F401
-
 import bezierpde  # noqa: E402
 from bezierpde import figures as fg  # noqa: E402
 

@@ -11,7 +11,7 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, os.environ.get("BPDE_PYTHON_DIR", str(HERE.parents[1] / "build" / "python")))
-import numpy as np  # noqa: E402,F401
+import numpy as np  # noqa: E402
 
 import bezierpde  # noqa: E402
 from bezierpde import figures as fg  # noqa: E402
