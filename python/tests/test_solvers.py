@@ -3,6 +3,9 @@
 the example jobs: the same nets and numbers to the last bit. Then option validation, the C++
 defaults, and array shapes."""
 
+import threading
+import time
+
 import numpy as np
 import pytest
 
@@ -309,7 +312,7 @@ def test_option_validation_errors(examples):
     with pytest.raises(bezierpde.ParameterError, match="method"):
         s.method = "magic"
     s.load_quadrature = 0
-    config = blend_examples([e for e in examples])[0][1]
+    config = blend_examples(examples)[0][1]
     problem = bezierpde.SmoothingSplineProblem.from_config(config)
     with pytest.raises(bezierpde.ParameterError):
         bezierpde.solve_smoothing_spline(problem, s)
@@ -361,3 +364,58 @@ def test_array_shape_errors(examples):
     r = bezierpde.solve_bspline_extremal(bezierpde.net_from_dict(as_bspline(job["net"])), "dirichlet")
     P = r.net.points
     assert P.shape == (36, 3) and not P.flags["OWNDATA"]
+
+
+def ticks_during(solve):
+    """How many time stamps another Python thread records while `solve()` runs on a thread (none
+    could fall inside if the solve held the GIL)."""
+    ticks, span = [], []
+    stop = threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            stop.wait(0.001)
+
+    def solver():
+        t0 = time.perf_counter()
+        solve()
+        span.extend([t0, time.perf_counter()])
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    s = threading.Thread(target=solver)
+    s.start()
+    s.join()
+    stop.set()
+    t.join()
+    t0, t1 = span
+    margin = 0.1 * (t1 - t0)
+    return len([x for x in ticks if t0 + margin < x < t1 - margin]), t1 - t0
+
+
+def large_blend():
+    p = bezierpde.SmoothingSplineProblem()
+    p.k = p.l = 64
+    x = np.arange(p.k + 1) / p.k
+    p.y0_value = np.column_stack([x, 0 * x, np.sin(3 * x)])
+    p.y1_value = np.column_stack([x, 0 * x + 1, np.cos(2 * x)])
+    p.y0_dy = p.y1_dy = np.tile([0.0, 1.0, 0.0], (p.k + 1, 1))
+    return p
+
+
+def large_bspline(p=5, n=24):
+    knots = [0.0] * (p + 1) + list(np.linspace(0, 1, n - p + 1)[1:-1]) + [1.0] * (p + 1)
+    points = np.random.default_rng(3).random((n * n, 3))
+    return bezierpde.BSplineNet(p, p, knots, knots, points)
+
+
+@pytest.mark.parametrize("name", ["smoothing_spline", "bspline_pde", "extremal_solver"])
+def test_the_gil_is_released_during_the_solvers(name):
+    solve = {
+        "smoothing_spline": lambda: bezierpde.solve_smoothing_spline(large_blend()),
+        "bspline_pde": lambda: bezierpde.solve_bspline_pde(large_bspline(), "biharmonic"),
+        "extremal_solver": lambda: bezierpde.ExtremalSolver("biharmonic", 30, 30, "boundary"),
+    }[name]
+    inside, seconds = ticks_during(solve)
+    assert inside >= 3, (inside, seconds)
