@@ -2,7 +2,6 @@
 // and that solver's requirements (declared next to its Options, solvers/requirements.h). The same
 // table validates a job when it is read (validate_job) and dispatches it (run_job); the solvers
 // check their own preconditions again and throw InvalidInput. Also the report each solver writes.
-#include <optional>
 #include <string>
 #include <utility>
 
@@ -15,7 +14,6 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/energies/quadratic_energy.h"
-#include "bezierpde/energies/triangular_gram.h"
 #include "bezierpde/energies/volume.h"
 #include "bezierpde/io/mesh_io.h"
 #include "bezierpde/io/html_view.h"
@@ -108,19 +106,9 @@ SolveOutcome pde_lu(const Job& job, const TensorNet& net) {
 
 SolveOutcome triangular_extremal(const Job& job, const TriangularNet& net) {
   const EnergySpec& e = *job.problem.energy;
-  Summary s;
-  std::optional<ExtremalSolver> solver;
-  std::optional<TriangularNet> x;
-  {
-    ScopedTimer timer(s.seconds);
-    solver.emplace(triangular_gram(net.n(), e), net.fixed_indices(job.fixed));
-    x.emplace(net.n(), solver->solve(net.points()));
-    s.residual = solver->reduced_residual(net.points());
-  }
-  s.finish(s.residual <= kConvergenceTolerance, Status::NumericalLimit,
-           [&] { return "optimality residual " + std::to_string(s.residual) + " above 1e-11"; });
-  SolveOutcome out = outcome(job, *x, s);
-  out.report["energy"] = finite_or_null(solver->extremal_energy(net.points()));
+  const TriangularExtremalResult r = solve_extremal(net, e, job.fixed);
+  SolveOutcome out = outcome(job, r.net, r.summary);
+  out.report["energy"] = finite_or_null(r.energy);
   out.report["energy_name"] = e.name();
   return out;
 }

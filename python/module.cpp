@@ -12,6 +12,7 @@
 //     bezierpde.InternalError(Error, RuntimeError)
 // std::bad_alloc is MemoryError. The GIL is released while C++ runs.
 #include <pybind11/eigen.h>
+#include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -33,9 +34,13 @@
 #include "bezierpde/jobs/run_job.h"
 #include "bezierpde/jobs/run_plate.h"
 #include "bezierpde/jobs/sweep.h"
+#include "bezierpde/solvers/blend/smoothing_spline.h"
+#include "bezierpde/solvers/bspline/bspline_extremal.h"
+#include "bezierpde/solvers/bspline/bspline_pde.h"
 #include "bezierpde/solvers/c1/clamped_plate.h"
 #include "bezierpde/solvers/c1/tetraharmonic.h"
 #include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/solvers/extremal.h"
 #include "bezierpde/solvers/pde/pde_explicit.h"
 #include "bezierpde/solvers/pde/pde_lu.h"
 #include "bezierpde/solvers/summary.h"
@@ -167,6 +172,32 @@ void set_points(NetT& net, const Eigen::Ref<const Eigen::MatrixX3d>& P) {
     throw bpde::SizeError("points: expected " + std::to_string(net.points().rows()) + " x 3, got " +
                           std::to_string(P.rows()) + " x 3");
   net.points() = P;
+}
+
+// A rows x C float64 matrix from an array (or nested list) argument: SizeError naming `what` on a
+// wrong shape (pybind11's Eigen caster would raise a TypeError), ParseError on non-numbers. Float64
+// Fortran-ordered input is read in place; other input is converted once by numpy.
+template <int C>
+Eigen::Matrix<double, Eigen::Dynamic, C> points_arg(py::handle h, const std::string& what, Eigen::Index rows = -1) {
+  using Array = py::array_t<double, py::array::f_style | py::array::forcecast>;
+  const Array a = Array::ensure(h);
+  if (!a) throw bpde::ParseError(what + ": expected an array of numbers");
+  const auto expected = [&] {
+    return what + ": expected an array of shape (" + (rows >= 0 ? std::to_string(rows) : std::string("N")) + ", " +
+           std::to_string(C) + "), got shape " + py::repr(a.attr("shape")).cast<std::string>();
+  };
+  if (a.ndim() != 2 || a.shape(1) != C || (rows >= 0 && a.shape(0) != rows)) throw bpde::SizeError(expected());
+  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, C>>(a.data(), a.shape(0), C);
+}
+
+// A matrix field of a C++ struct as a property: a read-only numpy view of it, set from any array
+// of shape (N, C) (SizeError otherwise).
+template <int C, auto Field, class T>
+void matrix_field(py::class_<T>& c, const char* name, const char* doc) {
+  c.def_property(
+      name, [](const T& t) -> const Eigen::Matrix<double, Eigen::Dynamic, C>& { return t.*Field; },
+      [name](T& t, py::handle a) { t.*Field = points_arg<C>(a, name); }, py::return_value_policy::reference_internal,
+      doc);
 }
 
 // ------------------------------------------------------------------ the command contract
@@ -307,8 +338,31 @@ PYBIND11_MODULE(_core, m) {
       .def("evaluate", &bpde::TriangularNet::evaluate, py::arg("u"), py::arg("v"))
       .def("to_dict", [](const bpde::TriangularNet& n) { return from_json(bpde::net_to_json(n)); })
       .def("__repr__", [](const bpde::TriangularNet& n) { return "TriangularNet(n=" + std::to_string(n.n()) + ")"; });
-  py::class_<bpde::BSplineNet>(m, "BSplineNet", "Tensor B-spline net (FORMATS.md \"bspline\").")
-      .def("to_dict", [](const bpde::BSplineNet& n) { return from_json(bpde::net_to_json(n)); });
+  py::class_<bpde::BSplineNet>(m, "BSplineNet",
+                               "Tensor B-spline net of degree (p, q) over the knots (U, V) (FORMATS.md \"bspline\"); "
+                               "points row i*nv + j, (nu*nv) x 3.")
+      .def(py::init([](int p, int q, std::vector<double> U, std::vector<double> V, py::handle points) {
+             // The point count is checked by the constructor, after the knots.
+             return bpde::BSplineNet(p, q, std::move(U), std::move(V), points_arg<3>(points, "points"));
+           }),
+           py::arg("p"), py::arg("q"), py::arg("U"), py::arg("V"), py::arg("points"))
+      .def_property_readonly("p", &bpde::BSplineNet::p)
+      .def_property_readonly("q", &bpde::BSplineNet::q)
+      .def_property_readonly("nu", &bpde::BSplineNet::nu)
+      .def_property_readonly("nv", &bpde::BSplineNet::nv)
+      .def_property_readonly("knots_u", &bpde::BSplineNet::knots_u)
+      .def_property_readonly("knots_v", &bpde::BSplineNet::knots_v)
+      .def_property(
+          "points", [](bpde::BSplineNet& n) -> Eigen::MatrixX3d& { return n.points(); },
+          [](bpde::BSplineNet& n, const Eigen::Ref<const Eigen::MatrixX3d>& P) { set_points(n, P); },
+          py::return_value_policy::reference_internal)
+      .def("evaluate", &bpde::BSplineNet::evaluate, py::arg("u"), py::arg("v"), "A point; (u, v) in the knot domain.")
+      .def("derivative", &bpde::BSplineNet::derivative, py::arg("u"), py::arg("v"), py::arg("du"), py::arg("dv"))
+      .def("to_dict", [](const bpde::BSplineNet& n) { return from_json(bpde::net_to_json(n)); })
+      .def("__repr__", [](const bpde::BSplineNet& n) {
+        return "BSplineNet(p=" + std::to_string(n.p()) + ", q=" + std::to_string(n.q()) +
+               ", nu=" + std::to_string(n.nu()) + ", nv=" + std::to_string(n.nv()) + ")";
+      });
   m.def(
       "net_from_dict", [](py::handle d) { return net_object(net_arg(d)); }, py::arg("net"),
       "A TensorNet, TriangularNet or BSplineNet from a NET dict (FORMATS.md \"Nets\").");
@@ -530,6 +584,249 @@ PYBIND11_MODULE(_core, m) {
       .def_readonly("summary", &bpde::ClampedPlateResult::summary);
   m.def("solve_clamped_plate", &bpde::solve_clamped_plate, py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "Clamped plate under uniform load (C1 methods §6).");
+
+  // Extremals of quadratic energies (solvers/extremal.h): tensor and triangular nets.
+  py::class_<bpde::ExtremalOptions>(m, "ExtremalOptions",
+                                    "Options of solve_extremal and ExtremalSolver (solvers/extremal.h).")
+      .def(py::init<>())
+      .def_readwrite("singular_tolerance", &bpde::ExtremalOptions::singular_tolerance,
+                     "Smallest accepted reciprocal condition number of the reduced system, in [0, 1) (1e-13).")
+      .def_readwrite("conditioned_basis", &bpde::ExtremalOptions::conditioned_basis,
+                     "Tensor nets: assemble in the conditioned (Gegenbauer) basis (True).")
+      .def_readwrite("use_cache", &bpde::ExtremalOptions::use_cache,
+                     "Tensor nets: reuse a process-wide cache of factored solvers (False).")
+      .def("validate", &bpde::ExtremalOptions::validate, "Raises ParameterError naming a bad field.");
+  py::class_<bpde::ExtremalResult>(m, "ExtremalResult", "A tensor extremal: net, energy, summary.")
+      .def_readonly("net", &bpde::ExtremalResult::net)
+      .def_readonly("energy", &bpde::ExtremalResult::energy)
+      .def_readonly("summary", &bpde::ExtremalResult::summary);
+  py::class_<bpde::TriangularExtremalResult>(m, "TriangularExtremalResult",
+                                             "A triangular extremal: net, energy, summary.")
+      .def_readonly("net", &bpde::TriangularExtremalResult::net)
+      .def_readonly("energy", &bpde::TriangularExtremalResult::energy)
+      .def_readonly("summary", &bpde::TriangularExtremalResult::summary);
+  m.def(
+      "solve_extremal",
+      [](const bpde::TensorNet& data, py::handle energy, const std::string& fixed,
+         const bpde::ExtremalOptions& options) {
+        const bpde::EnergySpec spec = energy_arg(energy);
+        const bpde::FixedSet f = parse_fixed(fixed);
+        py::gil_scoped_release release;
+        return bpde::solve_extremal(data, spec, f, options);
+      },
+      py::arg("data"), py::arg("energy"), py::arg("fixed") = "boundary", py::arg("options") = bpde::ExtremalOptions(),
+      "The minimiser of a quadratic energy over the free control points, the `fixed` points of `data` "
+      "prescribed (FORMATS.md problem \"extremal\") -> ExtremalResult, or TriangularExtremalResult for a "
+      "TriangularNet. `energy` is a name or an ENERGY dict.");
+  m.def(
+      "solve_extremal",
+      [](const bpde::TriangularNet& data, py::handle energy, const std::string& fixed,
+         const bpde::ExtremalOptions& options) {
+        const bpde::EnergySpec spec = energy_arg(energy);
+        const bpde::FixedSet f = parse_fixed(fixed);
+        py::gil_scoped_release release;
+        return bpde::solve_extremal(data, spec, f, options);
+      },
+      py::arg("data"), py::arg("energy"), py::arg("fixed") = "boundary", py::arg("options") = bpde::ExtremalOptions());
+  py::class_<bpde::ExtremalSolver>(
+      m, "ExtremalSolver",
+      "A factored extremal problem (solvers/extremal.h): X_free = mould @ X_fixed, one product per boundary.")
+      .def(py::init([](py::handle energy, int n, int m, const std::string& fixed, const bpde::ExtremalOptions& o) {
+             const bpde::EnergySpec spec = energy_arg(energy);
+             const bpde::FixedSet f = parse_fixed(fixed);
+             py::gil_scoped_release release;
+             return bpde::ExtremalSolver(spec, n, m, f, o);
+           }),
+           py::arg("energy"), py::arg("n"), py::arg("m"), py::arg("fixed") = "boundary",
+           py::arg("options") = bpde::ExtremalOptions(), "Tensor nets of degree (n, m).")
+      .def(py::init([](const Eigen::MatrixXd& Q, std::vector<int> fixed, const bpde::ExtremalOptions& o) {
+             py::gil_scoped_release release;
+             return bpde::ExtremalSolver(Q, std::move(fixed), o);
+           }),
+           py::arg("gram"), py::arg("fixed_indices"), py::arg("options") = bpde::ExtremalOptions(),
+           "Generic: an N x N Gram matrix and the prescribed point indices.")
+      .def_property_readonly("size", &bpde::ExtremalSolver::size)
+      .def_property_readonly("fixed_indices", &bpde::ExtremalSolver::fixed_indices)
+      .def_property_readonly("free_indices", &bpde::ExtremalSolver::free_indices)
+      .def_property_readonly("mould", &bpde::ExtremalSolver::mould, py::return_value_policy::reference_internal,
+                             "#free x #fixed (read-only view).")
+      .def_property_readonly("gram", &bpde::ExtremalSolver::gram, py::return_value_policy::reference_internal)
+      .def(
+          "solve",
+          [](const bpde::ExtremalSolver& s, py::handle points) {
+            const Eigen::MatrixX3d P = points_arg<3>(points, "points", s.size());
+            Eigen::MatrixX3d X;
+            {
+              py::gil_scoped_release release;
+              X = s.solve(P);
+            }
+            return adopt(std::move(X));
+          },
+          py::arg("points"), "The extremal's points (N x 3) for the fixed rows of `points` (N x 3).")
+      .def(
+          "reduced_residual",
+          [](const bpde::ExtremalSolver& s, py::handle points) {
+            return s.reduced_residual(points_arg<3>(points, "points", s.size()));
+          },
+          py::arg("points"))
+      .def(
+          "extremal_energy",
+          [](const bpde::ExtremalSolver& s, py::handle points) {
+            return s.extremal_energy(points_arg<3>(points, "points", s.size()));
+          },
+          py::arg("points"))
+      .def(
+          "energy",
+          [](const bpde::ExtremalSolver& s, py::handle points) {
+            return s.energy(points_arg<3>(points, "points", s.size()));
+          },
+          py::arg("points"));
+
+  // B-spline nets (solvers/bspline/): extremals and PDE solutions.
+  py::class_<bpde::BSplineExtremalOptions>(m, "BSplineExtremalOptions",
+                                           "Options of solve_bspline_extremal (solvers/bspline/bspline_extremal.h).")
+      .def(py::init<>())
+      .def_property(
+          "fixed", [](const bpde::BSplineExtremalOptions& o) { return bpde::to_string(o.fixed); },
+          [](bpde::BSplineExtremalOptions& o, const std::string& s) { o.fixed = parse_fixed(s); },
+          "\"boundary\" (default), \"boundary+adjacent\" or \"u-boundaries\".")
+      .def_readwrite("tolerance", &bpde::BSplineExtremalOptions::tolerance,
+                     "Relative residual above which the solve fails, in (0, 1) (1e-11).")
+      .def("validate", &bpde::BSplineExtremalOptions::validate, "Raises ParameterError naming a bad field.");
+  py::class_<bpde::BSplineExtremalResult>(m, "BSplineExtremalResult", "A B-spline extremal: net, energy, summary.")
+      .def_readonly("net", &bpde::BSplineExtremalResult::net)
+      .def_readonly("energy", &bpde::BSplineExtremalResult::energy)
+      .def_readonly("summary", &bpde::BSplineExtremalResult::summary);
+  m.def(
+      "solve_bspline_extremal",
+      [](const bpde::BSplineNet& data, py::handle energy, const bpde::BSplineExtremalOptions& options,
+         std::optional<std::vector<int>> fixed_indices) {
+        const bpde::EnergySpec spec = energy_arg(energy);
+        py::gil_scoped_release release;
+        return fixed_indices ? bpde::solve_bspline_extremal(data, spec, *fixed_indices, options)
+                             : bpde::solve_bspline_extremal(data, spec, options);
+      },
+      py::arg("data"), py::arg("energy"), py::arg("options") = bpde::BSplineExtremalOptions(),
+      py::arg("fixed_indices") = py::none(),
+      "Extremal of a quadratic energy on a B-spline net -> BSplineExtremalResult. The prescribed points are "
+      "options.fixed, or the strictly increasing indices i*nv + j of `fixed_indices` when given.");
+  py::class_<bpde::BSplinePdeOptions>(m, "BSplinePdeOptions",
+                                      "Options of solve_bspline_pde (solvers/bspline/bspline_pde.h).")
+      .def(py::init<>())
+      .def_property(
+          "fixed", [](const bpde::BSplinePdeOptions& o) { return bpde::to_string(o.fixed); },
+          [](bpde::BSplinePdeOptions& o, const std::string& s) { o.fixed = parse_fixed(s); },
+          "\"boundary\" (default), \"boundary+adjacent\" or \"u-boundaries\" (second order only).")
+      .def_readwrite("rank_tolerance", &bpde::BSplinePdeOptions::rank_tolerance, "In (0, 1) (1e-10).")
+      .def_readwrite("consistency_tolerance", &bpde::BSplinePdeOptions::consistency_tolerance, "In (0, 1) (1e-10).")
+      .def("validate", &bpde::BSplinePdeOptions::validate, "Raises ParameterError naming a bad field.");
+  py::class_<bpde::BSplinePdeResult>(m, "BSplinePdeResult",
+                                     "A B-spline PDE solution: net, summary, equations, ranks, free parameters, ...")
+      .def_readonly("net", &bpde::BSplinePdeResult::net)
+      .def_readonly("summary", &bpde::BSplinePdeResult::summary)
+      .def_readonly("equations", &bpde::BSplinePdeResult::equations)
+      .def_readonly("rank", &bpde::BSplinePdeResult::rank)
+      .def_readonly("rank_free", &bpde::BSplinePdeResult::rank_free)
+      .def_readonly("free_parameters", &bpde::BSplinePdeResult::free_parameters)
+      .def_readonly("compatibility_conditions", &bpde::BSplinePdeResult::compatibility_conditions)
+      .def_readonly("minimum_energy_member", &bpde::BSplinePdeResult::minimum_energy_member)
+      .def_readonly("energy", &bpde::BSplinePdeResult::energy);
+  m.def(
+      "solve_bspline_pde",
+      [](const bpde::BSplineNet& data, py::handle op, const bpde::BSplinePdeOptions& options,
+         std::optional<std::vector<int>> fixed_indices) {
+        const bpde::EnergySpec spec = energy_arg(op);
+        py::gil_scoped_release release;
+        return fixed_indices ? bpde::solve_bspline_pde(data, spec, *fixed_indices, options)
+                             : bpde::solve_bspline_pde(data, spec, options);
+      },
+      py::arg("data"), py::arg("operator"), py::arg("options") = bpde::BSplinePdeOptions(),
+      py::arg("fixed_indices") = py::none(),
+      "B-spline solution of the Euler-Lagrange PDE of `operator` (B-spline Euler-Lagrange, Algorithms 1-2) -> "
+      "BSplinePdeResult; converged False with a message (status Incompatible) when the data admit no solution.");
+
+  // Smoothing PDE splines (solvers/blend/smoothing_spline.h): the blend of `bpde blend`.
+  py::class_<bpde::SmoothingSplineProblem> spline_problem(
+      m, "SmoothingSplineProblem",
+      "The data of a discrete smoothing PDE spline (smoothing PDE splines, eq. (6)): partition k x l, a, "
+      "epsilon, the edges y = 0 and y = 1 ((k+1) x 3 values and d/dy), approximation points (m x 2) and "
+      "their data (m x 3), an optional load f(x, y) -> 3 numbers.");
+  spline_problem.def(py::init<>())
+      .def_static(
+          "from_config", [](py::handle config) { return bpde::blend_config_from_json(to_json(config)).problem; },
+          py::arg("config"), "The problem of a blend CONFIG dict (FORMATS.md; \"edges\" or \"surfaces\").")
+      .def_readwrite("k", &bpde::SmoothingSplineProblem::k, "Intervals in x (8).")
+      .def_readwrite("l", &bpde::SmoothingSplineProblem::l, "Intervals in y (4).")
+      .def_readwrite("a", &bpde::SmoothingSplineProblem::a, "The operator's a, in [1e-6, 1e6] (1).")
+      .def_readwrite("epsilon", &bpde::SmoothingSplineProblem::epsilon, "epsilon > 0 (1).")
+      .def_readwrite("load", &bpde::SmoothingSplineProblem::load,
+                     "f(x, y) -> (3,) or None (f = 0); called with the GIL held.")
+      .def("validate", &bpde::SmoothingSplineProblem::validate, "Raises the InvalidInput subclass naming a bad field.");
+  matrix_field<3, &bpde::SmoothingSplineProblem::y0_value>(spline_problem, "y0_value",
+                                                           "Values at the k+1 nodes of y = 0, (k+1) x 3.");
+  matrix_field<3, &bpde::SmoothingSplineProblem::y0_dy>(spline_problem, "y0_dy",
+                                                        "d/dy at the k+1 nodes of y = 0, (k+1) x 3.");
+  matrix_field<3, &bpde::SmoothingSplineProblem::y1_value>(spline_problem, "y1_value",
+                                                           "Values at the k+1 nodes of y = 1, (k+1) x 3.");
+  matrix_field<3, &bpde::SmoothingSplineProblem::y1_dy>(spline_problem, "y1_dy",
+                                                        "d/dy at the k+1 nodes of y = 1, (k+1) x 3.");
+  matrix_field<2, &bpde::SmoothingSplineProblem::points>(spline_problem, "points",
+                                                         "Approximation points (x, y) in [0,1]^2, m x 2.");
+  matrix_field<3, &bpde::SmoothingSplineProblem::data>(spline_problem, "data", "Their data, m x 3.");
+  py::class_<bpde::SmoothingSplineOptions>(m, "SmoothingSplineOptions", "Options of solve_smoothing_spline.")
+      .def(py::init<>())
+      .def_property(
+          "method",
+          [](const bpde::SmoothingSplineOptions& o) {
+            return o.method == bpde::SmoothingSplineOptions::Method::kElimination ? "elimination" : "kkt-lu";
+          },
+          [](bpde::SmoothingSplineOptions& o, const std::string& s) {
+            if (s == "elimination")
+              o.method = bpde::SmoothingSplineOptions::Method::kElimination;
+            else if (s == "kkt-lu")
+              o.method = bpde::SmoothingSplineOptions::Method::kKktLu;
+            else
+              throw bpde::ParameterError("method: expected \"elimination\" or \"kkt-lu\", got \"" + s + "\"");
+          },
+          "\"elimination\" (default: reduced SPD system, sparse Cholesky) or \"kkt-lu\" (eq. (8), sparse LU).")
+      .def_readwrite("load_quadrature", &bpde::SmoothingSplineOptions::load_quadrature,
+                     "Gauss points per direction and element for the load, 1..50 (6).")
+      .def("validate", &bpde::SmoothingSplineOptions::validate, "Raises ParameterError naming a bad field.");
+  py::class_<bpde::SmoothingSpline>(m, "SmoothingSpline", "The C1 bicubic (BFS) spline on [0,1]^2.")
+      .def_property_readonly(
+          "coefficients", [](const bpde::SmoothingSpline& s) -> const Eigen::MatrixX3d& { return s.coefficients(); },
+          py::return_value_policy::reference_internal, "num_dofs x 3 in the dof order of the BFS space (read-only).")
+      .def("evaluate", &bpde::SmoothingSpline::evaluate, py::arg("x"), py::arg("y"), py::arg("dx") = 0,
+           py::arg("dy") = 0)
+      .def(
+          "sample",
+          [](const bpde::SmoothingSpline& s, int samples) {
+            bpde::TriangleMesh mesh;
+            {
+              py::gil_scoped_release release;
+              mesh = s.sample(samples);
+            }
+            return mesh_tuple(std::move(mesh));
+          },
+          py::arg("samples") = 50, "(V, F, H) as `bpde blend` samples the surface.")
+      .def("to_bspline_net", &bpde::SmoothingSpline::to_bspline_net, "The same surface as a bicubic BSplineNet.");
+  py::class_<bpde::SmoothingSplineResult>(m, "SmoothingSplineResult")
+      .def_readonly("spline", &bpde::SmoothingSplineResult::spline)
+      .def_readonly("functional", &bpde::SmoothingSplineResult::functional, "J of eq. (6).")
+      .def_readonly("data_misfit", &bpde::SmoothingSplineResult::data_misfit)
+      .def_readonly("energy", &bpde::SmoothingSplineResult::energy, "|sigma|_L^2.")
+      .def_readonly("max_data_error", &bpde::SmoothingSplineResult::max_data_error)
+      .def_readonly("multipliers", &bpde::SmoothingSplineResult::multipliers, "4(k+1) x 3.")
+      .def_readonly("summary", &bpde::SmoothingSplineResult::summary);
+  m.def("solve_smoothing_spline", &bpde::solve_smoothing_spline, py::arg("problem"),
+        py::arg("options") = bpde::SmoothingSplineOptions(), py::call_guard<py::gil_scoped_release>(),
+        "The discrete smoothing PDE spline (Theorem 6, eq. (8)) -> SmoothingSplineResult.");
+  py::class_<bpde::SmoothingSplineSolver>(m, "SmoothingSplineSolver",
+                                          "Assembled and factored once for a partition, a, epsilon and points.")
+      .def(py::init<const bpde::SmoothingSplineProblem&, const bpde::SmoothingSplineOptions&>(), py::arg("problem"),
+           py::arg("options") = bpde::SmoothingSplineOptions(), py::call_guard<py::gil_scoped_release>())
+      .def("solve", &bpde::SmoothingSplineSolver::solve, py::arg("problem"), py::call_guard<py::gil_scoped_release>(),
+           "Solve for the edges, data and load of `problem` (same k, l, a, epsilon, points).");
 
   // Sweeps: the one expansion (jobs/sweep.h), and one job run as the command runs it.
   m.def(

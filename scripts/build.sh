@@ -4,11 +4,15 @@
 # Builds for this machine (-DBPDE_NATIVE=ON: -march=native, docs/performance.md) unless
 # BPDE_NATIVE=OFF is set in the environment; packagers configure without it (CMake's default is
 # OFF, portable code).
+# Builds the bpde_* libraries as shared libraries (-DBUILD_SHARED_LIBS=ON: bpde, the tests, the
+# examples and the Python module link build/libbpde_*.so) unless BPDE_SHARED_LIBS=OFF is set;
+# scripts/test.sh configures build/ the same way, so neither rebuilds the other's tree. CMake's
+# own default (a plain `cmake -S . -B build`) is static archives (README, "Library use").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 JOBS=${BPDE_JOBS:-$(nproc)}
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DBPDE_NATIVE=${BPDE_NATIVE:-ON} ${BPDE_CMAKE_ARGS:-} >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DBPDE_NATIVE=${BPDE_NATIVE:-ON} -DBUILD_SHARED_LIBS=${BPDE_SHARED_LIBS:-ON} ${BPDE_CMAKE_ARGS:-} >/dev/null
 if [ $# -gt 0 ]; then
   cmake --build build -j "$JOBS" --target "$@"
 else

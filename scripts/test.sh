@@ -4,6 +4,9 @@
 # programs, the pytest files of python/tests (Python.*) and the package test (Package.consumer:
 # install into a temporary prefix, build an outside project from the README's snippets); then it
 # builds and runs the fuzz targets briefly.
+# The suite runs on the shared-library build of scripts/build.sh (BPDE_SHARED_LIBS=ON, its
+# default): Package.consumer then installs the .so files and checks that the consumer and the
+# installed bpde load them from the prefix. BPDE_SHARED_LIBS=OFF runs it on static archives.
 # With BPDE_SANITIZE=1 it then builds and runs the same suite under AddressSanitizer and
 # UndefinedBehaviorSanitizer (the `asan` preset of CMakePresets.json, in ./build-asan). That pass
 # doubles the time on a 2-core machine, so CI leaves it to this switch.

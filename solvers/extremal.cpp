@@ -13,6 +13,7 @@
 #include "bezierpde/core/quadrature.h"
 #include "bezierpde/core/symmetric_factor.h"
 #include "bezierpde/energies/tensor_gram.h"
+#include "bezierpde/energies/triangular_gram.h"
 
 namespace bpde {
 
@@ -437,6 +438,20 @@ ExtremalResult solve_extremal(const TensorNet& net, const EnergySpec& energy, Fi
     r = solve_extremal_untimed(net, energy, fixed, options);
   }
   return r;
+}
+
+TriangularExtremalResult solve_extremal(const TriangularNet& net, const EnergySpec& energy, FixedSet fixed,
+                                        const ExtremalOptions& options) {
+  options.validate();
+  return timed_solve([&] {
+    const ExtremalSolver solver(triangular_gram(net.n(), energy), net.fixed_indices(fixed), options);
+    TriangularExtremalResult r{TriangularNet(net.n(), solver.solve(net.points())), 0.0, {}};
+    r.summary.residual = solver.reduced_residual(net.points());
+    r.energy = solver.extremal_energy(net.points());
+    r.summary.finish(r.summary.residual <= kConvergenceTolerance, Status::NumericalLimit,
+                     [&] { return "optimality residual " + std::to_string(r.summary.residual) + " above 1e-11"; });
+    return r;
+  });
 }
 
 }  // namespace bpde

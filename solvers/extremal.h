@@ -34,6 +34,7 @@
 #include "bezierpde/solvers/requirements.h"
 #include "bezierpde/solvers/summary.h"
 #include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 
@@ -157,5 +158,22 @@ struct ExtremalResult {
 /// ignored). Throws as the tensor ExtremalSolver constructor and ExtremalOptions::validate.
 ExtremalResult solve_extremal(const TensorNet& net, const EnergySpec& energy, FixedSet fixed,
                               const ExtremalOptions& options = {});
+
+/// Result of a one-off extremal solve on a triangular net.
+struct TriangularExtremalResult {
+  TriangularNet net;
+  double energy = 0.0;  ///< ExtremalSolver::extremal_energy of the data
+  Summary summary;      ///< residual = ExtremalSolver::reduced_residual; converged = residual <= 1e-11
+};
+
+/// The extremal of `energy` on a triangular net of degree n with the `fixed` points of `net`
+/// prescribed (its other points are ignored): the generic ExtremalSolver on the triangular Gram
+/// matrix (energies/triangular_gram.h), factored in the Bernstein basis (options.conditioned_basis
+/// and options.use_cache do not apply). Throws ParameterError (ExtremalOptions::validate, a
+/// singular or indefinite reduced system: e.g. n < 3 with C0 data or n < 6 with C1 data, or a
+/// degree far beyond kMaxTriangularExtremalDegree) and the errors of triangular_gram. What
+/// `bpde solve` runs for the FORMATS.md "extremal" problem on a triangular net.
+TriangularExtremalResult solve_extremal(const TriangularNet& net, const EnergySpec& energy, FixedSet fixed,
+                                        const ExtremalOptions& options = {});
 
 }  // namespace bpde

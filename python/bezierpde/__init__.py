@@ -9,10 +9,13 @@ The command contract of ``bpde`` from Python, with the same JSON (dicts) as the 
     >>> bezierpde.plate(1.0, 11, "admissible-load"), bezierpde.blend(config)
     >>> table = bezierpde.sweep(spec, client=None)  # a pandas DataFrame (or a list of rows)
 
-Nets are ``TensorNet`` and ``TriangularNet`` (``points``: an N x 3 numpy view of the net), and the
-solver entry points take their Options and return a ``Summary`` (status, message, iterations,
-residual, seconds): ``solve_pde_explicit``, ``solve_pde_lu``, ``solve_cmc``,
-``solve_tetraharmonic``, ``solve_clamped_plate``.
+Nets are ``TensorNet``, ``TriangularNet`` and ``BSplineNet`` (``points``: an N x 3 numpy view of
+the net), and the solver entry points take their Options and return a ``Summary`` (status,
+message, iterations, residual, seconds): ``solve_pde_explicit``, ``solve_pde_lu``, ``solve_cmc``,
+``solve_tetraharmonic``, ``solve_clamped_plate``, ``solve_extremal`` (tensor and triangular; and
+``ExtremalSolver``, factored once), ``solve_bspline_extremal``, ``solve_bspline_pde`` and
+``solve_smoothing_spline`` (``SmoothingSplineProblem``, ``SmoothingSplineSolver``). Each returns
+the same numbers as ``solve``/``blend`` on the equivalent job, to the last bit.
 
 Errors: ``bezierpde.InvalidInput`` (a ValueError) and its subclasses ``ParseError``,
 ``FileError``, ``DegreeError``, ``SizeError``, ``NonFiniteError``, ``ParameterError``,
@@ -55,6 +58,23 @@ from ._core import (  # noqa: F401
     solve_tetraharmonic,
     ClampedPlateOptions,
     solve_clamped_plate,
+    ExtremalOptions,
+    ExtremalResult,
+    TriangularExtremalResult,
+    ExtremalSolver,
+    solve_extremal,
+    BSplineExtremalOptions,
+    BSplineExtremalResult,
+    solve_bspline_extremal,
+    BSplinePdeOptions,
+    BSplinePdeResult,
+    solve_bspline_pde,
+    SmoothingSplineProblem,
+    SmoothingSplineOptions,
+    SmoothingSpline,
+    SmoothingSplineResult,
+    SmoothingSplineSolver,
+    solve_smoothing_spline,
     expand_sweep,
     sweep_boundary_names,
 )

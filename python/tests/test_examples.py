@@ -19,6 +19,10 @@ def test_notebook_example(tmp_path):
     out = run_example("examples/004-python-circle/circle.py", str(tmp_path))
     assert "D_H = 3.870131207373, V = 0.802165303653, converged: True" in out
     assert "fold at H = -1.555" in out and "ParameterError" in out
+    # at H = 0 the CMC critical point is the Dirichlet extremal (the energy of the extremal job)
+    assert "Dirichlet extremal: converged energy 4.572326885124," in out
+    extremal_vs_cmc = float(out.split("max |extremal - CMC at H = 0| =")[1].split()[0])
+    assert extremal_vs_cmc < 1e-12
     assert (tmp_path / "solve" / "result.json").exists()
 
 
@@ -34,3 +38,19 @@ def test_sweep_example_table(tmp_path):
     folds = [-rows[n][1] for n in range(4, 9)]
     assert all(a > b > 1 for a, b in zip(folds, folds[1:]))
     assert (tmp_path / "results.csv").exists()
+
+
+def test_blend_example():
+    out = run_example("examples/003-python-blend/blend.py")
+    assert "bpde blend: J = 20.985443936," in out and "J = 20.985443936, |sigma|_L^2" in out
+    assert "the same spline as bpde blend (edges recomputed here): True" in out
+    # the data error shrinks with epsilon and becomes linear in it: the ratio to epsilon settles
+    ratios = [float(line.split("ratio to epsilon")[1]) for line in out.splitlines() if "ratio to epsilon" in line]
+    errors = [float(line.split("=")[2].split(",")[0]) for line in out.splitlines() if "ratio to epsilon" in line]
+    assert len(ratios) == 5 and all(a > b for a, b in zip(errors, errors[1:]))
+    assert abs(ratios[-1] - ratios[-2]) < 0.01 * ratios[-1]
+    assert "converged biharmonic energy" in out
+    energies = [float(w) for w in out.split("converged biharmonic energy")[1].split("\n")[0].replace(")", "").split()
+                if w[0].isdigit()]
+    assert energies[0] < energies[1]  # the extremal's energy is below the blend's (same ring)
+    assert "ParameterError -> epsilon" in out and "SizeError -> points" in out

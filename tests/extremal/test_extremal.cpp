@@ -269,5 +269,41 @@ TEST(Extremal, CacheReturnsTheSameSolver) {
             1e-14);
 }
 
+// The triangular one-off solve: an affine surface is the extremal of every energy for its own
+// boundary (its energy density is constant, all Euler–Lagrange operators vanish on it), so the
+// interior points come back as the affine images of their Greville parameters (i/n, j/n).
+TEST(Extremal, TriangularSolveReproducesAffineSurfaces) {
+  const Eigen::Vector3d b(0.5, -1.0, 2.0), a_u(1.0, 0.25, -0.5), a_v(-0.3, 1.0, 0.75);
+  for (int n : {3, 5, 8}) {
+    TriangularNet data(n);
+    Eigen::MatrixX3d exact(data.points().rows(), 3);
+    int row = 0;
+    for (int i = n; i >= 0; --i)
+      for (int j = n - i; j >= 0; --j) exact.row(row++) = (b + a_u * i / n + a_v * j / n).transpose();
+    data.points() = exact;
+    TriangularNet boundary_only = data;  // the free points are ignored: scramble them
+    for (int I : boundary_only.free_indices(FixedSet::Boundary)) boundary_only.points().row(I).setConstant(9.0);
+    for (const EnergySpec& e : {EnergySpec::dirichlet(), EnergySpec::biharmonic()}) {
+      const TriangularExtremalResult r = solve_extremal(boundary_only, e, FixedSet::Boundary);
+      EXPECT_LE((r.net.points() - exact).cwiseAbs().maxCoeff(), 1e-12) << n << " " << e.name();
+      EXPECT_TRUE(r.summary.converged);
+      EXPECT_EQ(r.summary.status, Status::Converged);
+      EXPECT_LE(r.summary.residual, kConvergenceTolerance);
+      EXPECT_GE(r.summary.seconds, 0.0);
+      EXPECT_TRUE(std::isfinite(r.energy));
+    }
+  }
+  // Zero boundary data: the zero net, of energy exactly 0.
+  TriangularNet d(4);
+  const TriangularExtremalResult r = solve_extremal(d, EnergySpec::dirichlet(), FixedSet::Boundary);
+  EXPECT_EQ(r.energy, 0.0);
+  EXPECT_LE(r.net.points().cwiseAbs().maxCoeff(), 0.0);
+  ExtremalOptions bad;
+  bad.singular_tolerance = 2.0;
+  EXPECT_THROW(solve_extremal(d, EnergySpec::dirichlet(), FixedSet::Boundary, bad), ParameterError);
+  // degree 5 with C1 data has no free point
+  EXPECT_THROW(solve_extremal(TriangularNet(5), EnergySpec::biharmonic(), FixedSet::BoundaryAdjacent), ParameterError);
+}
+
 }  // namespace
 }  // namespace bpde

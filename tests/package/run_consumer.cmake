@@ -4,7 +4,12 @@
 # prefix with find_package(bezierpde 0.2 CONFIG REQUIRED), build it and run it.
 #
 #   cmake -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK_DIR=... -DCXX_COMPILER=... [-DLAUNCHER=...]
-#         -DGENERATOR=... -P tests/package/run_consumer.cmake
+#         -DGENERATOR=... [-DSHARED=ON|OFF] -P tests/package/run_consumer.cmake
+#
+# With SHARED (the build's BUILD_SHARED_LIBS) the installed lib/ must hold the libbpde_*.so files and
+# the consumer's programs and the installed bpde must load every libbpde_*.so from the prefix (ldd),
+# none from the build tree, with no RUNPATH into the build tree; without it, they must not depend on
+# any libbpde_*.so.
 #
 # README snippets are fenced code blocks between the markers
 #   <!-- snippet: NAME -->  ...  <!-- /snippet -->
@@ -149,4 +154,87 @@ endif()
 run(${consumer}/build/nets_only)
 # The installed command runs too.
 run(${prefix}/bin/bpde solve ${run_dir}/job.json --out ${run_dir}/installed-bpde)
-message(STATUS "package test: installed, consumer built from README snippets (${names}) and run")
+
+# 4. Shared or static, as built: what the programs load (ldd) and where from (their RUNPATH).
+find_program(LDD ldd)
+find_program(READELF readelf)
+if(NOT LDD OR NOT READELF)
+  message(FATAL_ERROR "the package test needs ldd and readelf (libc-bin, binutils)")
+endif()
+# The run paths alone decide (an LD_LIBRARY_PATH of the caller's would take precedence over RUNPATH).
+unset(ENV{LD_LIBRARY_PATH})
+set(programs ${consumer}/build/app ${consumer}/build/nets_only ${prefix}/bin/bpde)
+set(libdir "")
+if(SHARED)
+  foreach(dir lib lib64 lib/x86_64-linux-gnu)
+    if(EXISTS ${prefix}/${dir}/libbpde_jobs.so)
+      set(libdir ${prefix}/${dir})
+    endif()
+  endforeach()
+  if(NOT libdir)
+    message(FATAL_ERROR "BUILD_SHARED_LIBS: no libbpde_jobs.so installed under ${prefix}")
+  endif()
+  foreach(l bpde_core bpde_solvers bpde_cmc bpde_io bpde_view bpde_step bpde_checks bpde_jobs)
+    if(NOT EXISTS ${libdir}/lib${l}.so OR EXISTS ${libdir}/lib${l}.a)
+      message(FATAL_ERROR "BUILD_SHARED_LIBS: expected lib${l}.so (and no lib${l}.a) in ${libdir}")
+    endif()
+  endforeach()
+  list(APPEND programs ${libdir}/libbpde_jobs.so)
+endif()
+foreach(program ${programs})
+  run(${LDD} ${program})
+  string(REPLACE "\n" ";" deps "${last_output}")
+  set(loaded "")
+  foreach(line ${deps})
+    if(line MATCHES "not found")
+      message(FATAL_ERROR "${program}: a library is not found:\n${last_output}")
+    endif()
+    if(line MATCHES "libbpde_[a-z]+\\.so")
+      string(STRIP "${line}" line)
+      list(APPEND loaded "${line}")
+      if(NOT SHARED)
+        message(FATAL_ERROR "static build: ${program} loads ${line}")
+      endif()
+      # "libbpde_x.so.0.2 => /path/libbpde_x.so.0.2 (0x...)": the folder of the resolved path
+      # (ldd prints it as the RUNPATH spells it, e.g. bin/../lib) must be the prefix's.
+      set(from "")
+      if(line MATCHES "=> ([^ ]+) \\(")
+        get_filename_component(from "${CMAKE_MATCH_1}" DIRECTORY)
+        get_filename_component(from "${from}" REALPATH)
+      endif()
+      get_filename_component(want "${libdir}" REALPATH)
+      if(NOT from STREQUAL want)
+        message(FATAL_ERROR "BUILD_SHARED_LIBS: ${program} loads ${line}, not from ${libdir}")
+      endif()
+    endif()
+  endforeach()
+  if(SHARED)
+    list(LENGTH loaded count)
+    # the consumer programs and bpde link the umbrella target (all eight; nets_only core alone),
+    # libbpde_jobs.so the other seven
+    if(count EQUAL 0)
+      message(FATAL_ERROR "BUILD_SHARED_LIBS: ${program} loads no libbpde_*.so:\n${last_output}")
+    endif()
+    if(program MATCHES "(app|bpde|libbpde_jobs\\.so)$" AND count LESS 7)
+      message(FATAL_ERROR "BUILD_SHARED_LIBS: ${program} loads only ${count} libbpde_*.so:\n${last_output}")
+    endif()
+  endif()
+  # Each RUNPATH entry is relative to the file ($ORIGIN) or inside the prefix: nothing points back
+  # into the build tree that was installed.
+  run(${READELF} -d ${program})
+  if(last_output MATCHES "\\(R(UN)?PATH\\)[^[]*\\[([^]]*)\\]")
+    string(REPLACE ":" ";" entries "${CMAKE_MATCH_2}")
+    foreach(e ${entries})
+      string(FIND "${e}" "${prefix}/" in_prefix)
+      if(NOT e MATCHES "^\\$ORIGIN" AND NOT in_prefix EQUAL 0)
+        message(FATAL_ERROR "${program} has the RUNPATH entry ${e} outside the prefix (${prefix})")
+      endif()
+    endforeach()
+  endif()
+endforeach()
+if(SHARED)
+  set(kind "shared libraries loaded from the prefix")
+else()
+  set(kind "static")
+endif()
+message(STATUS "package test (${kind}): installed, consumer built from README snippets (${names}) and run")
