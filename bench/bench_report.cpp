@@ -13,8 +13,10 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "bench_data.h"
+#include "bezierpde/checks/mesh_checks.h"
 #include "bezierpde/jobs/run_blend.h"
 #include "bezierpde/jobs/run_job.h"
 
@@ -73,3 +75,35 @@ BENCHMARK_CAPTURE(SolveJob, cmc, std::string("cmc"))->Name("Solve/cmc")->Apply(C
 BENCHMARK_CAPTURE(ReportJob, cmc, std::string("cmc"))->Name("Report/cmc")->Apply(CmcDegrees);
 BENCHMARK(SolveBlend)->Name("Solve/blend")->Apply(BlendSizes);
 BENCHMARK(ReportBlend)->Name("Report/blend")->Apply(BlendSizes);
+
+namespace {
+
+// Check/<kind>/<n>: the CGAL checks alone (check_mesh of the sampled mesh, as check_report runs
+// them), with the grid broad phase (the default) and with CGAL::box_self_intersection_d
+// (Check-cgal-boxes/<kind>/<n>), for the tensor kinds of Report/<kind>/<n>.
+void CheckJob(benchmark::State& state, const std::string& kind, bpde::BroadPhase broad_phase) {
+  using namespace bpde;
+  const Job job = bpde_bench::job(kind, static_cast<int>(state.range(0)));
+  const TriangleMesh mesh = sample_net(run_job(job).net, job.samples);
+  std::vector<double> V;
+  std::vector<int> F;
+  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r)
+    for (int c = 0; c < 3; ++c) V.push_back(mesh.V(r, c));
+  for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
+    for (int c = 0; c < 3; ++c) F.push_back(mesh.F(r, c));
+  MeshCheckReport rep;
+  for (auto _ : state) benchmark::DoNotOptimize(rep = check_mesh(V, F, MeshCheckOptions{broad_phase}));
+  state.counters["box_pairs"] = static_cast<double>(rep.box_pairs);
+  state.counters["self_intersections"] = rep.self_intersections;
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(CheckJob, pde, std::string("pde"), bpde::BroadPhase::kGrid)->Name("Check/pde")->Apply(Degrees);
+BENCHMARK_CAPTURE(CheckJob, pde_cgal, std::string("pde"), bpde::BroadPhase::kCgalBoxes)
+    ->Name("Check-cgal-boxes/pde")
+    ->Apply(Degrees);
+BENCHMARK_CAPTURE(CheckJob, cmc, std::string("cmc"), bpde::BroadPhase::kGrid)->Name("Check/cmc")->Apply(CmcDegrees);
+BENCHMARK_CAPTURE(CheckJob, cmc_cgal, std::string("cmc"), bpde::BroadPhase::kCgalBoxes)
+    ->Name("Check-cgal-boxes/cmc")
+    ->Apply(CmcDegrees);

@@ -28,6 +28,20 @@ struct MeshCheckReport {
   /// diagonal), and triangles dropped as degenerate (repeated vertex after merging, or collinear).
   int merged_vertices = 0;
   int degenerate_triangles = 0;
+  /// Diagnostics: pairs of (merged, non-degenerate) triangles whose closed bounding boxes overlap,
+  /// i.e. the pairs given to the exact self-intersection test (the same for every BroadPhase).
+  long long box_pairs = 0;
+};
+
+/// How the pairs of triangles with overlapping bounding boxes are found before the exact tests.
+/// Both give the same pairs, hence the same report.
+enum class BroadPhase {
+  kGrid,       ///< a uniform grid of cells (falls back to kCgalBoxes where it would not pay)
+  kCgalBoxes,  ///< CGAL::box_self_intersection_d (the reference)
+};
+
+struct MeshCheckOptions {
+  BroadPhase broad_phase = BroadPhase::kGrid;
 };
 
 /// Run the checks. Throws SizeError (from core/errors.h) for arrays whose length is not a
@@ -35,6 +49,7 @@ struct MeshCheckReport {
 /// An empty triangle list is valid (no intersections, not closed, no volume, cone volume 0).
 /// The capped volume needs every boundary loop to be planar within 1e-8 x its diameter and the
 /// rest of the surface to be a consistently oriented manifold; each loop is capped by a fan.
-MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vector<int>& triangles);
+MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vector<int>& triangles,
+                           const MeshCheckOptions& options = {});
 
 }  // namespace bpde

@@ -35,7 +35,15 @@ class AllResiduals final : public ceres::CostFunction {
     if (!y.allFinite()) return false;
     p_->set(y);
     Eigen::Map<Eigen::VectorXd> F(residuals, n);
-    F = p_->gradient(H_);
+    // Ceres evaluates the residuals at a candidate point and, when it accepts the step, the
+    // residuals and the Jacobian at the same point again: the residuals are reused.
+    if (last_y_.size() == n && last_y_ == y) {
+      F = last_F_;
+    } else {
+      F = p_->gradient(H_);
+      last_y_ = y;
+      last_F_ = F;
+    }
     if (!F.allFinite()) return false;
     if (jacobians && jacobians[0]) {
       // Ceres wants the Jacobian row-major.
@@ -49,7 +57,17 @@ class AllResiduals final : public ceres::CostFunction {
  private:
   Problem* p_;
   double H_;
+  mutable Eigen::VectorXd last_y_, last_F_;
 };
+
+// The stopping test of the callback: the residual of eq. (11) as the newton corrector computes
+// it (the exact denominator only when the residual may be within 1e3 x tolerance, else the last
+// one; CmcProblem::evaluate), so both stop at the same test; the area problem computes it whole.
+double stop_residual(CmcProblem& p, double H, double tol, double& scale) {
+  Eigen::VectorXd g;
+  return p.evaluate(H, g, tol, scale, &scale);
+}
+double stop_residual(AreaProblem& p, double H, double, double&) { return p.residual(H); }
 
 template <class Problem>
 class StopAtTolerance final : public ceres::IterationCallback {
@@ -58,14 +76,14 @@ class StopAtTolerance final : public ceres::IterationCallback {
       : p_(p), buf_(buf), H_(H), tol_(tol) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
     p_->set(*buf_);
-    const double r = p_->residual(H_);
+    const double r = stop_residual(*p_, H_, tol_, scale_);
     return r <= tol_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }
 
  private:
   Problem* p_;
   const Eigen::VectorXd* buf_;
-  double H_, tol_;
+  double H_, tol_, scale_ = 0.0;
 };
 
 template <class Problem>
