@@ -373,8 +373,9 @@ struct AreaSolve {
 
   // The vanishing Dirichlet regulariser: from a critical point of F_1 = D_H in p (and H), solve
   // F_ε = A_H + ε(D - A) for ε = 1, 1/10, 1/100, ... (each stage by `stage`, started from the
-  // previous stage's point) until the first variation of A_H itself meets the tolerance; ε then
-  // drops to 0 for a last stage. A failed stage is retried with a ratio closer to 1 (√ of the
+  // Euler predictor along the ε-path from the previous stage's point) until the first variation of
+  // A_H itself meets the tolerance; after each stage with ε <= 1e-4 the jump to ε = 0 is tried
+  // (jump()); ε then drops to 0 for a last stage. A failed stage is retried with a ratio closer to 1 (√ of the
   // last); successful ones square the ratio again (not below 1/100). F_ε is well conditioned in the
   // tangential directions for ε > 0, where A_H alone is nearly singular.
   template <class Stage>
