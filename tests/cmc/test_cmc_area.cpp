@@ -5,8 +5,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <functional>
+#include <numbers>
 #include <vector>
 
 #include "cmc_test_util.h"
