@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerate (or check) the generated sections of the docs from the example programs.
 
-Usage: docs.py [--check] [--build DIR] [EXAMPLE ...]
+Usage: docs.py [--check] [--full] [--build DIR] [EXAMPLE ...]
 
 Every example program (examples/NNN-name/main.cpp, built as build/example_NNN_name) prints its
 tables between marker lines
@@ -15,6 +15,11 @@ docs/*.md. This script runs the programs and replaces what stands between each p
 what the program printed. With --check it writes nothing and fails (exit 1) when a section
 differs, when a program prints a section that no doc holds, or when a doc holds a section that no
 program printed. Columns named in `machine-dependent:` (timings) are not compared.
+
+Heavy tables: sections whose name ends in "-full" are printed only when the program runs with the
+extra arguments of FULL_ARGS (minutes, not for CI). `--full` runs those programs with them and
+rewrites (or, with --check, compares) the "-full" sections too; without it they are left as they
+are and not compared.
 """
 import argparse
 import os
@@ -40,6 +45,15 @@ ARGS = {
     "004-cmc-fig2": ["{src}", "{tmp}/out"],
     "004-cmc-sphere-convergence": ["{src}", "{tmp}/out"],
 }
+
+# The extra arguments that make a program print its heavy ("-full") sections (docs.py --full).
+FULL_ARGS = {
+    "004-cmc-area-tables": ["--full"],
+}
+
+
+def is_full(name):
+    return name.endswith("-full")
 
 
 def blocks(lines, where):
@@ -84,14 +98,17 @@ def masked(body, columns):
     return out
 
 
-def run(example, build, tmp):
+def run(example, build, tmp, full=False):
     program = build / ("example_" + re.sub(r"[^A-Za-z0-9_]", "_", example))
     if not program.exists():
         sys.exit(f"{program} is missing: build it (bash scripts/build.sh)")
     scratch = pathlib.Path(tmp) / example
     scratch.mkdir(parents=True)
     args = [a.format(src=ROOT / "examples" / example, tmp=scratch) for a in ARGS.get(example, [])]
-    r = subprocess.run([str(program)] + args, cwd=scratch, capture_output=True, text=True, timeout=600)
+    if full:
+        args += FULL_ARGS.get(example, [])
+    r = subprocess.run([str(program)] + args, cwd=scratch, capture_output=True, text=True,
+                       timeout=None if full else 600)
     if r.returncode != 0:
         sys.exit(f"{program.name} exited {r.returncode}:\n{r.stderr[-2000:]}")
     return blocks(r.stdout.splitlines(keepends=True), program.name)
@@ -100,6 +117,7 @@ def run(example, build, tmp):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
+    ap.add_argument("--full", action="store_true", help="also the heavy (-full) sections of FULL_ARGS (minutes)")
     ap.add_argument("--build", default=str(ROOT / "build"), help="build folder with the example programs")
     ap.add_argument("examples", nargs="*", help="example folder names (default: all)")
     a = ap.parse_args()
@@ -110,7 +128,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="bpde_docs_") as tmp:
         printed = {}  # name -> (example, columns, lines)
         for e in examples:
-            for name, (cols, body) in run(e, build, tmp).items():
+            for name, (cols, body) in run(e, build, tmp, a.full).items():
                 if name in printed:
                     sys.exit(f"section {name} is printed by {printed[name][0]} and {e}")
                 printed[name] = (e, cols, body)
@@ -135,7 +153,7 @@ def main():
                 new.append(line)
                 new.extend(held[name][1] if same else body)  # same up to timings: left as it is
                 continue
-            if m and a.examples == []:
+            if m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
                 problems.append(f"{doc.relative_to(ROOT)}: section {m.group(1)} is printed by no example program")
             if name is not None:
                 if line.strip() == END:

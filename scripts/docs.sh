@@ -3,6 +3,9 @@
 # and `<!-- end -->` in examples/*/README.md and docs/*.md) from the example programs' output.
 # Builds the example programs first. `bash scripts/docs.sh --check` changes nothing and fails when
 # a section is stale (the CTest test Docs.GeneratedSectionsMatchTheExamples runs that check).
+# `bash scripts/docs.sh --full` also regenerates the heavy sections (names ending in "-full", e.g.
+# the area tables of docs/cmc.md from example_004_cmc_area_tables --full; minutes), which the check
+# leaves alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ ! -d build ]; then bash scripts/build.sh; fi

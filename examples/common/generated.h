@@ -7,7 +7,9 @@
 // and scripts/docs.py copies it between the same markers of the example's README.md (or of a
 // docs/*.md); the CTest test Docs.GeneratedSectionsMatchTheExamples fails when they differ.
 // Columns named machine-dependent (timings) are not compared. Numbers at rounding level are
-// printed with stable_small(), so that the sections do not depend on the last bits.
+// printed with stable_small(), so that the sections do not depend on the last bits. Sections whose
+// name ends in "-full" are heavy: the program prints them only with the arguments of FULL_ARGS in
+// scripts/docs.py (scripts/docs.sh --full), and the CTest check does not compare them.
 #include <cmath>
 #include <cstdio>
 #include <string>

@@ -28,10 +28,12 @@
 //    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
 //    surface). The start is the D_H critical point at the requested H (the continuation above),
 //    corrected on A_H through a vanishing Dirichlet regulariser: F_ε = A_H + ε(D - A) for
-//    ε = 1, 1e-1, 1e-3, ... → 0 (each stage by the corrector below; F_1 = D_H). When that fails
-//    (no D_H branch point, or the regulariser cannot be taken below 1e-4), the A_H branch is
-//    continued in H itself from the critical point of A at H = 0, started at the Dirichlet
-//    extremal, with a positive-definiteness test per step (before the fold).
+//    ε = 1, 1e-1, 1e-3, ... → 0 (each stage by the corrector below, started from the Euler
+//    predictor along the ε-path; F_1 = D_H; from ε <= 1e-4 on, after each stage, a jump: the
+//    predictor to ε = 0 and at most 8 corrector iterations on A_H, kept when they converge).
+//    When that fails (no D_H branch point, or the regulariser cannot be taken below 1e-4), the
+//    A_H branch is continued in H itself from the critical point of A at H = 0, started at the
+//    Dirichlet extremal, with a positive-definiteness test per step (before the fold).
 //  - V mode: minimise A subject to V = V0, continued in V from the critical point of A at H = 0;
 //    the multiplier H (∇A + 2H∇V = 0 on the free points) is reported.
 //  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
