@@ -231,7 +231,7 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
         _box(ax, V)
         if not shared:
             cb = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.55, pad=0.0, aspect=15,
-                              format=mticker.FormatStrFormatter("%.3g"), ticks=mticker.MaxNLocator(4))
+                              format=mticker.ScalarFormatter(useOffset=False), ticks=mticker.MaxNLocator(4))
             cb.ax.tick_params(labelsize=6)
             cb.set_label(label.split()[-1], fontsize=7)
         if net_row:
