@@ -645,3 +645,37 @@ TEST(HostileInput, SizeLimitsHoldAtTheLimitAndRefuseOnePastIt) {
     EXPECT_NE(p.err.find(needle), std::string::npos) << p.err;
   }
 }
+
+// The issue's crashes reached `blend` too (knots at ±1e308 in "surfaces", 100000 levels in
+// surfaces.f.degree), and every reader takes the same bounds: blend configs, `--energy`, and
+// endless input to `sample`, `check` and `blend`.
+TEST(HostileInput, BlendConfigsAndEnergyArgumentsGetTheSameReaderBounds) {
+  const fs::path out = prepared_out("blend_reader");
+  const auto blend_with_f = [](const std::string& f) {
+    return R"({"kind": "blend", "partition": [2, 2], "a": 1, "epsilon": 0.01, "surfaces": {"f": )" + f +
+           R"(, "g": {"type": "tensor", "degree": [1, 1], "points": [[0,2,0],[0,3,0],[1,2,0],[1,3,1]]}}, "samples": 4})";
+  };
+  int k = 0;
+  for (const char* knots : {"[-1e308, -1e308, 1e308, 1e308]", "[0, 0, 1.7e308, 1.7e308]"})
+    expect_bad_input(
+        "blend " + write("blend_knots" + std::to_string(k++) + ".json", blend_with_f(bspline_net(knots))).string() +
+            " --out " + out.string(),
+        out, "too large");
+  const std::string deep = std::string(100000, '[') + "1" + std::string(100000, ']');
+  expect_bad_input(
+      "blend " +
+          write("blend_deep.json", blend_with_f(R"({"type": "tensor", "degree": )" + deep + R"(, "points": []})"))
+              .string() +
+          " --out " + out.string(),
+      out, "nest deeper");
+  expect_bad_input("blend /dev/zero --out " + out.string(), out, "64 MiB");
+  expect_bad_input("sample /dev/stdin --out " + out.string() + " </dev/zero", out, "64 MiB");
+  expect_bad_input("check /dev/zero", out, "64 MiB");
+  const fs::path net = write("energy_net.json", kTensor);
+  const auto energy = [&](const std::string& spec, const std::string& needle) {
+    expect_bad_input("energy " + net.string() + " --energy '" + spec + "'", out, needle);
+  };
+  energy(R"({"name": "dirichlet", "name": "biharmonic"})", "duplicate key");
+  energy(R"({"name": )" + std::string(300, '[') + std::string(300, ']') + "}", "nest deeper");
+  energy(R"({"name": "gnorm", "rho": 1e999, "t": 1})", "overflows a double");
+}
