@@ -647,9 +647,9 @@ TEST(HostileInput, SizeLimitsHoldAtTheLimitAndRefuseOnePastIt) {
 }
 
 // The issue's crashes reached `blend` too (knots at ±1e308 in "surfaces", 100000 levels in
-// surfaces.f.degree), and every reader takes the same bounds: blend configs, `--energy`, and
-// endless input to `sample`, `check` and `blend`.
-TEST(HostileInput, BlendConfigsAndEnergyArgumentsGetTheSameReaderBounds) {
+// surfaces.f.degree), and every reader takes the same bounds: blend configs, `--energy`, sweep
+// files, and endless input to `sample`, `check`, `blend` and `sweep`.
+TEST(HostileInput, BlendConfigsEnergyArgumentsAndSweepsGetTheSameReaderBounds) {
   const fs::path out = prepared_out("blend_reader");
   const auto blend_with_f = [](const std::string& f) {
     return R"({"kind": "blend", "partition": [2, 2], "a": 1, "epsilon": 0.01, "surfaces": {"f": )" + f +
@@ -678,4 +678,11 @@ TEST(HostileInput, BlendConfigsAndEnergyArgumentsGetTheSameReaderBounds) {
   energy(R"({"name": "dirichlet", "name": "biharmonic"})", "duplicate key");
   energy(R"({"name": )" + std::string(300, '[') + std::string(300, ']') + "}", "nest deeper");
   energy(R"({"name": "gnorm", "rho": 1e999, "t": 1})", "overflows a double");
+  expect_bad_input("sweep " + write("sweep_dup.json", R"({"base": "a.json", "base": "b.json", "axes": {}})").string() +
+                       " --out " + out.string(),
+                   out, "duplicate key");
+  expect_bad_input("sweep " + write("sweep_deep.json", R"({"base": {"net": )" + deep + R"(}, "axes": {}})").string() +
+                       " --out " + out.string(),
+                   out, "nest deeper");
+  expect_bad_input("sweep /dev/zero --out " + out.string(), out, "64 MiB");
 }
