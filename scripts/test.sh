@@ -5,8 +5,9 @@
 # install into a temporary prefix, build an outside project from the README's snippets); then it
 # builds and runs the fuzz targets briefly.
 # With BPDE_SANITIZE=1 it then builds and runs the same suite under AddressSanitizer and
-# UndefinedBehaviorSanitizer (the `asan` preset of CMakePresets.json, in ./build-asan). That pass
-# doubles the time on a 2-core machine, so CI leaves it to this switch.
+# UndefinedBehaviorSanitizer (the `asan` preset of CMakePresets.json, in ./build-asan; no Python
+# module there, docs/robustness.md "Sanitizer pass"). That pass costs more than the normal one, so CI
+# leaves it to this switch.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # The suite is validated on the portable build (BPDE_NATIVE=OFF); a native build passing it is
