@@ -8,8 +8,9 @@
 # default): Package.consumer then installs the .so files and checks that the consumer and the
 # installed bpde load them from the prefix. BPDE_SHARED_LIBS=OFF runs it on static archives.
 # With BPDE_SANITIZE=1 it then builds and runs the same suite under AddressSanitizer and
-# UndefinedBehaviorSanitizer (the `asan` preset of CMakePresets.json, in ./build-asan). That pass
-# doubles the time on a 2-core machine, so CI leaves it to this switch.
+# UndefinedBehaviorSanitizer (the `asan` preset of CMakePresets.json, in ./build-asan; no Python
+# module there, docs/robustness.md "Sanitizer pass"). That pass costs more than the normal one, so CI
+# leaves it to this switch.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # The suite is validated on the portable build (BPDE_NATIVE=OFF); a native build passing it is

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -73,6 +74,28 @@ std::string job_with_net(const std::string& net, const std::string& problem) {
 }
 
 }  // namespace
+
+// The hostile inputs below are meant to run under the sanitizers too (the asan preset): the
+// command they run must be the one of this build, instrumented exactly when this test is, and a
+// sanitizer report must not pass for the exit 1 of a valid input without solution. GCC and clang
+// define __SANITIZE_ADDRESS__ under -fsanitize=address; an ASan binary prints its flags at start
+// with ASAN_OPTIONS=help=1, with the exit status of a report (86: cmake/sanitizer_defaults.cpp).
+TEST(HostileInput, RunsTheCommandOfThisBuild) {
+  const fs::path err = tmpdir() / "asan_help";
+  const std::string cmd = "ASAN_OPTIONS=help=1 " + std::string(BPDE_BINARY) + " --version >/dev/null 2>" + err.string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string help = slurp(err);
+#ifdef __SANITIZE_ADDRESS__
+  EXPECT_NE(help.find("Available flags for AddressSanitizer"), std::string::npos) << help.substr(0, 400);
+  const std::size_t at = help.find("\n\texitcode\n");
+  ASSERT_NE(at, std::string::npos) << "no exitcode flag in the ASan help";
+  const std::size_t value = help.find("(Current Value: ", at);
+  ASSERT_NE(value, std::string::npos);
+  EXPECT_EQ(help.substr(value, 19), "(Current Value: 86)") << help.substr(at, 200);
+#else
+  EXPECT_EQ(help.find("AddressSanitizer"), std::string::npos) << "an instrumented bpde in a plain build";
+#endif
+}
 
 // The knot arithmetic overflowed (a width of inf, then NaN parameters) and basis_table wrote
 // past its table: glibc aborted with "malloc(): invalid size" or the command segfaulted.
@@ -427,4 +450,239 @@ TEST(HostileInput, DuplicateKeysAreBadInputInEveryReader) {
                                                  R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"},)"
                                                  R"( "kind": "extremal"}})");
   expect_bad_input("solve " + job.string() + " --out " + out.string(), out, "duplicate key");
+}
+
+namespace {
+// The numbers of a JSON value; `nulls` counts nulls (how nlohmann writes a non-finite double).
+void json_numbers(const nlohmann::json& j, std::vector<double>& out, int& nulls) {
+  if (j.is_number()) out.push_back(j.get<double>());
+  if (j.is_null()) ++nulls;
+  if (j.is_structured())
+    for (const auto& v : j) json_numbers(v, out, nulls);
+}
+
+// Every coordinate on the `v` lines of an OBJ file (strtod reads "nan" and "inf" as non-finite).
+std::vector<double> obj_vertex_numbers(const fs::path& p) {
+  std::istringstream in(slurp(p));
+  std::vector<double> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("v ", 0) != 0) continue;
+    std::istringstream s(line.substr(2));
+    std::string tok;
+    while (s >> tok) out.push_back(std::strtod(tok.c_str(), nullptr));
+  }
+  return out;
+}
+
+void expect_finite_obj(const fs::path& p, const std::string& what) {
+  const std::vector<double> v = obj_vertex_numbers(p);
+  EXPECT_FALSE(v.empty()) << what << ": no vertices in " << p;
+  EXPECT_TRUE(std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) << what << ": " << p;
+}
+
+// A degree-2 bspline net over the knots `u` (3 + k knots for k + ... points) and [0,0,0,.5,1,1,1].
+std::string bspline2_net(const std::vector<std::string>& u) {
+  const int nu = static_cast<int>(u.size()) - 3;
+  std::ostringstream s;
+  s << R"({"type": "bspline", "degree": [2, 2], "knots": [[)";
+  for (std::size_t i = 0; i < u.size(); ++i) s << (i ? ", " : "") << u[i];
+  s << R"(], [0, 0, 0, 0.5, 1, 1, 1]], "points": [)";
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < 4; ++j) s << (i + j ? ", " : "") << "[" << i << ", " << j << ", " << 0.3 * ((i * j) % 3) << "]";
+  s << "]}";
+  return s.str();
+}
+}  // namespace
+
+// The knot scale rules of FORMATS.md "Input limits" at their limit and just past it: at the limit
+// sample, check and a fourth-order extremal run, converge and write finite numbers (the
+// fundamental forms scale like width^-4: a width of 1e-50 must not overflow them); past it the
+// input is refused (exit 2, output untouched).
+TEST(HostileInput, KnotScaleLimitsHoldAtTheLimitAndRefuseJustPastIt) {
+  struct Case {
+    std::string name;
+    std::vector<std::string> at, past;
+    std::string needle;
+  };
+  const std::vector<Case> cases = {
+      // |knot| <= 1e50 (1.0000000000000002e50 is the next double).
+      {"magnitude",
+       {"-1e50", "-1e50", "-1e50", "1e50", "1e50", "1e50"},
+       {"-1e50", "-1e50", "-1e50", "1.0000000000000002e50", "1.0000000000000002e50", "1.0000000000000002e50"},
+       "too large"},
+      // domain width >= 1e-50.
+      {"width",
+       {"0", "0", "0", "1e-50", "1e-50", "1e-50"},
+       {"0", "0", "0", "9.9e-51", "9.9e-51", "9.9e-51"},
+       "badly scaled"},
+      // width >= 1e-8 max |knot|: at 2^20 the limit is 0.01048576.
+      {"resolution",
+       {"1048576", "1048576", "1048576", "1048576.0105", "1048576.0105", "1048576.0105"},
+       {"1048576", "1048576", "1048576", "1048576.0104", "1048576.0104", "1048576.0104"},
+       "badly scaled"},
+      // a non-zero span >= 1e-12 (last - first).
+      {"span", {"0", "0", "0", "1e-12", "1", "1", "1"}, {"0", "0", "0", "0.99e-12", "1", "1", "1"}, "badly scaled"},
+  };
+  for (const Case& c : cases) {
+    const fs::path net = write("knot_at_" + c.name + ".json", bspline2_net(c.at));
+    const fs::path sampled = tmpdir() / ("knot_at_" + c.name);
+    fs::remove_all(sampled);
+    const CmdResult s = run("sample " + net.string() + " --samples 6 --out " + sampled.string());
+    ASSERT_EQ(s.status, 0) << c.name << ": " << s.err;
+    expect_finite_obj(sampled / "surface.obj", c.name);
+    const CmdResult k = run("check " + net.string());
+    EXPECT_EQ(k.status, 0) << c.name << ": " << k.err;
+    EXPECT_EQ(k.out.find("nan"), std::string::npos) << c.name << ": " << k.out;
+    const fs::path job =
+        write("knot_at_job_" + c.name + ".json",
+              job_with_net(bspline2_net(c.at), R"({"kind": "extremal", "energy": {"name": "biharmonic"}})"));
+    const fs::path solved = tmpdir() / ("knot_at_job_" + c.name);
+    fs::remove_all(solved);
+    const CmdResult r = run("solve " + job.string() + " --out " + solved.string());
+    ASSERT_EQ(r.status, 0) << c.name << ": " << r.err;
+    const auto result = nlohmann::json::parse(slurp(solved / "result.json"));
+    EXPECT_EQ(result["report"]["converged"], true) << c.name;
+    std::vector<double> xs;
+    int nulls = 0;
+    json_numbers(result["net"], xs, nulls);
+    EXPECT_EQ(nulls, 0) << c.name << ": a non-finite number in the converged net";
+    EXPECT_TRUE(std::all_of(xs.begin(), xs.end(), [](double x) { return std::isfinite(x); })) << c.name;
+    expect_finite_obj(solved / "surface.obj", c.name);
+
+    const fs::path out = prepared_out("knot_past_" + c.name);
+    const fs::path bad = write("knot_past_" + c.name + ".json", bspline2_net(c.past));
+    expect_bad_input("sample " + bad.string() + " --out " + out.string(), out, c.needle);
+    expect_bad_input("check " + bad.string(), out, c.needle);
+    const fs::path bad_job =
+        write("knot_past_job_" + c.name + ".json",
+              job_with_net(bspline2_net(c.past), R"({"kind": "extremal", "energy": {"name": "biharmonic"}})"));
+    expect_bad_input("solve " + bad_job.string() + " --out " + out.string(), out, c.needle);
+  }
+}
+
+namespace {
+// A bspline pde job of degree [4, 4] with nu x nv control points (uniform knots).
+std::string bspline_pde_job(int nu, int nv) {
+  const auto knots = [](int n) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "[0, 0, 0, 0, 0";
+    for (int i = 1; i < n - 4; ++i) s << ", " << double(i) / (n - 4);
+    s << ", 1, 1, 1, 1, 1]";
+    return s.str();
+  };
+  std::ostringstream s;
+  s.precision(17);
+  s << R"({"net": {"type": "bspline", "degree": [4, 4], "knots": [)" << knots(nu) << ", " << knots(nv)
+    << R"(], "points": [)";
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      s << (i + j ? ", " : "") << "[" << double(i) / (nu - 1) << ", " << double(j) / (nv - 1) << ", "
+        << 0.1 * std::sin(3.0 * i / (nu - 1)) * std::cos(2.0 * j / (nv - 1)) << "]";
+  s << R"(]}, "problem": {"kind": "pde", "operator": {"name": "biharmonic"}, "method": "lu"}, "samples": 8})";
+  return s.str();
+}
+
+std::string blend_config(int k, int l) {
+  std::ostringstream s;
+  const auto edge = [&](int y) {
+    std::ostringstream e;
+    e << R"({"value": [)";
+    for (int i = 0; i <= k; ++i) e << (i ? ", " : "") << "[" << double(i) / k << ", " << y << ", 0]";
+    e << R"(], "dy": [)";
+    for (int i = 0; i <= k; ++i) e << (i ? ", " : "") << "[0, 1, 0]";
+    e << "]}";
+    return e.str();
+  };
+  s << R"({"kind": "blend", "partition": [)" << k << ", " << l << R"(], "a": 1, "epsilon": 0.01, "edges": {"y0": )"
+    << edge(0) << R"(, "y1": )" << edge(1) << R"(}, "samples": 4})";
+  return s.str();
+}
+}  // namespace
+
+// The size limits that do not depend on a degree, at the limit and one past it: the B-spline pde's
+// dense solve (1500 control points: the 30 x 50 net runs, and its data being incompatible it
+// answers converged: false, exit 1; 19 x 79 = 1501 is refused), the blend partition (256 per
+// direction; [256, 1] and [1, 256] are cheap, 257 is refused; 256 x 256 itself takes 0.8 GB, so
+// the suite does not run it) and `bpde plate` (degree 4..30, aspect [0.01, 100]).
+TEST(HostileInput, SizeLimitsHoldAtTheLimitAndRefuseOnePastIt) {
+  const fs::path at = tmpdir() / "bspline_pde_1500";
+  fs::remove_all(at);
+  const CmdResult r =
+      run("solve " + write("bspline_pde_1500.json", bspline_pde_job(30, 50)).string() + " --out " + at.string());
+  EXPECT_TRUE(r.status == 0 || r.status == 1) << r.err;
+  EXPECT_TRUE(fs::exists(at / "result.json")) << r.err;
+  const fs::path out = prepared_out("size_limits");
+  expect_bad_input(
+      "solve " + write("bspline_pde_1501.json", bspline_pde_job(19, 79)).string() + " --out " + out.string(), out,
+      "limit of 1500 points");
+
+  for (const auto& [k, l] : {std::pair{256, 1}, std::pair{1, 256}}) {
+    const fs::path dir = tmpdir() / ("blend_" + std::to_string(k) + "_" + std::to_string(l));
+    fs::remove_all(dir);
+    const CmdResult b = run("blend " + write("blend_at.json", blend_config(k, l)).string() + " --out " + dir.string());
+    EXPECT_EQ(b.status, 0) << k << " x " << l << ": " << b.err;
+    expect_finite_obj(dir / "surface.obj", "blend");
+  }
+  expect_bad_input("blend " + write("blend_k257.json", blend_config(257, 1)).string() + " --out " + out.string(), out,
+                   "(k) must be in 1..256");
+  expect_bad_input("blend " + write("blend_l257.json", blend_config(1, 257)).string() + " --out " + out.string(), out,
+                   "(l) must be in 1..256");
+
+  for (const char* ok :
+       {"--aspect 1 --degree 4", "--aspect 1 --degree 30", "--aspect 0.01 --degree 4", "--aspect 100 --degree 4"}) {
+    const CmdResult p = run(std::string("plate ") + ok + " --method admissible-load");
+    EXPECT_EQ(p.status, 0) << ok << ": " << p.err;
+  }
+  for (const auto& [bad, needle] :
+       {std::pair{"--aspect 1 --degree 3", "4..30"}, std::pair{"--aspect 1 --degree 31", "4..30"},
+        std::pair{"--aspect 0.0099 --degree 4", "[0.01, 100]"},
+        std::pair{"--aspect 100.01 --degree 4", "[0.01, 100]"}}) {
+    const CmdResult p = run(std::string("plate ") + bad + " --method admissible-load");
+    EXPECT_EQ(p.status, 2) << bad << ": " << p.err;
+    EXPECT_EQ(std::count(p.err.begin(), p.err.end(), '\n'), 1) << p.err;
+    EXPECT_NE(p.err.find(needle), std::string::npos) << p.err;
+  }
+}
+
+// The issue's crashes reached `blend` too (knots at ±1e308 in "surfaces", 100000 levels in
+// surfaces.f.degree), and every reader takes the same bounds: blend configs, `--energy`, sweep
+// files, and endless input to `sample`, `check`, `blend` and `sweep`.
+TEST(HostileInput, BlendConfigsEnergyArgumentsAndSweepsGetTheSameReaderBounds) {
+  const fs::path out = prepared_out("blend_reader");
+  const auto blend_with_f = [](const std::string& f) {
+    return R"({"kind": "blend", "partition": [2, 2], "a": 1, "epsilon": 0.01, "surfaces": {"f": )" + f +
+           R"(, "g": {"type": "tensor", "degree": [1, 1], "points": [[0,2,0],[0,3,0],[1,2,0],[1,3,1]]}}, "samples": 4})";
+  };
+  int k = 0;
+  for (const char* knots : {"[-1e308, -1e308, 1e308, 1e308]", "[0, 0, 1.7e308, 1.7e308]"})
+    expect_bad_input(
+        "blend " + write("blend_knots" + std::to_string(k++) + ".json", blend_with_f(bspline_net(knots))).string() +
+            " --out " + out.string(),
+        out, "too large");
+  const std::string deep = std::string(100000, '[') + "1" + std::string(100000, ']');
+  expect_bad_input(
+      "blend " +
+          write("blend_deep.json", blend_with_f(R"({"type": "tensor", "degree": )" + deep + R"(, "points": []})"))
+              .string() +
+          " --out " + out.string(),
+      out, "nest deeper");
+  expect_bad_input("blend /dev/zero --out " + out.string(), out, "64 MiB");
+  expect_bad_input("sample /dev/stdin --out " + out.string() + " </dev/zero", out, "64 MiB");
+  expect_bad_input("check /dev/zero", out, "64 MiB");
+  const fs::path net = write("energy_net.json", kTensor);
+  const auto energy = [&](const std::string& spec, const std::string& needle) {
+    expect_bad_input("energy " + net.string() + " --energy '" + spec + "'", out, needle);
+  };
+  energy(R"({"name": "dirichlet", "name": "biharmonic"})", "duplicate key");
+  energy(R"({"name": )" + std::string(300, '[') + std::string(300, ']') + "}", "nest deeper");
+  energy(R"({"name": "gnorm", "rho": 1e999, "t": 1})", "overflows a double");
+  expect_bad_input("sweep " + write("sweep_dup.json", R"({"base": "a.json", "base": "b.json", "axes": {}})").string() +
+                       " --out " + out.string(),
+                   out, "duplicate key");
+  expect_bad_input("sweep " + write("sweep_deep.json", R"({"base": {"net": )" + deep + R"(}, "axes": {}})").string() +
+                       " --out " + out.string(),
+                   out, "nest deeper");
+  expect_bad_input("sweep /dev/zero --out " + out.string(), out, "64 MiB");
 }

@@ -4,7 +4,7 @@
 # prefix with find_package(bezierpde 0.2 CONFIG REQUIRED), build it and run it.
 #
 #   cmake -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK_DIR=... -DCXX_COMPILER=... [-DLAUNCHER=...]
-#         -DGENERATOR=... [-DSHARED=ON|OFF] -P tests/package/run_consumer.cmake
+#         -DGENERATOR=... [-DSHARED=ON|OFF] [-DSANITIZE=address,undefined] -P tests/package/run_consumer.cmake
 #
 # With SHARED (the build's BUILD_SHARED_LIBS) the installed lib/ must hold the libbpde_*.so files and
 # the consumer's programs and the installed bpde must load every libbpde_*.so from the prefix (ldd),
@@ -135,8 +135,15 @@ set(launcher "")
 if(LAUNCHER)
   set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
 endif()
+# A sanitizer build (-DSANITIZE=address,undefined) installs instrumented archives: the consumer is
+# compiled and linked with the same sanitizers, so that it links their runtime and is checked too.
+set(sanitize "")
+if(SANITIZE)
+  set(sanitize "-DCMAKE_CXX_FLAGS=-fsanitize=${SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all"
+               "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=${SANITIZE}")
+endif()
 run(${CMAKE_COMMAND} -S ${consumer} -B ${consumer}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
-    -DCMAKE_CXX_COMPILER=${CXX_COMPILER} ${launcher} -DCMAKE_PREFIX_PATH=${prefix})
+    -DCMAKE_CXX_COMPILER=${CXX_COMPILER} ${launcher} -DCMAKE_PREFIX_PATH=${prefix} ${sanitize})
 run(${CMAKE_COMMAND} --build ${consumer}/build)
 
 file(READ ${SOURCE_DIR}/examples/001-pde-figures/fig1-biharmonic.json pde_job)
