@@ -17,8 +17,9 @@ boundary, and the error is the distance to the exact sphere:
 bezierpde runs `bpde solve` on a job per degree; the error is max | |x - c| - R | over the
 triangular grid u = a/N, v = b/N (a + b <= N, N = --grid, corners included), evaluated here from
 the result's net. Surface Evolver runs `evolver -x -f run.cmd file.fe < /dev/null` once per
-refinement level, from the .fe file each time (so every row is a time from scratch): r; g 5 per
-level, then (quadratic model: M 2) g 10 and Hessian steps until the energy stops changing. Its
+refinement level, from the .fe file each time (so every row is a time from scratch): per level
+r (refine), g 5 (gradient steps), u (equiangulate) and V; V (vertex averaging, which keeps the mesh
+regular), then (quadratic model: M 2) g 10 and Hessian steps until the energy stops changing. Its
 error is the maximum over the vertices (quadratic model: the edge midpoints included) and, the
 "surface" column, over 15 points of every facet (the flat or the quadratic triangle).
 
@@ -221,11 +222,15 @@ def fe_sphere(H):
     return "\n".join(lines)
 
 
+REFINE_STEP = "r; g 5; u; V; V;"
+
+
 def run_cmd(levels, quadratic):
-    """The Evolver command file: `levels` times (r; g 5), then the quadratic model if asked, g 10 and
-    Hessian steps until the energy changes by less than 1e-14 relative (at most 12), then the mesh."""
+    """The Evolver command file: `levels` times (r; g 5; u; V; V: refine, relax, equiangulate, average
+    the vertices), then the quadratic model if asked, g 10 and Hessian steps until the energy changes
+    by less than 1e-14 relative (at most 12), then the mesh."""
     cmd = ["quiet on;"]
-    cmd += ["r; g 5;"] * levels
+    cmd += [REFINE_STEP] * levels
     if quadratic:
         cmd.append("M 2;")
     cmd += [
@@ -369,9 +374,10 @@ def evolver_table(case, rows):
 
 
 def time_to_accuracy(case, brows, erows, targets):
-    """For each error target: the least CPU seconds of each program (and route) that reached it."""
+    """For each error target: the least CPU seconds of each program (and route) that reached it
+    (bezierpde: converged results only)."""
     def best(rows, key):
-        hits = [r for r in rows if "failed" not in r and r["error"] <= key]
+        hits = [r for r in rows if "failed" not in r and r.get("converged", True) and r["error"] <= key]
         return min(hits, key=lambda r: r["cpu"]) if hits else None
 
     routes = [("bezierpde " + f, [r for r in brows if r["functional"] == f]) for f in case.functionals]
@@ -435,7 +441,9 @@ def main(argv=None):
         print()
         print(evolver_table(case, erows))
         print()
-        print(time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8]))
+        print(time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9]))
+        with open(os.path.join(work, "rows-%s.json" % case.name), "w") as f:
+            json.dump({"bpde": brows, "evolver": erows}, f, indent=1)
     print("\nload average at the end %.2f %.2f %.2f" % os.getloadavg())
     return 0
 

@@ -91,7 +91,7 @@ def test_sphere_file_constraints_are_the_images_of_the_edges():
 
 def test_run_cmd_refines_the_asked_number_of_times():
     cmd = ec.run_cmd(3, quadratic=True)
-    assert cmd.count("r; g 5;") == 3 and "M 2;" in cmd and cmd.rstrip().endswith("q")
+    assert cmd.count(ec.REFINE_STEP) == 3 and ec.REFINE_STEP.startswith("r;") and "M 2;" in cmd and cmd.rstrip().endswith("q")
     assert "M 2" not in ec.run_cmd(2, quadratic=False)
 
 
