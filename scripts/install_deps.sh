@@ -24,6 +24,7 @@ PACKAGES=(
   python3-dev pybind11-dev python3-pybind11  # the Python module bezierpde (build/python)
   python3-numpy python3-pytest               # its arrays and its tests
   python3-distributed python3-pandas         # bezierpde.sweep on Dask; its table as a DataFrame
+  evolver-nox            # Surface Evolver, for scripts/evolver_compare.py only (docs/cmc_evolver.md; no test runs it)
 )
 
 missing=()
