@@ -208,7 +208,8 @@ def fe_sphere(H):
     # corner 0 on edges u=0, v=0; corner 2 on v=0, w=0; corner 4 on w=0, u=0; midpoints on one edge.
     vertex_constraints = ["1 2 4", "1 2", "1 2 3", "1 3", "1 3 4", "1 4"]
     for k in range(6):
-        lines.append("%d  %.17g %.17g %.17g  fixed constraint %s" % ((k + 1,) + tuple(xs[k]) + (vertex_constraints[k],)))
+        x, y, z = xs[k]
+        lines.append("%d  %.17g %.17g %.17g  fixed constraint %s" % (k + 1, x, y, z, vertex_constraints[k]))
     lines += ["7  %.17g %.17g %.17g" % tuple(centre), "", "edges"]
     edge_constraints = ["1 2", "1 2", "1 3", "1 3", "1 4", "1 4"]
     for k in range(6):
@@ -353,7 +354,8 @@ def bpde_table(case, rows):
            "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in rows:
         if "failed" in r:
-            out.append("| %s | %d | failed: %s | | | | | %.2f | |" % (r["functional"], r["degree"], r["failed"], r["cpu"]))
+            out.append("| %s | %d | failed: %s | | | | | %.2f | |" %
+                       (r["functional"], r["degree"], r["failed"], r["cpu"]))
             continue
         hr = "%.6f … %.6f" % (r["H_min"], r["H_max"]) if r["H_min"] is not None else ""
         out.append("| %s | %d | %s | %s | %s | %s | %s | %.2f | %.2f |" % (
@@ -415,7 +417,8 @@ def main(argv=None):
     ap.add_argument("--linear-levels", default="1..8")
     ap.add_argument("--quadratic-levels", default="1..6")
     ap.add_argument("--grid", type=int, default=60, help="samples per side of the bezierpde error grid")
-    ap.add_argument("--out", default=None, help="keep the jobs, .fe and run.cmd files here (default: a temporary folder)")
+    ap.add_argument("--out", default=None,
+                    help="keep the jobs, .fe and run.cmd files here (default: a temporary folder)")
     args = ap.parse_args(argv)
 
     evolver = shutil.which(args.evolver)
@@ -433,7 +436,8 @@ def main(argv=None):
     print("machine: %s, load average at start %.2f %.2f %.2f; work folder %s" % (
         os.uname().nodename, *os.getloadavg(), work))
     for case in cases:
-        brows = [run_bpde(bpde, case, n, f, work, args.grid) for f in case.functionals for n in parse_list(args.degrees)]
+        degrees = parse_list(args.degrees)
+        brows = [run_bpde(bpde, case, n, f, work, args.grid) for f in case.functionals for n in degrees]
         erows = [run_evolver(evolver, case, k, False, work) for k in parse_list(args.linear_levels)]
         erows += [run_evolver(evolver, case, k, True, work) for k in parse_list(args.quadratic_levels)]
         print("\n### %s, H = %g (bezierpde)\n" % (case.name, case.H))

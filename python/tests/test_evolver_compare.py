@@ -11,7 +11,8 @@ import pytest
 
 from conftest import SOURCE_DIR
 
-spec = importlib.util.spec_from_file_location("evolver_compare", os.path.join(SOURCE_DIR, "scripts", "evolver_compare.py"))
+SCRIPT = os.path.join(SOURCE_DIR, "scripts", "evolver_compare.py")
+spec = importlib.util.spec_from_file_location("evolver_compare", SCRIPT)
 ec = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(ec)
 
@@ -91,7 +92,8 @@ def test_sphere_file_constraints_are_the_images_of_the_edges():
 
 def test_run_cmd_refines_the_asked_number_of_times():
     cmd = ec.run_cmd(3, quadratic=True)
-    assert cmd.count(ec.REFINE_STEP) == 3 and ec.REFINE_STEP.startswith("r;") and "M 2;" in cmd and cmd.rstrip().endswith("q")
+    assert cmd.count(ec.REFINE_STEP) == 3 and ec.REFINE_STEP.startswith("r;")
+    assert "M 2;" in cmd and cmd.rstrip().endswith("q")
     assert "M 2" not in ec.run_cmd(2, quadratic=False)
 
 
