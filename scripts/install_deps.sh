@@ -25,6 +25,7 @@ PACKAGES=(
   python3-numpy python3-pytest               # its arrays and its tests
   python3-distributed python3-pandas         # bezierpde.sweep on Dask; its table as a DataFrame
   python3-matplotlib                         # the example READMEs' figures (bezierpde.figures, scripts/figures.sh)
+  evolver-nox            # Surface Evolver, for scripts/evolver_compare.py only (docs/cmc_evolver.md; no test runs it)
 )
 
 missing=()

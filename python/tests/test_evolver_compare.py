@@ -1,0 +1,118 @@
+"""The pure parts of scripts/evolver_compare.py (the Surface Evolver comparison of docs/cmc_evolver.md).
+Nothing here runs Evolver: the comparison itself is not part of the test suite."""
+
+import importlib.util
+import math
+import os
+import random
+import re
+
+import pytest
+
+from conftest import SOURCE_DIR
+
+SCRIPT = os.path.join(SOURCE_DIR, "scripts", "evolver_compare.py")
+spec = importlib.util.spec_from_file_location("evolver_compare", SCRIPT)
+ec = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(ec)
+
+
+def test_triangular_evaluation_in_the_formats_order():
+    # x(u, v) = (u, v, u v) at degree 2: P_I = (i/2, j/2, [I = (1,1,0)] / 2), i from 2 down, then j.
+    pts = []
+    for i in range(2, -1, -1):
+        for j in range(2 - i, -1, -1):
+            pts.append((i / 2, j / 2, 0.5 if (i, j) == (1, 1) else 0.0))
+    rng = random.Random(1)
+    for _ in range(20):
+        u = rng.random()
+        v = rng.random() * (1 - u)
+        x = ec.eval_triangular(2, pts, u, v)
+        assert x == pytest.approx([u, v, u * v], abs=1e-15)
+
+
+def test_quadratic_facet_reproduces_a_quadratic_map():
+    def f(l1, l2):
+        return (l1 * l1 + 2 * l2, l1 * l2 - l2, 3 * l1 * l1 * 0.5 + l2 * l2)
+
+    corners = [f(1, 0), f(0, 1), f(0, 0)]
+    mids = [f(0.5, 0.5), f(0, 0.5), f(0.5, 0)]
+    for l1, l2 in [(0.2, 0.3), (1 / 3, 1 / 3), (0.6, 0.1)]:
+        assert ec.facet_point(corners, mids, l1, l2) == pytest.approx(list(f(l1, l2)), abs=1e-14)
+    # the flat triangle: the linear interpolant, which misses the quadratic part
+    assert ec.facet_point(corners, None, 0.5, 0.5) == pytest.approx([0.5 * (a + b) for a, b in zip(f(1, 0), f(0, 1))])
+
+
+def test_evolver_pressure_follows_the_bpde_sign():
+    # Fig. 1 circle: H < 0 bulges towards x_u ^ x_v = +z; a sphere of radius R has P = 2/R.
+    assert ec.evolver_pressure(-0.5) == 1.0
+    assert ec.evolver_pressure(1.0) == -2.0
+    assert "pressure 1\n" in ec.fe_circle(-0.5) + "\n"
+
+
+def test_circle_file_faces_point_to_plus_z():
+    fe = ec.fe_circle(-0.5)
+    section = lambda name: fe.split("\n" + name + "\n")[1].split("\n\n")[0].splitlines()
+    ang = {int(l.split()[0]): int(l.split()[1].split("*")[0]) * math.pi / 3 for l in section("vertices")[:6]}
+    pos = {k: (math.cos(a), math.sin(a), 0.0) for k, a in ang.items()}
+    pos[7] = (0.0, 0.0, 0.2)
+    edges = {int(l.split()[0]): (int(l.split()[1]), int(l.split()[2])) for l in section("edges")}
+    faces = section("faces")
+    assert len(faces) == 6
+    for line in faces:
+        oriented = [edges[e] if e > 0 else edges[-e][::-1] for e in map(int, line.split()[1:4])]
+        assert all(oriented[k][1] == oriented[(k + 1) % 3][0] for k in range(3))  # a closed loop
+        a, b, c = (pos[o[0]] for o in oriented)
+        nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        assert nz > 0
+
+
+def test_sphere_file_constraints_are_the_images_of_the_edges():
+    # the edges t = -1/3 (v = 0), s + t = 1/3 (w = 0), s = -1/3 (u = 0) lie in the planes of the .fe file
+    planes = {
+        2: lambda x, y, z: 3 * y + 1 - z,
+        3: lambda x, y, z: 3 * x + 3 * y + z - 1,
+        4: lambda x, y, z: 3 * x + 1 - z,
+    }
+    fe = ec.fe_sphere(1.0)
+    assert "formula: 3*y + 1 - z = 0" in fe and "formula: 3*x + 3*y + z = 1" in fe and "formula: 3*x + 1 - z = 0" in fe
+    for k in range(11):
+        r = k / 10
+        for c, (u, v) in ((2, (r, 0)), (3, (r, 1 - r)), (4, (0, r))):
+            x = ec.inverse_stereographic(u - 1 / 3, v - 1 / 3)
+            assert abs(planes[c](*x)) < 1e-14 and abs(math.hypot(*x) - 1) < 1e-15
+    # and each boundary vertex of the file is on the sphere and on the planes it names
+    for line in fe.split("\nvertices\n")[1].split("\n\n")[0].splitlines()[:6]:
+        f = line.split()
+        x = tuple(map(float, f[1:4]))
+        cons = [int(t) for t in f[f.index("constraint") + 1:]]
+        assert cons[0] == 1 and abs(math.hypot(*x) - 1) < 1e-15
+        assert all(abs(planes[c](*x)) < 1e-14 for c in cons[1:])
+
+
+def test_run_cmd_refines_the_asked_number_of_times():
+    cmd = ec.run_cmd(3, quadratic=True)
+    assert cmd.count(ec.REFINE_STEP) == 3 and ec.REFINE_STEP.startswith("r;")
+    assert "M 2;" in cmd and cmd.rstrip().endswith("q")
+    assert "M 2" not in ec.run_cmd(2, quadratic=False)
+
+
+def test_evolver_output_parser_measures_vertices_and_facets():
+    # one flat facet with corners on the unit sphere: vertex error 0; the worst 4-grid sample is (1/4, 1/4, 1/2).
+    a, b, c = (1, 0, 0), (0, 1, 0), (0, 0, 1)
+    out = "\n".join([
+        "X 1 %r %r %r" % a, "X 2 %r %r %r" % b, "X 3 %r %r %r" % c,
+        "F 1 2 0 2 3 0 3 1 0",
+        "S 1 3 0.8 0.1 2",
+    ])
+    v_err, s_err, facets, verts, area, hsteps = ec.evolver_errors(out, (0, 0, 0), 1.0)
+    assert v_err == 0.0 and facets == 1 and verts == 3 and hsteps == 2
+    assert s_err == pytest.approx(1 - math.sqrt(6) / 4, rel=1e-12)
+    with pytest.raises(RuntimeError):
+        ec.evolver_errors("Enter command:", (0, 0, 0), 1.0)
+
+
+def test_refuses_in_one_line_without_evolver(capsys):
+    assert ec.main(["--evolver", "no-such-evolver-binary-x"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and re.search(r"apt-get install evolver-nox", err)

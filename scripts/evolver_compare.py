@@ -1,0 +1,456 @@
+#!/usr/bin/env python3
+"""Time-to-accuracy of bezierpde against Surface Evolver on the same boundary (issue 12).
+
+    python3 scripts/evolver_compare.py [--bpde build/bpde] [--case circle|sphere|all]
+                                       [--degrees 4,6,8] [--linear-levels 1..8]
+                                       [--quadratic-levels 1..7] [--out DIR]
+
+Both programs solve the same problem, a surface of constant mean curvature H with a fixed
+boundary, and the error is the distance to the exact sphere:
+
+- circle (non-conformal data): the unit circle in z = 0, H = -0.5. bezierpde: the circle in three
+  arcs parametrised by angle (builder `circle-three-arcs`), `"functional": "area"`. The answer is
+  the small spherical cap of radius 2 through the circle, centre (0, 0, -sqrt(3)).
+- sphere (conformal data): the triangle patch of the inverse stereographic projection (builder
+  `sphere-triangle`), H = +1, answer the unit sphere; bezierpde with both functionals.
+
+bezierpde runs `bpde solve` on a job per degree; the error is max | |x - c| - R | over the
+triangular grid u = a/N, v = b/N (a + b <= N, N = --grid, corners included), evaluated here from
+the result's net. Surface Evolver runs `evolver -x -f run.cmd file.fe < /dev/null` once per
+refinement level, from the .fe file each time (so every row is a time from scratch): per level
+r (refine), g 5 (gradient steps), u (equiangulate) and V; V (vertex averaging, which keeps the mesh
+regular), then (quadratic model: M 2) g 10 and Hessian steps until the energy stops changing. Its
+error is the maximum over the vertices (quadratic model: the edge midpoints included) and, the
+"surface" column, over 15 points of every facet (the flat or the quadratic triangle).
+
+Evolver minimises E = area - P * V, V = the body's volume integral (z dx dy over its facets, with
+the facet normals); at a critical point P = k1 + k2 = 2 |H| with the curvature measured towards
+the facet normal. bezierpde's A_H = A + 2 H V uses V = (1/3) int <x_u ^ x_v, x> and H < 0 bulges
+towards x_u ^ x_v. So the .fe facets are oriented as x_u ^ x_v and P = -2 H: the same functional
+up to a constant that depends only on the (fixed) boundary.
+
+CPU seconds are the user + system time of the child process (resource.getrusage(RUSAGE_CHILDREN)
+before and after each run), so the load of other processes on the machine does not count.
+"""
+
+import argparse
+import json
+import math
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+
+INSTALL_HINT = "install it with `sudo apt-get install evolver-nox` (Debian/Ubuntu; the package of Surface Evolver)"
+
+
+# --------------------------------------------------------------------------- geometry (pure)
+
+def inverse_stereographic(s, t):
+    """(2s, 2t, s^2 + t^2 - 1) / (1 + s^2 + t^2): the conformal data of examples/004-cmc-sphere-convergence."""
+    d = 1.0 + s * s + t * t
+    return (2.0 * s / d, 2.0 * t / d, (s * s + t * t - 1.0) / d)
+
+
+def eval_triangular(degree, points, u, v):
+    """x(u, v) = sum P_I n!/(i! j! k!) u^i v^j w^k, w = 1 - u - v, points in the FORMATS.md order
+    (i from n down to 0, then j from n - i down to 0)."""
+    n = degree
+    w = 1.0 - u - v
+    pu = [u ** e for e in range(n + 1)]
+    pv = [v ** e for e in range(n + 1)]
+    pw = [w ** e for e in range(n + 1)]
+    fact = [math.factorial(e) for e in range(n + 1)]
+    x = [0.0, 0.0, 0.0]
+    idx = 0
+    for i in range(n, -1, -1):
+        for j in range(n - i, -1, -1):
+            k = n - i - j
+            b = fact[n] / (fact[i] * fact[j] * fact[k]) * pu[i] * pv[j] * pw[k]
+            p = points[idx]
+            x[0] += b * p[0]
+            x[1] += b * p[1]
+            x[2] += b * p[2]
+            idx += 1
+    return x
+
+
+def sphere_distance(x, centre, radius):
+    return abs(math.dist(x, centre) - radius)
+
+
+def net_sphere_error(net, centre, radius, grid):
+    """max | |x - c| - R | over u = a/N, v = b/N, a + b <= N (corners included)."""
+    worst = 0.0
+    for a in range(grid + 1):
+        for b in range(grid + 1 - a):
+            x = eval_triangular(net["degree"], net["points"], a / grid, b / grid)
+            worst = max(worst, sphere_distance(x, centre, radius))
+    return worst
+
+
+# Barycentric sample points of a facet for the "surface" error: the 15 points of a 4-grid.
+FACET_SAMPLES = [(a / 4, b / 4) for a in range(5) for b in range(5 - a)]
+
+
+def facet_point(corners, mids, l1, l2):
+    """The 6-node quadratic triangle (mids = None: the flat one) at barycentric (l1, l2, 1 - l1 - l2).
+    mids[0] is the midpoint of corners 0-1, mids[1] of 1-2, mids[2] of 2-0."""
+    l3 = 1.0 - l1 - l2
+    lam = (l1, l2, l3)
+    if mids is None:
+        return [sum(lam[c] * corners[c][d] for c in range(3)) for d in range(3)]
+    pairs = ((0, 1), (1, 2), (2, 0))
+    out = []
+    for d in range(3):
+        val = sum(lam[c] * (2.0 * lam[c] - 1.0) * corners[c][d] for c in range(3))
+        val += sum(4.0 * lam[a] * lam[b] * mids[e][d] for e, (a, b) in enumerate(pairs))
+        out.append(val)
+    return out
+
+
+# --------------------------------------------------------------------------- the two problems
+
+class Case:
+    """One problem: the boundary, H, the exact sphere, the bpde jobs and the Evolver data file."""
+
+    def __init__(self, name, builder, H, centre, radius, area_exact, functionals):
+        self.name = name
+        self.builder = builder
+        self.H = H
+        self.centre = centre
+        self.radius = radius
+        self.area_exact = area_exact
+        self.functionals = functionals
+
+    def job(self, degree, functional):
+        boundary = {"type": "triangular", "degree": degree, "builder": self.builder}
+        problem = {"kind": "cmc", "H": self.H, "solver": "newton"}
+        if functional == "area":
+            problem["functional"] = "area"
+        return {"boundary": boundary, "fixed": "boundary", "problem": problem, "samples": 40}
+
+
+def circle_case():
+    H = -0.5
+    R = 1.0 / abs(H)
+    h = R - math.sqrt(R * R - 1.0)  # the cap's height over the unit circle
+    return Case("circle", "circle-three-arcs", H, (0.0, 0.0, -math.sqrt(R * R - 1.0)), R, 2.0 * math.pi * R * h,
+                ["area"])
+
+
+def sphere_case():
+    return Case("sphere", "sphere-triangle", 1.0, (0.0, 0.0, 0.0), 1.0, None, ["dirichlet", "area"])
+
+
+def evolver_pressure(H):
+    """Evolver's prescribed pressure for bezierpde's H, with the facets oriented as x_u ^ x_v."""
+    return -2.0 * H
+
+
+def fe_circle(H):
+    """The .fe file of the circle: the unit circle as a boundary parametrised by angle (refinement puts
+    new boundary vertices on the exact circle), six fixed boundary vertices and one free centre, six
+    facets counter-clockwise seen from +z (normal +z, as x_u ^ x_v of the three arcs)."""
+    lines = [
+        "// bezierpde scripts/evolver_compare.py: CMC cap over the unit circle, H = %g (bezierpde)" % H,
+        "boundary 1 parameters 1",
+        "x1: cos(p1)",
+        "x2: sin(p1)",
+        "x3: 0",
+        "",
+        "vertices",
+    ]
+    for k in range(6):
+        lines.append("%d  %d*pi/3  boundary 1 fixed" % (k + 1, k))
+    lines += ["7  0 0 0.2", "", "edges"]
+    for k in range(6):
+        lines.append("%d  %d %d  boundary 1 fixed" % (k + 1, k + 1, (k + 1) % 6 + 1))
+    for k in range(6):
+        lines.append("%d  %d 7" % (k + 7, k + 1))
+    lines += ["", "faces"]
+    for k in range(6):
+        # boundary edge k+1 (k+1 -> k+2), spoke to the centre, spoke back
+        lines.append("%d  %d %d %d" % (k + 1, k + 1, (k + 1) % 6 + 7, -(k + 7)))
+    lines += ["", "bodies", "1  1 2 3 4 5 6  pressure %.17g" % evolver_pressure(H), ""]
+    return "\n".join(lines)
+
+
+def sphere_triangle_parameters():
+    """(u, v) of the seven vertices of the Evolver start mesh on the bezierpde triangle: the corners
+    P_00n (0,0), P_n00 (1,0), P_0n0 (0,1), the edge midpoints and the centroid; and the six facets,
+    counter-clockwise in (u, v), so that their normals follow x_u ^ x_v."""
+    uv = [(0, 0), (0.5, 0), (1, 0), (0.5, 0.5), (0, 1), (0, 0.5), (1 / 3, 1 / 3)]
+    facets = [(0, 1, 6), (1, 2, 6), (2, 3, 6), (3, 4, 6), (4, 5, 6), (5, 0, 6)]
+    return uv, facets
+
+
+def fe_sphere(H):
+    """The .fe file of the conformal triangle: its three edges are circles on the unit sphere, each
+    the sphere cut by a plane through the north pole (the images of the lines t = -1/3, s + t = 1/3,
+    s = -1/3 under the inverse stereographic projection, (s, t) = (u - 1/3, v - 1/3)). The boundary
+    vertices are fixed and on two constraints (the sphere and their plane), so refinement projects
+    new boundary vertices onto the exact curve. The start centre is the mean of the boundary (flat)."""
+    uv, facets = sphere_triangle_parameters()
+    xs = [inverse_stereographic(u - 1 / 3, v - 1 / 3) for u, v in uv[:6]]
+    centre = [sum(p[d] for p in xs) / 6 for d in range(3)]
+    # constraint 1: the sphere; 2: edge v = 0 (t = -1/3); 3: edge w = 0 (s + t = 1/3); 4: edge u = 0.
+    lines = [
+        "// bezierpde scripts/evolver_compare.py: CMC patch, the conformal sphere triangle, H = %g (bezierpde)" % H,
+        "constraint 1", "formula: x^2 + y^2 + z^2 = 1",
+        "constraint 2", "formula: 3*y + 1 - z = 0",
+        "constraint 3", "formula: 3*x + 3*y + z = 1",
+        "constraint 4", "formula: 3*x + 1 - z = 0",
+        "", "vertices",
+    ]
+    # corner 0 on edges u=0, v=0; corner 2 on v=0, w=0; corner 4 on w=0, u=0; midpoints on one edge.
+    vertex_constraints = ["1 2 4", "1 2", "1 2 3", "1 3", "1 3 4", "1 4"]
+    for k in range(6):
+        x, y, z = xs[k]
+        lines.append("%d  %.17g %.17g %.17g  fixed constraint %s" % (k + 1, x, y, z, vertex_constraints[k]))
+    lines += ["7  %.17g %.17g %.17g" % tuple(centre), "", "edges"]
+    edge_constraints = ["1 2", "1 2", "1 3", "1 3", "1 4", "1 4"]
+    for k in range(6):
+        lines.append("%d  %d %d  fixed constraint %s" % (k + 1, k + 1, (k + 1) % 6 + 1, edge_constraints[k]))
+    for k in range(6):
+        lines.append("%d  %d 7" % (k + 7, k + 1))
+    lines += ["", "faces"]
+    for k in range(6):
+        lines.append("%d  %d %d %d" % (k + 1, k + 1, (k + 1) % 6 + 7, -(k + 7)))
+    lines += ["", "bodies", "1  1 2 3 4 5 6  pressure %.17g" % evolver_pressure(H), ""]
+    return "\n".join(lines)
+
+
+REFINE_STEP = "r; g 5; u; V; V;"
+
+
+def run_cmd(levels, quadratic):
+    """The Evolver command file: `levels` times (r; g 5; u; V; V: refine, relax, equiangulate, average
+    the vertices), then the quadratic model if asked, g 10 and Hessian steps until the energy changes
+    by less than 1e-14 relative (at most 12), then the mesh."""
+    cmd = ["quiet on;"]
+    cmd += [REFINE_STEP] * levels
+    if quadratic:
+        cmd.append("M 2;")
+    cmd += [
+        "g 10;",
+        "hcount := 0;",
+        "do { eold := total_energy; hessian; hcount += 1 }"
+        " while (abs(eold - total_energy) > 1e-14 * abs(total_energy) and hcount < 12);",
+        "quiet off;",
+        'foreach vertex vv do printf "X %d %.17g %.17g %.17g\\n", vv.id, vv.x, vv.y, vv.z;',
+    ]
+    if quadratic:
+        cmd.append('foreach facet ff do { printf "F"; foreach ff.edge ee do printf " %d %d %d", '
+                   'ee.vertex[1].id, ee.vertex[2].id, ee.midv; printf "\\n" };')
+    else:
+        cmd.append('foreach facet ff do { printf "F"; foreach ff.edge ee do printf " %d %d 0", '
+                   'ee.vertex[1].id, ee.vertex[2].id; printf "\\n" };')
+    cmd += [
+        'printf "S %d %d %.17g %.17g %d\\n", facet_count, vertex_count, total_area, body[1].volume, hcount;',
+        "q",
+    ]
+    return "\n".join(cmd) + "\n"
+
+
+def evolver_errors(output, centre, radius):
+    """Parse the run's output: (vertex error, surface error, facets, vertices, area, hessian steps)."""
+    verts = {}
+    facets = []
+    summary = None
+    for line in output.splitlines():
+        if line.startswith("X "):
+            f = line.split()
+            verts[int(f[1])] = (float(f[2]), float(f[3]), float(f[4]))
+        elif line.startswith("F "):
+            facets.append([int(t) for t in line.split()[1:]])
+        elif line.startswith("S "):
+            f = line.split()
+            summary = (int(f[1]), int(f[2]), float(f[3]), float(f[4]), int(f[5]))
+    if summary is None or not verts:
+        raise RuntimeError("Evolver printed no mesh (its output ends: %r)" % output[-300:])
+    vertex_err = max(sphere_distance(x, centre, radius) for x in verts.values())
+    surface_err = 0.0
+    for f in facets:
+        # three oriented edges (tail, head, midpoint) in facet order: corners are the tails.
+        corners = [verts[f[3 * e]] for e in range(3)]
+        mids = None if f[2] == 0 else [verts[f[3 * e + 2]] for e in range(3)]
+        for l1, l2 in FACET_SAMPLES:
+            surface_err = max(surface_err, sphere_distance(facet_point(corners, mids, l1, l2), centre, radius))
+    return vertex_err, surface_err, summary[0], summary[1], summary[2], summary[4]
+
+
+# --------------------------------------------------------------------------- running
+
+def child_cpu():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def timed(cmd, **kw):
+    t0 = child_cpu()
+    p = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    return p, child_cpu() - t0
+
+
+def run_bpde(bpde, case, degree, functional, work, grid):
+    d = os.path.join(work, "bpde-%s-%s-n%d" % (case.name, functional, degree))
+    os.makedirs(d, exist_ok=True)
+    job = os.path.join(d, "job.json")
+    with open(job, "w") as f:
+        json.dump(case.job(degree, functional), f, indent=1)
+    p, cpu = timed([bpde, "solve", job, "--out", os.path.join(d, "out")])
+    res_file = os.path.join(d, "out", "result.json")
+    if p.returncode not in (0, 1) or not os.path.exists(res_file):
+        return {"degree": degree, "functional": functional, "cpu": cpu, "failed": (p.stderr or p.stdout).strip()}
+    with open(res_file) as f:
+        result = json.load(f)
+    rep = result["report"]
+    mc = rep.get("mean_curvature") or {}
+    return {
+        "degree": degree,
+        "functional": functional,
+        "cpu": cpu,
+        "seconds": rep.get("seconds"),
+        "converged": rep.get("converged"),
+        "residual": rep.get("residual"),
+        "error": net_sphere_error(result["net"], case.centre, case.radius, grid),
+        "area": rep.get("area"),
+        "H_min": mc.get("min"),
+        "H_max": mc.get("max"),
+    }
+
+
+def run_evolver(evolver, case, level, quadratic, work):
+    d = os.path.join(work, "evolver-%s-%s-l%d" % (case.name, "quadratic" if quadratic else "linear", level))
+    os.makedirs(d, exist_ok=True)
+    fe = os.path.join(d, "file.fe")
+    with open(fe, "w") as f:
+        f.write(fe_circle(case.H) if case.name == "circle" else fe_sphere(case.H))
+    with open(os.path.join(d, "run.cmd"), "w") as f:
+        f.write(run_cmd(level, quadratic))
+    with open(os.devnull) as devnull:
+        p, cpu = timed([evolver, "-x", "-f", "run.cmd", "file.fe"], cwd=d, stdin=devnull)
+    with open(os.path.join(d, "evolver.log"), "w") as f:
+        f.write(p.stdout)
+    v_err, s_err, facets, verts, area, hsteps = evolver_errors(p.stdout, case.centre, case.radius)
+    return {"level": level, "model": "quadratic" if quadratic else "linear", "cpu": cpu, "error": v_err,
+            "surface": s_err, "facets": facets, "vertices": verts, "area": area, "hessian": hsteps}
+
+
+def fmt(x, spec=".1e"):
+    return "" if x is None else format(x, spec)
+
+
+def area_err(case, a):
+    return "" if case.area_exact is None or a is None else fmt(abs(a - case.area_exact))
+
+
+def bpde_table(case, rows):
+    out = ["| functional | n | error (max over the grid) | \\|A − A_exact\\| | H min … max | residual | converged "
+           "| CPU s (process) | solve s (report, wall) |",
+           "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in rows:
+        if "failed" in r:
+            out.append("| %s | %d | failed: %s | | | | | %.2f | |" %
+                       (r["functional"], r["degree"], r["failed"], r["cpu"]))
+            continue
+        hr = "%.6f … %.6f" % (r["H_min"], r["H_max"]) if r["H_min"] is not None else ""
+        out.append("| %s | %d | %s | %s | %s | %s | %s | %.2f | %.2f |" % (
+            r["functional"], r["degree"], fmt(r["error"]), area_err(case, r["area"]), hr, fmt(r["residual"]),
+            "yes" if r["converged"] else "no", r["cpu"], r["seconds"] or 0.0))
+    return "\n".join(out)
+
+
+def evolver_table(case, rows):
+    out = ["| model | refinements | facets | vertices | error (max over the vertices) | error (facets sampled) "
+           "| \\|A − A_exact\\| | Hessian steps | CPU s |",
+           "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in rows:
+        out.append("| %s | %d | %d | %d | %s | %s | %s | %d | %.2f |" % (
+            r["model"], r["level"], r["facets"], r["vertices"], fmt(r["error"]), fmt(r["surface"]),
+            area_err(case, r["area"]), r["hessian"], r["cpu"]))
+    return "\n".join(out)
+
+
+def time_to_accuracy(case, brows, erows, targets):
+    """For each error target: the least CPU seconds of each program (and route) that reached it
+    (bezierpde: converged results only)."""
+    def best(rows, key):
+        hits = [r for r in rows if "failed" not in r and r.get("converged", True) and r["error"] <= key]
+        return min(hits, key=lambda r: r["cpu"]) if hits else None
+
+    routes = [("bezierpde " + f, [r for r in brows if r["functional"] == f]) for f in case.functionals]
+    routes += [("Evolver " + m, [r for r in erows if r["model"] == m]) for m in ("linear", "quadratic")]
+    routes = [(name, rows) for name, rows in routes if rows]
+    out = ["| error ≤ | " + " | ".join(name for name, _ in routes) + " |",
+           "| --- |" + " --- |" * len(routes)]
+    for t in targets:
+        cells = []
+        for name, rows in routes:
+            b = best(rows, t)
+            if b is None:
+                cells.append("not reached")
+            elif "degree" in b:
+                cells.append("%.2f s (n = %d)" % (b["cpu"], b["degree"]))
+            else:
+                cells.append("%.2f s (%d facets)" % (b["cpu"], b["facets"]))
+        out.append("| %.0e | " % t + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
+def parse_list(text):
+    if ".." in text:
+        a, b = text.split("..")
+        return list(range(int(a), int(b) + 1))
+    return [int(t) for t in text.split(",") if t]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--bpde", default="build/bpde")
+    ap.add_argument("--evolver", default="evolver")
+    ap.add_argument("--case", default="circle", choices=["circle", "sphere", "all"])
+    ap.add_argument("--degrees", default="4,5,6,7,8,10,12")
+    ap.add_argument("--linear-levels", default="1..8")
+    ap.add_argument("--quadratic-levels", default="1..6")
+    ap.add_argument("--grid", type=int, default=60, help="samples per side of the bezierpde error grid")
+    ap.add_argument("--out", default=None,
+                    help="keep the jobs, .fe and run.cmd files here (default: a temporary folder)")
+    args = ap.parse_args(argv)
+
+    evolver = shutil.which(args.evolver)
+    if evolver is None:
+        print("error: Surface Evolver (`%s`) not found; %s" % (args.evolver, INSTALL_HINT), file=sys.stderr)
+        return 2
+    if not (os.path.isfile(args.bpde) and os.access(args.bpde, os.X_OK)):
+        print("error: %s is not an executable bpde; build it with `cmake --build build --target bpde`" % args.bpde,
+              file=sys.stderr)
+        return 2
+    bpde = os.path.abspath(args.bpde)
+    cases = {"circle": [circle_case()], "sphere": [sphere_case()], "all": [circle_case(), sphere_case()]}[args.case]
+    work = args.out or tempfile.mkdtemp(prefix="evolver_compare-")
+    os.makedirs(work, exist_ok=True)
+    print("machine: %s, load average at start %.2f %.2f %.2f; work folder %s" % (
+        os.uname().nodename, *os.getloadavg(), work))
+    for case in cases:
+        degrees = parse_list(args.degrees)
+        brows = [run_bpde(bpde, case, n, f, work, args.grid) for f in case.functionals for n in degrees]
+        erows = [run_evolver(evolver, case, k, False, work) for k in parse_list(args.linear_levels)]
+        erows += [run_evolver(evolver, case, k, True, work) for k in parse_list(args.quadratic_levels)]
+        print("\n### %s, H = %g (bezierpde)\n" % (case.name, case.H))
+        print(bpde_table(case, brows))
+        print()
+        print(evolver_table(case, erows))
+        print()
+        print(time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9]))
+        with open(os.path.join(work, "rows-%s.json" % case.name), "w") as f:
+            json.dump({"bpde": brows, "evolver": erows}, f, indent=1)
+    print("\nload average at the end %.2f %.2f %.2f" % os.getloadavg())
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
