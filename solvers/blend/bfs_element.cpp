@@ -101,6 +101,29 @@ Eigen::Matrix<double, 16, 16> BfsSpace::element_form(const SecondOrderForm& form
   return K;
 }
 
+Eigen::Matrix<double, 48, 16> BfsSpace::element_form_factor(const SecondOrderForm& form) const {
+  if (!(form.c_xx >= 0 && form.c_xy >= 0 && form.c_yy >= 0))
+    throw ParameterError("BfsSpace::element_form_factor: the coefficients of the form must be >= 0");
+  const QuadratureRule1D g = gauss_legendre01(4);
+  Eigen::Matrix<double, 48, 16> B;
+  const double area = hx() * hy();
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      const int q = 4 * a + b;
+      const double w = g.w(a) * g.w(b) * area;
+      const auto bxx = local_basis(g.x(a), g.x(b), 2, 0, hx(), hy());
+      const auto bxy = local_basis(g.x(a), g.x(b), 1, 1, hx(), hy());
+      const auto byy = local_basis(g.x(a), g.x(b), 0, 2, hx(), hy());
+      const double sxx = std::sqrt(w * form.c_xx), sxy = std::sqrt(w * form.c_xy), syy = std::sqrt(w * form.c_yy);
+      for (int c = 0; c < 16; ++c) {
+        B(3 * q, c) = sxx * bxx[c];
+        B(3 * q + 1, c) = sxy * bxy[c];
+        B(3 * q + 2, c) = syy * byy[c];
+      }
+    }
+  return B;
+}
+
 namespace {
 
 // Summed in place into the final pattern (each dof couples with the 4 dofs of the at most 9 nodes

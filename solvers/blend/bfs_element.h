@@ -63,6 +63,13 @@ class BfsSpace {
   /// have degree <= 6 in each variable).
   Eigen::Matrix<double, 16, 16> element_form(const SecondOrderForm& form) const;
 
+  /// A square root of element_form: the 48 by 16 matrix B with element_form(form) = BᵀB up to
+  /// rounding, rows 3q + {0, 1, 2} = √(w_q c_xx) ∂_xx, √(w_q c_xy) ∂_xy, √(w_q c_yy) ∂_yy of the 16
+  /// local basis functions at the q-th point of the same 4×4 Gauss rule. The energy of a field on
+  /// the element is then |B c_e|², a sum of squares (no cancellation of the form's terms). All
+  /// coefficients of the form must be >= 0 (ParameterError otherwise).
+  Eigen::Matrix<double, 48, 16> element_form_factor(const SecondOrderForm& form) const;
+
   /// Global dofs of the element (i, j) in its local order.
   std::array<int, 16> element_dofs(int i, int j) const;
 

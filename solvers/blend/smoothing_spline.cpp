@@ -125,7 +125,15 @@ struct SmoothingSplineSolver::Impl {
   SmoothingSplineProblem key;  // k, l, a, epsilon, points
   SmoothingSplineOptions options;
   BfsSpace space{1, 1};
-  Eigen::SparseMatrix<double> R, A, C;
+  // R is not stored (docs/performance.md "Blend"): the energy σᵀRσ is summed element by element
+  // as Σ_e |B c_e|² with the square root B of the one element matrix K = BᵀB of the uniform
+  // partition (BfsSpace::element_form_factor), and form_matrix() assembles R on demand.
+  // C = εR + AᵀA is assembled as its lower triangle (rows >= columns) and kept only as its blocks
+  // C_ff (lower triangle, what the factor reads), C_fc and C_cc: C itself is freed before the
+  // factorisation, the peak of the memory.
+  Eigen::Matrix<double, 16, 16> K;  // element matrix of (·,·)_L
+  Eigen::Matrix<double, 48, 16> B, B_abs;  // K = BᵀB, and |B|
+  Eigen::SparseMatrix<double> A, C;
   std::vector<int> constrained, free_dofs;
   std::vector<int> position;  // dof -> index in free_dofs, or -1
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
@@ -136,14 +144,24 @@ struct SmoothingSplineSolver::Impl {
 #else
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;  // AMD ordering
 #endif
-  Eigen::SparseMatrix<double> Cfc;  // C_fc for the right-hand side (C_ff lives in the factor)
+  Eigen::SparseMatrix<double> Cff, Cfc, Ccc;  // blocks of C: free-free (lower), free-constrained, constrained
   double kkt_scale = 1.0;
   bool factored = false;
   std::string factor_message;
 
   // ---- construction
-  /// R = ((ω_r, ω_s)_L), A = (ω_j(a_i)) (m by n), C = AᵀA + εR and |C|.
+  /// K, B, A = (ω_j(a_i)) (m by n) and the lower triangle of C = AᵀA + εR (into C).
   void assemble(const SmoothingSplineProblem& problem);
+  /// The lower triangle of C (num_dofs square) for the key's a, ε and points.
+  Eigen::SparseMatrix<double> assemble_system() const;
+  /// C_ff (lower triangle), C_fc and C_cc from C; then frees C.
+  void split_system();
+  /// Σ over elements of |M c_e|² (c_e: the 16 by 3 rows of c of element e), i.e. tr(cᵀ R c) for
+  /// M = B, without R (a sum of squares).
+  double element_sum(const Eigen::Matrix<double, 48, 16>& M, const Eigen::MatrixX3d& c) const;
+  /// S·x and |S|·|x| for a symmetric S stored as its lower triangle.
+  static void symmetric_products(const Eigen::SparseMatrix<double>& S, const Eigen::MatrixX3d& x, Eigen::MatrixX3d& Sx,
+                                 Eigen::MatrixX3d& Sabs_x);
   /// The constrained dofs (per node i: u(x_i,0), u_y(x_i,0), u(x_i,1), u_y(x_i,1)) and the rest.
   void split_dofs();
   /// The KKT matrix of eq. (8), equilibrated, by sparse LU.
@@ -178,12 +196,54 @@ struct SmoothingSplineSolver::Impl {
 };
 
 void SmoothingSplineSolver::Impl::assemble(const SmoothingSplineProblem& problem) {
-  const int n = space.num_dofs();
-  R = space.assemble_form(SecondOrderForm::from_a(problem.a));
+  K = space.element_form(SecondOrderForm::from_a(problem.a));
+  B = space.element_form_factor(SecondOrderForm::from_a(problem.a));
+  B_abs = B.cwiseAbs();
   std::vector<Eigen::Triplet<double>> trip;
-  // C = εR + AᵀA, summed into the pattern of R: the 16 dofs of a point's element are coupled in R
-  // already, so no entry is inserted and no temporary of C's size is made.
-  C = R;
+  for (Eigen::Index i = 0; i < problem.points.rows(); ++i) {
+    std::array<int, 16> idx;
+    std::array<double, 16> val;
+    space.basis_at(problem.points(i, 0), problem.points(i, 1), 0, 0, idx, val);
+    for (int c = 0; c < 16; ++c)
+      if (val[c] != 0) trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
+  }
+  A.resize(problem.points.rows(), space.num_dofs());
+  A.setFromTriplets(trip.begin(), trip.end());
+  C = assemble_system();
+}
+
+Eigen::SparseMatrix<double> SmoothingSplineSolver::Impl::assemble_system() const {
+  const int n = space.num_dofs();
+  const SmoothingSplineProblem& problem = key;
+  // The lower triangle of C = εR + AᵀA, summed in place into its final pattern: column dof c of
+  // node (i, j) couples with the dofs r >= c of the at most 9 nodes around (i, j) (the nodes of
+  // larger index: 4 dofs each; its own node: dofs d..3). The 16 dofs of a point's element are
+  // coupled in R already, so the points insert no entry.
+  const int L1 = space.l() + 1;
+  Eigen::VectorXi count(n);
+  for (int i = 0; i <= space.k(); ++i)
+    for (int j = 0; j <= space.l(); ++j) {
+      int later = 0;  // neighbour nodes of larger index
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          const int ii = i + di, jj = j + dj;
+          if (ii < 0 || ii > space.k() || jj < 0 || jj > space.l()) continue;
+          if (ii * L1 + jj > i * L1 + j) ++later;
+        }
+      for (int d = 0; d < 4; ++d) count(space.dof(i, j, d)) = 4 * later + (4 - d);
+    }
+  Eigen::SparseMatrix<double> C(n, n);
+  C.reserve(count);
+  for (int i = 0; i < space.k(); ++i)
+    for (int j = 0; j < space.l(); ++j) {
+      const auto idx = space.element_dofs(i, j);
+      for (int c = 0; c < 16; ++c)
+        for (int r = 0; r < 16; ++r)
+          if (idx[r] >= idx[c]) C.coeffRef(idx[r], idx[c]) += K(r, c);
+    }
+  // R's entries summed in the order of BfsSpace::assemble_form, then scaled: the same numbers as
+  // the lower triangle of εR from the assembled R.
+  C.makeCompressed();
   C *= problem.epsilon;
   for (Eigen::Index i = 0; i < problem.points.rows(); ++i) {
     std::array<int, 16> idx;
@@ -191,14 +251,42 @@ void SmoothingSplineSolver::Impl::assemble(const SmoothingSplineProblem& problem
     space.basis_at(problem.points(i, 0), problem.points(i, 1), 0, 0, idx, val);
     for (int c = 0; c < 16; ++c) {
       if (val[c] == 0) continue;
-      trip.emplace_back(static_cast<int>(i), idx[c], val[c]);
       for (int r = 0; r < 16; ++r)
-        if (val[r] != 0) C.coeffRef(idx[r], idx[c]) += val[r] * val[c];
+        if (val[r] != 0 && idx[r] >= idx[c]) C.coeffRef(idx[r], idx[c]) += val[r] * val[c];
     }
   }
-  A.resize(problem.points.rows(), n);
-  A.setFromTriplets(trip.begin(), trip.end());
   C.makeCompressed();
+  return C;
+}
+
+double SmoothingSplineSolver::Impl::element_sum(const Eigen::Matrix<double, 48, 16>& M,
+                                                const Eigen::MatrixX3d& c) const {
+  double sum = 0;
+  Eigen::Matrix<double, 16, 3> ce;
+  for (int i = 0; i < space.k(); ++i)
+    for (int j = 0; j < space.l(); ++j) {
+      const auto idx = space.element_dofs(i, j);
+      for (int r = 0; r < 16; ++r) ce.row(r) = c.row(idx[r]);
+      sum += (M * ce).squaredNorm();
+    }
+  return sum;
+}
+
+void SmoothingSplineSolver::Impl::symmetric_products(const Eigen::SparseMatrix<double>& S, const Eigen::MatrixX3d& x,
+                                                     Eigen::MatrixX3d& Cx, Eigen::MatrixX3d& Cabs_x) {
+  Cx = Eigen::MatrixX3d::Zero(x.rows(), 3);
+  Cabs_x = Eigen::MatrixX3d::Zero(x.rows(), 3);
+  for (int col = 0; col < S.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(S, col); it; ++it) {
+      const Eigen::Index row = it.row();
+      const double v = it.value(), av = std::abs(v);
+      Cx.row(row) += v * x.row(col);
+      Cabs_x.row(row) += av * x.row(col).cwiseAbs();
+      if (row != col) {
+        Cx.row(col) += v * x.row(row);
+        Cabs_x.row(col) += av * x.row(row).cwiseAbs();
+      }
+    }
 }
 
 void SmoothingSplineSolver::Impl::split_dofs() {
@@ -220,10 +308,12 @@ void SmoothingSplineSolver::Impl::factor_kkt() {
   const int n = space.num_dofs();
   const int nc = static_cast<int>(constrained.size());
   std::vector<Eigen::Triplet<double>> t;
-  t.reserve(C.nonZeros() + 2 * nc);
+  t.reserve(2 * C.nonZeros() + 2 * nc);
   for (int col = 0; col < C.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it)
-      t.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+    for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it) {
+      t.emplace_back(static_cast<int>(it.row()), col, it.value());
+      if (it.row() != col) t.emplace_back(col, static_cast<int>(it.row()), it.value());  // C is its lower triangle
+    }
   // Equilibrate: D is scaled by s = max |C_ij| so that the LU pivots see blocks of one size
   // (the constraint rows then read s·α_c = s·y).
   kkt_scale = std::max(C.coeffs().cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
@@ -240,28 +330,41 @@ void SmoothingSplineSolver::Impl::factor_kkt() {
   if (!factored) factor_message = "the KKT matrix of eq. (8) is singular: " + lu.lastErrorMessage();
 }
 
-void SmoothingSplineSolver::Impl::factor_reduced() {
+void SmoothingSplineSolver::Impl::split_system() {
   const int n = space.num_dofs();
   const int nc = static_cast<int>(constrained.size());
   const int nf = static_cast<int>(free_dofs.size());
-  std::vector<Eigen::Triplet<double>> tf, tc;
+  std::vector<Eigen::Triplet<double>> tf, tc, tcc;
   std::vector<int> cpos(n, -1);
   for (int c = 0; c < nc; ++c) cpos[constrained[c]] = c;
+  // C holds its lower triangle (row >= column); free_dofs is increasing, so a free-free entry
+  // stays in the lower triangle of C_ff (all the factor reads), and a free-constrained entry is
+  // C_fc(row, column) or, read through the symmetry, C_fc(column, row).
   for (int col = 0; col < C.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it) {
-      const int r = position[it.row()];
-      if (r < 0) continue;
-      if (position[col] >= 0) {
-        if (r >= position[col]) tf.emplace_back(r, position[col], it.value());  // lower triangle: all the factor reads
-      } else {
+      const int r = position[it.row()], c = position[col];
+      if (r >= 0 && c >= 0)
+        tf.emplace_back(r, c, it.value());
+      else if (r >= 0)
         tc.emplace_back(r, cpos[col], it.value());
+      else if (c >= 0)
+        tc.emplace_back(c, cpos[it.row()], it.value());
+      else {
+        tcc.emplace_back(cpos[it.row()], cpos[col], it.value());
+        if (it.row() != col) tcc.emplace_back(cpos[col], cpos[it.row()], it.value());
       }
     }
-  Eigen::SparseMatrix<double> Cff(nf, nf);  // lower triangle only; freed once factored
+  C = Eigen::SparseMatrix<double>();  // freed: the factorisation is the peak of the memory
+  Cff.resize(nf, nf);                 // lower triangle only
   Cff.setFromTriplets(tf.begin(), tf.end());
   std::vector<Eigen::Triplet<double>>().swap(tf);
   Cfc.resize(nf, nc);
   Cfc.setFromTriplets(tc.begin(), tc.end());
+  Ccc.resize(nc, nc);
+  Ccc.setFromTriplets(tcc.begin(), tcc.end());
+}
+
+void SmoothingSplineSolver::Impl::factor_reduced() {
 #ifdef BPDE_HAVE_CHOLMOD
   // METIS nested dissection, the fill-reducing ordering for the 2D grid of the BFS dofs (CHOLMOD's
   // default tries AMD first and keeps it when its fill looks acceptable; docs/performance.md "Blend").
@@ -328,12 +431,24 @@ SmoothingSplineSolver::Impl::Residuals SmoothingSplineSolver::Impl::residuals(co
                                                                               const Eigen::MatrixX3d& F,
                                                                               const Eigen::MatrixX3d& y) const {
   const int nc = static_cast<int>(constrained.size());
-  Residuals res{C * alpha - F, 0.0, 0.0};
-  const Eigen::MatrixX3d scale = C.cwiseAbs() * alpha.cwiseAbs() + F.cwiseAbs();  // |C| not stored
+  const int nf = static_cast<int>(free_dofs.size());
+  // Cα - F and |C||α| + |F| from the blocks of C (C and |C| are not stored): free rows
+  // C_ff α_f + C_fc α_c, constrained rows C_fcᵀ α_f + C_cc α_c.
+  Eigen::MatrixX3d af(nf, 3), ac(nc, 3);
+  for (int r = 0; r < nf; ++r) af.row(r) = alpha.row(free_dofs[r]);
+  for (int c = 0; c < nc; ++c) ac.row(c) = alpha.row(constrained[c]);
+  Eigen::MatrixX3d gf, sf;
+  symmetric_products(Cff, af, gf, sf);
+  gf += Cfc * ac;
+  sf += Cfc.cwiseAbs() * ac.cwiseAbs();
+  const Eigen::MatrixX3d gc = Cfc.transpose() * af + Ccc * ac;
+  Residuals res{Eigen::MatrixX3d(alpha.rows(), 3), 0.0, 0.0};
+  for (int r = 0; r < nf; ++r) res.g.row(free_dofs[r]) = gf.row(r) - F.row(free_dofs[r]);
+  for (int c = 0; c < nc; ++c) res.g.row(constrained[c]) = gc.row(c) - F.row(constrained[c]);
   double gmax = 0, smax = 0;
-  for (int r : free_dofs) {
-    gmax = std::max(gmax, res.g.row(r).cwiseAbs().maxCoeff());
-    smax = std::max(smax, scale.row(r).maxCoeff());
+  for (int r = 0; r < nf; ++r) {
+    gmax = std::max(gmax, res.g.row(free_dofs[r]).cwiseAbs().maxCoeff());
+    smax = std::max(smax, (sf.row(r) + F.row(free_dofs[r]).cwiseAbs()).maxCoeff());
   }
   res.stationarity = smax > 0 ? gmax / smax : gmax;
   double cmax = 0;
@@ -350,7 +465,7 @@ SmoothingSplineSolver::Impl::Functional SmoothingSplineSolver::Impl::functional(
   const Eigen::MatrixX3d r = A * c - problem.data;
   f.misfit = r.squaredNorm();
   f.max_error = r.rows() ? r.rowwise().norm().maxCoeff() : 0.0;
-  f.energy = (c.transpose() * (R * c)).trace();
+  f.energy = element_sum(B, c);  // tr(cᵀ R c), element by element
   f.J = f.misfit + problem.epsilon * (f.energy - 2 * (load.transpose() * c).trace());
   return f;
 }
@@ -361,7 +476,7 @@ void SmoothingSplineSolver::Impl::judge(const SmoothingSplineProblem& problem, c
   summary.residual = res.stationarity;
   // σ must do at least as well as the feasible field with the free dofs at 0; |σ|_L² >= 0; and
   // without load 0 <= J(σ) <= J0.
-  const double en_abs = (alpha.cwiseAbs().transpose() * (R.cwiseAbs() * alpha.cwiseAbs())).trace();
+  const double en_abs = element_sum(B_abs, alpha.cwiseAbs());  // the rounding scale of the energy's sum
   if (J.J > J0.J + 1e-9 * (std::abs(J0.J) + std::abs(J.J)) || J.energy < -1e-10 * en_abs ||
       (!problem.load && J.J < -1e-9 * J0.J)) {
     summary.set_failed(Status::NumericalLimit,
@@ -399,15 +514,20 @@ SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& probl
   m.space = BfsSpace(problem.k, problem.l);
   m.assemble(problem);
   m.split_dofs();
-  if (options.method == SmoothingSplineOptions::Method::kKktLu)
-    m.factor_kkt();
-  else
-    m.factor_reduced();
+  if (options.method == SmoothingSplineOptions::Method::kKktLu) m.factor_kkt();
+  m.split_system();  // frees C
+  if (options.method == SmoothingSplineOptions::Method::kElimination) m.factor_reduced();
 }
 
 const BfsSpace& SmoothingSplineSolver::space() const { return impl_->space; }
-const Eigen::SparseMatrix<double>& SmoothingSplineSolver::form_matrix() const { return impl_->R; }
-const Eigen::SparseMatrix<double>& SmoothingSplineSolver::system_matrix() const { return impl_->C; }
+Eigen::SparseMatrix<double> SmoothingSplineSolver::form_matrix() const {
+  return impl_->space.assemble_form(SecondOrderForm::from_a(impl_->key.a));
+}
+Eigen::SparseMatrix<double> SmoothingSplineSolver::system_matrix() const {
+  const Eigen::SparseMatrix<double> L = impl_->assemble_system();
+  Eigen::SparseMatrix<double> full = L.selfadjointView<Eigen::Lower>();
+  return full;
+}
 const std::vector<int>& SmoothingSplineSolver::constrained_dofs() const { return impl_->constrained; }
 
 SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplineProblem& problem) const {

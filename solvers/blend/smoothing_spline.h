@@ -108,7 +108,9 @@ struct SmoothingSplineResult {
   SmoothingSpline spline;
   /// J(σ) of eq. (6), summed over the coordinates.
   double functional = 0.0;
-  /// Σ |σ(a_i) - β_i|² and |σ|_L² (summed over the coordinates).
+  /// Σ |σ(a_i) - β_i|² and |σ|_L² (summed over the coordinates). |σ|_L² is summed element by
+  /// element as squares of the second derivatives at the Gauss points of the exact 4×4 rule
+  /// (BfsSpace::element_form_factor), equal to tr(αᵀRα) of the assembled R up to rounding.
   double data_misfit = 0.0;
   double energy = 0.0;
   /// max_i |σ(a_i) - β_i| (0 when A is empty).
@@ -139,10 +141,12 @@ class SmoothingSplineSolver {
   SmoothingSplineResult solve(const SmoothingSplineProblem& problem) const;
 
   const BfsSpace& space() const;
-  /// The matrices of eq. (8): R = ((ω_r, ω_s)_L), C = AᵀA + εR (num_dofs square) and the
-  /// indices of the constrained dofs in the order of the multipliers.
-  const Eigen::SparseMatrix<double>& form_matrix() const;
-  const Eigen::SparseMatrix<double>& system_matrix() const;
+  /// The matrices of eq. (8): R = ((ω_r, ω_s)_L), C = AᵀA + εR (num_dofs square, both
+  /// triangles) and the indices of the constrained dofs in the order of the multipliers. R is not
+  /// kept by the solver (the energy is summed element by element) and C only as its lower
+  /// triangle: both are built on demand here, at the cost of an assembly (docs/performance.md).
+  Eigen::SparseMatrix<double> form_matrix() const;
+  Eigen::SparseMatrix<double> system_matrix() const;
   const std::vector<int>& constrained_dofs() const;
 
  private:

@@ -136,6 +136,18 @@ TEST(BfsSpace, FormMatrixGivesTheExactEnergyOfBicubics) {
   }
 }
 
+TEST(BfsSpace, ElementFormFactorIsASquareRootOfTheElementForm) {
+  for (int k : {1, 3, 128})
+    for (double a : {1e-3, 1.0, 10.0}) {
+      const BfsSpace V(k, 2 * k);
+      const auto form = SecondOrderForm::from_a(a);
+      const Eigen::Matrix<double, 16, 16> K = V.element_form(form);
+      const Eigen::Matrix<double, 48, 16> B = V.element_form_factor(form);
+      EXPECT_LT((B.transpose() * B - K).cwiseAbs().maxCoeff(), 1e-14 * K.cwiseAbs().maxCoeff()) << k << " " << a;
+    }
+  EXPECT_THROW(BfsSpace(2, 2).element_form_factor({1.0, -1.0, 1.0}), ParameterError);
+}
+
 TEST(BfsSpace, MassMatrixAndLoadAreExactForPolynomials) {
   std::mt19937 rng(3);
   const Bicubic u[3] = {random_bicubic(rng), random_bicubic(rng), random_bicubic(rng)};

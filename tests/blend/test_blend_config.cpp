@@ -185,5 +185,24 @@ TEST(BlendConfig, ExampleConfigsAreTheCylindersOfSection6) {
   }
 }
 
+TEST(BlendConfig, ExampleConfigsReportTheEnergiesOfTheAssembledForm) {
+  // J(σ) and |σ|_L² of examples/003-blend-cylinders as `bpde blend` printed them when the solver
+  // read the energy from the assembled R (before it stopped storing R and the upper triangle of C):
+  // the element-by-element energy must give the same numbers.
+  const std::filesystem::path dir = std::filesystem::path(BPDE_SOURCE_DIR) / "examples" / "003-blend-cylinders";
+  const char* names[4] = {"fig2a.json", "fig2b.json", "fig2c.json", "fig2d.json"};
+  const double functional[4] = {2056.804947281693, 9510.032343342973, 20.985443936263355, 0.4485004239726369};
+  const double energy[4] = {2056.804947281693, 9510.032343342973, 13303.825055085208, 44067.75566822331};
+  const double misfit[4] = {0.0, 0.0, 7.681618881178145, 0.007822867290403757};
+  for (int c = 0; c < 4; ++c) {
+    const BlendConfig cfg = read_blend_config((dir / names[c]).string());
+    const auto r = solve_smoothing_spline(cfg.problem);
+    ASSERT_TRUE(r.summary.converged) << names[c] << ": " << r.summary.message;
+    EXPECT_NEAR(r.functional, functional[c], 1e-12 * functional[c]) << names[c];
+    EXPECT_NEAR(r.energy, energy[c], 1e-12 * energy[c]) << names[c];
+    EXPECT_NEAR(r.data_misfit, misfit[c], 1e-12 * misfit[c]) << names[c];
+  }
+}
+
 }  // namespace
 }  // namespace bpde

@@ -185,6 +185,41 @@ TEST(SmoothingSpline, KktAndEliminationAgree) {
     }
 }
 
+TEST(SmoothingSpline, EnergyWithoutRIsTheAssembledQuadraticForm) {
+  // The solver keeps neither R nor the upper triangle of C: its energy, summed element by element,
+  // must be tr(σᵀRσ) of the assembled R, and the matrices built on demand must be those of eq. (8).
+  for (double eps : {1.0, 1e-3, 1e-5})
+    for (double a : {1.0, 10.0}) {
+      SmoothingSplineProblem p = cylinders(a, eps, true);
+      p.load = [](double x, double y) { return Eigen::Vector3d(x * y, 1.0, std::sin(3 * x)); };
+      for (auto method : {SmoothingSplineOptions::Method::kElimination, SmoothingSplineOptions::Method::kKktLu}) {
+        SmoothingSplineOptions o;
+        o.method = method;
+        SmoothingSplineSolver solver(p, o);
+        const auto r = solver.solve(p);
+        ASSERT_TRUE(r.summary.converged) << r.summary.message;
+        const Eigen::SparseMatrix<double> R = solver.form_matrix();
+        const Eigen::MatrixX3d& c = r.spline.coefficients();
+        const double assembled = (c.transpose() * (R * c)).trace();
+        EXPECT_GT(assembled, 0.0);
+        EXPECT_NEAR(r.energy, assembled, 1e-12 * assembled) << eps << " " << a;
+        // C = εR + AᵀA with both triangles, A the point evaluations
+        Eigen::MatrixXd AtA = Eigen::MatrixXd::Zero(R.rows(), R.cols());
+        for (Eigen::Index i = 0; i < p.points.rows(); ++i) {
+          std::array<int, 16> idx;
+          std::array<double, 16> val;
+          solver.space().basis_at(p.points(i, 0), p.points(i, 1), 0, 0, idx, val);
+          for (int s = 0; s < 16; ++s)
+            for (int t = 0; t < 16; ++t) AtA(idx[s], idx[t]) += val[s] * val[t];
+        }
+        const Eigen::MatrixXd Cexpect = eps * Eigen::MatrixXd(R) + AtA;
+        const Eigen::MatrixXd C = Eigen::MatrixXd(solver.system_matrix());
+        EXPECT_LT((C - Cexpect).cwiseAbs().maxCoeff(), 1e-13 * Cexpect.cwiseAbs().maxCoeff());
+        EXPECT_EQ((C - C.transpose()).cwiseAbs().maxCoeff(), 0.0);
+      }
+    }
+}
+
 TEST(SmoothingSpline, IsTheMinimiserOfEq6OverTheConstrainedSpace) {
   SmoothingSplineProblem p = cylinders(10.0, 1e-3, true);
   p.load = [](double x, double y) { return Eigen::Vector3d(1.0 + x, y * y, -2.0); };
