@@ -5,6 +5,8 @@ import json
 import math
 import os
 import subprocess
+import threading
+import time
 
 import pytest
 
@@ -56,3 +58,31 @@ def examples():
     files = example_files()
     assert len(files) >= 20, "the example jobs were not found under " + SOURCE_DIR
     return files
+
+
+def ticks_during(solve):
+    """How many time stamps another Python thread records while `solve()` runs on a thread (none
+    could fall inside if the solve held the GIL)."""
+    ticks, span = [], []
+    stop = threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            stop.wait(0.001)
+
+    def solver():
+        t0 = time.perf_counter()
+        solve()
+        span.extend([t0, time.perf_counter()])
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    s = threading.Thread(target=solver)
+    s.start()
+    s.join()
+    stop.set()
+    t.join()
+    t0, t1 = span
+    margin = 0.1 * (t1 - t0)
+    return len([x for x in ticks if t0 + margin < x < t1 - margin]), t1 - t0

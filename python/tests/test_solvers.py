@@ -3,14 +3,12 @@
 the example jobs: the same nets and numbers to the last bit. Then option validation, the C++
 defaults, and array shapes."""
 
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import bezierpde
-from conftest import bits
+from conftest import bits, ticks_during
 
 
 def tensor_examples(examples):
@@ -364,34 +362,6 @@ def test_array_shape_errors(examples):
     r = bezierpde.solve_bspline_extremal(bezierpde.net_from_dict(as_bspline(job["net"])), "dirichlet")
     P = r.net.points
     assert P.shape == (36, 3) and not P.flags["OWNDATA"]
-
-
-def ticks_during(solve):
-    """How many time stamps another Python thread records while `solve()` runs on a thread (none
-    could fall inside if the solve held the GIL)."""
-    ticks, span = [], []
-    stop = threading.Event()
-
-    def ticker():
-        while not stop.is_set():
-            ticks.append(time.perf_counter())
-            stop.wait(0.001)
-
-    def solver():
-        t0 = time.perf_counter()
-        solve()
-        span.extend([t0, time.perf_counter()])
-
-    t = threading.Thread(target=ticker)
-    t.start()
-    s = threading.Thread(target=solver)
-    s.start()
-    s.join()
-    stop.set()
-    t.join()
-    t0, t1 = span
-    margin = 0.1 * (t1 - t0)
-    return len([x for x in ticks if t0 + margin < x < t1 - margin]), t1 - t0
 
 
 def large_blend():
