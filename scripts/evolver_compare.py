@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Time-to-accuracy of bezierpde against Surface Evolver on the same boundary (issue 12).
+"""Time-to-accuracy of bezierpde against Surface Evolver on the same boundary (bezierpde docs/cmc_evolver.md).
 
     python3 scripts/evolver_compare.py [--bpde build/bpde] [--case circle|sphere|all]
                                        [--degrees 4,6,8] [--linear-levels 1..8]
@@ -150,6 +150,16 @@ def evolver_pressure(H):
     return -2.0 * H
 
 
+def fan_faces_and_body(H):
+    """The .fe lines shared by both start meshes, after the six boundary edges 1..6 (vertex k+1 to
+    k+2): the spokes 7..12 from the boundary vertices to the centre vertex 7, the six facets
+    (boundary edge k+1, spoke to the centre, spoke back: counter-clockwise, normals as x_u ^ x_v) and
+    the body with the pressure of H."""
+    lines = ["%d  %d 7" % (k + 7, k + 1) for k in range(6)]
+    lines += ["", "faces"] + ["%d  %d %d %d" % (k + 1, k + 1, (k + 1) % 6 + 7, -(k + 7)) for k in range(6)]
+    return lines + ["", "bodies", "1  1 2 3 4 5 6  pressure %.17g" % evolver_pressure(H), ""]
+
+
 def fe_circle(H):
     """The .fe file of the circle: the unit circle as a boundary parametrised by angle (refinement puts
     new boundary vertices on the exact circle), six fixed boundary vertices and one free centre, six
@@ -168,14 +178,7 @@ def fe_circle(H):
     lines += ["7  0 0 0.2", "", "edges"]
     for k in range(6):
         lines.append("%d  %d %d  boundary 1 fixed" % (k + 1, k + 1, (k + 1) % 6 + 1))
-    for k in range(6):
-        lines.append("%d  %d 7" % (k + 7, k + 1))
-    lines += ["", "faces"]
-    for k in range(6):
-        # boundary edge k+1 (k+1 -> k+2), spoke to the centre, spoke back
-        lines.append("%d  %d %d %d" % (k + 1, k + 1, (k + 1) % 6 + 7, -(k + 7)))
-    lines += ["", "bodies", "1  1 2 3 4 5 6  pressure %.17g" % evolver_pressure(H), ""]
-    return "\n".join(lines)
+    return "\n".join(lines + fan_faces_and_body(H))
 
 
 def sphere_triangle_parameters():
@@ -214,13 +217,7 @@ def fe_sphere(H):
     edge_constraints = ["1 2", "1 2", "1 3", "1 3", "1 4", "1 4"]
     for k in range(6):
         lines.append("%d  %d %d  fixed constraint %s" % (k + 1, k + 1, (k + 1) % 6 + 1, edge_constraints[k]))
-    for k in range(6):
-        lines.append("%d  %d 7" % (k + 7, k + 1))
-    lines += ["", "faces"]
-    for k in range(6):
-        lines.append("%d  %d %d %d" % (k + 1, k + 1, (k + 1) % 6 + 7, -(k + 7)))
-    lines += ["", "bodies", "1  1 2 3 4 5 6  pressure %.17g" % evolver_pressure(H), ""]
-    return "\n".join(lines)
+    return "\n".join(lines + fan_faces_and_body(H))
 
 
 REFINE_STEP = "r; g 5; u; V; V;"
