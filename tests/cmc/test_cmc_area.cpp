@@ -116,7 +116,9 @@ TEST(CmcArea, AgreesWithDirichletOnConformalData) {
     EXPECT_LE(dd, sphere_tol) << n;
     EXPECT_NEAR(a.A, d.D, area_tol) << n;
     EXPECT_LE(a.summary.residual, 1e-6) << n;
-    if (n == 6) EXPECT_EQ(a.summary.status, Status::Converged) << a.summary.message;
+    if (n == 6) {
+      EXPECT_EQ(a.summary.status, Status::Converged) << a.summary.message;
+    }
   }
 }
 
