@@ -33,17 +33,8 @@ TEST(CmcFunctional, ValueGradientHessianAgainstFiniteDifferences) {
     std::vector<int> idx;
     for (int r = 0; r < f.size(); r += 2) idx.push_back(r);
     const Eigen::MatrixXd J = f.hessian(P, H, idx);
-    for (size_t b = 0; b < idx.size(); ++b)
-      for (int s = 0; s < 3; ++s) {
-        Eigen::MatrixX3d Pp = P, Pm = P;
-        Pp(idx[b], s) += h;
-        Pm(idx[b], s) -= h;
-        const Eigen::MatrixX3d dG = (f.gradient(Pp, H) - f.gradient(Pm, H)) / (2 * h);
-        for (size_t a = 0; a < idx.size(); ++a)
-          for (int r = 0; r < 3; ++r)
-            EXPECT_NEAR(J(3 * Eigen::Index(a) + r, 3 * Eigen::Index(b) + s), dG(idx[a], r),
-                        1e-8 * J.cwiseAbs().maxCoeff());
-      }
+    testing::expect_hessian_is_fd_of_gradient(
+        J, P, idx, [&](const Eigen::MatrixX3d& X) { return f.gradient(X, H); }, h, 1e-8 * J.cwiseAbs().maxCoeff());
   }
 }
 

@@ -239,17 +239,8 @@ void check_gradient_hessian(const Form& f, const Eigen::MatrixX3d& P, const std:
     }
   const Eigen::MatrixXd Hs = f.hessian(P, idx);
   EXPECT_LT((Hs - Hs.transpose()).cwiseAbs().maxCoeff(), 1e-14 * Hs.cwiseAbs().maxCoeff());
-  for (size_t b = 0; b < idx.size(); ++b)
-    for (int s = 0; s < 3; ++s) {
-      Eigen::MatrixX3d Pp = P, Pm = P;
-      Pp(idx[b], s) += h;
-      Pm(idx[b], s) -= h;
-      const Eigen::MatrixX3d dG = (f.gradient(Pp) - f.gradient(Pm)) / (2 * h);
-      for (size_t a = 0; a < idx.size(); ++a)
-        for (int r = 0; r < 3; ++r)
-          EXPECT_NEAR(Hs(3 * Eigen::Index(a) + r, 3 * Eigen::Index(b) + s), dG(idx[a], r),
-                      1e-8 * Hs.cwiseAbs().maxCoeff());
-    }
+  testing::expect_hessian_is_fd_of_gradient(
+      Hs, P, idx, [&](const Eigen::MatrixX3d& X) { return f.gradient(X); }, h, 1e-8 * Hs.cwiseAbs().maxCoeff());
 }
 
 TEST(Volume, GradientAndHessianAgainstFiniteDifferences) {
