@@ -357,13 +357,10 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
   CmcResult<Net> res;
   {
     ScopedTimer timer(res.summary.seconds);
-    o.validate();
-    check_degree(data, o.fixed);
-    const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
-    CmcProblem p{functional_for(data), data.free_indices(o.fixed), data.points()};
-    require_finite_rows(p.P, fixed_idx, "cmc");
-    for (int r : p.free) p.P.row(r).setZero();
-    const DirichletFactor dir = dirichlet_solve(p, fixed_idx);
+    DirichletStart start = dirichlet_start(data, o);
+    CmcProblem& p = start.p;
+    const std::vector<int>& fixed_idx = start.fixed_idx;
+    const DirichletFactor& dir = start.dir;
     const Outcome out = o.V          ? volume_solve(p, o, dir.L, res.summary)
                         : o.H == 0.0 ? dirichlet_outcome(p, o)
                                      : continue_branch(p, o, dir, fixed_idx, res.summary, res.continuation_steps);

@@ -681,13 +681,9 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
   res.functional = CmcFunctionalKind::Area;
   {
     ScopedTimer timer(res.summary.seconds);
-    o.validate();
-    check_degree(data, o.fixed);
-    const std::vector<int> fixed_idx = data.fixed_indices(o.fixed);
-    CmcProblem base{functional_for(data), data.free_indices(o.fixed), data.points()};
-    require_finite_rows(base.P, fixed_idx, "cmc");
-    for (int r : base.free) base.P.row(r).setZero();
-    dirichlet_solve(base, fixed_idx);
+    DirichletStart start = dirichlet_start(data, o);
+    CmcProblem& base = start.p;
+    const std::vector<int>& fixed_idx = start.fixed_idx;
     const Eigen::MatrixX3d extremal = base.P;
     const Eigen::MatrixXd Cff = base.f->gram()(base.free, base.free);
     AreaSolve<Net> s{data,

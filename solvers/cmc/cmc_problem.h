@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bezierpde/core/fixed_set.h"
 #include "bezierpde/core/symmetric_factor.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/cmc.h"
@@ -92,6 +93,27 @@ struct DirichletFactor {
 };
 
 DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx);
+
+/// The common start of the D_H and the A_H solves: the options and the degree checked, the problem
+/// on the free points of `data` (fixed rows checked finite, free rows zeroed) with the Dirichlet
+/// extremal in P, the fixed rows and the Dirichlet factor.
+struct DirichletStart {
+  CmcProblem p;
+  std::vector<int> fixed_idx;
+  DirichletFactor dir;
+};
+
+template <class Net>
+DirichletStart dirichlet_start(const Net& data, const CmcOptions& o) {
+  o.validate();
+  check_degree(data, o.fixed);
+  DirichletStart s{CmcProblem{functional_for(data), data.free_indices(o.fixed), data.points()},
+                   data.fixed_indices(o.fixed), {}};
+  require_finite_rows(s.p.P, s.fixed_idx, "cmc");
+  for (int r : s.p.free) s.p.P.row(r).setZero();
+  s.dir = dirichlet_solve(s.p, s.fixed_idx);
+  return s;
+}
 
 /// First step: the whole way to Ht, but not beyond |H| = 16 / (size of the fixed data).
 double first_step(double Ht, const Eigen::MatrixX3d& P, const std::vector<int>& fixed_idx);
