@@ -17,6 +17,8 @@ PACKAGES=(
   python3 python3-jsonschema  # tests/schema: the JSON Schemas of docs/schema/
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
                          # OpenCASCADE 7.6: STEP export (io/step_export.cpp)
+  libtbb-dev             # OpenCASCADE's CMake targets link /usr/lib/x86_64-linux-gnu/libtbb.so and
+                         # libtbbmalloc.so, which only libtbb-dev provides (its -dev packages do not depend on it)
   chromium               # the browser test of view.html (headless)
   zlib1g-dev             # the browser test decodes Chromium's PNG screenshot
   libsuitesparse-dev     # CHOLMOD: sparse Cholesky of the blend system
