@@ -4,6 +4,9 @@
 #include <Eigen/SparseLU>
 #ifdef BPDE_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>
+#include <dlfcn.h>
+
+#include <mutex>
 #endif
 #include <algorithm>
 #include <cmath>
@@ -37,6 +40,65 @@ std::string sci(double v) {
   std::snprintf(buf, sizeof buf, "%.2e", v);
   return buf;
 }
+
+#ifdef BPDE_HAVE_CHOLMOD
+/// While alive, the OpenMP parallel regions of CHOLMOD run on the calling thread alone.
+/// CHOLMOD 3's supernodal factorisation opens a parallel region of a fixed CHOLMOD_OMP_NUM_THREADS
+/// (4, compiled in: neither OMP_NUM_THREADS nor cholmod_common changes it) around the copy and
+/// assembly loops of every large supernode; on the blend systems that costs CPU in waking and
+/// waiting threads and, with 2 cores, wall time too (docs/performance.md "Blend").
+/// max-active-levels 0 makes every parallel region inactive (one thread). The OpenMP runtime is
+/// the one CHOLMOD links (found through CHOLMOD's own library, so it also works when this
+/// library was loaded with RTLD_LOCAL, e.g. by Python); without one this does nothing. The
+/// setting is process-wide: nested guards (concurrent solves) share it under a mutex, the first
+/// saves the previous value and the last restores it.
+class SerialCholmodOpenMP {
+ public:
+  SerialCholmodOpenMP() {
+    std::lock_guard<std::mutex> lock(state().mutex);
+    State& s = state();
+    if (s.users++ == 0 && s.resolve()) {
+      s.saved = s.get();
+      s.set(0);
+    }
+  }
+  ~SerialCholmodOpenMP() {
+    std::lock_guard<std::mutex> lock(state().mutex);
+    State& s = state();
+    if (--s.users == 0 && s.set) s.set(s.saved);
+  }
+  SerialCholmodOpenMP(const SerialCholmodOpenMP&) = delete;
+  SerialCholmodOpenMP& operator=(const SerialCholmodOpenMP&) = delete;
+
+ private:
+  struct State {
+    std::mutex mutex;
+    int users = 0, saved = 0;
+    bool resolved = false;
+    int (*get)() = nullptr;
+    void (*set)(int) = nullptr;
+    bool resolve() {
+      if (!resolved) {
+        resolved = true;
+        Dl_info info;
+        if (dladdr(reinterpret_cast<void*>(&cholmod_factorize_p), &info) && info.dli_fname) {
+          if (void* h = dlopen(info.dli_fname, RTLD_LAZY | RTLD_NOLOAD)) {  // already loaded: no new reference
+            get = reinterpret_cast<int (*)()>(dlsym(h, "omp_get_max_active_levels"));
+            set = reinterpret_cast<void (*)(int)>(dlsym(h, "omp_set_max_active_levels"));
+            dlclose(h);
+          }
+        }
+        if (!get || !set) get = nullptr, set = nullptr;
+      }
+      return set != nullptr;
+    }
+  };
+  static State& state() {
+    static State s;
+    return s;
+  }
+};
+#endif
 
 }  // namespace
 
@@ -138,8 +200,9 @@ struct SmoothingSplineSolver::Impl {
   std::vector<int> position;  // dof -> index in free_dofs, or -1
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
 #ifdef BPDE_HAVE_CHOLMOD
-  // Supernodal sparse Cholesky with CHOLMOD's fill-reducing ordering (AMD, or METIS when it does
-  // better); measured against SimplicialLDLT and the KKT LU in docs/performance.md ("Blend").
+  // Supernodal sparse Cholesky (CHOLMOD) of C_ff, which is built in its fill-reducing order
+  // (order_free_dofs): CHOLMOD factors it in place, without permuted copies; measured against
+  // SimplicialLDLT and the KKT LU in docs/performance.md ("Blend").
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> ldlt;
 #else
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;  // AMD ordering
@@ -154,7 +217,8 @@ struct SmoothingSplineSolver::Impl {
   void assemble(const SmoothingSplineProblem& problem);
   /// The lower triangle of C (num_dofs square) for the key's a, ε and points.
   Eigen::SparseMatrix<double> assemble_system() const;
-  /// C_ff (lower triangle), C_fc and C_cc from C; then frees C.
+  /// C_ff (lower triangle, rows and columns in the order of free_dofs), C_fc and C_cc from C;
+  /// then frees C.
   void split_system();
   /// Σ over elements of |M c_e|² (c_e: the 16 by 3 rows of c of element e), i.e. tr(cᵀ R c) for
   /// M = B, without R (a sum of squares).
@@ -162,8 +226,16 @@ struct SmoothingSplineSolver::Impl {
   /// S·x and |S|·|x| for a symmetric S stored as its lower triangle.
   static void symmetric_products(const Eigen::SparseMatrix<double>& S, const Eigen::MatrixX3d& x, Eigen::MatrixX3d& Sx,
                                  Eigen::MatrixX3d& Sabs_x);
-  /// The constrained dofs (per node i: u(x_i,0), u_y(x_i,0), u(x_i,1), u_y(x_i,1)) and the rest.
+  /// The constrained dofs (per node i: u(x_i,0), u_y(x_i,0), u(x_i,1), u_y(x_i,1)) and the rest
+  /// (free_dofs increasing, position its inverse).
   void split_dofs();
+  /// With CHOLMOD, for the elimination route: free_dofs and position in a fill-reducing order of
+  /// the reduced system, so that C_ff is built already permuted and CHOLMOD factors it in the
+  /// natural order (no permuted transposes of C_ff beside the factor). The order is that of the
+  /// nodes: METIS nested dissection of the node graph (node (i, j) couples with the 3 x 3 nodes
+  /// around it), followed by CHOLMOD's weighted postorder of its elimination tree, each node's
+  /// free dofs kept together (they have the same couplings); docs/performance.md "Blend".
+  void order_free_dofs();
   /// The KKT matrix of eq. (8), equilibrated, by sparse LU.
   void factor_kkt();
   /// The reduced SPD system C_ff on the free dofs by sparse Cholesky (and C_fc for the right-hand side).
@@ -330,34 +402,103 @@ void SmoothingSplineSolver::Impl::factor_kkt() {
   if (!factored) factor_message = "the KKT matrix of eq. (8) is singular: " + lu.lastErrorMessage();
 }
 
+void SmoothingSplineSolver::Impl::order_free_dofs() {
+#ifdef BPDE_HAVE_CHOLMOD
+  const int L1 = space.l() + 1, nn = space.num_nodes();
+  cholmod_common& cm = ldlt.cholmod();
+  // The lower triangle of the node graph, pattern only: node c = i (l+1) + j and the nodes
+  // (i, j), (i, j+1), (i+1, j-1), (i+1, j), (i+1, j+1) that exist (increasing indices).
+  cholmod_sparse* G = cholmod_allocate_sparse(nn, nn, 5 * static_cast<size_t>(nn), 1, 1, -1, CHOLMOD_PATTERN, &cm);
+  if (!G) return;  // out of memory: keep the increasing order (CHOLMOD then reports the failure)
+  int* Gp = static_cast<int*>(G->p);
+  int* Gi = static_cast<int*>(G->i);
+  int q = 0;
+  for (int i = 0; i <= space.k(); ++i)
+    for (int j = 0; j <= space.l(); ++j) {
+      Gp[i * L1 + j] = q;
+      Gi[q++] = i * L1 + j;
+      if (j < space.l()) Gi[q++] = i * L1 + j + 1;
+      if (i < space.k())
+        for (int jj = j - 1; jj <= j + 1; ++jj)
+          if (jj >= 0 && jj <= space.l()) Gi[q++] = (i + 1) * L1 + jj;
+    }
+  Gp[nn] = q;
+  const int supernodal = cm.supernodal;
+  cm.nmethods = 1;
+  cm.method[0].ordering = CHOLMOD_METIS;
+  cm.postorder = 1;
+  cm.supernodal = CHOLMOD_SIMPLICIAL;  // only the order is wanted here
+  cholmod_factor* Lg = cholmod_analyze(G, &cm);
+  cm.supernodal = supernodal;
+  cholmod_free_sparse(&G, &cm);
+  if (!Lg) return;
+  const int* perm = static_cast<const int*>(Lg->Perm);
+  std::vector<int> order;
+  order.reserve(free_dofs.size());
+  for (int t = 0; t < nn; ++t)
+    for (int d = 0; d < 4; ++d) {
+      const int dof = 4 * perm[t] + d;  // BfsSpace::dof: 4 (i (l+1) + j) + d
+      if (position[dof] >= 0) order.push_back(dof);
+    }
+  cholmod_free_factor(&Lg, &cm);
+  free_dofs.swap(order);
+  for (int r = 0; r < static_cast<int>(free_dofs.size()); ++r) position[free_dofs[r]] = r;
+#endif
+}
+
 void SmoothingSplineSolver::Impl::split_system() {
   const int n = space.num_dofs();
   const int nc = static_cast<int>(constrained.size());
   const int nf = static_cast<int>(free_dofs.size());
-  std::vector<Eigen::Triplet<double>> tf, tc, tcc;
+  std::vector<Eigen::Triplet<double>> tc, tcc;
   std::vector<int> cpos(n, -1);
   for (int c = 0; c < nc; ++c) cpos[constrained[c]] = c;
-  // C holds its lower triangle (row >= column); free_dofs is increasing, so a free-free entry
-  // stays in the lower triangle of C_ff (all the factor reads), and a free-constrained entry is
+  // C holds its lower triangle (row >= column). A free-free entry goes to the lower triangle of
+  // C_ff in the order of free_dofs (column min(p_r, p_c), row max), built directly in compressed
+  // storage (counts, then entries, then each column sorted); a free-constrained entry is
   // C_fc(row, column) or, read through the symmetry, C_fc(column, row).
+  std::vector<int> start(nf + 1, 0);
   for (int col = 0; col < C.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it) {
       const int r = position[it.row()], c = position[col];
-      if (r >= 0 && c >= 0)
-        tf.emplace_back(r, c, it.value());
-      else if (r >= 0)
+      if (r >= 0 && c >= 0) ++start[std::min(r, c) + 1];
+    }
+  for (int c = 0; c < nf; ++c) start[c + 1] += start[c];
+  Cff = Eigen::SparseMatrix<double>(nf, nf);  // lower triangle only
+  Cff.resizeNonZeros(start[nf]);
+  std::copy(start.begin(), start.end(), Cff.outerIndexPtr());
+  int* inner = Cff.innerIndexPtr();
+  double* value = Cff.valuePtr();
+  for (int col = 0; col < C.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it) {
+      const int r = position[it.row()], c = position[col];
+      if (r >= 0 && c >= 0) {
+        const int dst = start[std::min(r, c)]++;
+        inner[dst] = std::max(r, c);
+        value[dst] = it.value();
+      } else if (r >= 0) {
         tc.emplace_back(r, cpos[col], it.value());
-      else if (c >= 0)
+      } else if (c >= 0) {
         tc.emplace_back(c, cpos[it.row()], it.value());
-      else {
+      } else {
         tcc.emplace_back(cpos[it.row()], cpos[col], it.value());
         if (it.row() != col) tcc.emplace_back(cpos[col], cpos[it.row()], it.value());
       }
     }
   C = Eigen::SparseMatrix<double>();  // freed: the factorisation is the peak of the memory
-  Cff.resize(nf, nf);                 // lower triangle only
-  Cff.setFromTriplets(tf.begin(), tf.end());
-  std::vector<Eigen::Triplet<double>>().swap(tf);
+  const int* outer = Cff.outerIndexPtr();
+  for (int c = 0; c < nf; ++c)  // insertion sort of each column by row (at most 36 entries)
+    for (int p = outer[c] + 1; p < outer[c + 1]; ++p) {
+      const int row = inner[p];
+      const double v = value[p];
+      int q = p;
+      for (; q > outer[c] && inner[q - 1] > row; --q) {
+        inner[q] = inner[q - 1];
+        value[q] = value[q - 1];
+      }
+      inner[q] = row;
+      value[q] = v;
+    }
   Cfc.resize(nf, nc);
   Cfc.setFromTriplets(tc.begin(), tc.end());
   Ccc.resize(nc, nc);
@@ -366,13 +507,22 @@ void SmoothingSplineSolver::Impl::split_system() {
 
 void SmoothingSplineSolver::Impl::factor_reduced() {
 #ifdef BPDE_HAVE_CHOLMOD
-  // METIS nested dissection, the fill-reducing ordering for the 2D grid of the BFS dofs (CHOLMOD's
-  // default tries AMD first and keeps it when its fill looks acceptable; docs/performance.md "Blend").
-  ldlt.cholmod().nmethods = 1;
-  ldlt.cholmod().method[0].ordering = CHOLMOD_METIS;
-  ldlt.cholmod().postorder = 1;
-#endif
+  // C_ff is in its fill-reducing, postordered order already (order_free_dofs): the natural
+  // ordering and no postorder keep it, and CHOLMOD then factors the lower triangle we pass as it
+  // is (for any other ordering it factors two permuted transposes of it).
+  cholmod_common& cm = ldlt.cholmod();
+  cm.nmethods = 1;
+  cm.method[0].ordering = CHOLMOD_NATURAL;
+  cm.postorder = 0;
+  {
+    std::unique_ptr<SerialCholmodOpenMP> serial;
+    if (!options.threaded_factorization) serial = std::make_unique<SerialCholmodOpenMP>();
+    ldlt.analyzePattern(Cff);
+    ldlt.factorize(Cff);
+  }
+#else
   ldlt.compute(Cff);
+#endif
 #ifdef BPDE_HAVE_CHOLMOD
   factored = ldlt.info() == Eigen::Success;  // a Cholesky factor exists only for SPD matrices
 #else
@@ -515,6 +665,7 @@ SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& probl
   m.assemble(problem);
   m.split_dofs();
   if (options.method == SmoothingSplineOptions::Method::kKktLu) m.factor_kkt();
+  if (options.method == SmoothingSplineOptions::Method::kElimination) m.order_free_dofs();
   m.split_system();  // frees C
   if (options.method == SmoothingSplineOptions::Method::kElimination) m.factor_reduced();
 }
