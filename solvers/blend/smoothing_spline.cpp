@@ -222,7 +222,8 @@ struct SmoothingSplineSolver::Impl {
   void split_system();
   /// Σ over elements of |M c_e|² (c_e: the 16 by 3 rows of c of element e), i.e. tr(cᵀ R c) for
   /// M = B, without R (a sum of squares).
-  double element_sum(const Eigen::Matrix<double, 48, 16>& M, const Eigen::MatrixX3d& c) const;
+  /// With abs, of |M| |c_e| for M = |B| (the rounding scale), |c| taken on the fly.
+  double element_sum(const Eigen::Matrix<double, 48, 16>& M, const Eigen::MatrixX3d& c, bool abs = false) const;
   /// S·x and |S|·|x| for a symmetric S stored as its lower triangle.
   static void symmetric_products(const Eigen::SparseMatrix<double>& S, const Eigen::MatrixX3d& x, Eigen::MatrixX3d& Sx,
                                  Eigen::MatrixX3d& Sabs_x);
@@ -232,9 +233,11 @@ struct SmoothingSplineSolver::Impl {
   /// With CHOLMOD, for the elimination route: free_dofs and position in a fill-reducing order of
   /// the reduced system, so that C_ff is built already permuted and CHOLMOD factors it in the
   /// natural order (no permuted transposes of C_ff beside the factor). The order is that of the
-  /// nodes: METIS nested dissection of the node graph (node (i, j) couples with the 3 x 3 nodes
-  /// around it), followed by CHOLMOD's weighted postorder of its elimination tree, each node's
-  /// free dofs kept together (they have the same couplings); docs/performance.md "Blend".
+  /// nodes: CHOLMOD's nested dissection (NESDIS: METIS node separators, CAMD on the parts; less
+  /// fill and fewer flops than METIS_NodeND or AMD here) of the node graph (node (i, j) couples
+  /// with the 3 x 3 nodes around it), followed by CHOLMOD's weighted postorder of its elimination
+  /// tree, each node's free dofs kept together (they have the same couplings);
+  /// docs/performance.md "Blend".
   void order_free_dofs();
   /// The KKT matrix of eq. (8), equilibrated, by sparse LU.
   void factor_kkt();
@@ -249,7 +252,8 @@ struct SmoothingSplineSolver::Impl {
   /// α from the factorisation (the right-hand side F of eq. (8) and y).
   Eigen::MatrixX3d solve_linear(const Eigen::MatrixX3d& F, const Eigen::MatrixX3d& y) const;
   struct Residuals {
-    Eigen::MatrixX3d g;   ///< Cα - F
+    Eigen::MatrixX3d g;   ///< Cα - F at the constrained dofs (the order of constrained); the free
+                          ///< rows are reduced to their maximum at once (not stored: memory)
     double stationarity;  ///< max |g_free| / max (|C||α| + |F|)_free
     double constraint;    ///< max |α_c - y| / max(|y|, |α|)
   };
@@ -331,15 +335,18 @@ Eigen::SparseMatrix<double> SmoothingSplineSolver::Impl::assemble_system() const
   return C;
 }
 
-double SmoothingSplineSolver::Impl::element_sum(const Eigen::Matrix<double, 48, 16>& M,
-                                                const Eigen::MatrixX3d& c) const {
+double SmoothingSplineSolver::Impl::element_sum(const Eigen::Matrix<double, 48, 16>& M, const Eigen::MatrixX3d& c,
+                                                bool abs) const {
   double sum = 0;
   Eigen::Matrix<double, 16, 3> ce;
   for (int i = 0; i < space.k(); ++i)
     for (int j = 0; j < space.l(); ++j) {
       const auto idx = space.element_dofs(i, j);
-      for (int r = 0; r < 16; ++r) ce.row(r) = c.row(idx[r]);
-      sum += (M * ce).squaredNorm();
+      if (abs)
+        for (int r = 0; r < 16; ++r) ce.row(r) = c.row(idx[r]).cwiseAbs();
+      else
+        for (int r = 0; r < 16; ++r) ce.row(r) = c.row(idx[r]);
+      sum += M.lazyProduct(ce).squaredNorm();  // coefficient-based: no packing for a 48x16 by 16x3 product
     }
   return sum;
 }
@@ -425,7 +432,7 @@ void SmoothingSplineSolver::Impl::order_free_dofs() {
   Gp[nn] = q;
   const int supernodal = cm.supernodal;
   cm.nmethods = 1;
-  cm.method[0].ordering = CHOLMOD_METIS;
+  cm.method[0].ordering = CHOLMOD_NESDIS;
   cm.postorder = 1;
   cm.supernodal = CHOLMOD_SIMPLICIAL;  // only the order is wanted here
   cholmod_factor* Lg = cholmod_analyze(G, &cm);
@@ -485,7 +492,10 @@ void SmoothingSplineSolver::Impl::split_system() {
         if (it.row() != col) tcc.emplace_back(cpos[col], cpos[it.row()], it.value());
       }
     }
-  C = Eigen::SparseMatrix<double>();  // freed: the factorisation is the peak of the memory
+  // Freed: the factorisation is the peak of the memory. (Not `C = SparseMatrix()`: Eigen's copy
+  // assignment from an empty matrix keeps C's value and index arrays allocated; it did so here
+  // until this was measured, docs/performance.md "Blend".)
+  Eigen::SparseMatrix<double>().swap(C);
   const int* outer = Cff.outerIndexPtr();
   for (int c = 0; c < nf; ++c)  // insertion sort of each column by row (at most 36 entries)
     for (int p = outer[c] + 1; p < outer[c + 1]; ++p) {
@@ -556,8 +566,10 @@ Eigen::MatrixX3d SmoothingSplineSolver::Impl::boundary_values(const SmoothingSpl
 Eigen::MatrixX3d SmoothingSplineSolver::Impl::solve_linear(const Eigen::MatrixX3d& F, const Eigen::MatrixX3d& y) const {
   const int n = space.num_dofs();
   const int nc = static_cast<int>(constrained.size());
-  Eigen::MatrixX3d alpha = Eigen::MatrixX3d::Zero(n, 3);
+  // (The arrays here are n by 3 and live beside the factor: each is allocated only when the
+  // previous ones are freed; the solve is the peak of the memory, docs/performance.md "Blend".)
   if (options.method == SmoothingSplineOptions::Method::kKktLu) {
+    Eigen::MatrixX3d alpha(n, 3);
     Eigen::MatrixXd rhs(n + nc, 3);
     rhs.topRows(n) = F;
     rhs.bottomRows(nc) = kkt_scale * y;
@@ -566,14 +578,19 @@ Eigen::MatrixX3d SmoothingSplineSolver::Impl::solve_linear(const Eigen::MatrixX3
     // The constrained dofs are data: the LU returns them to rounding, the contract bit-exact. The
     // stationarity residual is then measured at the data themselves.
     for (int c = 0; c < nc; ++c) alpha.row(constrained[c]) = y.row(c);
-  } else {
-    const int nf = static_cast<int>(free_dofs.size());
+    return alpha;
+  }
+  const int nf = static_cast<int>(free_dofs.size());
+  Eigen::MatrixXd af;
+  {
     Eigen::MatrixXd Ff(nf, 3);
     for (int r = 0; r < nf; ++r) Ff.row(r) = F.row(free_dofs[r]);
-    const Eigen::MatrixXd af = ldlt.solve(Ff - Cfc * y);
-    for (int r = 0; r < nf; ++r) alpha.row(free_dofs[r]) = af.row(r);
-    for (int c = 0; c < nc; ++c) alpha.row(constrained[c]) = y.row(c);
+    Ff -= Cfc * y;  // the product into a temporary first (no noalias): the numbers of Ff - Cfc y
+    af = ldlt.solve(Ff);
   }
+  Eigen::MatrixX3d alpha(n, 3);
+  for (int r = 0; r < nf; ++r) alpha.row(free_dofs[r]) = af.row(r);
+  for (int c = 0; c < nc; ++c) alpha.row(constrained[c]) = y.row(c);
   return alpha;
 }
 
@@ -592,12 +609,11 @@ SmoothingSplineSolver::Impl::Residuals SmoothingSplineSolver::Impl::residuals(co
   gf += Cfc * ac;
   sf += Cfc.cwiseAbs() * ac.cwiseAbs();
   const Eigen::MatrixX3d gc = Cfc.transpose() * af + Ccc * ac;
-  Residuals res{Eigen::MatrixX3d(alpha.rows(), 3), 0.0, 0.0};
-  for (int r = 0; r < nf; ++r) res.g.row(free_dofs[r]) = gf.row(r) - F.row(free_dofs[r]);
-  for (int c = 0; c < nc; ++c) res.g.row(constrained[c]) = gc.row(c) - F.row(constrained[c]);
+  Residuals res{Eigen::MatrixX3d(nc, 3), 0.0, 0.0};
+  for (int c = 0; c < nc; ++c) res.g.row(c) = gc.row(c) - F.row(constrained[c]);
   double gmax = 0, smax = 0;
   for (int r = 0; r < nf; ++r) {
-    gmax = std::max(gmax, res.g.row(free_dofs[r]).cwiseAbs().maxCoeff());
+    gmax = std::max(gmax, (gf.row(r) - F.row(free_dofs[r])).cwiseAbs().maxCoeff());
     smax = std::max(smax, (sf.row(r) + F.row(free_dofs[r]).cwiseAbs()).maxCoeff());
   }
   res.stationarity = smax > 0 ? gmax / smax : gmax;
@@ -616,7 +632,8 @@ SmoothingSplineSolver::Impl::Functional SmoothingSplineSolver::Impl::functional(
   f.misfit = r.squaredNorm();
   f.max_error = r.rows() ? r.rowwise().norm().maxCoeff() : 0.0;
   f.energy = element_sum(B, c);  // tr(cᵀ R c), element by element
-  f.J = f.misfit + problem.epsilon * (f.energy - 2 * (load.transpose() * c).trace());
+  const double load_term = load.rows() ? (load.transpose() * c).trace() : 0.0;  // load empty: f = 0
+  f.J = f.misfit + problem.epsilon * (f.energy - 2 * load_term);
   return f;
 }
 
@@ -626,7 +643,7 @@ void SmoothingSplineSolver::Impl::judge(const SmoothingSplineProblem& problem, c
   summary.residual = res.stationarity;
   // σ must do at least as well as the feasible field with the free dofs at 0; |σ|_L² >= 0; and
   // without load 0 <= J(σ) <= J0.
-  const double en_abs = element_sum(B_abs, alpha.cwiseAbs());  // the rounding scale of the energy's sum
+  const double en_abs = element_sum(B_abs, alpha, true);  // the rounding scale of the energy's sum
   if (J.J > J0.J + 1e-9 * (std::abs(J0.J) + std::abs(J.J)) || J.energy < -1e-10 * en_abs ||
       (!problem.load && J.J < -1e-9 * J0.J)) {
     summary.set_failed(Status::NumericalLimit,
@@ -690,17 +707,20 @@ SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplinePr
   const int n = V.num_dofs();
   const int nc = static_cast<int>(m.constrained.size());
 
-  // right-hand sides
-  Eigen::MatrixX3d Fload = Eigen::MatrixX3d::Zero(n, 3);
+  // right-hand sides (Fload stays empty without a load: f = 0)
+  Eigen::MatrixX3d Fload;
   if (problem.load) Fload = V.assemble_load(problem.load, m.options.load_quadrature);
-  const Eigen::MatrixX3d F = Eigen::MatrixX3d(m.A.transpose() * problem.data) + problem.epsilon * Fload;
+  Eigen::MatrixX3d F = m.A.transpose() * problem.data;
+  if (problem.load) F += problem.epsilon * Fload;
   const Eigen::MatrixX3d y = m.boundary_values(problem);
 
-  Eigen::MatrixX3d alpha = Eigen::MatrixX3d::Zero(n, 3);
-  if (!m.factored)
+  Eigen::MatrixX3d alpha;
+  if (!m.factored) {
     summary.set_failed(Status::NotUnique, m.factor_message);
-  else
+    alpha = Eigen::MatrixX3d::Zero(n, 3);
+  } else {
     alpha = m.solve_linear(F, y);
+  }
 
   const Residuals res = m.residuals(alpha, F, y);
   // The feasible field with the free dofs at 0: σ must do at least as well.
@@ -722,9 +742,9 @@ SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplinePr
       m.judge(problem, alpha, J, J0, res, summary);
     }
   }
-  SmoothingSplineResult result{SmoothingSpline(V, alpha), J.J, J.misfit, J.energy, J.max_error, {}, {}};
+  SmoothingSplineResult result{SmoothingSpline(V, std::move(alpha)), J.J, J.misfit, J.energy, J.max_error, {}, {}};
   result.multipliers.resize(nc, 3);
-  for (int c = 0; c < nc; ++c) result.multipliers.row(c) = -res.g.row(m.constrained[c]);
+  for (int c = 0; c < nc; ++c) result.multipliers.row(c) = -res.g.row(c);
   if (!result.multipliers.allFinite()) result.multipliers.setZero();
   if (!std::isfinite(summary.residual)) summary.residual = 0.0;
   summary.iterations = 0;
