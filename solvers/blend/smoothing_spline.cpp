@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -233,11 +234,10 @@ struct SmoothingSplineSolver::Impl {
   /// With CHOLMOD, for the elimination route: free_dofs and position in a fill-reducing order of
   /// the reduced system, so that C_ff is built already permuted and CHOLMOD factors it in the
   /// natural order (no permuted transposes of C_ff beside the factor). The order is that of the
-  /// nodes: CHOLMOD's nested dissection (NESDIS: METIS node separators, CAMD on the parts; less
-  /// fill and fewer flops than METIS_NodeND or AMD here) of the node graph (node (i, j) couples
-  /// with the 3 x 3 nodes around it), followed by CHOLMOD's weighted postorder of its elimination
-  /// tree, each node's free dofs kept together (they have the same couplings);
-  /// docs/performance.md "Blend".
+  /// nodes: nested dissection of the node grid by grid lines (node (i, j) couples with the 3 x 3
+  /// nodes around it; less fill than METIS_NodeND, AMD or CHOLMOD's NESDIS here, and no METIS
+  /// run), followed by CHOLMOD's weighted postorder of its elimination tree, each node's free dofs
+  /// kept together (they have the same couplings); docs/performance.md "Blend".
   void order_free_dofs();
   /// The KKT matrix of eq. (8), equilibrated, by sparse LU.
   void factor_kkt();
@@ -430,12 +430,35 @@ void SmoothingSplineSolver::Impl::order_free_dofs() {
           if (jj >= 0 && jj <= space.l()) Gi[q++] = (i + 1) * L1 + jj;
     }
   Gp[nn] = q;
+  // Nested dissection of the node grid (George's, on the grid itself): a line of nodes across the
+  // longer side of a box separates its two halves (the couplings reach the 3 x 3 neighbours
+  // only); the halves first, recursively down to single nodes, the separator last.
+  std::vector<int> nd;
+  nd.reserve(nn);
+  std::function<void(int, int, int, int)> dissect = [&](int i0, int i1, int j0, int j1) {
+    if (i0 > i1 || j0 > j1) return;
+    if (i0 == i1 && j0 == j1) {
+      nd.push_back(i0 * L1 + j0);
+    } else if (i1 - i0 >= j1 - j0) {
+      const int m = (i0 + i1) / 2;
+      dissect(i0, m - 1, j0, j1);
+      dissect(m + 1, i1, j0, j1);
+      for (int j = j0; j <= j1; ++j) nd.push_back(m * L1 + j);
+    } else {
+      const int m = (j0 + j1) / 2;
+      dissect(i0, i1, j0, m - 1);
+      dissect(i0, i1, m + 1, j1);
+      for (int i = i0; i <= i1; ++i) nd.push_back(i * L1 + m);
+    }
+  };
+  dissect(0, space.k(), 0, space.l());
+  // CHOLMOD follows it with the weighted postorder of its elimination tree (better supernodes).
   const int supernodal = cm.supernodal;
   cm.nmethods = 1;
-  cm.method[0].ordering = CHOLMOD_NESDIS;
+  cm.method[0].ordering = CHOLMOD_GIVEN;
   cm.postorder = 1;
   cm.supernodal = CHOLMOD_SIMPLICIAL;  // only the order is wanted here
-  cholmod_factor* Lg = cholmod_analyze(G, &cm);
+  cholmod_factor* Lg = cholmod_analyze_p(G, nd.data(), nullptr, 0, &cm);
   cm.supernodal = supernodal;
   cholmod_free_sparse(&G, &cm);
   if (!Lg) return;
