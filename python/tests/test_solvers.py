@@ -262,7 +262,7 @@ def test_options_have_the_cpp_defaults():
     p = bezierpde.BSplinePdeOptions()
     assert (p.fixed, p.rank_tolerance, p.consistency_tolerance) == ("boundary", 1e-10, 1e-10)
     s = bezierpde.SmoothingSplineOptions()
-    assert (s.method, s.load_quadrature) == ("elimination", 6)
+    assert (s.method, s.load_quadrature, s.threaded_factorization) == ("elimination", 6, False)
     q = bezierpde.SmoothingSplineProblem()
     assert (q.k, q.l, q.a, q.epsilon) == (8, 4, 1.0, 1.0) and q.y0_value.shape == (0, 3)
     for o in (e, b, p, s):
