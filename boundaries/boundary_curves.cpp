@@ -179,6 +179,8 @@ BoundaryCurve BoundaryCurve::arc_through(const Eigen::Vector3d& p0, const Eigen:
   if (a1 <= 0) a1 += 2 * std::numbers::pi;
   arc.angle0 = 0.0;
   arc.angle1 = a1;
+  arc.from = p0;
+  arc.to = p1;
   if (!arc.center.allFinite() || !std::isfinite(r) || !(r > 0))
     throw NonFiniteError("through: the circle through the three points overflows");
   return BoundaryCurve(arc, "arc");
@@ -215,6 +217,8 @@ Eigen::Vector3d BoundaryCurve::evaluate(double t) const {
     return ((1 - w) * s->points.row(i - 1) + w * s->points.row(i)).transpose();
   }
   if (const auto* a = std::get_if<Arc>(&data_)) {
+    if (t == 0.0 && a->from) return *a->from;
+    if (t == 1.0 && a->to) return *a->to;
     const double ang = t == 1.0 ? a->angle1 : a->angle0 + t * (a->angle1 - a->angle0);
     Eigen::Vector3d x = a->center + a->radius * (std::cos(ang) * a->e1 + std::sin(ang) * a->e2);
     if (a->helix) x += (a->pitch * ang / (2 * std::numbers::pi)) * a->normal;

@@ -17,7 +17,9 @@
 //            default reference is (1,0,0), or (0,1,0) when |N_x| > 0.9.
 //            The three-point form (p0, pm, p1) is the arc from p0 through pm to p1: its center is
 //            the circumcenter, N = (pm - p0) x (p1 - pm) normalised, e1 = (p0 - center)/r, a0 = 0
-//            and a1 in (0, 2π) the angle of p1.
+//            and a1 in (0, 2π) the angle of p1; c(0) = p0 and c(1) = p1 exactly (the given points,
+//            not the circle's rounding of them), so that a corner it shares with another edge's
+//            given point is that point exactly.
 //   helix    the arc about the axis N through `center`, rising by `pitch` per turn:
 //            c(t) = center + r (cos a e1 + sin a e2) + (pitch a / 2π) N.
 //   function any c(t) given as a C++ callable (the named reference boundaries; not a JSON form).
@@ -59,6 +61,8 @@ class BoundaryCurve {
     Eigen::Vector3d center, e1, e2, normal;
     double radius = 1, angle0 = 0, angle1 = 1, pitch = 0;
     bool helix = false;
+    /// The three-point form's p0 and p1: c(0) and c(1) exactly.
+    std::optional<Eigen::Vector3d> from, to;
   };
   struct Function {
     std::function<Eigen::Vector3d(double)> f;

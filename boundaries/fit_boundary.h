@@ -29,7 +29,9 @@
 // Corners: the edges must meet, |c_e(1) - c_{e+1}(0)| <= corner_tolerance * max(1, d) with d the
 // diagonal of the bounding box of the curves' end points (ParameterError naming the two edges and
 // the gap otherwise). The corner control point is the mean of the two fitted end points, shared
-// exactly by both edges.
+// exactly by both edges. Every fit keeps the curve's end points c(0), c(1) as its end control
+// points, so where both edges end at the same given point (a segment's, a Bézier curve's or the
+// samples' end point, a three-point arc's p0 or p1) the corner is that point bit for bit.
 //
 // C¹ data: tangent field T_e(t) along edge e (same parameter t as the edge) = the derivative of
 // the surface across the edge, into the domain:

@@ -6,7 +6,8 @@
 # OFF, portable code).
 # Builds the bpde_* libraries as shared libraries (-DBUILD_SHARED_LIBS=ON: bpde, the tests, the
 # examples and the Python module link build/libbpde_*.so) unless BPDE_SHARED_LIBS=OFF is set;
-# scripts/test.sh configures build/ the same way, so neither rebuilds the other's tree. CMake's
+# scripts/test.sh runs this script, so both configure build/ the same way (native and shared by
+# default, the same environment switches) and neither rebuilds the other's tree. CMake's
 # own default (a plain `cmake -S . -B build`) is static archives (README, "Library use").
 set -euo pipefail
 cd "$(dirname "$0")/.."

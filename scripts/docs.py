@@ -14,7 +14,13 @@ and the same markers stand in the docs where the tables go: the example's README
 docs/*.md. This script runs the programs and replaces what stands between each pair of markers by
 what the program printed. With --check it writes nothing and fails (exit 1) when a section
 differs, when a program prints a section that no doc holds, or when a doc holds a section that no
-program printed. Columns named in `machine-dependent:` (timings) are not compared.
+program printed. Columns named in `machine-dependent:` (timings) are not compared. The columns
+that ROUNDING below names for a section hold numbers whose last printed digit depends on how the
+build rounds (FMA contraction with -march=native against the portable build, docs/performance.md
+section 2): there each number may differ from the documented one by one unit of its last printed
+digit (1.000001 against 1.000002; -0.0000 against 0.0000), and a bound "< 1eK"
+(examples/common/generated.h, order_bound) by one power of ten; the text around the numbers must
+be the same. Anything more is a difference.
 
 Heavy tables: sections whose name ends in "-full" are printed only when the program runs with the
 extra arguments of FULL_ARGS (minutes, not for CI). `--full` runs those programs with them and
@@ -31,6 +37,7 @@ import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 BEGIN = re.compile(r"^<!-- generated: ([A-Za-z0-9_.-]+)(?:; machine-dependent: ([^>]*?))? -->$")
+NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 END = "<!-- end -->"
 
 # Arguments of each program ({src}: its example folder, {tmp}: a scratch folder); default none.
@@ -56,8 +63,23 @@ def is_full(name):
     return name.endswith("-full")
 
 
+# The columns of a section whose numbers are rounding-dependent in their last printed digit,
+# measured against a -march=native build (docs/performance.md, section 2).
+ROUNDING = {
+    "cmc-fig2-jobs": ["H mean"],  # -0.0000 portable, 0.0000 native (H = 0)
+    # square n = 16: H min 0.999999 / 1.000000, |H_mean - 1| 3.3e-08 / 3.2e-08 (portable / native)
+    "cmc-sphere-convergence": ["H min / max", "\\|H_mean − 1\\|"],
+}
+
+
+def column_keys(name, cols):
+    """{"machine-dependent": [COL, ...], "rounding": [COL, ...]} of a section."""
+    return {"machine-dependent": [c.strip() for c in cols.split(",")] if cols else [],
+            "rounding": ROUNDING.get(name, [])}
+
+
 def blocks(lines, where):
-    """{name: (machine-dependent columns, [lines])} of the marked sections of `lines`."""
+    """{name: (column keys, [lines])} of the marked sections of `lines`."""
     out, name = {}, None
     for i, line in enumerate(lines):
         m = BEGIN.match(line.strip())
@@ -68,7 +90,7 @@ def blocks(lines, where):
             if name in out:
                 sys.exit(f"{where}:{i + 1}: section {name} appears twice")
         elif line.strip() == END and name is not None:
-            out[name] = ([c.strip() for c in cols.split(",")] if cols else [], body)
+            out[name] = (column_keys(name, cols), body)
             name = None
         elif name is not None:
             body.append(line)
@@ -77,25 +99,72 @@ def blocks(lines, where):
     return out
 
 
-def masked(body, columns):
-    """The lines of a section with the cells of the named table columns replaced by '*'."""
-    if not columns:
-        return body
-    out, skip = [], set()
+def split_cells(line):
+    return re.split(r"(?<!\\)\|", line.strip()[1:-1])  # cells; "\|" is a pipe inside a cell
+
+
+def table_kinds(body, keys):
+    """Per line of `body`: {cell index: "machine-dependent" | "rounding"} of the table it is in
+    (from the table's header line), {} outside tables."""
+    named = {c: k for k in ("machine-dependent", "rounding") for c in keys[k]}
+    out, kinds, header = [], {}, False
     for line in body:
         if not line.startswith("|"):
-            out.append(line)
-            skip = set()
+            kinds, header = {}, False
+        elif not header and not set(line) <= set("|-: \n"):
+            header = True
+            kinds = {i: named[c.strip()] for i, c in enumerate(split_cells(line)) if c.strip() in named}
+            out.append({})  # the header itself is compared as text
             continue
-        cells = re.split(r"(?<!\\)\|", line.strip()[1:-1])  # cells; "\|" is a pipe inside a cell
-        if not skip and not set(line) <= set("|-: \n"):
-            names = [c.strip() for c in cells]
-            if any(c in names for c in columns):
-                skip = {i for i, c in enumerate(names) if c in columns}
-                out.append(line)
-                continue
-        out.append("|" + "|".join("*" if i in skip else c for i, c in enumerate(cells)) + "|")
+        out.append(kinds)
     return out
+
+
+def last_digit_unit(text):
+    """One unit of the last printed digit of a number as printed ("1.0000112" -> 1e-7)."""
+    mantissa, _, exponent = text.lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 10.0 ** (int(exponent or 0) - decimals)
+
+
+def same_rounding_cell(doc, new):
+    """True when two cells agree up to rounding: the same text around the numbers, each number
+    within one unit of its last printed digit, a bound "< 1eK" within one power of ten."""
+    a, b = NUMBER.findall(doc), NUMBER.findall(new)
+    if len(a) != len(b) or NUMBER.sub("#", doc).strip() != NUMBER.sub("#", new).strip():
+        return False
+    bound = doc.strip().startswith("<")
+    for x, y in zip(a, b):
+        if bound:
+            ex, ey = x.lower().partition("e")[2], y.lower().partition("e")[2]
+            if not (ex and ey and abs(int(ex) - int(ey)) <= 1 and float(x) > 0 and float(y) > 0):
+                return False
+        elif abs(float(x) - float(y)) > 1.0001 * max(last_digit_unit(x), last_digit_unit(y)):
+            return False
+    return True
+
+
+def same_section(doc_body, new_body, keys):
+    """The documented and the printed section agree: equal, but for the cells of machine-dependent
+    columns (not compared) and of rounding columns (same_rounding_cell)."""
+    if len(doc_body) != len(new_body):
+        return False
+    kinds_doc, kinds_new = table_kinds(doc_body, keys), table_kinds(new_body, keys)
+    for d, n, kd, kn in zip(doc_body, new_body, kinds_doc, kinds_new):
+        if d == n:
+            continue
+        if not kd or kd != kn:
+            return False
+        cd, cn = split_cells(d), split_cells(n)
+        if len(cd) != len(cn):
+            return False
+        for i, (x, y) in enumerate(zip(cd, cn)):
+            kind = kd.get(i)
+            if kind == "machine-dependent" or x == y:
+                continue
+            if kind != "rounding" or not same_rounding_cell(x, y):
+                return False
+    return True
 
 
 def run(example, build, tmp, full=False):
@@ -144,14 +213,14 @@ def main():
             m = BEGIN.match(line.strip())
             if m and m.group(1) in printed:
                 name = m.group(1)
-                e, cols, body = printed[name]
+                e, keys, body = printed[name]
                 placed.add(name)
-                same = masked(held[name][1], cols) == masked(body, cols)
+                same = same_section(held[name][1], body, keys)
                 if not same:
                     problems.append(f"{doc.relative_to(ROOT)}: section {name} differs from what "
                                     f"example_{e} prints (regenerate: bash scripts/docs.sh)")
                 new.append(line)
-                new.extend(held[name][1] if same else body)  # same up to timings: left as it is
+                new.extend(held[name][1] if same else body)  # same up to timings and rounding: left as it is
                 continue
             if m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
                 problems.append(f"{doc.relative_to(ROOT)}: section {m.group(1)} is printed by no example program")

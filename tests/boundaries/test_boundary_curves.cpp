@@ -41,6 +41,10 @@ TEST(BoundaryCurves, ArcThroughThreePointsIsTheCircleThroughThem) {
   const BoundaryCurve c = BoundaryCurve::arc_through(ang(0.3), ang(1.0), ang(2.2));
   EXPECT_EQ(c.kind(), "arc");
   for (double t : {0.0, 0.2, 0.5, 0.9, 1.0}) EXPECT_LT((c.evaluate(t) - ang(0.3 + t * 1.9)).norm(), 1e-13) << t;
+  // Its ends are the given points bit for bit (center + r e1 rounds them by ~1e-16, differently
+  // with and without FMA contraction), so a corner shared with another edge is exact.
+  EXPECT_EQ(c.start(), ang(0.3));
+  EXPECT_EQ(c.end(), ang(2.2));
   // Through a point beyond a half turn: the arc goes the long way, via pm.
   const BoundaryCurve l = BoundaryCurve::arc_through(Vector3d(1, 0, 0), Vector3d(-1, 0, 0), Vector3d(0, -1, 0));
   EXPECT_LT((l.evaluate(1.0 / 3) - Vector3d(0, 1, 0)).norm(), 1e-15);  // angle π/2 of 3π/2

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <numbers>
 #include <string>
@@ -65,7 +66,14 @@ TEST(C1Configurations, JobFilesAreTheDocumentedConfigurations) {
       const auto& data = std::get<bpde::TensorNet>(job.net);
       ASSERT_EQ(data.n(), c1ex::kDegree);
       ASSERT_EQ(data.m(), c1ex::kDegree);
-      EXPECT_LE((data.points() - c.net.points()).cwiseAbs().maxCoeff(), 1e-15);
+      // The closed-form configurations agree to 1e-15 in both builds. sphere-fig6 is a tensor
+      // interpolant (two LU solves of the degree-7 collocation matrix, configurations.h), whose
+      // rounding depends on FMA contraction: the files (written by a portable build) match it
+      // exactly there and to 2.0e-14 with -march=native (docs/performance.md, section 2); 3e-14 is
+      // 1.5x that, while any change of the configuration itself moves points by far more.
+      const double diff = (data.points() - c.net.points()).cwiseAbs().maxCoeff();
+      std::cout << c.name << " " << kind << ": job file - configuration " << diff << "\n";
+      EXPECT_LE(diff, c.name == "sphere-fig6" ? 3e-14 : 1e-15);
     }
   }
 }
