@@ -2,7 +2,9 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -41,6 +43,27 @@ void duffy_rule(const std::vector<Tri>& tris, int q, Eigen::MatrixX2d& uv, Eigen
   }
 }
 
+// The six triangles of T cut by the centroid and the edge midpoints, each collapsed at its corner
+// of T; the eight of the unit square (each quadrant split by its diagonal), collapsed at the
+// square's corners (area_functional.h, "The rules").
+std::vector<Tri> triangle_pieces() {
+  const Eigen::Vector2d A(1, 0), B(0, 1), C(0, 0), G(1.0 / 3, 1.0 / 3);
+  const Eigen::Vector2d mAB = (A + B) / 2, mAC = (A + C) / 2, mBC = (B + C) / 2;
+  return {{A, mAB, G}, {A, mAC, G}, {B, mAB, G}, {B, mBC, G}, {C, mAC, G}, {C, mBC, G}};
+}
+
+std::vector<Tri> square_pieces() {
+  const Eigen::Vector2d M(0.5, 0.5);
+  std::vector<Tri> tris;
+  for (int cu = 0; cu <= 1; ++cu)
+    for (int cv = 0; cv <= 1; ++cv) {
+      const Eigen::Vector2d corner(cu, cv);
+      tris.push_back({corner, Eigen::Vector2d(0.5, cv), M});
+      tris.push_back({corner, Eigen::Vector2d(cu, 0.5), M});
+    }
+  return tris;
+}
+
 void check_q(int q) {
   if (q < 1 || q > 200)
     throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
@@ -70,12 +93,9 @@ AreaForm AreaForm::triangular(int n, int q) {
     throw DegreeError("AreaForm: triangular degree " + std::to_string(n) + " is outside 1.." +
                       std::to_string(kMaxDegree));
   check_q(q);
-  const Eigen::Vector2d A(1, 0), B(0, 1), C(0, 0), G(1.0 / 3, 1.0 / 3);
-  const Eigen::Vector2d mAB = (A + B) / 2, mAC = (A + C) / 2, mBC = (B + C) / 2;
-  const std::vector<Tri> tris = {{A, mAB, G}, {A, mAC, G}, {B, mAB, G}, {B, mBC, G}, {C, mAC, G}, {C, mBC, G}};
   Eigen::MatrixX2d uv;
   AreaForm f;
-  duffy_rule(tris, q, uv, f.w_);
+  duffy_rule(triangle_pieces(), q, uv, f.w_);
   f.q_ = q;
   f.Bu_ = triangular_basis_table(n, uv, 1, 0);
   f.Bv_ = triangular_basis_table(n, uv, 0, 1);
@@ -87,17 +107,9 @@ AreaForm AreaForm::tensor(int n, int m, int q) {
     throw DegreeError("AreaForm: tensor degree (" + std::to_string(n) + ", " + std::to_string(m) + ") is outside 1.." +
                       std::to_string(kMaxDegree));
   check_q(q);
-  const Eigen::Vector2d M(0.5, 0.5);
-  std::vector<Tri> tris;
-  for (int cu = 0; cu <= 1; ++cu)
-    for (int cv = 0; cv <= 1; ++cv) {
-      const Eigen::Vector2d corner(cu, cv);
-      tris.push_back({corner, Eigen::Vector2d(0.5, cv), M});
-      tris.push_back({corner, Eigen::Vector2d(cu, 0.5), M});
-    }
   Eigen::MatrixX2d uv;
   AreaForm f;
-  duffy_rule(tris, q, uv, f.w_);
+  duffy_rule(square_pieces(), q, uv, f.w_);
   f.q_ = q;
   const Eigen::VectorXd us = uv.col(0), vs = uv.col(1);
   const Eigen::MatrixXd Tu0 = bernstein_table(n, us, 0), Tu1 = bernstein_table(n, us, 1);
@@ -221,12 +233,66 @@ Eigen::MatrixXd AreaForm::hessian(const Eigen::MatrixX3d& P, const std::vector<i
   return Hs;
 }
 
-double area(const TriangularNet& net) {
-  return AreaForm::cached_triangular(net.n(), std::min(200, 3 * net.n() + 8))->value(net.points());
+namespace {
+
+// The report's area of one net (area() below) needs no node tables of the control points: it
+// evaluates x_u and x_v from the derivative nets, a block of nodes at a time, so that its memory
+// stays O(block × N) whatever q (the tables of AreaForm are #nodes × N twice: 232 MB at
+// triangular n = 25, q = 83) and nothing is kept between calls.
+constexpr Eigen::Index kAreaBlock = 1024;
+
+double streamed_area(const Eigen::MatrixX2d& uv, const Eigen::VectorXd& w,
+                     const std::function<void(const Eigen::MatrixX2d&, Eigen::MatrixX3d&, Eigen::MatrixX3d&)>& eval) {
+  double A = 0.0;
+  Eigen::MatrixX3d Xu, Xv;
+  for (Eigen::Index r0 = 0; r0 < uv.rows(); r0 += kAreaBlock) {
+    const Eigen::Index len = std::min(kAreaBlock, uv.rows() - r0);
+    eval(uv.middleRows(r0, len), Xu, Xv);
+    A += w.segment(r0, len).dot(cross_rows(Xu, Xv).rowwise().norm());
+  }
+  return A;
 }
+
+int report_q(int n) { return std::min(200, 3 * n + 8); }
+
+}  // namespace
+
+double area(const TriangularNet& net) {
+  const int n = net.n();
+  Eigen::MatrixX2d uv;
+  Eigen::VectorXd w;
+  duffy_rule(triangle_pieces(), report_q(n), uv, w);
+  const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
+  return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
+    const Eigen::MatrixXd B = TriangularNet::basis_matrix(n - 1, b);
+    Xu = times(B, Du);
+    Xv = times(B, Dv);
+  });
+}
+
 double area(const TensorNet& net) {
-  return AreaForm::cached_tensor(net.n(), net.m(), std::min(200, 3 * std::max(net.n(), net.m()) + 8))
-      ->value(net.points());
+  const int n = net.n(), m = net.m();
+  Eigen::MatrixX2d uv;
+  Eigen::VectorXd w;
+  duffy_rule(square_pieces(), report_q(std::max(n, m)), uv, w);
+  // Derivative nets: degree (n-1, m) for x_u and (n, m-1) for x_v, rows i(m'+1) + j.
+  const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
+  return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
+    const Eigen::VectorXd us = b.col(0), vs = b.col(1);
+    const Eigen::MatrixXd Tu0 = bernstein_table(n, us), Tu1 = bernstein_table(n - 1, us);
+    const Eigen::MatrixXd Tv0 = bernstein_table(m, vs), Tv1 = bernstein_table(m - 1, vs);
+    Xu.resize(b.rows(), 3);
+    Xv.resize(b.rows(), 3);
+    for (int c = 0; c < 3; ++c) {
+      // x_u,c(r) = sum_i Tu1(r, i) sum_j Du_c(i, j) Tv0(r, j), and likewise x_v.
+      const Eigen::MatrixXd Gu = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>(
+          Du.col(c).data(), n, m + 1, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(1, m + 1));
+      const Eigen::MatrixXd Gv = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>(
+          Dv.col(c).data(), n + 1, m, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(1, m));
+      Xu.col(c) = (Tu1 * Gu).cwiseProduct(Tv0).rowwise().sum();
+      Xv.col(c) = (Tu0 * Gv).cwiseProduct(Tv1).rowwise().sum();
+    }
+  });
 }
 
 }  // namespace bpde
