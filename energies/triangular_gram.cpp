@@ -1,6 +1,8 @@
 #include "bezierpde/energies/triangular_gram.h"
 
+#include <Eigen/SparseCore>
 #include <cmath>
+#include <vector>
 #include <string>
 
 #include "bezierpde/core/bernstein.h"
@@ -120,17 +122,29 @@ Eigen::MatrixXd triangular_basis_table(int n, const Eigen::MatrixX2d& uv, int du
   if (d > n) return Eigen::MatrixXd::Zero(uv.rows(), TriangularNet::count(n));
   const int m = n - d;
   const auto I = triangular_multi_indices(m);
+  std::vector<double> coef(I.size());
+  for (size_t r = 0; r < I.size(); ++r) coef[r] = multinomial(m, I[r][0], I[r][1]);
+  // Powers by repeated products (the tables of the area rules have ~1e4 rows; std::pow per entry
+  // was most of their build time).
+  std::vector<double> pu(static_cast<size_t>(m + 1)), pv(pu.size()), pw(pu.size());
   Eigen::MatrixXd T(uv.rows(), TriangularNet::count(m));
   for (Eigen::Index s = 0; s < uv.rows(); ++s) {
     const double u = uv(s, 0), v = uv(s, 1), w = 1.0 - u - v;
+    pu[0] = pv[0] = pw[0] = 1.0;
+    for (int e = 1; e <= m; ++e) {
+      pu[e] = pu[e - 1] * u;
+      pv[e] = pv[e - 1] * v;
+      pw[e] = pw[e - 1] * w;
+    }
     for (size_t r = 0; r < I.size(); ++r) {
       const auto& J = I[r];
-      T(s, static_cast<Eigen::Index>(r)) =
-          multinomial(m, J[0], J[1]) * std::pow(u, J[0]) * std::pow(v, J[1]) * std::pow(w, J[2]);
+      T(s, static_cast<Eigen::Index>(r)) = coef[r] * pu[J[0]] * pv[J[1]] * pw[J[2]];
     }
   }
   if (d == 0) return T;
-  return T * triangular_derivative_operator(n, du, dv);
+  // The derivative operator has at most 2^d entries per row: a sparse product.
+  const Eigen::SparseMatrix<double> D = triangular_derivative_operator(n, du, dv).sparseView();
+  return T * D;
 }
 
 }  // namespace bpde
