@@ -1,18 +1,14 @@
 // Ceres corrector of the CMC continuation (solvers/cmc/cmc.h): Levenberg–Marquardt on the residuals
 // F of triangular CMC eq. (11), with the analytic Jacobian (the exact Hessian of D_H over the free
 // control points); the same for the first variation of A_H = A + 2HV (cmc_area_problem.h), whose
-// Jacobian is the exact Hessian of A_H by quadrature.
-//
-// The LM is ceres::TinySolver (ceres/tiny_solver.h): dense Eigen, all 3k residuals and the 3k
-// unknowns as one dense Jacobian, the step from J^T J + D by a dense Cholesky. It replaces
-// ceres::Solve with one residual block and DENSE_NORMAL_CHOLESKY, whose own machinery (the
-// program evaluation, the block-sparse copies, the Jacobi scaling and the trust-region bookkeeping)
-// cost more than the dense algebra itself (docs/performance.md, "The Ceres CMC route", 4c).
-#include <ceres/tiny_solver.h>
+// Jacobian is the exact Hessian of A_H by quadrature. All 3k residuals and the 3k unknowns form ONE residual block on ONE parameter
+// block, so Ceres sees the dense Jacobian as it is (one copy per evaluation) instead of k^2 small
+// 3x3 blocks, and solves the LM step with a dense solver (kLinearSolver below; measured in
+// docs/performance.md, "Ceres CMC route"). Ceres runs single-threaded here.
+#include <ceres/ceres.h>
 
-#include <Eigen/Cholesky>
 #include <cmath>
-#include <limits>
+#include <memory>
 
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
@@ -20,115 +16,107 @@
 namespace bpde::cmc_detail {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// DENSE_NORMAL_CHOLESKY: the LM step from J^T J + D by a dense Cholesky (Eigen), a third of the
+// flops of DENSE_QR on the augmented 6k x 3k matrix. It squares the conditioning of the Bernstein
+// Hessian, which costs at most an extra LM iteration at the degrees of the tests; measured against
+// DENSE_QR in docs/performance.md ("Ceres CMC route").
+constexpr ceres::LinearSolverType kLinearSolver = ceres::DENSE_NORMAL_CHOLESKY;
 
-// The LM step's solver for TinySolver: the Cholesky of J^T J + D (SPD for any D > 0; Eigen's blocked
-// LLT, cheaper than TinySolver's default unblocked LDLT). When the factorisation fails the step is
-// NaN, which the functor evaluates as a NaN residual, so TinySolver rejects it and raises the
-// damping.
-class LltStep {
- public:
-  void compute(const Eigen::MatrixXd& A) { llt_.compute(A); }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
-    if (llt_.info() != Eigen::Success) return Eigen::VectorXd::Constant(b.size(), kNaN);
-    return llt_.solve(b);
-  }
-
- private:
-  Eigen::LLT<Eigen::MatrixXd> llt_;
-};
-
-// The stopping test: the residual of eq. (11) as the newton corrector computes it (the exact
-// denominator only when the residual may be within 1e3 x tolerance, else the last one;
-// CmcProblem::evaluate), so both stop at the same test; the area problem computes it whole. F
-// receives the residual vector (the free gradient) of the same evaluation.
-double stop_residual(CmcProblem& p, double H, double tol, double& scale, Eigen::VectorXd& F) {
-  return p.evaluate(H, F, tol, scale, &scale);
-}
-double stop_residual(AreaProblem& p, double H, double, double&, Eigen::VectorXd& F) { return p.residual(H, &F); }
-
-// Thrown by the functor to end TinySolver (which has no callback): at a point that meets the
-// tolerance, or when the Hessian is not finite.
-struct Stop {};
-
-// TinySolver's functor: residuals F = the free gradient, Jacobian = the exact Hessian. Every new
-// point is tested by stop_residual (that evaluation gives F too), as the newton corrector tests
-// each iterate; TinySolver asks for the Jacobian at an accepted point after evaluating F there,
-// and the F of that point is reused.
 template <class Problem>
-class AllResiduals {
+class AllResiduals final : public ceres::CostFunction {
  public:
-  using Scalar = double;
-  enum { NUM_RESIDUALS = Eigen::Dynamic, NUM_PARAMETERS = Eigen::Dynamic };
-
-  AllResiduals(Problem* p, double H, double tol) : p_(p), H_(H), tol_(tol), n_(3 * p->k()) {}
-  int NumResiduals() const { return n_; }
-  int NumParameters() const { return n_; }
-
-  bool operator()(const double* x, double* residuals, double* jacobian) const {
-    const Eigen::Map<const Eigen::VectorXd> y(x, n_);
-    Eigen::Map<Eigen::VectorXd> F(residuals, n_);
-    if (!jacobian) ++steps_;  // TinySolver evaluates a candidate step without the Jacobian
-    if (!(last_y_.size() == n_ && last_y_ == y)) {
-      if (!y.allFinite()) {
-        F.setConstant(kNaN);
-        return false;
-      }
-      p_->set(y);
+  AllResiduals(Problem* p, double H) : p_(p), H_(H) {
+    set_num_residuals(3 * p->k());
+    mutable_parameter_block_sizes()->push_back(3 * p->k());
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const int n = 3 * p_->k();
+    const Eigen::Map<const Eigen::VectorXd> y(parameters[0], n);
+    if (!y.allFinite()) return false;
+    p_->set(y);
+    Eigen::Map<Eigen::VectorXd> F(residuals, n);
+    // Ceres evaluates the residuals at a candidate point and, when it accepts the step, the
+    // residuals and the Jacobian at the same point again: the residuals are reused.
+    if (last_y_.size() == n && last_y_ == y) {
+      F = last_F_;
+    } else {
+      F = p_->gradient(H_);
       last_y_ = y;
-      const double r = stop_residual(*p_, H_, tol_, scale_, last_F_);
-      if (r <= tol_) {
-        converged_ = true;
-        throw Stop{};
-      }
+      last_F_ = F;
     }
-    F = last_F_;
     if (!F.allFinite()) return false;
-    if (jacobian) {
-      Eigen::Map<Eigen::MatrixXd> J(jacobian, n_, n_);  // column-major (TinySolver's layout)
+    if (jacobians && jacobians[0]) {
+      // Ceres wants the Jacobian row-major.
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(jacobians[0], n, n);
       J = p_->hessian(H_);
-      if (!J.allFinite()) throw Stop{};
+      if (!J.allFinite()) return false;
     }
     return true;
   }
 
-  int steps() const { return steps_; }
-  bool converged() const { return converged_; }
-  const Eigen::VectorXd& last_point() const { return last_y_; }
+ private:
+  Problem* p_;
+  double H_;
+  mutable Eigen::VectorXd last_y_, last_F_;
+};
+
+// The stopping test of the callback: the residual of eq. (11) as the newton corrector computes
+// it (the exact denominator only when the residual may be within 1e3 x tolerance, else the last
+// one; CmcProblem::evaluate), so both stop at the same test; the area problem computes it whole.
+double stop_residual(CmcProblem& p, double H, double tol, double& scale) {
+  Eigen::VectorXd g;
+  return p.evaluate(H, g, tol, scale, &scale);
+}
+double stop_residual(AreaProblem& p, double H, double, double&) { return p.residual(H); }
+
+template <class Problem>
+class StopAtTolerance final : public ceres::IterationCallback {
+ public:
+  StopAtTolerance(Problem* p, const Eigen::VectorXd* buf, double H, double tol)
+      : p_(p), buf_(buf), H_(H), tol_(tol) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    p_->set(*buf_);
+    const double r = stop_residual(*p_, H_, tol_, scale_);
+    return r <= tol_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
 
  private:
   Problem* p_;
-  double H_, tol_;
-  int n_;
-  mutable Eigen::VectorXd last_y_, last_F_;
-  mutable double scale_ = 0.0;
-  mutable int steps_ = 0;
-  mutable bool converged_ = false;
+  const Eigen::VectorXd* buf_;
+  double H_, tol_, scale_ = 0.0;
 };
 
 template <class Problem>
 CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
   CorrectorStats st = start_stats(p, H, o);
   if (st.ok || !std::isfinite(st.residual)) return st;
-  Eigen::VectorXd x = p.get();
-  const AllResiduals<Problem> f(&p, H, o.tolerance);
-  ceres::TinySolver<AllResiduals<Problem>, LltStep> solver;
-  // TinySolver takes at most max_num_iterations - 1 steps.
-  solver.options.max_num_iterations = o.max_corrector_iterations + 1;
+  Eigen::VectorXd buf = p.get();
+  ceres::Problem::Options po;
+  ceres::Problem problem(po);
+  problem.AddResidualBlock(new AllResiduals<Problem>(&p, H), nullptr, buf.data());
+
+  ceres::Solver::Options so;
+  so.minimizer_type = ceres::TRUST_REGION;
+  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  so.linear_solver_type = kLinearSolver;
+  so.dense_linear_algebra_library_type = ceres::EIGEN;
+  so.max_num_iterations = o.max_corrector_iterations;
   // J is square and non-singular on the branch: start as Gauss–Newton (= Newton on eq. (11)).
-  solver.options.initial_trust_region_radius = 1e12;
-  // Only the eq. (11) test of the functor ends the iteration (TinySolver's tests are strict "<").
-  solver.options.gradient_tolerance = 0.0;
-  solver.options.parameter_tolerance = 0.0;
-  solver.options.function_tolerance = 0.0;
-  solver.options.cost_threshold = 0.0;
-  try {
-    solver.Solve(f, &x);
-  } catch (const Stop&) {
-  }
-  // The point tested last meets the tolerance; otherwise TinySolver's x is its last accepted point.
-  p.set(f.converged() ? f.last_point() : x);
-  st.iterations = f.steps();
+  so.initial_trust_region_radius = 1e12;
+  so.max_trust_region_radius = 1e16;
+  so.function_tolerance = 1e-30;
+  so.gradient_tolerance = 1e-30;
+  so.parameter_tolerance = 1e-30;
+  so.num_threads = 1;
+  so.logging_type = ceres::SILENT;
+  so.minimizer_progress_to_stdout = false;
+  so.update_state_every_iteration = true;
+  StopAtTolerance<Problem> cb(&p, &buf, H, o.tolerance);
+  so.callbacks.push_back(&cb);
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  p.set(buf);
+  st.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
   st.residual = p.residual(H);
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
   return st;
