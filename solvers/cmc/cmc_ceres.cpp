@@ -22,10 +22,21 @@ namespace {
 // DENSE_QR in docs/performance.md ("Ceres CMC route").
 constexpr ceres::LinearSolverType kLinearSolver = ceres::DENSE_NORMAL_CHOLESKY;
 
+// The stopping test of the callback: the residual of eq. (11) as the newton corrector computes it
+// (the exact denominator only when the residual may be within 1e3 x tolerance, else the last one;
+// CmcProblem::evaluate), so both stop at the same test; the area problem computes it whole. F
+// receives the residual vector (the free gradient) of the same evaluation.
+double stop_residual(CmcProblem& p, double H, double tol, double& scale, Eigen::VectorXd& F) {
+  return p.evaluate(H, F, tol, scale, &scale);
+}
+double stop_residual(AreaProblem& p, double H, double, double&, Eigen::VectorXd& F) { return p.residual(H, &F); }
+
+// The residuals of a point come with its stopping test (one evaluation), which the callback reads
+// for the accepted point instead of evaluating the residual there again.
 template <class Problem>
 class AllResiduals final : public ceres::CostFunction {
  public:
-  AllResiduals(Problem* p, double H) : p_(p), H_(H) {
+  AllResiduals(Problem* p, double H, double tol) : p_(p), H_(H), tol_(tol) {
     set_num_residuals(3 * p->k());
     mutable_parameter_block_sizes()->push_back(3 * p->k());
   }
@@ -33,55 +44,62 @@ class AllResiduals final : public ceres::CostFunction {
     const int n = 3 * p_->k();
     const Eigen::Map<const Eigen::VectorXd> y(parameters[0], n);
     if (!y.allFinite()) return false;
-    p_->set(y);
     Eigen::Map<Eigen::VectorXd> F(residuals, n);
     // Ceres evaluates the residuals at a candidate point and, when it accepts the step, the
     // residuals and the Jacobian at the same point again: the residuals are reused.
-    if (last_y_.size() == n && last_y_ == y) {
-      F = last_F_;
-    } else {
-      F = p_->gradient(H_);
+    if (!(last_y_.size() == n && last_y_ == y)) {
+      p_->set(y);
       last_y_ = y;
-      last_F_ = F;
+      last_r_ = stop_residual(*p_, H_, tol_, scale_, last_F_);
     }
+    F = last_F_;
     if (!F.allFinite()) return false;
     if (jacobians && jacobians[0]) {
       // Ceres wants the Jacobian row-major.
       Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(jacobians[0], n, n);
+      // At a point that meets the tolerance the callback ends the solve before the Jacobian is
+      // used (Ceres runs the callbacks right after this evaluation, before its own tests), so
+      // the Hessian is not assembled there; Ceres requires the Jacobian written, hence zeros.
+      if (last_r_ <= tol_) {
+        J.setZero();
+        return true;
+      }
+      p_->set(y);
       J = p_->hessian(H_);
       if (!J.allFinite()) return false;
     }
     return true;
   }
+  /// The stopping residual of y when y was the last point evaluated, else -1.
+  double residual_of(const Eigen::VectorXd& y) const {
+    return last_y_.size() == y.size() && last_y_ == y ? last_r_ : -1.0;
+  }
 
  private:
   Problem* p_;
-  double H_;
+  double H_, tol_;
   mutable Eigen::VectorXd last_y_, last_F_;
+  mutable double last_r_ = 0.0, scale_ = 0.0;
 };
-
-// The stopping test of the callback: the residual of eq. (11) as the newton corrector computes
-// it (the exact denominator only when the residual may be within 1e3 x tolerance, else the last
-// one; CmcProblem::evaluate), so both stop at the same test; the area problem computes it whole.
-double stop_residual(CmcProblem& p, double H, double tol, double& scale) {
-  Eigen::VectorXd g;
-  return p.evaluate(H, g, tol, scale, &scale);
-}
-double stop_residual(AreaProblem& p, double H, double, double&) { return p.residual(H); }
 
 template <class Problem>
 class StopAtTolerance final : public ceres::IterationCallback {
  public:
-  StopAtTolerance(Problem* p, const Eigen::VectorXd* buf, double H, double tol)
-      : p_(p), buf_(buf), H_(H), tol_(tol) {}
+  StopAtTolerance(Problem* p, const AllResiduals<Problem>* f, const Eigen::VectorXd* buf, double H, double tol)
+      : p_(p), f_(f), buf_(buf), H_(H), tol_(tol) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
-    p_->set(*buf_);
-    const double r = stop_residual(*p_, H_, tol_, scale_);
+    double r = f_->residual_of(*buf_);
+    if (r < 0.0) {  // the current point is not the last one evaluated (after a rejected step)
+      p_->set(*buf_);
+      Eigen::VectorXd F;
+      r = stop_residual(*p_, H_, tol_, scale_, F);
+    }
     return r <= tol_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }
 
  private:
   Problem* p_;
+  const AllResiduals<Problem>* f_;
   const Eigen::VectorXd* buf_;
   double H_, tol_, scale_ = 0.0;
 };
@@ -93,7 +111,8 @@ CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
   Eigen::VectorXd buf = p.get();
   ceres::Problem::Options po;
   ceres::Problem problem(po);
-  problem.AddResidualBlock(new AllResiduals<Problem>(&p, H), nullptr, buf.data());
+  auto* f = new AllResiduals<Problem>(&p, H, o.tolerance);  // owned by problem
+  problem.AddResidualBlock(f, nullptr, buf.data());
 
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
@@ -111,7 +130,7 @@ CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
   so.update_state_every_iteration = true;
-  StopAtTolerance<Problem> cb(&p, &buf, H, o.tolerance);
+  StopAtTolerance<Problem> cb(&p, f, &buf, H, o.tolerance);
   so.callbacks.push_back(&cb);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
