@@ -32,9 +32,9 @@
 //     coordinate is s = σ^p, Gauss in σ. A corner that is only NEARLY degenerate (|N(corner)| = c
 //     small but not 0: e.g. the circle's arcs fitted at degree 5 meet at 179.925°, c ≈ 1e-3 of the
 //     mean |N|) puts a branch point of |N| ≈ √(c² + |a u + b v|²) at s ~ c from the corner; the
-//     plain rule then converges only like ~exp(-2q√(2c)) (measured at n = 5: 1.9e-10 at q = 15,
-//     2.9e-11 at q = 64). With s = σ³ the branch point sits at σ ~ c^(1/3) (0.1 at n = 5), and
-//     the change falls to 3.6e-12 at q = 20 (docs/cmc.md, "The rule near nearly degenerate
+//     plain rule then converges only like ~exp(-2q√(2c)) (measured error at n = 5: 1.6e-10 at
+//     q = 15, 1.1e-11 at q = 64). With s = σ³ the branch point sits at σ ~ c^(1/3) (0.1 at
+//     n = 5), and the error is 3.6e-12 at q = 15, 9.5e-14 at q = 20 (docs/cmc.md, "The rule near nearly degenerate
 //     corners"). An integrand analytic in s stays analytic in σ, so the graded rule also converges
 //     exponentially where the plain one does, with about twice the points.
 // The node tables (Bernstein derivatives at the nodes, #nodes x N) are built once per

@@ -182,7 +182,7 @@ TEST(AreaFunctional, RuleConvergesAtDegenerateCorners) {
 
 // The circle's arcs fitted at degree 5 meet at 179.925°, not 180°: |N| at the corners is ~1e-3 of
 // its mean, not 0 (nearly degenerate). The plain collapsed rule converges only slowly there (its
-// measured change 1.9e-10 at q = 15 and 2.9e-11 at q = 64 on the solved net, docs/cmc.md); the
+// measured error 1.6e-10 at q = 15 and 1.1e-11 at q = 64 on the solved net, docs/cmc.md); the
 // rule choice switches to the graded rules and meets 1e-12 at modest q, against a reference by
 // the graded rule at q = 150 (whose change from q = 115 is at rounding, ~1e-15).
 TEST(AreaFunctional, RuleConvergesAtNearlyDegenerateCorners) {

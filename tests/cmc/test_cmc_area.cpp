@@ -120,7 +120,7 @@ TEST(CmcArea, CircleInThreeArcsAtDegree5MeetsTheRuleTolerance) {
 // Degree 4: the fitted arcs meet at 180.84° and the discrete critical point folds at the corners
 // (the normal turns over within ~1e-2 of each corner, inside the regularity check's margin). No
 // rule up to q = 64 meets its tolerance there (graded: 1.3e-12 against 1e-12; the plain rule
-// 1.7e-08), so the result is not reported converged (it was, with the rule compared with itself).
+// 3.4e-09), so the result is not reported converged (it was, with the rule compared with itself).
 TEST(CmcArea, CircleInThreeArcsAtDegree4IsNotReportedConvergedWithAnUnmetRule) {
   const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(4), area_options(-0.5));
   EXPECT_FALSE(r.summary.converged);
