@@ -8,11 +8,15 @@
 //   - H = 0, triangular: the catenoid piece ρ = cosh z from its radial parametrisation
 //     (θ, ρ) = (1.2u + 0.4v, 1.1 + 0.8v); checked by |√(x² + y²) - cosh z|.
 //
-// Usage: example_004_cmc_area_tables [--full | --tolerance-probe]
+// Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --rule-probe | --gauge-probe]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
+//   --rule-probe: the circle's corner angles by degree and the error of the plain and graded area
+//   rules on the solved nets (docs/cmc.md, "The rule near nearly degenerate corners"; seconds).
+//   --gauge-probe: Newton steps restricted to normal motion of the free points on the solved
+//   circle (docs/cmc.md, "Not done yet"; seconds).
 // Columns: "dist" is the max over a 40-sample grid (every sample, corners included) of the distance
 // measure above; the H range is taken on the 40-grid with corner margin 0.1; "residual" is the
 // relative first variation of the functional solved (eq. (11) for D_H, A_H for area); "iterations"
@@ -26,6 +30,7 @@
 
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "examples/common/generated.h"
 
@@ -153,9 +158,138 @@ void tolerance_probe() {
   }
 }
 
+// The error of the rule q (its change to the next rule of the sequence, as area_rule.h measures it)
+// on the solved circle nets, plain (grading 1) and graded (grading 3).
+void rule_probe() {
+  std::printf("| n | sine of the corner angle (data) | interior angle (deg) |\n| --- | --- | --- |\n");
+  for (int n : {4, 5, 6, 7, 8, 10}) {
+    const bpde::TriangularNet d = bpde::circle_three_arcs(n);
+    const Eigen::Vector3d a = d.derivative(0, 0, 1, 0), b = d.derivative(0, 0, 0, 1);
+    const double s = a.cross(b)(2) / (a.norm() * b.norm());  // > 0: below 180°
+    std::printf("| %d | %.1e | %.3f |\n", n, std::abs(s), s > 0 ? 180 - std::asin(s) * 180 / M_PI : 180 + std::asin(-s) * 180 / M_PI);
+  }
+  const std::vector<int> qs = {11, 15, 20, 27, 36, 48, 64, 86};
+  std::printf("\n| n | grading | q = 11 | 15 | 20 | 27 | 36 | 48 | 64 | 86 |\n| --- | --- |");
+  for (size_t k = 0; k < qs.size(); ++k) std::printf(" --- |");
+  std::printf("\n");
+  for (int n : {4, 5, 8}) {
+    const auto r = solve(bpde::circle_three_arcs(n), -0.5, true);
+    const Eigen::MatrixX3d& P = r.net.points();
+    const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
+    for (int g : {1, 3}) {
+      std::printf("| %d | %d |", n, g);
+      for (int q : qs) {
+        const int qn = q + (q + 2) / 3;
+        const bpde::AreaForm a = bpde::AreaForm::triangular(n, q, g), b = bpde::AreaForm::triangular(n, qn, g);
+        Eigen::MatrixX3d Ga, Gb, Sb;
+        a.gradient_rows_and_scale(P, idx, &Ga, nullptr);
+        b.gradient_rows_and_scale(P, idx, &Gb, &Sb);
+        const double Ab = b.value(P);
+        const double c = std::max(std::abs(a.value(P) - Ab) / Ab, (Ga - Gb).cwiseAbs().maxCoeff() / Sb.maxCoeff());
+        std::printf(" %.1e |", c);
+      }
+      std::printf("\n");
+    }
+  }
+}
+
+// From the solved circle (H = -0.5, n = 8 and 10): Newton steps on A_H restricted to the motion of
+// each free point along the surface normal at its parameter (I/n), the gauge that removes the
+// tangential (reparametrisation) modes. Prints the residual and the normal and tangential parts
+// of the gradient (Euclidean) before each step, on the rule the solve ended with.
+void gauge_probe() {
+  const double H = -0.5;
+  std::printf("| n | step | residual | \\|g\\| normal part | \\|g\\| tangential part | reduced Hessian eigenvalues |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- |\n");
+  for (int n : {8, 10}) {
+    const auto r = solve(bpde::circle_three_arcs(n), H, true);
+    const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
+    const int k = static_cast<int>(idx.size());
+    const auto f = bpde::CmcFunctional::cached_triangular(n);
+    const bpde::AreaForm a = bpde::AreaForm::triangular(n, r.quadrature_points, 1);
+    bpde::TriangularNet net = r.net;
+    for (int step = 0; step <= 3; ++step) {
+      const Eigen::MatrixX3d& P = net.points();
+      Eigen::MatrixX3d GA, SA, GV, SV;
+      a.gradient_rows_and_scale(P, idx, &GA, &SA);
+      f->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
+      const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
+      Eigen::VectorXd g(3 * k);
+      Eigen::MatrixXd Nm = Eigen::MatrixXd::Zero(3 * k, k);
+      for (int i = 0; i < k; ++i) {
+        g.segment<3>(3 * i) = G.row(i).transpose();
+        const bpde::MultiIndex I = bpde::TriangularNet::multi_index(n, idx[i]);
+        const double u = double(I[0]) / n, v = double(I[1]) / n;
+        Nm.block<3, 1>(3 * i, i) = net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).normalized();
+      }
+      const Eigen::MatrixXd K = a.hessian(P, idx) + 2 * H * f->volume_form().hessian(P, idx);
+      const Eigen::MatrixXd Kr = Nm.transpose() * K * Nm;
+      const Eigen::VectorXd gr = Nm.transpose() * g;
+      const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Kr).eigenvalues();
+      std::printf("| %d | %d | %.1e | %.1e | %.1e | %.1e … %.1e |\n", n, step, G.cwiseAbs().maxCoeff() / S.maxCoeff(),
+                  gr.norm(), (g - Nm * gr).norm(), ev(0), ev(k - 1));
+      const Eigen::VectorXd d = Nm * Kr.ldlt().solve(-gr);
+      for (int i = 0; i < k; ++i) net.points().row(idx[i]) += d.segment<3>(3 * i).transpose();
+    }
+  }
+  // The minimum-residual step over all modes, soft ones included: Levenberg–Marquardt on ‖g‖²,
+  // (K² + μC) d = -K g (C the Dirichlet Gram), the μ in 1e-2, 1e-3, …, 1e-22 with the smallest
+  // residual among those that lower ‖g‖, from the converged circle at n = 10.
+  std::printf("\n| n | step | residual | best μ |\n| --- | --- | --- | --- |\n");
+  const int n = 10;
+  const auto r = solve(bpde::circle_three_arcs(n), H, true);
+  const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
+  const int k = static_cast<int>(idx.size());
+  const auto f = bpde::CmcFunctional::cached_triangular(n);
+  const bpde::AreaForm a = bpde::AreaForm::triangular(n, r.quadrature_points, 1);
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(3 * k, 3 * k);
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) C.block<3, 3>(3 * i, 3 * j) = f->gram()(idx[i], idx[j]) * Eigen::Matrix3d::Identity();
+  auto resid = [&](const Eigen::MatrixX3d& P, Eigen::VectorXd& g) {
+    Eigen::MatrixX3d GA, SA, GV, SV;
+    a.gradient_rows_and_scale(P, idx, &GA, &SA);
+    f->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
+    const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
+    g.resize(3 * k);
+    for (int i = 0; i < k; ++i) g.segment<3>(3 * i) = G.row(i).transpose();
+    return G.cwiseAbs().maxCoeff() / S.maxCoeff();
+  };
+  Eigen::MatrixX3d P = r.net.points();
+  for (int step = 0; step <= 4; ++step) {
+    Eigen::VectorXd g;
+    const double r0 = resid(P, g);
+    const Eigen::MatrixXd K = a.hessian(P, idx) + 2 * H * f->volume_form().hessian(P, idx);
+    double best = r0, best_mu = 0;
+    Eigen::MatrixX3d best_P = P;
+    for (double mu = 1e-2; mu >= 1e-22; mu *= 0.1) {
+      const Eigen::VectorXd d = -(K * K + mu * C).ldlt().solve(K * g);
+      Eigen::MatrixX3d Pn = P;
+      for (int i = 0; i < k; ++i) Pn.row(idx[i]) += d.segment<3>(3 * i).transpose();
+      Eigen::VectorXd gn;
+      const double rn = resid(Pn, gn);
+      if (gn.norm() < g.norm() && rn < best) {
+        best = rn;
+        best_mu = mu;
+        best_P = Pn;
+      }
+    }
+    std::printf("| %d | %d | %.2e | %.0e |\n", n, step, r0, best_mu);
+    if (best_mu == 0) break;
+    P = best_P;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--rule-probe") {
+    rule_probe();
+    return 0;
+  }
+  if (argc > 1 && std::string(argv[1]) == "--gauge-probe") {
+    gauge_probe();
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--tolerance-probe") {
     tolerance_probe();
     return 0;

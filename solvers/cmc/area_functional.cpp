@@ -24,8 +24,9 @@ namespace {
 using Tri = std::array<Eigen::Vector2d, 3>;  // {collapsed corner C, P1, P2}
 
 // Nodes and weights of the Duffy rules on the triangles (u, v) = C + s(P1 - C) + s t(P2 - P1),
-// Jacobian s |det(P1 - C, P2 - C)|, with q x q Gauss–Legendre points in (s, t).
-void duffy_rule(const std::vector<Tri>& tris, int q, Eigen::MatrixX2d& uv, Eigen::VectorXd& w) {
+// Jacobian s |det(P1 - C, P2 - C)|, with q x q Gauss–Legendre points in (σ, t), s = σ^p (p = the
+// grading; p = 1 is the plain Duffy rule, ds = p σ^(p-1) dσ).
+void duffy_rule(const std::vector<Tri>& tris, int q, int grading, Eigen::MatrixX2d& uv, Eigen::VectorXd& w) {
   const QuadratureRule1D g = gauss_legendre01(q);
   const Eigen::Index per = static_cast<Eigen::Index>(q) * q;
   uv.resize(per * static_cast<Eigen::Index>(tris.size()), 2);
@@ -36,9 +37,10 @@ void duffy_rule(const std::vector<Tri>& tris, int q, Eigen::MatrixX2d& uv, Eigen
     const double det = std::abs(e1(0) * (T[2] - T[0])(1) - e1(1) * (T[2] - T[0])(0));
     for (int a = 0; a < q; ++a)
       for (int b = 0; b < q; ++b, ++r) {
-        const double s = g.x(a), t = g.x(b);
+        const double sg = g.x(a), t = g.x(b);
+        const double s = std::pow(sg, grading), ds = grading * std::pow(sg, grading - 1);
         uv.row(r) = (T[0] + s * e1 + s * t * e2).transpose();
-        w(r) = g.w(a) * g.w(b) * s * det;
+        w(r) = g.w(a) * g.w(b) * s * ds * det;
       }
   }
 }
@@ -64,9 +66,11 @@ std::vector<Tri> square_pieces() {
   return tris;
 }
 
-void check_q(int q) {
+void check_q(int q, int grading) {
   if (q < 1 || q > 200)
     throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
+  if (grading < 1 || grading > 4)
+    throw ParameterError("AreaForm: grading must be in 1..4, got " + std::to_string(grading));
 }
 
 // x_u, x_v, N = x_u ∧ x_v and |N| at the nodes.
@@ -88,29 +92,31 @@ constexpr std::size_t kAreaCacheSize = 32;
 
 }  // namespace
 
-AreaForm AreaForm::triangular(int n, int q) {
+AreaForm AreaForm::triangular(int n, int q, int grading) {
   if (n < 1 || n > kMaxDegree)
     throw DegreeError("AreaForm: triangular degree " + std::to_string(n) + " is outside 1.." +
                       std::to_string(kMaxDegree));
-  check_q(q);
+  check_q(q, grading);
   Eigen::MatrixX2d uv;
   AreaForm f;
-  duffy_rule(triangle_pieces(), q, uv, f.w_);
+  duffy_rule(triangle_pieces(), q, grading, uv, f.w_);
   f.q_ = q;
+  f.grading_ = grading;
   f.Bu_ = triangular_basis_table(n, uv, 1, 0);
   f.Bv_ = triangular_basis_table(n, uv, 0, 1);
   return f;
 }
 
-AreaForm AreaForm::tensor(int n, int m, int q) {
+AreaForm AreaForm::tensor(int n, int m, int q, int grading) {
   if (n < 1 || n > kMaxDegree || m < 1 || m > kMaxDegree)
     throw DegreeError("AreaForm: tensor degree (" + std::to_string(n) + ", " + std::to_string(m) + ") is outside 1.." +
                       std::to_string(kMaxDegree));
-  check_q(q);
+  check_q(q, grading);
   Eigen::MatrixX2d uv;
   AreaForm f;
-  duffy_rule(square_pieces(), q, uv, f.w_);
+  duffy_rule(square_pieces(), q, grading, uv, f.w_);
   f.q_ = q;
+  f.grading_ = grading;
   const Eigen::VectorXd us = uv.col(0), vs = uv.col(1);
   const Eigen::MatrixXd Tu0 = bernstein_table(n, us, 0), Tu1 = bernstein_table(n, us, 1);
   const Eigen::MatrixXd Tv0 = bernstein_table(m, vs, 0), Tv1 = bernstein_table(m, vs, 1);
@@ -126,14 +132,14 @@ AreaForm AreaForm::tensor(int n, int m, int q) {
   return f;
 }
 
-std::shared_ptr<const AreaForm> AreaForm::cached_triangular(int n, int q) {
-  static KeyedCache<std::pair<int, int>, AreaForm> cache(kAreaCacheSize);
-  return cache.get({n, q}, [](const std::pair<int, int>& k) { return triangular(k.first, k.second); });
+std::shared_ptr<const AreaForm> AreaForm::cached_triangular(int n, int q, int grading) {
+  static KeyedCache<std::array<int, 3>, AreaForm> cache(kAreaCacheSize);
+  return cache.get({n, q, grading}, [](const std::array<int, 3>& k) { return triangular(k[0], k[1], k[2]); });
 }
 
-std::shared_ptr<const AreaForm> AreaForm::cached_tensor(int n, int m, int q) {
-  static KeyedCache<std::array<int, 3>, AreaForm> cache(kAreaCacheSize);
-  return cache.get({n, m, q}, [](const std::array<int, 3>& k) { return tensor(k[0], k[1], k[2]); });
+std::shared_ptr<const AreaForm> AreaForm::cached_tensor(int n, int m, int q, int grading) {
+  static KeyedCache<std::array<int, 4>, AreaForm> cache(kAreaCacheSize);
+  return cache.get({n, m, q, grading}, [](const std::array<int, 4>& k) { return tensor(k[0], k[1], k[2], k[3]); });
 }
 
 std::size_t AreaForm::memory_bytes() const {
@@ -261,7 +267,7 @@ double area(const TriangularNet& net) {
   const int n = net.n();
   Eigen::MatrixX2d uv;
   Eigen::VectorXd w;
-  duffy_rule(triangle_pieces(), report_q(n), uv, w);
+  duffy_rule(triangle_pieces(), report_q(n), 1, uv, w);
   const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
   return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
     const Eigen::MatrixXd B = TriangularNet::basis_matrix(n - 1, b);
@@ -274,7 +280,7 @@ double area(const TensorNet& net) {
   const int n = net.n(), m = net.m();
   Eigen::MatrixX2d uv;
   Eigen::VectorXd w;
-  duffy_rule(square_pieces(), report_q(std::max(n, m)), uv, w);
+  duffy_rule(square_pieces(), report_q(std::max(n, m)), 1, uv, w);
   // Derivative nets: degree (n-1, m) for x_u and (n, m-1) for x_v, rows i(m'+1) + j.
   const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
   return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {

@@ -7,10 +7,17 @@
 //   max( |A_j - A_{j+1}| / A_{j+1},  max |G_j - G_{j+1}| / max S_{j+1} )
 // (G the free rows of ∇A, S the size of their terms) is below `tolerance`. The error of the rules
 // falls exponentially in q (also at degenerate corners, by the collapsed rules), so the error of
-// q_j is the change measured (q_{j+1} is far more accurate). A change that is still above the
-// tolerance at q = 64 leaves `ok` false (a nearly degenerate parametrisation) and takes q = 64.
-// Callers re-check at the end of a solve (the change is measured on the final net) and refine
-// again when the surface moved far from where the rule was chosen.
+// q_j is the change measured (q_{j+1} is far more accurate).
+//   The plain rules (grading 1) come first. When their change stops falling (less than ×4 in a
+// step from q = 15 on: a nearly degenerate corner, area_functional.h "graded") or misses at the
+// cap, the graded rules (grading 3) are run from q_0; the one that meets the tolerance is taken.
+// The last rule of a sequence, q = 64, is compared with q = 86 (a finer rule, used only to measure
+// the error): a rule is never compared with itself. A change still above the tolerance there
+// leaves `ok` false (a folded or nearly singular corner, e.g. the circle's arcs fitted at degree 4,
+// whose corners fold) and returns the sequence's rule with the smaller change, with that change.
+// Callers re-check at the end of a solve (the change is measured on the final net), refine again
+// when the surface moved far from where the rule was chosen, and report a rule that misses its
+// tolerance as not converged (solvers/cmc/cmc_area.cpp).
 #include <Eigen/Core>
 #include <memory>
 #include <vector>
@@ -26,8 +33,9 @@ struct AreaRule {
 };
 
 /// kind: true for triangular (degree n), false for tensor (n, m). `start_q` > 0 starts the
-/// sequence there instead of q_0 (to check, and refine, a rule already in use).
+/// sequence there, with the grading `start_grading`, instead of q_0 (to check, and refine, a rule
+/// already in use).
 AreaRule choose_area_rule(bool triangular, int n, int m, const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                          double tolerance, int start_q = 0);
+                          double tolerance, int start_q = 0, int start_grading = 1);
 
 }  // namespace bpde

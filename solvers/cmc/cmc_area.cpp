@@ -345,16 +345,20 @@ struct AreaSolve {
   Summary& summary;
 
   // Rule chosen at the current net with the rule tolerance (0.1 x the residual tolerance).
-  bool choose_rule(int start_q = 0) { return choose_rule_for(o.tolerance, start_q); }
+  bool choose_rule(int start_q = 0, int start_grading = 1) {
+    return choose_rule_for(o.tolerance, start_q, start_grading);
+  }
+  double rule_change = 0.0;  ///< the measured error of the rule last chosen
 
   // Rule chosen at the current net for a corrector run to the residual tolerance `tol` (rule
   // tolerance 0.1 tol). Each ε-stage chooses its own (stage tolerances 1e-6 … 5e-12), the jump to
   // ε = 0 the full one: the early stages need far fewer nodes, and the Hessian's cost is linear
   // in the nodes. (Circle n = 16: the D_H start needs q = 27 for 1e-12, the final net q = 20.)
   // The final rule check in solve_area_impl refines on the final net when needed.
-  bool choose_rule_for(double tol, int start_q = 0) {
-    const AreaRule r = choose_area_rule(tri, n, m, p.P(), p.base.free, 0.1 * tol, start_q);
+  bool choose_rule_for(double tol, int start_q = 0, int start_grading = 1) {
+    const AreaRule r = choose_area_rule(tri, n, m, p.P(), p.base.free, 0.1 * tol, start_q, start_grading);
     p.a = r.form;
+    rule_change = r.change;
     return r.ok;
   }
 
@@ -735,17 +739,21 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       }
     }
     if (!o.V) out.H = out.ok ? o.H : out.H;
-    // The final rule check: refine while the rule's measured error is above its tolerance at the
-    // final net, and correct again with the finer rule.
+    // The final rule check: refine while the rule's measured error (against a finer rule, also at
+    // the cap) is above its tolerance at the final net, and correct again with the finer rule. A
+    // rule that still misses its tolerance is reported (NumericalLimit): the first variation is
+    // then only known to within that error.
     if (out.ok) {
       for (int round = 0; round < 4; ++round) {
-        const int q = s.p.a->points_per_direction();
-        const bool rule_ok = s.choose_rule(q);
-        if (s.p.a->points_per_direction() == q) {
+        const int q = s.p.a->points_per_direction(), gr = s.p.a->grading();
+        const bool rule_ok = s.choose_rule(q, gr);
+        if (s.p.a->points_per_direction() == q && s.p.a->grading() == gr) {
           if (!rule_ok)
             out = {out.H, false, Status::NumericalLimit,
-                   "the area quadrature does not reach its error tolerance with " + std::to_string(q) +
-                       " points per direction (a nearly singular parametrisation at a corner)"};
+                   "the area quadrature does not reach its error tolerance " + num(0.1 * o.tolerance) +
+                       ": measured error " + num(s.rule_change) + " with " + std::to_string(q) +
+                       " points per direction" + (gr > 1 ? " (graded)" : "") +
+                       " (a folded or nearly singular parametrisation at a corner)"};
           break;
         }
         const CorrectorStats st = o.V ? s.bordered_correct(*o.V, out.H) : s.correct(out.H);

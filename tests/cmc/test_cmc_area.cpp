@@ -12,6 +12,7 @@
 #include "cmc_test_util.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde {
@@ -88,6 +89,46 @@ TEST(CmcArea, CircleInThreeArcsConvergesAtLowDegrees) {
     // measured: 1.8e-06 (n = 6), 7.2e-08 (n = 8)
     EXPECT_LE(sphere_distance(r.net, c, R), n == 6 ? 5e-6 : 3e-7) << n;
   }
+}
+
+// Degree 5: the fitted arcs meet at 179.925° (nearly degenerate corners, |N| ~ 1e-3 of its mean
+// there), where the plain collapsed rule converged only slowly and the solve ran at the cap
+// q = 64 with its rule compared with itself (reported converged with a rule error of 1e-11). Now
+// the graded rule: converged with a rule that meets its tolerance, checked here against an
+// independent reference rule (graded, q = 150): A to 1e-12 and the first variation of A_H by
+// the reference rule within the tolerance.
+TEST(CmcArea, CircleInThreeArcsAtDegree5MeetsTheRuleTolerance) {
+  const int n = 5;
+  const double H = -0.5;
+  const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(n), area_options(H));
+  ASSERT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+  EXPECT_LT(r.quadrature_points, 64);  // measured 20 (graded)
+  const AreaForm ref = AreaForm::triangular(n, 150, 3);
+  const Eigen::MatrixX3d& P = r.net.points();
+  EXPECT_NEAR(r.A, ref.value(P), 1e-12 * r.A);
+  const std::vector<int> idx = r.net.free_indices(FixedSet::Boundary);
+  Eigen::MatrixX3d GA, SA, GV, SV;
+  ref.gradient_rows_and_scale(P, idx, &GA, &SA);
+  CmcFunctional::cached_triangular(n)->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
+  const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
+  EXPECT_LE(G.cwiseAbs().maxCoeff() / S.maxCoeff(), kConvergenceTolerance);
+  // measured 5.5e-05 (a degree limit)
+  const double R = 1 / std::abs(H);
+  EXPECT_LE(sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(R * R - 1)), R), 2e-4);
+}
+
+// Degree 4: the fitted arcs meet at 180.84° and the discrete critical point folds at the corners
+// (the normal turns over within ~1e-2 of each corner, inside the regularity check's margin). No
+// rule up to q = 64 meets its tolerance there (graded: 1.3e-12 against 1e-12; the plain rule
+// 3.4e-09), so the result is not reported converged (it was, with the rule compared with itself).
+TEST(CmcArea, CircleInThreeArcsAtDegree4IsNotReportedConvergedWithAnUnmetRule) {
+  const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(4), area_options(-0.5));
+  EXPECT_FALSE(r.summary.converged);
+  EXPECT_EQ(r.summary.status, Status::NumericalLimit) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("quadrature"), std::string::npos) << r.summary.message;
+  // the fold: the normal at the corner (u, v) = (0, 0) against the one at the centroid
+  auto normal = [&](double u, double v) { return r.net.derivative(u, v, 1, 0).cross(r.net.derivative(u, v, 0, 1)); };
+  EXPECT_LT(normal(0, 0).dot(normal(1.0 / 3, 1.0 / 3)), 0.0);
 }
 
 // Conformal data (the inverse stereographic sphere patch, H = 1): D ≥ A with equality for
