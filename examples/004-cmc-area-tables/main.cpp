@@ -8,11 +8,14 @@
 //   - H = 0, triangular: the catenoid piece ρ = cosh z from its radial parametrisation
 //     (θ, ρ) = (1.2u + 0.4v, 1.1 + 0.8v); checked by |√(x² + y²) - cosh z|.
 //
-// Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --rule-probe | --gauge-probe]
+// Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
+//                                     --gauge-probe]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
+//   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
+//   margins 0.1 … 0.3, boundary samples left out; under a minute).
 //   --rule-probe: the circle's corner angles by degree and the error of the plain and graded area
 //   rules on the solved nets (docs/cmc.md, "The rule near nearly degenerate corners"; seconds).
 //   --gauge-probe: Newton steps restricted to normal motion of the free points on the solved
@@ -22,6 +25,7 @@
 // relative first variation of the functional solved (eq. (11) for D_H, A_H for area); "iterations"
 // and "seconds" are the solver summary's (all stages included).
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -32,6 +36,7 @@
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/triangular/triangular_net.h"
 #include "examples/common/generated.h"
 
 using bpde::examples::GeneratedSection;
@@ -279,6 +284,38 @@ void gauge_probe() {
   }
 }
 
+// Where the mean curvature of the area route deviates from H on the circle (docs/cmc.md, "Degree
+// tables"): max |H_sampled - H| over the 40-grid for corner margins 0.1 … 0.3 (the margin of
+// mean_curvature_stats: every barycentric coordinate <= 1 - margin), the same at margin 0.1 without
+// the samples on the boundary edges, and the sample where the margin-0.1 maximum is taken.
+void margin_probe() {
+  const std::vector<double> margins = {0.1, 0.15, 0.2, 0.25, 0.3};
+  std::printf("| H | n | status | margin 0.1 | 0.15 | 0.2 | 0.25 | 0.3 | 0.1, interior samples only | worst sample (u, v, w) |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  const int N = 40;
+  for (double H : {-0.5, -0.9}) {
+    for (int n : {10, 12, 14}) {
+      const auto r = solve(bpde::circle_three_arcs(n), H, true);
+      std::printf("| %g | %d | %s |", H, n, status_cell(r.summary).c_str());
+      for (double m : margins) {
+        const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(r.net, N, m);
+        std::printf(" %.1e |", std::max(std::abs(s.min - H), std::abs(s.max - H)));
+      }
+      const bpde::TriangleMesh M = bpde::sample_mesh(r.net, N);
+      double worst = 0, interior = 0;
+      int wa = 0, wb = 0;
+      for (int a = 0, k = 0; a <= N; ++a)
+        for (int b = 0; a + b <= N; ++b, ++k) {
+          if (std::max({a, b, N - a - b}) > 0.9 * N + 1e-9 || !(M.regular.size() == 0 || M.regular(k))) continue;
+          const double d = std::abs(M.H(k) - H);
+          if (d > worst) worst = d, wa = a, wb = b;
+          if (a > 0 && b > 0 && a + b < N) interior = std::max(interior, d);
+        }
+      std::printf(" %.1e | (%.3f, %.3f, %.3f) |\n", interior, wa / double(N), wb / double(N), (N - wa - wb) / double(N));
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -288,6 +325,10 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string(argv[1]) == "--gauge-probe") {
     gauge_probe();
+    return 0;
+  }
+  if (argc > 1 && std::string(argv[1]) == "--margin-probe") {
+    margin_probe();
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--tolerance-probe") {
