@@ -4,6 +4,8 @@
     python3 scripts/evolver_compare.py [--bpde build/bpde] [--case circle|sphere|all]
                                        [--degrees 4,6,8] [--linear-levels 1..8]
                                        [--quadratic-levels 1..7] [--out DIR]
+                                       [--tolerances 1e-7,1e-9,1e-11]
+                                       [--library build/example_004_cmc_area_tables]
 
 Both programs solve the same problem, a surface of constant mean curvature H with a fixed
 boundary, and the error is the distance to the exact sphere:
@@ -28,6 +30,13 @@ the facet normals); at a critical point P = k1 + k2 = 2 |H| with the curvature m
 the facet normal. bezierpde's A_H = A + 2 H V uses V = (1/3) int <x_u ^ x_v, x> and H < 0 bulges
 towards x_u ^ x_v. So the .fe facets are oriented as x_u ^ x_v and P = -2 H: the same functional
 up to a constant that depends only on the (fixed) boundary.
+
+--tolerances (circle only) adds a third program row: the same area solve through the library,
+one process of examples/004-cmc-area-tables (`--solve-circle N TOLERANCE`) per degree and
+first-variation tolerance, so that bezierpde, like Evolver with its refinement levels, has an
+accuracy knob besides the degree. `bpde solve` always solves to 1e-11 (FORMATS.md, "converged");
+a looser tolerance is a library option (CmcOptions::tolerance), and a result there is "converged"
+to that tolerance only.
 
 CPU seconds are the user + system time of the child process (resource.getrusage(RUSAGE_CHILDREN)
 before and after each run), so the load of other processes on the machine does not count.
@@ -337,6 +346,41 @@ def run_evolver(evolver, case, level, quadratic, work):
             "surface": s_err, "facets": facets, "vertices": verts, "area": area, "hessian": hsteps}
 
 
+def run_library(example, case, degree, tolerance, grid):
+    """One `example_004_cmc_area_tables --solve-circle N T` process: the area solve to tolerance T."""
+    p, cpu = timed([example, "--solve-circle", str(degree), repr(tolerance)])
+    if p.returncode not in (0, 1):
+        return {"degree": degree, "functional": "area", "tolerance": tolerance, "cpu": cpu,
+                "failed": (p.stderr or p.stdout).strip()}
+    r = json.loads(p.stdout)
+    return {
+        "degree": degree,
+        "functional": "area",
+        "tolerance": tolerance,
+        "cpu": cpu,
+        "seconds": r["seconds"],
+        "converged": r["converged"],
+        "status": r["status"],
+        "residual": r["residual"],
+        "iterations": r["iterations"],
+        "error": net_sphere_error(r["net"], case.centre, case.radius, grid),
+    }
+
+
+def library_table(rows):
+    out = ["| n | tolerance | error (max over the grid) | residual | status | iterations | CPU s (process) "
+           "| solve s (wall) |",
+           "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in rows:
+        if "failed" in r:
+            out.append("| %d | %.0e | failed: %s | | | | %.3f | |" % (r["degree"], r["tolerance"], r["failed"], r["cpu"]))
+            continue
+        out.append("| %d | %.0e | %s | %s | %s | %d | %.3f | %.3f |" % (
+            r["degree"], r["tolerance"], fmt(r["error"]), fmt(r["residual"]), r["status"], r["iterations"], r["cpu"],
+            r["seconds"]))
+    return "\n".join(out)
+
+
 def fmt(x, spec=".1e"):
     return "" if x is None else format(x, spec)
 
@@ -372,14 +416,16 @@ def evolver_table(case, rows):
     return "\n".join(out)
 
 
-def time_to_accuracy(case, brows, erows, targets):
+def time_to_accuracy(case, brows, erows, targets, lrows=()):
     """For each error target: the least CPU seconds of each program (and route) that reached it
-    (bezierpde: converged results only)."""
+    (bezierpde: converged results only; the library rows: converged to their own tolerance)."""
     def best(rows, key):
         hits = [r for r in rows if "failed" not in r and r.get("converged", True) and r["error"] <= key]
         return min(hits, key=lambda r: r["cpu"]) if hits else None
 
     routes = [("bezierpde " + f, [r for r in brows if r["functional"] == f]) for f in case.functionals]
+    if lrows:
+        routes.append(("bezierpde area, library (degree and tolerance)", list(lrows)))
     routes += [("Evolver " + m, [r for r in erows if r["model"] == m]) for m in ("linear", "quadratic")]
     routes = [(name, rows) for name, rows in routes if rows]
     out = ["| error ≤ | " + " | ".join(name for name, _ in routes) + " |",
@@ -390,6 +436,8 @@ def time_to_accuracy(case, brows, erows, targets):
             b = best(rows, t)
             if b is None:
                 cells.append("not reached")
+            elif "tolerance" in b:
+                cells.append("%.3f s (n = %d, %.0e)" % (b["cpu"], b["degree"], b["tolerance"]))
             elif "degree" in b:
                 cells.append("%.2f s (n = %d)" % (b["cpu"], b["degree"]))
             else:
@@ -416,7 +464,16 @@ def main(argv=None):
     ap.add_argument("--grid", type=int, default=60, help="samples per side of the bezierpde error grid")
     ap.add_argument("--out", default=None,
                     help="keep the jobs, .fe and run.cmd files here (default: a temporary folder)")
+    ap.add_argument("--tolerances", default="",
+                    help="circle: also the library route at these first-variation tolerances (comma-separated)")
+    ap.add_argument("--library", default="build/example_004_cmc_area_tables",
+                    help="the example program of the library route")
     args = ap.parse_args(argv)
+    tolerances = [float(t) for t in args.tolerances.split(",") if t]
+    if tolerances and not (os.path.isfile(args.library) and os.access(args.library, os.X_OK)):
+        print("error: %s is not an executable; build it with `cmake --build build --target "
+              "example_004_cmc_area_tables`" % args.library, file=sys.stderr)
+        return 2
 
     evolver = shutil.which(args.evolver)
     if evolver is None:
@@ -435,16 +492,22 @@ def main(argv=None):
     for case in cases:
         degrees = parse_list(args.degrees)
         brows = [run_bpde(bpde, case, n, f, work, args.grid) for f in case.functionals for n in degrees]
+        lrows = [run_library(os.path.abspath(args.library), case, n, t, args.grid) for n in degrees for t in tolerances] \
+            if case.name == "circle" else []
         erows = [run_evolver(evolver, case, k, False, work) for k in parse_list(args.linear_levels)]
         erows += [run_evolver(evolver, case, k, True, work) for k in parse_list(args.quadratic_levels)]
         print("\n### %s, H = %g (bezierpde)\n" % (case.name, case.H))
         print(bpde_table(case, brows))
         print()
+        if lrows:
+            print("\n### %s, H = %g (bezierpde library, by tolerance)\n" % (case.name, case.H))
+            print(library_table(lrows))
+        print()
         print(evolver_table(case, erows))
         print()
-        print(time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9]))
+        print(time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9], lrows))
         with open(os.path.join(work, "rows-%s.json" % case.name), "w") as f:
-            json.dump({"bpde": brows, "evolver": erows}, f, indent=1)
+            json.dump({"bpde": brows, "library": lrows, "evolver": erows}, f, indent=1)
     print("\nload average at the end %.2f %.2f %.2f" % os.getloadavg())
     return 0
 

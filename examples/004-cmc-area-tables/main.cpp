@@ -9,13 +9,15 @@
 //     (θ, ρ) = (1.2u + 0.4v, 1.1 + 0.8v); checked by |√(x² + y²) - cosh z|.
 //
 // Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
-//                                     --gauge-probe]
+//                                     --gauge-probe | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
 //   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
 //   margins 0.1 … 0.3, boundary samples left out; under a minute).
+//   --solve-circle N TOLERANCE: one library solve of the circle (H = -0.5) at degree N to that
+//   first-variation tolerance, printed as JSON (scripts/evolver_compare.py --tolerances).
 //   --rule-probe: the circle's corner angles by degree and the error of the plain and graded area
 //   rules on the solved nets (docs/cmc.md, "The rule near nearly degenerate corners"; seconds).
 //   --gauge-probe: Newton steps restricted to normal motion of the free points on the solved
@@ -28,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -316,9 +319,40 @@ void margin_probe() {
   }
 }
 
+// One library solve of the circle (H = -0.5, area functional, solver newton) at degree n and
+// first-variation tolerance t, for scripts/evolver_compare.py --tolerances (docs/cmc_evolver.md,
+// "Tolerance as the accuracy knob"): prints one JSON object with the summary and the net (FORMATS.md
+// point order), whose error the script measures as it does for `bpde solve`. The CLI's jobs always
+// solve to 1e-11 (FORMATS.md, "converged"); a looser tolerance is a library option only.
+int solve_circle(int n, double tol) {
+  bpde::CmcOptions o;
+  o.H = -0.5;
+  o.functional = bpde::CmcFunctionalKind::Area;
+  o.tolerance = tol;
+  o.validate();
+  const auto r = bpde::solve_cmc(bpde::circle_three_arcs(n), o);
+  std::printf("{\"degree\": %d, \"tolerance\": %.17g, \"status\": \"%s\", \"converged\": %s, \"residual\": %.17g, "
+              "\"iterations\": %d, \"seconds\": %.17g, \"net\": {\"type\": \"triangular\", \"degree\": %d, \"points\": [",
+              n, tol, bpde::to_string(r.summary.status), r.summary.converged ? "true" : "false", r.summary.residual,
+              r.summary.iterations, r.summary.seconds, n);
+  const Eigen::MatrixX3d& P = r.net.points();
+  for (Eigen::Index i = 0; i < P.rows(); ++i)
+    std::printf("%s[%.17g, %.17g, %.17g]", i ? ", " : "", P(i, 0), P(i, 1), P(i, 2));
+  std::printf("]}}\n");
+  return r.summary.converged ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--solve-circle") {
+    try {
+      return solve_circle(std::stoi(argv[2]), std::stod(argv[3]));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 2;
+    }
+  }
   if (argc > 1 && std::string(argv[1]) == "--rule-probe") {
     rule_probe();
     return 0;

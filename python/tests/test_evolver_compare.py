@@ -116,3 +116,30 @@ def test_refuses_in_one_line_without_evolver(capsys):
     assert ec.main(["--evolver", "no-such-evolver-binary-x"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and re.search(r"apt-get install evolver-nox", err)
+
+
+def test_library_route_measures_the_printed_net_and_takes_the_cheapest_hit(tmp_path):
+    # A stand-in for `example_004_cmc_area_tables --solve-circle N T`: it prints the JSON of the real
+    # program, with the degree-1 net of the plane z = 0 through three points of the unit circle.
+    # The sphere of radius 2 about (0, 0, -sqrt(3)) meets z = 0 in that circle, so the error is the
+    # largest gap between the flat triangle and the sphere, at its centroid (0, 0, 0): 2 - sqrt(3).
+    fake = tmp_path / "fake_example"
+    pts = [[1.0, 0.0, 0.0], [-0.5, math.sqrt(3) / 2, 0.0], [-0.5, -math.sqrt(3) / 2, 0.0]]
+    out = {"degree": 1, "tolerance": 1e-7, "status": "converged", "converged": True, "residual": 3e-8,
+           "iterations": 4, "seconds": 0.01, "net": {"type": "triangular", "degree": 1, "points": pts}}
+    import json as _json
+    fake.write_text("#!/bin/sh\ntest \"$1\" = --solve-circle && test \"$2\" = 1 && test \"$3\" = 1e-07 || exit 7\n"
+                    "cat <<'END'\n" + _json.dumps(out) + "\nEND\n")
+    fake.chmod(0o755)
+    case = ec.circle_case()
+    r = ec.run_library(str(fake), case, 1, 1e-7, 30)
+    assert r["converged"] and r["tolerance"] == 1e-7 and r["iterations"] == 4
+    assert r["error"] == pytest.approx(2 - math.sqrt(3), abs=1e-3)  # the 30-grid reaches the centroid to 1e-3
+    assert "failed" in ec.run_library(str(fake), case, 2, 1e-7, 30)  # the stand-in exits 7 for other arguments
+    rows = [dict(r, cpu=0.5), dict(r, cpu=0.2, error=1e-6, tolerance=1e-9), dict(r, cpu=0.1, error=1e-6, converged=False)]
+    table = ec.time_to_accuracy(case, [], [], [1e-5, 1e-7], rows)
+    assert "bezierpde area, library" in table.splitlines()[0]
+    assert "| 1e-05 | 0.200 s (n = 1, 1e-09) |" in table  # the unconverged 0.1 s row does not count
+    assert "| 1e-07 | not reached |" in table
+    assert "1e-07 | 0.500" not in table
+    assert "tolerance" in ec.library_table(rows).splitlines()[0]
