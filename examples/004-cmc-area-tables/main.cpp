@@ -321,9 +321,10 @@ void margin_probe() {
 
 // One library solve of the circle (H = -0.5, area functional, solver newton) at degree n and
 // first-variation tolerance t, for scripts/evolver_compare.py --tolerances (docs/cmc_evolver.md,
-// "Tolerance as the accuracy knob"): prints one JSON object with the summary and the net (FORMATS.md
-// point order), whose error the script measures as it does for `bpde solve`. The CLI's jobs always
-// solve to 1e-11 (FORMATS.md, "converged"); a looser tolerance is a library option only.
+// "The circle with the tolerance as a second knob"): prints one JSON object with the summary and
+// the net (FORMATS.md point order), whose error the script measures as it does for `bpde solve`.
+// The CLI's jobs always solve to 1e-11 (FORMATS.md, "converged"); a looser tolerance is a library
+// option only. Exit 0 converged (to t), 1 not converged, 2 bad arguments.
 int solve_circle(int n, double tol) {
   bpde::CmcOptions o;
   o.H = -0.5;
