@@ -127,7 +127,7 @@ void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   File out(path);
   std::fprintf(out.f,
                "ply\nformat %s 1.0\ncomment bezierpde surface; mean_curvature per FORMATS.md sign convention; "
-               "regular = 0 where x_u and x_v are parallel (mean_curvature there: mean of the regular neighbours)\n"
+               "regular = 0 where x_u and x_v are parallel (mean_curvature there: the mean of the nearest regular vertices, ring by ring)\n"
                "element vertex %ld\nproperty %s x\nproperty %s y\nproperty %s z\nproperty %s mean_curvature\n"
                "property uchar regular\nelement face %ld\nproperty list uchar int vertex_indices\nend_header\n",
                binary ? "binary_little_endian" : "ascii", static_cast<long>(mesh.V.rows()), type, type, type, type,

@@ -94,30 +94,37 @@ SurfaceFields surface_fields(const Net& net, const TriangleMesh& mesh) {
     const auto& b = std::get<BSplineNet>(net);
     for (Eigen::Index k = 0; k < nv; ++k) classify(k, surface_jet(b, out.uv(k, 0), out.uv(k, 1)));
   }
-  // Irregular vertices: the mean over their regular neighbours.
-  Eigen::VectorXd count = Eigen::VectorXd::Zero(nv), Hs = Eigen::VectorXd::Zero(nv), Ks = Eigen::VectorXd::Zero(nv);
-  Eigen::MatrixX3d Ns = Eigen::MatrixX3d::Zero(nv, 3);
-  for (Eigen::Index t = 0; t < mesh.F.rows(); ++t)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) {
-        const int i = mesh.F(t, a), j = mesh.F(t, b);
-        if (out.regular(i) || !out.regular(j)) continue;
-        // a neighbour shared by two triangles counts twice: a weight, not an error
-        count(i) += 1;
-        Hs(i) += out.H(j);
-        Ks(i) += out.K(j);
-        Ns.row(i) += out.normal.row(j);
-      }
-  for (Eigen::Index k = 0; k < nv; ++k) {
-    if (out.regular(k)) continue;
-    if (count(k) > 0) {
+  // Irregular vertices, ring by ring: first those with a regular neighbour get the mean over their
+  // regular neighbours; then those next to a vertex filled in an earlier ring get the mean over
+  // those, and so on, so that no irregular vertex inside a wide degenerate corner keeps 0.
+  Eigen::Matrix<std::uint8_t, Eigen::Dynamic, 1> known = out.regular;
+  for (Eigen::Index filled = 1; filled > 0;) {
+    filled = 0;
+    Eigen::VectorXd count = Eigen::VectorXd::Zero(nv), Hs = Eigen::VectorXd::Zero(nv), Ks = Eigen::VectorXd::Zero(nv);
+    Eigen::MatrixX3d Ns = Eigen::MatrixX3d::Zero(nv, 3);
+    for (Eigen::Index t = 0; t < mesh.F.rows(); ++t)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          const int i = mesh.F(t, a), j = mesh.F(t, b);
+          if (known(i) || !known(j)) continue;
+          // a neighbour shared by two triangles counts twice: a weight, not an error
+          count(i) += 1;
+          Hs(i) += out.H(j);
+          Ks(i) += out.K(j);
+          Ns.row(i) += out.normal.row(j);
+        }
+    for (Eigen::Index k = 0; k < nv; ++k) {
+      if (known(k) || !(count(k) > 0)) continue;
       out.H(k) = Hs(k) / count(k);
       out.K(k) = Ks(k) / count(k);
       const double len = Ns.row(k).norm();
       if (len > 0) out.normal.row(k) = Ns.row(k) / len;
+      known(k) = 1;
+      ++filled;
     }
-    if (!(out.normal.row(k).norm() > 0)) out.normal.row(k) << 0, 0, 1;
   }
+  for (Eigen::Index k = 0; k < nv; ++k)
+    if (!(out.normal.row(k).norm() > 0)) out.normal.row(k) << 0, 0, 1;
   return out;
 }
 

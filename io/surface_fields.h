@@ -25,8 +25,10 @@ inline constexpr double kRegularSine = 0.05;
 ///  - H: #V mean curvatures, mesh.H at regular vertices. K: #V Gaussian curvatures.
 ///  - regular: #V flags (1 regular, 0 not).
 /// At an irregular vertex, H, K and the normal are the mean over its regular neighbours (the
-/// vertices sharing a triangle with it; the normal renormalised); with no regular neighbour H = K
-/// = 0 and the normal is (0, 0, 1). Nothing is NaN.
+/// vertices sharing a triangle with it; the normal renormalised). An irregular vertex with no
+/// regular neighbour (inside a degenerate corner wider than one sample) takes the mean over its
+/// neighbours filled in the ring before, ring by ring outwards from the regular vertices; only a
+/// mesh without any regular vertex keeps H = K = 0 and the normal (0, 0, 1). Nothing is NaN.
 struct SurfaceFields {
   Eigen::MatrixX2d uv;
   Eigen::MatrixX3d normal;

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include "bezierpde/core/differential_geometry.h"
 #include "bezierpde/io/mesh_io.h"
@@ -90,6 +92,59 @@ TEST(SurfaceFields, DemoCornersAreMarkedAndCarryTheirNeighboursMean) {
       EXPECT_EQ(f.H(k), mesh.H(k)) << k;
     }
   }
+}
+
+TEST(SurfaceFields, WideDegenerateCornersAreFilledRingByRing) {
+  // On a 400-grid the demo's degenerate corners span several rings of irregular samples, so some
+  // irregular vertices have no regular neighbour (they were written as H = 0 before). Each must
+  // now carry a value inside the range of the regular ones, and the first ring still the mean of
+  // its regular neighbours.
+  const Net& net = demo_net();
+  const int N = 400;
+  const TriangleMesh mesh = sample_net(net, N);
+  const SurfaceFields f = surface_fields(net, mesh);
+  std::vector<int> ring(mesh.V.rows(), -1);  // 0 regular, 1 next to a regular vertex, 2 beyond
+  for (Eigen::Index k = 0; k < mesh.V.rows(); ++k)
+    if (f.regular(k)) ring[k] = 0;
+  for (Eigen::Index t = 0; t < mesh.F.rows(); ++t)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (!f.regular(mesh.F(t, a)) && f.regular(mesh.F(t, b))) ring[mesh.F(t, a)] = 1;
+  double lo = 1e300, hi = -1e300;
+  for (Eigen::Index k = 0; k < mesh.V.rows(); ++k)
+    if (f.regular(k)) lo = std::min(lo, f.H(k)), hi = std::max(hi, f.H(k));
+  int beyond = 0;
+  for (Eigen::Index k = 0; k < mesh.V.rows(); ++k) {
+    if (f.regular(k)) continue;
+    if (ring[k] == -1) ++beyond;
+    EXPECT_GE(f.H(k), lo) << k;
+    EXPECT_LE(f.H(k), hi) << k;
+    EXPECT_NE(f.H(k), 0.0) << k;
+    EXPECT_NEAR(f.normal.row(k).norm(), 1.0, 1e-12) << k;
+    // the cap's normals point up and lean outwards at the boundary: not the (0, 0, 1) filler
+    EXPECT_GT(f.normal(k, 2), 0.0) << k;
+    EXPECT_LT(f.normal(k, 2), 1.0 - 1e-9) << k;
+  }
+  EXPECT_GE(beyond, 3) << "the test needs irregular vertices without a regular neighbour";
+  // the first ring: exactly the mean over the regular neighbours (each counted once per triangle)
+  const auto vid = [N](int a, int b) { return a * (N + 1) - a * (a - 1) / 2 + b; };
+  int checked = 0;
+  for (int a = 0; a <= N && checked < 50; ++a)
+    for (int b = 0; a + b <= N && checked < 50; ++b) {
+      const int k = vid(a, b);
+      if (ring[k] != 1) continue;
+      double sum = 0;
+      int cnt = 0;
+      for (Eigen::Index t = 0; t < mesh.F.rows(); ++t)
+        for (int x = 0; x < 3; ++x)
+          if (mesh.F(t, x) == k)
+            for (int y = 0; y < 3; ++y)
+              if (f.regular(mesh.F(t, y))) sum += f.H(mesh.F(t, y)), ++cnt;
+      ASSERT_GT(cnt, 0);
+      EXPECT_NEAR(f.H(k), sum / cnt, 1e-12 * std::abs(sum / cnt)) << k;
+      ++checked;
+    }
+  EXPECT_GT(checked, 0);
 }
 
 TEST(SurfaceFields, ParametersAndGeometryMatchTheNet) {
