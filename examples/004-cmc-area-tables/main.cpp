@@ -346,9 +346,21 @@ int solve_circle(int n, double tol) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc == 4 && std::string(argv[1]) == "--solve-circle") {
+  if (argc > 1 && std::string(argv[1]) == "--solve-circle") {
+    int n = 0;
+    double tol = 0;
+    size_t used_n = 0, used_t = 0;
     try {
-      return solve_circle(std::stoi(argv[2]), std::stod(argv[3]));
+      if (argc == 4) n = std::stoi(argv[2], &used_n), tol = std::stod(argv[3], &used_t);
+    } catch (const std::exception&) {
+      used_n = used_t = 0;
+    }
+    if (argc != 4 || used_n != std::string(argv[2]).size() || used_t != std::string(argv[3]).size()) {
+      std::fprintf(stderr, "error: --solve-circle needs a degree N (an integer) and a TOLERANCE (a number)\n");
+      return 2;
+    }
+    try {
+      return solve_circle(n, tol);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "error: %s\n", e.what());
       return 2;
