@@ -353,6 +353,9 @@ def run_library(example, case, degree, tolerance, grid):
         return {"degree": degree, "functional": "area", "tolerance": tolerance, "cpu": cpu,
                 "failed": (p.stderr or p.stdout).strip()}
     r = json.loads(p.stdout)
+    if r.get("H") != case.H:
+        return {"degree": degree, "functional": "area", "tolerance": tolerance, "cpu": cpu,
+                "failed": "the library route solved H = %r, the case is H = %r" % (r.get("H"), case.H)}
     return {
         "degree": degree,
         "functional": "area",
@@ -469,7 +472,14 @@ def main(argv=None):
     ap.add_argument("--library", default="build/example_004_cmc_area_tables",
                     help="the example program of the library route")
     args = ap.parse_args(argv)
-    tolerances = [float(t) for t in args.tolerances.split(",") if t]
+    try:
+        tolerances = [float(t) for t in args.tolerances.split(",") if t]
+    except ValueError:
+        tolerances = None
+    if tolerances is None or not all(0 < t <= 1e-3 for t in tolerances):
+        print("error: --tolerances must be comma-separated numbers in (0, 1e-3], got %r" % args.tolerances,
+              file=sys.stderr)
+        return 2
     if tolerances and not (os.path.isfile(args.library) and os.access(args.library, os.X_OK)):
         print("error: %s is not an executable; build it with `cmake --build build --target "
               "example_004_cmc_area_tables`" % args.library, file=sys.stderr)
@@ -502,7 +512,7 @@ def main(argv=None):
         if lrows:
             print("\n### %s, H = %g (bezierpde library, by tolerance)\n" % (case.name, case.H))
             print(library_table(lrows))
-        print()
+            print()
         print(evolver_table(case, erows))
         print()
         print(time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9], lrows))

@@ -332,9 +332,9 @@ int solve_circle(int n, double tol) {
   o.tolerance = tol;
   o.validate();
   const auto r = bpde::solve_cmc(bpde::circle_three_arcs(n), o);
-  std::printf("{\"degree\": %d, \"tolerance\": %.17g, \"status\": \"%s\", \"converged\": %s, \"residual\": %.17g, "
+  std::printf("{\"degree\": %d, \"H\": %.17g, \"tolerance\": %.17g, \"status\": \"%s\", \"converged\": %s, \"residual\": %.17g, "
               "\"iterations\": %d, \"seconds\": %.17g, \"net\": {\"type\": \"triangular\", \"degree\": %d, \"points\": [",
-              n, tol, bpde::to_string(r.summary.status), r.summary.converged ? "true" : "false", r.summary.residual,
+              n, o.H, tol, bpde::to_string(r.summary.status), r.summary.converged ? "true" : "false", r.summary.residual,
               r.summary.iterations, r.summary.seconds, n);
   const Eigen::MatrixX3d& P = r.net.points();
   for (Eigen::Index i = 0; i < P.rows(); ++i)

@@ -125,7 +125,7 @@ def test_library_route_measures_the_printed_net_and_takes_the_cheapest_hit(tmp_p
     # largest gap between the flat triangle and the sphere, at its centroid (0, 0, 0): 2 - sqrt(3).
     fake = tmp_path / "fake_example"
     pts = [[1.0, 0.0, 0.0], [-0.5, math.sqrt(3) / 2, 0.0], [-0.5, -math.sqrt(3) / 2, 0.0]]
-    out = {"degree": 1, "tolerance": 1e-7, "status": "converged", "converged": True, "residual": 3e-8,
+    out = {"degree": 1, "H": -0.5, "tolerance": 1e-7, "status": "converged", "converged": True, "residual": 3e-8,
            "iterations": 4, "seconds": 0.01, "net": {"type": "triangular", "degree": 1, "points": pts}}
     import json as _json
     fake.write_text("#!/bin/sh\ntest \"$1\" = --solve-circle && test \"$2\" = 1 && test \"$3\" = 1e-07 || exit 7\n"
@@ -143,3 +143,15 @@ def test_library_route_measures_the_printed_net_and_takes_the_cheapest_hit(tmp_p
     assert "| 1e-07 | not reached |" in table
     assert "1e-07 | 0.500" not in table
     assert "tolerance" in ec.library_table(rows).splitlines()[0]
+    # a program that solved another H is a failed row, not a measurement
+    other = tmp_path / "other_h"
+    other.write_text("#!/bin/sh\ncat <<'END'\n" + _json.dumps(dict(out, H=-0.9)) + "\nEND\n")
+    other.chmod(0o755)
+    assert "H = -0.9" in ec.run_library(str(other), case, 1, 1e-7, 30)["failed"]
+
+
+def test_refuses_malformed_tolerances(capsys):
+    for bad in ("abc", "1e-7,x", "0", "1e-2"):
+        assert ec.main(["--tolerances", bad, "--library", SCRIPT]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "--tolerances" in err
