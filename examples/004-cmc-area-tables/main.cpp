@@ -33,6 +33,7 @@
 #include <exception>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bezierpde/boundaries/reference_boundaries.h"
@@ -201,15 +202,16 @@ void rule_probe() {
   }
 }
 
-// From the solved circle (H = -0.5, n = 8 and 10): Newton steps on A_H restricted to the motion of
-// each free point along the surface normal at its parameter (I/n), the gauge that removes the
-// tangential (reparametrisation) modes. Prints the residual and the normal and tangential parts
-// of the gradient (Euclidean) before each step, on the rule the solve ended with.
+// From the solved circle (H = -0.5 at n = 8 and 10, converged; H = -0.9 at n = 10, stopped at its
+// numerical limit): Newton steps on A_H restricted to the motion of each free point along the
+// surface normal at its parameter (I/n), the gauge that removes the tangential (reparametrisation)
+// modes. Prints the residual, the normal and tangential parts of the gradient (Euclidean) and the
+// H deviation (40-grid, corner margin 0.1) before each step, on the rule the solve ended with.
+// Then one full Newton step (all modes, exact Hessian, LU) from the H = -0.9 end point.
 void gauge_probe() {
-  const double H = -0.5;
-  std::printf("| n | step | residual | \\|g\\| normal part | \\|g\\| tangential part | reduced Hessian eigenvalues |\n");
-  std::printf("| --- | --- | --- | --- | --- | --- |\n");
-  for (int n : {8, 10}) {
+  std::printf("| H | n | step | residual | \\|g\\| normal part | \\|g\\| tangential part | reduced Hessian eigenvalues | max \\|H_sampled − H\\| |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (const auto& [H, n] : {std::pair{-0.5, 8}, std::pair{-0.5, 10}, std::pair{-0.9, 10}}) {
     const auto r = solve(bpde::circle_three_arcs(n), H, true);
     const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
     const int k = static_cast<int>(idx.size());
@@ -234,16 +236,49 @@ void gauge_probe() {
       const Eigen::MatrixXd Kr = Nm.transpose() * K * Nm;
       const Eigen::VectorXd gr = Nm.transpose() * g;
       const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Kr).eigenvalues();
-      std::printf("| %d | %d | %.1e | %.1e | %.1e | %.1e … %.1e |\n", n, step, G.cwiseAbs().maxCoeff() / S.maxCoeff(),
-                  gr.norm(), (g - Nm * gr).norm(), ev(0), ev(k - 1));
+      const bpde::MeanCurvatureStats hs = bpde::mean_curvature_stats(net, 40, 0.1);
+      std::printf("| %g | %d | %d | %.1e | %.1e | %.1e | %.1e … %.1e | %.1e |\n", H, n, step,
+                  G.cwiseAbs().maxCoeff() / S.maxCoeff(), gr.norm(), (g - Nm * gr).norm(), ev(0), ev(k - 1),
+                  std::max(std::abs(hs.min - H), std::abs(hs.max - H)));
       const Eigen::VectorXd d = Nm * Kr.ldlt().solve(-gr);
       for (int i = 0; i < k; ++i) net.points().row(idx[i]) += d.segment<3>(3 * i).transpose();
     }
   }
+  {
+    // One full Newton step over all modes from the H = -0.9 end point (n = 10).
+    const double H = -0.9;
+    const int n = 10;
+    const auto r = solve(bpde::circle_three_arcs(n), H, true);
+    const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
+    const int k = static_cast<int>(idx.size());
+    const auto f = bpde::CmcFunctional::cached_triangular(n);
+    const bpde::AreaForm a = bpde::AreaForm::triangular(n, r.quadrature_points, 1);
+    auto gradient = [&](const Eigen::MatrixX3d& P, double* rel) {
+      Eigen::MatrixX3d GA, SA, GV, SV;
+      a.gradient_rows_and_scale(P, idx, &GA, &SA);
+      f->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
+      const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
+      *rel = G.cwiseAbs().maxCoeff() / S.maxCoeff();
+      Eigen::VectorXd g(3 * k);
+      for (int i = 0; i < k; ++i) g.segment<3>(3 * i) = G.row(i).transpose();
+      return g;
+    };
+    const Eigen::MatrixX3d P = r.net.points();
+    double r0 = 0, r1 = 0;
+    const Eigen::VectorXd g = gradient(P, &r0);
+    const Eigen::MatrixXd K = a.hessian(P, idx) + 2 * H * f->volume_form().hessian(P, idx);
+    const Eigen::VectorXd d = -K.fullPivLu().solve(g);
+    Eigen::MatrixX3d Pn = P;
+    for (int i = 0; i < k; ++i) Pn.row(idx[i]) += d.segment<3>(3 * i).transpose();
+    gradient(Pn, &r1);
+    std::printf("\nFull Newton step from the H = -0.9, n = 10 end point: residual %.1e -> %.1e, max |step| %.1e"
+                " (the free points are O(1))\n", r0, r1, d.cwiseAbs().maxCoeff());
+  }
   // The minimum-residual step over all modes, soft ones included: Levenberg–Marquardt on ‖g‖²,
   // (K² + μC) d = -K g (C the Dirichlet Gram), the μ in 1e-2, 1e-3, …, 1e-22 with the smallest
-  // residual among those that lower ‖g‖, from the converged circle at n = 10.
+  // residual among those that lower ‖g‖, from the converged circle at n = 10 (H = -0.5).
   std::printf("\n| n | step | residual | best μ |\n| --- | --- | --- | --- |\n");
+  const double H = -0.5;
   const int n = 10;
   const auto r = solve(bpde::circle_three_arcs(n), H, true);
   const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
