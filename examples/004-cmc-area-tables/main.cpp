@@ -9,7 +9,7 @@
 //     (θ, ρ) = (1.2u + 0.4v, 1.1 + 0.8v); checked by |√(x² + y²) - cosh z|.
 //
 // Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
-//                                     --gauge-probe | --solve-circle N TOLERANCE]
+//                                     --gauge-probe | --lsq-probe | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
@@ -22,6 +22,9 @@
 //   rules on the solved nets (docs/cmc.md, "The rule near nearly degenerate corners"; seconds).
 //   --gauge-probe: Newton steps restricted to normal motion of the free points on the solved
 //   circle (docs/cmc.md, "Not done yet"; seconds).
+//   --lsq-probe: from the area route's circle at n = 10 (H = -0.5, -0.9), Levenberg–Marquardt on
+//   ∫ (H_x − H)² dA: how near to CMC the degree-10 space gets (docs/cmc.md, "Not done yet"; about
+//   a minute).
 // Columns: "dist" is the max over a 40-sample grid (every sample, corners included) of the distance
 // measure above; the H range is taken on the 40-grid with corner margin 0.1; "residual" is the
 // relative first variation of the functional solved (eq. (11) for D_H, A_H for area); "iterations"
@@ -37,6 +40,7 @@
 #include <vector>
 
 #include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/core/quadrature.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
@@ -354,6 +358,89 @@ void margin_probe() {
   }
 }
 
+// Whether the degree-n space holds a surface nearer to CMC than the A_H critical point
+// (docs/cmc.md, "Not done yet"): from the area route's result on the circle, Levenberg–Marquardt
+// on the least-squares mean-curvature deviation Φ = ∫ (H_x − H)² dA (residuals √(w |x_u ∧ x_v|)
+// (H_x − H) at the nodes of the collapsed Gauss rule q = 20 on the triangle, Jacobian by central
+// differences with step 1e-7, damping λ diag(JᵀJ)). A probe, not a solver: it prints, every 10
+// iterations, the A_H first variation (relative), ‖H_x − H‖ in L²(dA), the distance to the sphere
+// (40-grid, corners included) and max |H_sampled − H| at corner margins 0.1, 0.2, 0.3.
+void lsq_probe() {
+  std::printf("| H | n | iteration | A_H first variation | ‖H_x − H‖ (L², dA) | dist to the sphere | margin 0.1 | 0.2 | 0.3 |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  const int n = 10;
+  for (const auto& [H, iterations] : {std::pair{-0.5, 20}, std::pair{-0.9, 40}}) {
+    const double R = 1 / std::abs(H);
+    const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
+    const auto r0 = solve(bpde::circle_three_arcs(n), H, true);
+    const std::vector<int> idx = r0.net.free_indices(bpde::FixedSet::Boundary);
+    const int k = static_cast<int>(idx.size());
+    const auto f = bpde::CmcFunctional::cached_triangular(n);
+    const bpde::AreaForm a = bpde::AreaForm::triangular(n, r0.quadrature_points, 1);
+    const bpde::QuadratureRuleTriangle rule = bpde::gauss_triangle(20);
+    const Eigen::Index M = rule.w.size();
+    auto deviation = [&](const bpde::TriangularNet& net) {
+      Eigen::VectorXd d(M);
+      for (Eigen::Index j = 0; j < M; ++j) {
+        const double u = rule.uv(j, 0), v = rule.uv(j, 1);
+        const bpde::FundamentalForms g = net.geometry(u, v);
+        const double dA = net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).norm();
+        d(j) = std::sqrt(rule.w(j) * dA) * (g.regular ? g.H - H : 0.0);
+      }
+      return d;
+    };
+    auto report = [&](int it, const bpde::TriangularNet& net) {
+      Eigen::MatrixX3d GA, SA, GV, SV;
+      a.gradient_rows_and_scale(net.points(), idx, &GA, &SA);
+      f->volume_form().gradient_rows_and_scale(net.points(), idx, &GV, &SV);
+      const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
+      std::printf("| %g | %d | %d | %.1e | %.1e | %.1e |", H, n, it, G.cwiseAbs().maxCoeff() / S.maxCoeff(),
+                  deviation(net).norm(), worst(net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; }));
+      for (double m : {0.1, 0.2, 0.3}) {
+        const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(net, 40, m);
+        std::printf(" %.1e |", std::max(std::abs(s.min - H), std::abs(s.max - H)));
+      }
+      std::printf("\n");
+      std::fflush(stdout);
+    };
+    bpde::TriangularNet net = r0.net;
+    report(0, net);
+    double lambda = 1e-6;
+    for (int it = 1; it <= iterations; ++it) {
+      const Eigen::VectorXd d0 = deviation(net);
+      Eigen::MatrixXd J(M, 3 * k);
+      const double h = 1e-7;
+      for (int i = 0; i < k; ++i)
+        for (int col = 0; col < 3; ++col) {
+          bpde::TriangularNet p = net, m = net;
+          p.points()(idx[i], col) += h;
+          m.points()(idx[i], col) -= h;
+          J.col(3 * i + col) = (deviation(p) - deviation(m)) / (2 * h);
+        }
+      const Eigen::MatrixXd JtJ = J.transpose() * J;
+      const Eigen::VectorXd Jtd = J.transpose() * d0;
+      const Eigen::VectorXd diag = JtJ.diagonal().cwiseMax(1e-12 * JtJ.diagonal().maxCoeff());
+      bool accepted = false;
+      for (int t = 0; t < 12 && !accepted; ++t) {
+        Eigen::MatrixXd A = JtJ;
+        A.diagonal() += lambda * diag;
+        const Eigen::VectorXd step = -A.ldlt().solve(Jtd);
+        bpde::TriangularNet next = net;
+        for (int i = 0; i < k; ++i) next.points().row(idx[i]) += step.segment<3>(3 * i).transpose();
+        if (deviation(next).norm() < d0.norm()) {
+          net = next;
+          lambda = std::max(lambda / 3, 1e-12);
+          accepted = true;
+        } else {
+          lambda *= 10;
+        }
+      }
+      if (!accepted || it % 10 == 0) report(it, net);
+      if (!accepted) break;
+    }
+  }
+}
+
 // One library solve of the circle (H = -0.5, area functional, solver newton) at degree n and
 // first-variation tolerance t, for scripts/evolver_compare.py --tolerances (docs/cmc_evolver.md,
 // "The circle with the tolerance as a second knob"): prints one JSON object with the summary and
@@ -407,6 +494,10 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string(argv[1]) == "--gauge-probe") {
     gauge_probe();
+    return 0;
+  }
+  if (argc > 1 && std::string(argv[1]) == "--lsq-probe") {
+    lsq_probe();
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--margin-probe") {
