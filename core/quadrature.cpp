@@ -1,6 +1,9 @@
 #include "bezierpde/core/quadrature.h"
 
+#include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 #include <numbers>
 
 #include "bezierpde/core/errors.h"
@@ -67,6 +70,57 @@ QuadratureRuleTriangle gauss_triangle(int q) {
       r.w(k) = g.w(a) * g.w(b) * (1 - g.x(a));
     }
   return r;
+}
+
+namespace {
+
+using Tri = std::array<Eigen::Vector2d, 3>;  // {collapsed corner C, P1, P2}
+
+// Nodes and weights of the Duffy rules on the triangles (u, v) = C + s(P1 - C) + s t(P2 - P1),
+// Jacobian s |det(P1 - C, P2 - C)|, with q x q Gauss–Legendre points in (σ, t), s = σ^p (p = the
+// grading; p = 1 is the plain Duffy rule, ds = p σ^(p-1) dσ).
+QuadratureRuleTriangle duffy_rule(const std::vector<Tri>& tris, int q, int grading) {
+  if (q < 1 || q > 200) throw ParameterError("corner-collapsed rule: q must be in 1..200, got " + std::to_string(q));
+  if (grading < 1 || grading > 4)
+    throw ParameterError("corner-collapsed rule: grading must be in 1..4, got " + std::to_string(grading));
+  const QuadratureRule1D g = gauss_legendre01(q);
+  const Eigen::Index per = static_cast<Eigen::Index>(q) * q;
+  QuadratureRuleTriangle rule;
+  rule.uv.resize(per * static_cast<Eigen::Index>(tris.size()), 2);
+  rule.w.resize(rule.uv.rows());
+  Eigen::Index r = 0;
+  for (const Tri& T : tris) {
+    const Eigen::Vector2d e1 = T[1] - T[0], e2 = T[2] - T[1];
+    const double det = std::abs(e1(0) * (T[2] - T[0])(1) - e1(1) * (T[2] - T[0])(0));
+    for (int a = 0; a < q; ++a)
+      for (int b = 0; b < q; ++b, ++r) {
+        const double sg = g.x(a), t = g.x(b);
+        const double s = std::pow(sg, grading), ds = grading * std::pow(sg, grading - 1);
+        rule.uv.row(r) = (T[0] + s * e1 + s * t * e2).transpose();
+        rule.w(r) = g.w(a) * g.w(b) * s * ds * det;
+      }
+  }
+  return rule;
+}
+
+}  // namespace
+
+QuadratureRuleTriangle corner_collapsed_triangle_rule(int q, int grading) {
+  const Eigen::Vector2d A(1, 0), B(0, 1), C(0, 0), G(1.0 / 3, 1.0 / 3);
+  const Eigen::Vector2d mAB = (A + B) / 2, mAC = (A + C) / 2, mBC = (B + C) / 2;
+  return duffy_rule({{A, mAB, G}, {A, mAC, G}, {B, mAB, G}, {B, mBC, G}, {C, mAC, G}, {C, mBC, G}}, q, grading);
+}
+
+QuadratureRuleTriangle corner_collapsed_square_rule(int q, int grading) {
+  const Eigen::Vector2d M(0.5, 0.5);
+  std::vector<Tri> tris;
+  for (int cu = 0; cu <= 1; ++cu)
+    for (int cv = 0; cv <= 1; ++cv) {
+      const Eigen::Vector2d corner(cu, cv);
+      tris.push_back({corner, Eigen::Vector2d(0.5, cv), M});
+      tris.push_back({corner, Eigen::Vector2d(cu, 0.5), M});
+    }
+  return duffy_rule(tris, q, grading);
 }
 
 }  // namespace bpde

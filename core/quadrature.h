@@ -21,4 +21,15 @@ struct QuadratureRuleTriangle {
 };
 QuadratureRuleTriangle gauss_triangle(int q);
 
+/// Corner-collapsed rules (the area functional's, solvers/cmc/area_functional.h, "The rules"):
+/// the triangle T cut by its centroid and edge midpoints into six triangles, each mapped from the
+/// unit square by the Duffy map collapsed at its corner of T, (u, v) = C + s(P1 − C) + st(P2 − P1),
+/// with q × q Gauss–Legendre points in (σ, t) and s = σ^grading: 6q² nodes, weights summing to 1/2.
+/// An integrand that is s times a smooth function near a corner (|x_u ∧ x_v| where x_u ∥ x_v there)
+/// is integrated with an error exponential in q. q in 1..200, grading in 1..4 (ParameterError).
+QuadratureRuleTriangle corner_collapsed_triangle_rule(int q, int grading = 1);
+/// The same on the unit square: each quadrant split by its diagonal into two triangles collapsed
+/// at the square's corner, 8q² nodes, weights summing to 1 (rows of uv are (u, v)).
+QuadratureRuleTriangle corner_collapsed_square_rule(int q, int grading = 1);
+
 }  // namespace bpde

@@ -21,51 +21,6 @@
 namespace bpde {
 namespace {
 
-using Tri = std::array<Eigen::Vector2d, 3>;  // {collapsed corner C, P1, P2}
-
-// Nodes and weights of the Duffy rules on the triangles (u, v) = C + s(P1 - C) + s t(P2 - P1),
-// Jacobian s |det(P1 - C, P2 - C)|, with q x q Gauss–Legendre points in (σ, t), s = σ^p (p = the
-// grading; p = 1 is the plain Duffy rule, ds = p σ^(p-1) dσ).
-void duffy_rule(const std::vector<Tri>& tris, int q, int grading, Eigen::MatrixX2d& uv, Eigen::VectorXd& w) {
-  const QuadratureRule1D g = gauss_legendre01(q);
-  const Eigen::Index per = static_cast<Eigen::Index>(q) * q;
-  uv.resize(per * static_cast<Eigen::Index>(tris.size()), 2);
-  w.resize(uv.rows());
-  Eigen::Index r = 0;
-  for (const Tri& T : tris) {
-    const Eigen::Vector2d e1 = T[1] - T[0], e2 = T[2] - T[1];
-    const double det = std::abs(e1(0) * (T[2] - T[0])(1) - e1(1) * (T[2] - T[0])(0));
-    for (int a = 0; a < q; ++a)
-      for (int b = 0; b < q; ++b, ++r) {
-        const double sg = g.x(a), t = g.x(b);
-        const double s = std::pow(sg, grading), ds = grading * std::pow(sg, grading - 1);
-        uv.row(r) = (T[0] + s * e1 + s * t * e2).transpose();
-        w(r) = g.w(a) * g.w(b) * s * ds * det;
-      }
-  }
-}
-
-// The six triangles of T cut by the centroid and the edge midpoints, each collapsed at its corner
-// of T; the eight of the unit square (each quadrant split by its diagonal), collapsed at the
-// square's corners (area_functional.h, "The rules").
-std::vector<Tri> triangle_pieces() {
-  const Eigen::Vector2d A(1, 0), B(0, 1), C(0, 0), G(1.0 / 3, 1.0 / 3);
-  const Eigen::Vector2d mAB = (A + B) / 2, mAC = (A + C) / 2, mBC = (B + C) / 2;
-  return {{A, mAB, G}, {A, mAC, G}, {B, mAB, G}, {B, mBC, G}, {C, mAC, G}, {C, mBC, G}};
-}
-
-std::vector<Tri> square_pieces() {
-  const Eigen::Vector2d M(0.5, 0.5);
-  std::vector<Tri> tris;
-  for (int cu = 0; cu <= 1; ++cu)
-    for (int cv = 0; cv <= 1; ++cv) {
-      const Eigen::Vector2d corner(cu, cv);
-      tris.push_back({corner, Eigen::Vector2d(0.5, cv), M});
-      tris.push_back({corner, Eigen::Vector2d(cu, 0.5), M});
-    }
-  return tris;
-}
-
 void check_q(int q, int grading) {
   if (q < 1 || q > 200)
     throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
@@ -99,7 +54,11 @@ AreaForm AreaForm::triangular(int n, int q, int grading) {
   check_q(q, grading);
   Eigen::MatrixX2d uv;
   AreaForm f;
-  duffy_rule(triangle_pieces(), q, grading, uv, f.w_);
+  {
+    const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(q, grading);
+    uv = rule.uv;
+    f.w_ = rule.w;
+  }
   f.q_ = q;
   f.grading_ = grading;
   f.Bu_ = triangular_basis_table(n, uv, 1, 0);
@@ -114,7 +73,11 @@ AreaForm AreaForm::tensor(int n, int m, int q, int grading) {
   check_q(q, grading);
   Eigen::MatrixX2d uv;
   AreaForm f;
-  duffy_rule(square_pieces(), q, grading, uv, f.w_);
+  {
+    const QuadratureRuleTriangle rule = corner_collapsed_square_rule(q, grading);
+    uv = rule.uv;
+    f.w_ = rule.w;
+  }
   f.q_ = q;
   f.grading_ = grading;
   const Eigen::VectorXd us = uv.col(0), vs = uv.col(1);
@@ -267,7 +230,11 @@ double area(const TriangularNet& net) {
   const int n = net.n();
   Eigen::MatrixX2d uv;
   Eigen::VectorXd w;
-  duffy_rule(triangle_pieces(), report_q(n), 1, uv, w);
+  {
+    const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(report_q(n));
+    uv = rule.uv;
+    w = rule.w;
+  }
   const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
   return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
     const Eigen::MatrixXd B = TriangularNet::basis_matrix(n - 1, b);
@@ -280,7 +247,11 @@ double area(const TensorNet& net) {
   const int n = net.n(), m = net.m();
   Eigen::MatrixX2d uv;
   Eigen::VectorXd w;
-  duffy_rule(square_pieces(), report_q(std::max(n, m)), 1, uv, w);
+  {
+    const QuadratureRuleTriangle rule = corner_collapsed_square_rule(report_q(std::max(n, m)));
+    uv = rule.uv;
+    w = rule.w;
+  }
   // Derivative nets: degree (n-1, m) for x_u and (n, m-1) for x_v, rows i(m'+1) + j.
   const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
   return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
