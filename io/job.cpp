@@ -135,16 +135,30 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     check_keys(j, path, {"kind"});
     p.kind = ProblemKind::BiharmonicLoad;
   } else if (kind == "cmc") {
-    check_keys(j, path, {"kind", "H", "V", "solver", "functional"});
+    check_keys(j, path, {"kind", "H", "V", "solver", "functional", "mean_curvature_tolerance"});
     const bool hasH = j.contains("H"), hasV = j.contains("V");
     if (hasH == hasV) throw ParseError(path + ": a cmc problem gives exactly one of \"H\" and \"V\"");
     if (j.contains("functional")) {
       const std::string f = string(j["functional"], path + ".functional");
-      if (f != "dirichlet" && f != "area")
-        throw ParseError(path + ".functional: unknown functional \"" + f + "\" (expected dirichlet or area)");
+      if (f != "dirichlet" && f != "area" && f != "mean-curvature")
+        throw ParseError(path + ".functional: unknown functional \"" + f +
+                         "\" (expected dirichlet, area or mean-curvature)");
       p.functional = parse_cmc_functional(f);
     }
     const bool area = p.functional == CmcFunctionalKind::Area;
+    const bool mean_curvature = p.functional == CmcFunctionalKind::MeanCurvature;
+    if (j.contains("mean_curvature_tolerance")) {
+      if (!mean_curvature)
+        throw ParseError(path + ".mean_curvature_tolerance: only with \"functional\": \"mean-curvature\"");
+      p.mean_curvature_tolerance = number(j["mean_curvature_tolerance"], path + ".mean_curvature_tolerance");
+      if (!(p.mean_curvature_tolerance > 0.0 && p.mean_curvature_tolerance < 1.0))
+        throw ParseError(path + ".mean_curvature_tolerance: must be in (0, 1), got " +
+                         std::to_string(p.mean_curvature_tolerance));
+    }
+    if (mean_curvature && hasV)
+      throw UnsupportedProblem(path + ": a mean-curvature cmc problem takes \"H\", not \"V\"");
+    if (mean_curvature && j.contains("solver") && j["solver"].is_string() && j["solver"].get<std::string>() != "newton")
+      throw UnsupportedProblem(path + ": a mean-curvature cmc problem is solved by \"solver\": \"newton\"");
     if (j.contains("solver")) {
       const std::string s = string(j["solver"], path + ".solver");
       if (s != "newton" && s != "ceres" && s != "nlopt")

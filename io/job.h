@@ -30,6 +30,7 @@ struct Problem {
   double V = 0.0;                        ///< cmc with "V"
   /// cmc: "dirichlet" (D_H, default) or "area" (A_H)
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
+  double mean_curvature_tolerance = 1e-6;  ///< cmc, functional mean-curvature: converged when √Φ ≤ this
 };
 
 struct Job {

@@ -120,6 +120,7 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   o.solver = job.problem.solver;
   o.progress = job_progress();
   o.functional = job.problem.functional;
+  o.mean_curvature_tolerance = job.problem.mean_curvature_tolerance;
   if (job.problem.kind == ProblemKind::CmcV)
     o.V = job.problem.V;
   else
@@ -223,6 +224,7 @@ Solver select_tensor_pde(const Problem& p) {
 // The cmc requirements of the job's functional (the area functional takes boundary and
 // boundary+adjacent data, solvers newton and ceres).
 SolverRequirements cmc_requirements_for(const Problem& p) {
+  if (p.functional == CmcFunctionalKind::MeanCurvature) return cmc_mean_curvature_requirements();
   return p.functional == CmcFunctionalKind::Area ? cmc_area_requirements() : cmc_requirements();
 }
 

@@ -522,7 +522,13 @@ PYBIND11_MODULE(_core, m) {
       .def_property(
           "fixed", [](const bpde::CmcOptions& o) { return bpde::to_string(o.fixed); },
           [](bpde::CmcOptions& o, const std::string& s) { o.fixed = parse_fixed(s); })
+      .def_property(
+          "functional", [](const bpde::CmcOptions& o) { return bpde::to_string(o.functional); },
+          [](bpde::CmcOptions& o, const std::string& s) { o.functional = bpde::parse_cmc_functional(s); },
+          "\"dirichlet\" (default), \"area\" or \"mean-curvature\" (solvers/cmc/cmc.h).")
       .def_readwrite("tolerance", &bpde::CmcOptions::tolerance)
+      .def_readwrite("mean_curvature_tolerance", &bpde::CmcOptions::mean_curvature_tolerance)
+      .def_readwrite("max_least_squares_iterations", &bpde::CmcOptions::max_least_squares_iterations)
       .def_readwrite("max_corrector_iterations", &bpde::CmcOptions::max_corrector_iterations)
       .def_readwrite("max_continuation_steps", &bpde::CmcOptions::max_continuation_steps)
       .def_readwrite("min_step", &bpde::CmcOptions::min_step);
@@ -534,6 +540,10 @@ PYBIND11_MODULE(_core, m) {
         .def_readonly("D", &R::D)
         .def_readonly("V", &R::V)
         .def_readonly("DH", &R::DH)
+        .def_readonly("A", &R::A)
+        .def_readonly("energy", &R::energy)
+        .def_property_readonly("functional", [](const R& r) { return bpde::to_string(r.functional); })
+        .def_readonly("quadrature_points", &R::quadrature_points)
         .def_readonly("continuation_steps", &R::continuation_steps)
         .def_readonly("summary", &R::summary);
   };
@@ -543,7 +553,8 @@ PYBIND11_MODULE(_core, m) {
       "solve_cmc",
       [](const bpde::TriangularNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },
       py::arg("data"), py::arg("options"), py::call_guard<py::gil_scoped_release>(),
-      "Critical point of D + 2HV (solvers/cmc/cmc.h) -> CmcResult (net, H, D, V, DH, summary).");
+      "The cmc problem of solvers/cmc/cmc.h (options.functional: the critical point of D + 2HV, of A + 2HV, "
+      "or the least squares of the mean curvature) -> CmcResult (net, H, D, V, DH, A, energy, functional, summary).");
   m.def(
       "solve_cmc",
       [](const bpde::TensorNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },

@@ -389,3 +389,27 @@ def test_the_gil_is_released_during_the_solvers(name):
     }[name]
     inside, seconds = ticks_during(solve)
     assert inside >= 3, (inside, seconds)
+
+
+def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
+    """CmcOptions.functional from Python (dirichlet, area, mean-curvature): the C++ defaults, the
+    result fields, and the same net and numbers as the job route on the Fig. 1 circle."""
+    o = bezierpde.CmcOptions()
+    assert (o.functional, o.mean_curvature_tolerance, o.max_least_squares_iterations) == ("dirichlet", 1e-6, 2000)
+    with pytest.raises(bezierpde.ParameterError, match="mean-curvature"):
+        o.functional = "curvature"
+    job = {"boundary": {"type": "triangular", "degree": 8, "builder": "circle-three-arcs"},
+           "problem": {"kind": "cmc", "H": -0.9, "functional": "mean-curvature"}}
+    net_cli, report = bezierpde.solve(job)
+    o.H = -0.9
+    o.functional = "mean-curvature"
+    o.mean_curvature_tolerance = 1e-3
+    data = bezierpde.net_from_dict(net_cli)
+    loose = bezierpde.solve_cmc(data, o)
+    assert loose.functional == "mean-curvature" and loose.summary.converged
+    assert loose.energy == pytest.approx(loose.summary.residual ** 2, rel=1e-12)
+    o.mean_curvature_tolerance = 1e-6
+    r = bezierpde.solve_cmc(data, o)
+    assert r.summary.converged == report["converged"] and r.summary.residual == report["residual"]
+    assert bits(np.asarray(r.net.points).tolist()) == bits(bezierpde.points(net_cli).tolist())
+    assert r.A == report["area"] and r.energy == report["energy"]

@@ -11,6 +11,7 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 #include "bezierpde/solvers/summary.h"
 
@@ -26,6 +27,15 @@ void CmcOptions::validate() const {
       throw UnsupportedProblem("cmc: the volume-constrained area problem (V) is solved by the newton solver only");
     if (fixed == FixedSet::UBoundaries)
       throw UnsupportedProblem("cmc: the area functional needs fixed \"boundary\" or \"boundary+adjacent\"");
+  } else if (functional == CmcFunctionalKind::MeanCurvature) {
+    if (V) throw UnsupportedProblem("cmc: the mean-curvature functional takes H, not V");
+    if (solver != CmcSolver::Newton)
+      throw UnsupportedProblem("cmc: the mean-curvature functional is solved by the newton solver (Levenberg–Marquardt)");
+    if (fixed == FixedSet::UBoundaries)
+      throw UnsupportedProblem("cmc: the mean-curvature functional needs fixed \"boundary\" or \"boundary+adjacent\"");
+    if (!(mean_curvature_tolerance > 0.0 && mean_curvature_tolerance < 1.0))
+      throw ParameterError("cmc: mean_curvature_tolerance must be in (0, 1)");
+    if (max_least_squares_iterations < 1) throw ParameterError("cmc: max_least_squares_iterations must be >= 1");
   } else if (V && solver != CmcSolver::NLopt)
     throw UnsupportedProblem("cmc: the volume-constrained problem (V) is solved by the nlopt solver only");
   if (!(tolerance > 0.0 && tolerance <= 1e-3)) throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
@@ -354,6 +364,7 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFacto
 template <class Net>
 CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
   if (o.functional == CmcFunctionalKind::Area) return solve_area(data, o);
+  if (o.functional == CmcFunctionalKind::MeanCurvature) return solve_mean_curvature(data, o);
   CmcResult<Net> res;
   {
     ScopedTimer timer(res.summary.seconds);

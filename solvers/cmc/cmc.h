@@ -54,6 +54,25 @@
 //    parametrisation".
 //  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode: newton).
 //
+// The least-squares mean-curvature functional (options.functional = MeanCurvature;
+// solvers/cmc/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
+//  - H mode only: minimise Φ = ∫ (H_x − H)² dA over the free points. Φ = 0 exactly for a CMC
+//    surface, whatever the parametrisation; where the polynomial space holds no CMC surface, its
+//    minimiser is the surface nearest to CMC in that sense (it weighs the deviation on the whole
+//    patch, where a critical point of A_H only makes it orthogonal to the B_I, which vanish on the
+//    boundary).
+//  - The start is the D_H critical point at H (the continuation above; if the branch folds
+//    first, its last point). Levenberg–Marquardt on the residuals of Φ with the exact Jacobian:
+//    (JᵀJ + λ diag JᵀJ) δ = −Jᵀr, λ by the gain ratio (÷5 above 0.75, ×3 below 0.25, ×10 on a
+//    rejected step).
+//  - converged = true means √Φ ≤ options.mean_curvature_tolerance (1e-6; Φ is dimensionless), with
+//    Φ measured by a rule finer than the one minimised (q + q/2 points per direction), AND the
+//    regularity test of the area functional. It stops not converged (status NoConvergence, exit 1
+//    from the CLI) when Φ stalls (a relative fall below 1e-6 in 10 iterations: the degree is too
+//    low for the tolerance) or after options.max_least_squares_iterations; summary.residual is
+//    then the √Φ reached.
+//  - Fixed sets boundary and boundary+adjacent; solver newton (its own Levenberg–Marquardt).
+//
 // Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
 // V with a solver other than nlopt (UnsupportedProblem), degree too low for the fixed set
 // (DegreeError: triangular n >= 3 with C0 data, n >= 6 with C1 data; tensor n, m >= 2 with C0 data
@@ -72,11 +91,12 @@
 namespace bpde {
 
 enum class CmcSolver { Newton, Ceres, NLopt };
-/// The functional whose critical points are sought: the paper's D_H = D + 2HV (default) or the
-/// geometric A_H = A + 2HV.
-enum class CmcFunctionalKind { Dirichlet, Area };
+/// The functional: the paper's D_H = D + 2HV (default; critical points), the geometric
+/// A_H = A + 2HV (critical points), or the least squares of the mean-curvature deviation
+/// Φ = ∫ (H_x − H)² dA (minimised).
+enum class CmcFunctionalKind { Dirichlet, Area, MeanCurvature };
 
-/// "dirichlet" | "area" (ParameterError otherwise).
+/// "dirichlet" | "area" | "mean-curvature" (ParameterError otherwise).
 CmcFunctionalKind parse_cmc_functional(const std::string& name);
 std::string to_string(CmcFunctionalKind f);
 
@@ -94,6 +114,10 @@ struct CmcOptions {
   int max_corrector_iterations = 30;         ///< per continuation step; default 30, >= 1
   int max_continuation_steps = 400;          ///< default 400, >= 1
   double min_step = 1e-5;                    ///< smallest H step, relative to max(1, |H reached|); default 1e-5
+  /// mean-curvature functional: converged when √Φ = ‖H_x − H‖ in L²(dA) is at most this; default 1e-6, in (0, 1)
+  double mean_curvature_tolerance = 1e-6;
+  /// mean-curvature functional: Levenberg–Marquardt iterations at most; default 2000, >= 1
+  int max_least_squares_iterations = 2000;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); default none.
   ProgressFn progress;
@@ -144,6 +168,13 @@ inline SolverRequirements cmc_area_requirements() {
   return r;
 }
 
+inline SolverRequirements cmc_mean_curvature_requirements() {
+  SolverRequirements r = cmc_area_requirements();
+  r.problem = "problem \"cmc\" with \"functional\": \"mean-curvature\"";
+  r.methods = {"newton"};
+  return r;
+}
+
 template <class Net>
 struct CmcResult {
   Net net;                     ///< the critical point (or the last point of the branch if not converged)
@@ -151,12 +182,13 @@ struct CmcResult {
   double D = 0.0;              ///< Dirichlet energy
   double V = 0.0;              ///< volume 1/3 ∫ <x_u ∧ x_v, x>
   double DH = 0.0;             ///< D + 2HV
-  double A = 0.0;              ///< area ∫|x_u ∧ x_v| (computed for both functionals)
-  double energy = 0.0;         ///< the value of the functional solved: D_H or A_H = A + 2HV
+  double A = 0.0;              ///< area ∫|x_u ∧ x_v| (computed for every functional)
+  double energy = 0.0;         ///< the value of the functional solved: D_H, A_H = A + 2HV, or Φ (mean-curvature)
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
-  int quadrature_points = 0;   ///< area: Gauss points per direction of the rule used (area_rule.h)
+  int quadrature_points = 0;   ///< area, mean-curvature: Gauss points per direction of the rule minimised
   int continuation_steps = 0;  ///< accepted continuation steps (H mode)
-  /// converged, iterations (corrector iterations in all), residual, message; status Fold past the
+  /// converged, iterations (corrector iterations in all), residual (mean-curvature: √Φ by the check
+  /// rule), message; status Fold past the
   /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),
   /// NoConvergence when max_continuation_steps run out or the V-mode solve fails.
   Summary summary;

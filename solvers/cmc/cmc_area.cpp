@@ -254,20 +254,15 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
   return st;
 }
 
-namespace {
 
 // ---------------------------------------------------------------- regularity
 
-struct Regularity {
-  bool ok = true;
-  double min_ratio = 0;  ///< min |N| / mean |N| on the grid
-  bool flipped = false;  ///< two neighbouring samples with opposite normals
-};
-
+namespace {
 template <class Net>
 Eigen::Vector3d normal_at(const Net& net, double u, double v) {
   return net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1));
 }
+}  // namespace
 
 // |x_u ∧ x_v| on a 40 x 40 grid away from the corners (margin 0.05), relative to the mean A/|domain|.
 Regularity regularity(const TriangularNet& net, double A) {
@@ -321,6 +316,8 @@ Regularity regularity(const TensorNet& net, double A) {
   r.ok = std::isfinite(r.min_ratio) && r.min_ratio >= 1e-3 && !r.flipped;
   return r;
 }
+
+namespace {
 
 // ---------------------------------------------------------------- the solve
 

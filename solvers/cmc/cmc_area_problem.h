@@ -46,6 +46,21 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
 /// The final Newton phase on A_H (ε = 0) with the Hessian solve truncated to the modes above a relative
 /// eigenvalue cut (cmc_area.cpp); ok when the first variation reaches o.tolerance.
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
+/// Regularity of a solved net on a 40 × 40 grid away from the corners (margin 0.05): |x_u ∧ x_v|
+/// relative to its mean A / |domain| at least 1e-3, and no two neighbouring samples with opposite
+/// normals (cmc_area.cpp). Shared by the area and the mean-curvature solves.
+struct Regularity {
+  bool ok = true;
+  double min_ratio = 0;  ///< min |N| / mean |N| on the grid
+  bool flipped = false;  ///< two neighbouring samples with opposite normals
+};
+Regularity regularity(const TriangularNet& net, double A);
+Regularity regularity(const TensorNet& net, double A);
+
+/// The least-squares mean-curvature functional (cmc.h; cmc_mean_curvature.cpp). options are validated.
+CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options);
+CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options);
+
 /// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);
 

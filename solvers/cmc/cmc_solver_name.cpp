@@ -29,9 +29,20 @@ std::string to_string(CmcSolver s) {
 CmcFunctionalKind parse_cmc_functional(const std::string& name) {
   if (name == "dirichlet") return CmcFunctionalKind::Dirichlet;
   if (name == "area") return CmcFunctionalKind::Area;
-  throw ParameterError("unknown cmc functional \"" + name + "\" (expected dirichlet or area)");
+  if (name == "mean-curvature") return CmcFunctionalKind::MeanCurvature;
+  throw ParameterError("unknown cmc functional \"" + name + "\" (expected dirichlet, area or mean-curvature)");
 }
 
-std::string to_string(CmcFunctionalKind f) { return f == CmcFunctionalKind::Area ? "area" : "dirichlet"; }
+std::string to_string(CmcFunctionalKind f) {
+  switch (f) {
+    case CmcFunctionalKind::Area:
+      return "area";
+    case CmcFunctionalKind::MeanCurvature:
+      return "mean-curvature";
+    case CmcFunctionalKind::Dirichlet:
+      break;
+  }
+  return "dirichlet";
+}
 
 }  // namespace bpde

@@ -415,3 +415,54 @@ TEST(Cli, CmcAreaJobReportsTheAreaFunctional) {
   bad(job(R"({"kind": "cmc", "H": 0, "functional": "area"})", R"(, "fixed": "u-boundaries")"), "fixed");
   bad(job(R"({"kind": "cmc", "V": 1, "functional": "area", "solver": "ceres"})"), "newton");
 }
+
+// The mean-curvature functional as a job (FORMATS.md, "functional": "mean-curvature"): the Fig. 1
+// circle from the boundary builder; converged at degree 10 (exit 0), not at degree 6 with the
+// default tolerance (exit 1, result.json written with converged false), and the bad input.
+TEST(Cli, CmcMeanCurvatureJob) {
+  auto job = [](int degree, const std::string& problem) {
+    return R"({"boundary": {"type": "triangular", "degree": )" + std::to_string(degree) +
+           R"(, "builder": "circle-three-arcs"}, "problem": )" + problem + "}";
+  };
+  const fs::path out = tmpdir() / "mc";
+  const CmdResult r =
+      run("solve " + write("mc.json", job(10, R"({"kind": "cmc", "H": -0.9, "functional": "mean-curvature"})")).string() +
+          " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const bpde::Json rep = bpde::read_json_file((out / "result.json").string())["report"];
+  EXPECT_EQ(rep["functional"], "mean-curvature");
+  EXPECT_TRUE(rep["converged"].get<bool>());
+  EXPECT_LE(rep["residual"].get<double>(), 1e-6);
+  EXPECT_NEAR(rep["energy"].get<double>(), std::pow(rep["residual"].get<double>(), 2), 1e-15);
+  EXPECT_LE(std::abs(rep["mean_curvature"]["max"].get<double>() + 0.9), 5e-5);
+  EXPECT_LE(std::abs(rep["mean_curvature"]["min"].get<double>() + 0.9), 5e-5);
+  // Degree 6 misses the default tolerance 1e-6: exit 1, a result with converged false; its own
+  // tolerance, given in the job, is met.
+  const fs::path low = tmpdir() / "mc6";
+  const CmdResult r6 =
+      run("solve " + write("mc6.json", job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature"})")).string() +
+          " --out " + low.string());
+  EXPECT_EQ(r6.status, 1) << r6.err;
+  const bpde::Json rep6 = bpde::read_json_file((low / "result.json").string())["report"];
+  EXPECT_FALSE(rep6["converged"].get<bool>());
+  EXPECT_NE(rep6["message"].get<std::string>().find("degree is too low"), std::string::npos);
+  const CmdResult r6t = run("solve " +
+                            write("mc6t.json", job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature",
+                                                          "mean_curvature_tolerance": 1e-3})"))
+                                .string() +
+                            " --out " + (tmpdir() / "mc6t").string());
+  EXPECT_EQ(r6t.status, 0) << r6t.err;
+  const fs::path none = tmpdir() / "never";
+  auto bad = [&](const std::string& j, const std::string& needle) {
+    expect_bad_input("solve " + write("bad.json", j).string() + " --out " + none.string(), needle);
+    EXPECT_FALSE(fs::exists(none));
+  };
+  bad(job(6, R"({"kind": "cmc", "V": 1, "functional": "mean-curvature"})"), "not \"V\"");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "solver": "ceres"})"), "newton");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "mean_curvature_tolerance": 1e-3})"),
+      "mean_curvature_tolerance");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": 0})"),
+      "mean_curvature_tolerance");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": "1e-3"})"),
+      "mean_curvature_tolerance");
+}

@@ -1,0 +1,171 @@
+// The least-squares mean-curvature functional of the cmc problem (cmc.h, "The least-squares
+// mean-curvature functional"; docs/cmc.md, "Least squares of the mean curvature"): from the D_H
+// critical point, Levenberg–Marquardt on Φ = ∫ (H_x − H)² dA (mean_curvature_least_squares.h).
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <string>
+#include <type_traits>
+
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+#include "bezierpde/solvers/summary.h"
+
+namespace bpde::cmc_detail {
+namespace {
+
+std::string num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+
+// The rule minimised: the corner-collapsed rules with q = ⌈n/2⌉ + 4 points per direction
+// (n the larger degree of a tensor net); the check rule has q + ⌈q/2⌉.
+int rule_q(int n, int extra) {
+  const int q = (n + 1) / 2 + 4;
+  return q + extra * ((q + 1) / 2);
+}
+MeanCurvatureLeastSquares form_for(const TriangularNet& net, int extra) {
+  return MeanCurvatureLeastSquares::triangular(net.n(), rule_q(net.n(), extra));
+}
+MeanCurvatureLeastSquares form_for(const TensorNet& net, int extra) {
+  return MeanCurvatureLeastSquares::tensor(net.n(), net.m(), rule_q(std::max(net.n(), net.m()), extra));
+}
+
+struct LsOutcome {
+  int iterations = 0;
+  bool stalled = false;  ///< Φ fell by less than 1e-6 (relative) in 10 iterations, or no step was accepted
+};
+
+// Levenberg–Marquardt on Φ(P) = ‖r‖² over the free rows of P (in place), until √Φ <= tol, a stall,
+// or max_iterations.
+LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double H,
+                   double tol, int max_iterations) {
+  LsOutcome out;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  f.residuals(P, H, &r, &free, &J);
+  double phi = r.squaredNorm(), lambda = 1e-3;
+  std::deque<double> history{phi};
+  const Eigen::Index n = J.cols();
+  while (out.iterations < max_iterations && std::isfinite(phi) && std::sqrt(phi) > tol) {
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+    A.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
+    A = A.selfadjointView<Eigen::Lower>();
+    const Eigen::VectorXd g = J.transpose() * r;
+    const Eigen::VectorXd diag = A.diagonal().cwiseMax(1e-12 * A.diagonal().maxCoeff());
+    bool accepted = false;
+    for (int tries = 0; tries < 30 && !accepted; ++tries) {
+      Eigen::MatrixXd M = A;
+      M.diagonal() += lambda * diag;
+      const Eigen::LLT<Eigen::MatrixXd> llt(M);
+      if (llt.info() != Eigen::Success) {
+        lambda *= 10;
+        continue;
+      }
+      const Eigen::VectorXd d = -llt.solve(g);
+      Eigen::MatrixX3d Pn = P;
+      for (size_t a = 0; a < free.size(); ++a) Pn.row(free[a]) += d.segment<3>(3 * Eigen::Index(a)).transpose();
+      Eigen::VectorXd rn;
+      f.residuals(Pn, H, &rn);
+      const double phin = rn.squaredNorm(), pred = -(2.0 * g.dot(d) + d.dot(A * d));
+      if (std::isfinite(phin) && phin < phi) {
+        const double rho = pred > 0 ? (phi - phin) / pred : 0.0;
+        if (rho > 0.75) lambda = std::max(lambda / 5, 1e-15);
+        if (rho < 0.25) lambda *= 3;
+        P = Pn;
+        accepted = true;
+      } else {
+        lambda *= 10;
+      }
+    }
+    if (!accepted) {
+      out.stalled = true;
+      break;
+    }
+    ++out.iterations;
+    f.residuals(P, H, &r, &free, &J);
+    phi = r.squaredNorm();
+    history.push_back(phi);
+    if (history.size() > 11) history.pop_front();
+    if (history.size() == 11 && history.front() - phi < 1e-6 * history.front()) {
+      out.stalled = std::sqrt(phi) > tol;
+      break;
+    }
+  }
+  return out;
+}
+
+template <class Net>
+CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
+  CmcResult<Net> res;
+  res.functional = CmcFunctionalKind::MeanCurvature;
+  {
+    ScopedTimer timer(res.summary.seconds);
+    o.validate();
+    // The start: the paper's D_H critical point at H (or the last point of its branch).
+    CmcOptions od = o;
+    od.functional = CmcFunctionalKind::Dirichlet;
+    const CmcResult<Net> start = solve_cmc(data, od);
+    res.continuation_steps = start.continuation_steps;
+    res.summary.iterations = start.summary.iterations;
+    Eigen::MatrixX3d P = start.net.points();
+    const std::vector<int> free = data.free_indices(o.fixed);
+    const MeanCurvatureLeastSquares f = form_for(data, 0), check = form_for(data, 1);
+    // Minimised to 0.7 × the tolerance, so that the check rule (finer) does not miss it by its own small error.
+    const LsOutcome ls = minimise(f, P, free, o.H, 0.7 * o.mean_curvature_tolerance, o.max_least_squares_iterations);
+    res.summary.iterations += ls.iterations;
+    const Net net = make_net(data, P);
+    const auto cf = functional_for(data);
+    res.net = net;
+    res.H = o.H;
+    res.D = cf->dirichlet(P);
+    res.V = cf->volume(P);
+    res.DH = res.D + 2.0 * o.H * res.V;
+    res.A = area(net);
+    const double phi = check.value(P, o.H);
+    res.energy = phi;
+    res.quadrature_points = f.points_per_direction();
+    res.summary.residual = std::sqrt(phi);
+    const std::string start_note = start.summary.converged
+                                       ? "from the D_H critical point at H = " + num(o.H)
+                                       : "from the last D_H branch point (H = " + num(start.H) + ")";
+    const std::string what = "least squares of the mean curvature " + start_note + ": √Φ = " +
+                             num(res.summary.residual) + " after " + std::to_string(ls.iterations) +
+                             " Levenberg–Marquardt iteration(s)";
+    const Regularity reg = regularity(net, res.A);
+    if (!reg.ok) {
+      res.summary.set_failed(Status::NoConvergence,
+                             "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(reg.min_ratio) +
+                                 " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
+                                 " (not a CMC surface); " + what);
+    } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
+      res.summary.set_failed(Status::NoConvergence,
+                             what + " is above the tolerance " + num(o.mean_curvature_tolerance) +
+                                 (ls.stalled ? " and no longer falls (the degree is too low for it)"
+                                             : " (max_least_squares_iterations reached)"));
+    } else {
+      res.summary.message = what;
+      res.summary.set_converged();
+    }
+  }
+  return res;
+}
+
+}  // namespace
+
+CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options) {
+  return solve_mean_curvature_impl(data, options);
+}
+CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options) {
+  return solve_mean_curvature_impl(data, options);
+}
+
+}  // namespace bpde::cmc_detail

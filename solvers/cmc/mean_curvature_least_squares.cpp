@@ -1,0 +1,139 @@
+#include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+
+#include <Eigen/Geometry>
+#include <ceres/jet.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "bezierpde/core/bernstein.h"
+#include "bezierpde/energies/triangular_gram.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+
+namespace bpde {
+namespace {
+
+// r = √(w |N|) (H_x − H) from the jet (x_u, x_v, x_uu, x_uv, x_vv) = j[0..14]; N = x_u ∧ x_v and
+// H_x = (⟨x_uu,N⟩G − 2⟨x_uv,N⟩F + ⟨x_vv,N⟩E) / (2|N|³) (core/differential_geometry.h, with the
+// unit normal written as N/|N|).
+template <class T>
+T node_residual(const T* j, double H, double w) {
+  using std::sqrt;
+  const T* xu = j;
+  const T* xv = j + 3;
+  const T N[3] = {xu[1] * xv[2] - xu[2] * xv[1], xu[2] * xv[0] - xu[0] * xv[2], xu[0] * xv[1] - xu[1] * xv[0]};
+  auto dot = [](const T* a, const T* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const T n2 = dot(N, N), nn = sqrt(n2);
+  const T E = dot(xu, xu), F = dot(xu, xv), G = dot(xv, xv);
+  const T e = dot(j + 6, N), f = dot(j + 9, N), g = dot(j + 12, N);
+  const T Hx = (e * G - 2.0 * f * F + g * E) / (2.0 * n2 * nn);
+  return sqrt(w * nn) * (Hx - H);
+}
+
+// The corner weight ρ = Π_c (1 − λ_c^8)^4 (mean_curvature_least_squares.h).
+double corner_weight(const std::array<double, 4>& lambda, int corners) {
+  double rho = 1.0;
+  for (int c = 0; c < corners; ++c) {
+    const double l2 = lambda[size_t(c)] * lambda[size_t(c)], l8 = (l2 * l2) * (l2 * l2);
+    const double f = 1.0 - l8, f2 = f * f;
+    rho *= f2 * f2;
+  }
+  return rho;
+}
+
+bool singular(const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) {
+  return !(xu.cross(xv).norm() > 1e-14 * xu.norm() * xv.norm());
+}
+
+}  // namespace
+
+MeanCurvatureLeastSquares MeanCurvatureLeastSquares::triangular(int n, int q) {
+  if (n < 2) throw DegreeError("mean-curvature least squares: triangular degree must be >= 2");
+  if (q < 2) throw ParameterError("mean-curvature least squares: q must be >= 2");
+  MeanCurvatureLeastSquares f;
+  f.q_ = q;
+  const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(q);
+  f.w_ = rule.w;
+  for (Eigen::Index i = 0; i < f.w_.size(); ++i) {
+    const double u = rule.uv(i, 0), v = rule.uv(i, 1);
+    f.w_(i) *= corner_weight({u, v, 1.0 - u - v, 0.0}, 3);
+  }
+  const int du[5] = {1, 0, 2, 1, 0}, dv[5] = {0, 1, 0, 1, 2};
+  for (size_t t = 0; t < 5; ++t) f.D_[t] = triangular_basis_table(n, rule.uv, du[t], dv[t]);
+  return f;
+}
+
+MeanCurvatureLeastSquares MeanCurvatureLeastSquares::tensor(int n, int m, int q) {
+  if (n < 2 || m < 2) throw DegreeError("mean-curvature least squares: tensor degrees must be >= 2");
+  if (q < 2) throw ParameterError("mean-curvature least squares: q must be >= 2");
+  MeanCurvatureLeastSquares f;
+  f.q_ = q;
+  const QuadratureRuleTriangle rule = corner_collapsed_square_rule(q);
+  f.w_ = rule.w;
+  for (Eigen::Index i = 0; i < f.w_.size(); ++i) {
+    const double u = rule.uv(i, 0), v = rule.uv(i, 1);
+    f.w_(i) *= corner_weight({(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v}, 4);
+  }
+  const Eigen::VectorXd us = rule.uv.col(0), vs = rule.uv.col(1);
+  std::array<Eigen::MatrixXd, 3> U, V;
+  for (int d = 0; d <= 2; ++d) {
+    U[size_t(d)] = bernstein_table(n, us, d);
+    V[size_t(d)] = bernstein_table(m, vs, d);
+  }
+  const int du[5] = {1, 0, 2, 1, 0}, dv[5] = {0, 1, 0, 1, 2};
+  for (size_t t = 0; t < 5; ++t) {
+    f.D_[t].resize(rule.w.size(), (n + 1) * (m + 1));
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= m; ++j)
+        f.D_[t].col(i * (m + 1) + j) = U[size_t(du[t])].col(i).cwiseProduct(V[size_t(dv[t])].col(j));
+  }
+  return f;
+}
+
+void MeanCurvatureLeastSquares::residuals(const Eigen::MatrixX3d& P, double H, Eigen::VectorXd* r,
+                                          const std::vector<int>* idx, Eigen::MatrixXd* J) const {
+  if (P.rows() != size()) throw SizeError("mean-curvature least squares: the net has the wrong number of points");
+  const Eigen::Index M = nodes();
+  std::array<Eigen::MatrixX3d, 5> X;
+  for (size_t t = 0; t < 5; ++t) X[t] = D_[t] * P;
+  using Jet = ceres::Jet<double, 15>;
+  Eigen::MatrixXd dr;
+  if (J) dr = Eigen::MatrixXd::Zero(M, 15);
+  if (r) r->resize(M);
+  for (Eigen::Index q = 0; q < M; ++q) {
+    if (singular(X[0].row(q).transpose(), X[1].row(q).transpose())) {
+      if (r) (*r)(q) = 0.0;
+      continue;
+    }
+    if (J) {
+      Jet jet[15];
+      for (int t = 0; t < 5; ++t)
+        for (int c = 0; c < 3; ++c) jet[3 * t + c] = Jet(X[size_t(t)](q, c), 3 * t + c);
+      const Jet v = node_residual(jet, H, w_(q));
+      if (r) (*r)(q) = v.a;
+      dr.row(q) = v.v.transpose();
+    } else {
+      double jet[15];
+      for (int t = 0; t < 5; ++t)
+        for (int c = 0; c < 3; ++c) jet[3 * t + c] = X[size_t(t)](q, c);
+      if (r) (*r)(q) = node_residual(jet, H, w_(q));
+    }
+  }
+  if (!J) return;
+  const std::vector<int>& ix = *idx;
+  J->setZero(M, 3 * Eigen::Index(ix.size()));
+  for (size_t a = 0; a < ix.size(); ++a)
+    for (int t = 0; t < 5; ++t)
+      for (int c = 0; c < 3; ++c)
+        J->col(3 * Eigen::Index(a) + c) += dr.col(3 * t + c).cwiseProduct(D_[size_t(t)].col(ix[a]));
+}
+
+double MeanCurvatureLeastSquares::value(const Eigen::MatrixX3d& P, double H) const {
+  Eigen::VectorXd r;
+  residuals(P, H, &r);
+  return r.squaredNorm();
+}
+
+}  // namespace bpde

@@ -1,0 +1,249 @@
+// The least-squares mean-curvature functional Φ = ∫ ρ (H_x − H)² dA
+// (solvers/cmc/mean_curvature_least_squares.h) and its solve (solvers/cmc/cmc.h, functional
+// "mean-curvature"): the value against independent quadratures, the Jacobian against finite
+// differences, and the solve against closed-form surfaces.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "cmc_test_util.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/core/quadrature.h"
+#include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+
+namespace bpde {
+namespace {
+
+// ρ of the header, written out independently: Π_c (1 − λ_c⁸)⁴.
+double rho(const std::array<double, 4>& l, int corners) {
+  double r = 1;
+  for (int c = 0; c < corners; ++c) r *= std::pow(1 - std::pow(l[size_t(c)], 8), 4);
+  return r;
+}
+
+TriangularNet perturbed_sphere_triangle(int n, unsigned seed) {
+  TriangularNet net(n);
+  for (int r = 0; r < net.size(); ++r) {
+    const MultiIndex I = TriangularNet::multi_index(n, r);
+    net.points().row(r) = sphere_triangle(double(I[0]) / n, double(I[1]) / n).transpose();
+  }
+  net.points() += testing::random_points(net.size(), seed, 0.05);
+  return net;
+}
+
+TensorNet perturbed_sphere_tensor(int n, int m, unsigned seed) {
+  TensorNet net(n, m);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= m; ++j) net.set_point(i, j, sphere_square(double(i) / n, double(j) / m));
+  net.points() += testing::random_points(net.size(), seed, 0.05);
+  return net;
+}
+
+// Φ(H) = a − 2bH + cH² with a = ∫ρH_x² dA, b = ∫ρH_x dA, c = ∫ρ dA. Three values of Φ give a, b
+// and c; each is compared with a plain Gauss rule (no collapse) with H_x from the fundamental
+// forms (core/differential_geometry.h) at its nodes, on a smooth regular patch.
+TEST(MeanCurvatureLeastSquares, ValueIsTheWeightedSquaredDeviationTriangular) {
+  const int n = 5;
+  const TriangularNet net = perturbed_sphere_triangle(n, 21);
+  const MeanCurvatureLeastSquares f = MeanCurvatureLeastSquares::triangular(n, 40);
+  const double p0 = f.value(net.points(), 0.0), p1 = f.value(net.points(), 1.0), m1 = f.value(net.points(), -1.0);
+  const double b = (m1 - p1) / 4, c = (p1 + m1) / 2 - p0;
+  const QuadratureRuleTriangle g = gauss_triangle(60);
+  double A = 0, B = 0, Cc = 0;
+  for (Eigen::Index k = 0; k < g.w.size(); ++k) {
+    const double u = g.uv(k, 0), v = g.uv(k, 1);
+    const FundamentalForms ff = net.geometry(u, v);
+    ASSERT_TRUE(ff.regular);
+    const double dA = g.w(k) * net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).norm() *
+                      rho({u, v, 1 - u - v, 0}, 3);
+    A += ff.H * ff.H * dA;
+    B += ff.H * dA;
+    Cc += dA;
+  }
+  ASSERT_GT(std::abs(B), 0.1 * Cc);  // a curved patch: H_x far from 0
+  EXPECT_NEAR(p0, A, 1e-10 * A);
+  EXPECT_NEAR(b, B, 1e-10 * std::abs(B));
+  EXPECT_NEAR(c, Cc, 1e-10 * Cc);
+}
+
+TEST(MeanCurvatureLeastSquares, ValueIsTheWeightedSquaredDeviationTensor) {
+  const int n = 4, m = 5;
+  const TensorNet net = perturbed_sphere_tensor(n, m, 22);
+  const MeanCurvatureLeastSquares f = MeanCurvatureLeastSquares::tensor(n, m, 40);
+  const double p0 = f.value(net.points(), 0.0), p1 = f.value(net.points(), 1.0), m1 = f.value(net.points(), -1.0);
+  const double b = (m1 - p1) / 4, c = (p1 + m1) / 2 - p0;
+  const QuadratureRule1D g = gauss_legendre01(80);
+  double A = 0, B = 0, Cc = 0;
+  for (Eigen::Index i = 0; i < g.x.size(); ++i)
+    for (Eigen::Index j = 0; j < g.x.size(); ++j) {
+      const double u = g.x(i), v = g.x(j);
+      const FundamentalForms ff = net.geometry(u, v);
+      ASSERT_TRUE(ff.regular);
+      const double dA = g.w(i) * g.w(j) * net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).norm() *
+                        rho({(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v}, 4);
+      A += ff.H * ff.H * dA;
+      B += ff.H * dA;
+      Cc += dA;
+    }
+  ASSERT_GT(std::abs(B), 0.1 * Cc);
+  EXPECT_NEAR(p0, A, 1e-10 * A);
+  EXPECT_NEAR(b, B, 1e-10 * std::abs(B));
+  EXPECT_NEAR(c, Cc, 1e-10 * Cc);
+}
+
+// A planar affine patch has H_x = 0 and a constant |x_u ∧ x_v|, so Φ(H) = H² |N| ∫ρ du dv exactly,
+// with ∫ρ (a polynomial of degree 96) by a Gauss rule that is exact for it.
+TEST(MeanCurvatureLeastSquares, PlanarPatchGivesHSquaredTimesTheWeightedArea) {
+  const int n = 4;
+  TriangularNet net(n);
+  const Eigen::Vector3d a(1.0, 0.2, -0.3), b(0.1, 0.8, 0.5), o(0.3, -0.2, 1.0);
+  for (int r = 0; r < net.size(); ++r) {
+    const MultiIndex I = TriangularNet::multi_index(n, r);
+    net.points().row(r) = (o + a * (double(I[0]) / n) + b * (double(I[1]) / n)).transpose();
+  }
+  const QuadratureRuleTriangle g = gauss_triangle(60);
+  double w = 0;
+  for (Eigen::Index k = 0; k < g.w.size(); ++k) w += g.w(k) * rho({g.uv(k, 0), g.uv(k, 1), 1 - g.uv(k, 0) - g.uv(k, 1), 0}, 3);
+  const double H = 0.7, expected = H * H * a.cross(b).norm() * w;
+  EXPECT_NEAR(MeanCurvatureLeastSquares::triangular(n, 60).value(net.points(), H), expected, 1e-13 * expected);
+  EXPECT_LT(MeanCurvatureLeastSquares::triangular(n, 60).value(net.points(), 0.0), 1e-25);
+}
+
+TEST(MeanCurvatureLeastSquares, JacobianAgainstFiniteDifferences) {
+  auto check = [](const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, const std::vector<int>& idx) {
+    const double H = -0.4;
+    Eigen::VectorXd r;
+    Eigen::MatrixXd J;
+    f.residuals(P, H, &r, &idx, &J);
+    ASSERT_EQ(J.rows(), f.nodes());
+    ASSERT_EQ(J.cols(), 3 * Eigen::Index(idx.size()));
+    const double h = 1e-6, js = J.cwiseAbs().maxCoeff();
+    ASSERT_GT(js, 1e-3);
+    for (size_t a = 0; a < idx.size(); ++a)
+      for (int c = 0; c < 3; ++c) {
+        Eigen::MatrixX3d Pp = P, Pm = P;
+        Pp(idx[a], c) += h;
+        Pm(idx[a], c) -= h;
+        Eigen::VectorXd rp, rm;
+        f.residuals(Pp, H, &rp);
+        f.residuals(Pm, H, &rm);
+        const Eigen::VectorXd fd = (rp - rm) / (2 * h);
+        EXPECT_LT((J.col(3 * Eigen::Index(a) + c) - fd).cwiseAbs().maxCoeff(), 1e-7 * js) << idx[a] << "." << c;
+      }
+  };
+  const TriangularNet t = perturbed_sphere_triangle(5, 23);
+  check(MeanCurvatureLeastSquares::triangular(5, 8), t.points(), t.free_indices(FixedSet::Boundary));
+  const TensorNet s = perturbed_sphere_tensor(4, 3, 24);
+  check(MeanCurvatureLeastSquares::tensor(4, 3, 6), s.points(), s.free_indices(FixedSet::Boundary));
+}
+
+double sphere_distance(const TriangularNet& net, const Eigen::Vector3d& c, double R) {
+  double d = 0;
+  for (int a = 0; a <= 40; ++a)
+    for (int b = 0; a + b <= 40; ++b) d = std::max(d, std::abs((net.evaluate(a / 40.0, b / 40.0) - c).norm() - R));
+  return d;
+}
+
+CmcOptions mc_options(double H) {
+  CmcOptions o;
+  o.H = H;
+  o.functional = CmcFunctionalKind::MeanCurvature;
+  return o;
+}
+
+// The target at degree 10 (Arnal–Lluch–Monterde's Fig. 1 circle, three arcs by angle):
+// on the sphere of radius 1/|H| to 1e-6, corners included, and H within 5e-4 away from the
+// corners. The area route meets the first and misses the second at H = -0.9 (5.3e-3,
+// CmcArea.CircleInThreeArcsAtHMinus09). Measured here: H = -0.5: 1.6e-8 from the sphere, H within
+// 1.5e-5; H = -0.9: 1.1e-8 and 1.1e-5; the cap's area to 2e-9.
+TEST(CmcMeanCurvature, CircleInThreeArcsAtDegree10MeetsBothTargets) {
+  for (double H : {-0.5, -0.9}) {
+    const double R = 1 / std::abs(H), hc = R - std::sqrt(R * R - 1);
+    const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
+    const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), mc_options(H));
+    EXPECT_EQ(r.summary.status, Status::Converged) << H << ": " << r.summary.message;
+    EXPECT_EQ(r.functional, CmcFunctionalKind::MeanCurvature);
+    EXPECT_LE(r.summary.residual, 1e-6) << H;
+    EXPECT_NEAR(r.energy, r.summary.residual * r.summary.residual, 1e-15) << H;
+    EXPECT_LE(sphere_distance(r.net, c, R), 1e-7) << H;
+    const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
+    EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-5) << H;
+    EXPECT_NEAR(r.A, 2 * std::numbers::pi * R * hc, 1e-7) << H;
+    EXPECT_NEAR(r.V, std::numbers::pi * hc * hc * (3 * R - hc) / 3, 1e-7) << H;
+  }
+}
+
+// Below the degree the tolerance needs: reported not converged, with the reason, and the net is
+// still the least-squares surface (n = 6, H = -0.5: √Φ stalls at 9.5e-5; 1.8e-6 from the sphere,
+// like the area route's 1.8e-6).
+TEST(CmcMeanCurvature, TooLowADegreeForTheToleranceIsReportedAsSuch) {
+  const double H = -0.5, R = 2;
+  const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(6), mc_options(H));
+  EXPECT_FALSE(r.summary.converged);
+  EXPECT_EQ(r.summary.status, Status::NoConvergence);
+  EXPECT_NE(r.summary.message.find("degree is too low"), std::string::npos) << r.summary.message;
+  EXPECT_GT(r.summary.residual, 1e-6);
+  EXPECT_LE(sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(3.0)), R), 5e-6);
+  // A looser tolerance is met at the same degree.
+  CmcOptions o = mc_options(H);
+  o.mean_curvature_tolerance = 1e-3;
+  EXPECT_TRUE(solve_cmc(testing::circle_three_arcs(6), o).summary.converged);
+}
+
+// H = 0, tensor: the helicoid piece from its own (non-conformal) parametrisation (as
+// CmcArea.MinimalSurfaceIsTheHelicoidPiece). Measured at n = 6: converged, 1.6e-7 off the
+// helicoid (the area route: 1.6e-7), |H_x| ≤ 8.8e-6 away from the corners (the area route: 1.8e-4).
+TEST(CmcMeanCurvature, MinimalSurfaceIsTheHelicoidPiece) {
+  auto helicoid = [](double u, double v) {
+    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
+    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
+  };
+  const CmcResult<TensorNet> r = solve_cmc(testing::tensor_boundary(6, helicoid), mc_options(0.0));
+  EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+  double off = 0;
+  for (int a = 0; a <= 30; ++a)
+    for (int b = 0; b <= 30; ++b) {
+      const Eigen::Vector3d x = r.net.evaluate(a / 30.0, b / 30.0);
+      off = std::max(off, std::abs(x(0) * std::sin(x(2)) - x(1) * std::cos(x(2))));
+    }
+  EXPECT_LE(off, 5e-7);
+  const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
+  EXPECT_LE(std::max(std::abs(s.min), std::abs(s.max)), 5e-5);
+}
+
+TEST(CmcMeanCurvature, BadInput) {
+  const TriangularNet data = testing::circle_three_arcs(6);
+  CmcOptions o = mc_options(-0.5);
+  o.V = 1.0;
+  EXPECT_THROW(solve_cmc(data, o), UnsupportedProblem);
+  o = mc_options(-0.5);
+  o.solver = CmcSolver::Ceres;
+  EXPECT_THROW(solve_cmc(data, o), UnsupportedProblem);
+  o = mc_options(-0.5);
+  o.mean_curvature_tolerance = 0.0;
+  EXPECT_THROW(solve_cmc(data, o), ParameterError);
+  o = mc_options(-0.5);
+  o.max_least_squares_iterations = 0;
+  EXPECT_THROW(solve_cmc(data, o), ParameterError);
+  o = mc_options(std::nan(""));
+  EXPECT_THROW(solve_cmc(data, o), NonFiniteError);
+  o = mc_options(-0.5);
+  o.fixed = FixedSet::UBoundaries;
+  EXPECT_THROW(solve_cmc(testing::tensor_boundary(4, sphere_square), o), UnsupportedProblem);
+  EXPECT_THROW(solve_cmc(testing::circle_three_arcs(2), mc_options(-0.5)), DegreeError);
+  EXPECT_EQ(parse_cmc_functional("mean-curvature"), CmcFunctionalKind::MeanCurvature);
+  EXPECT_EQ(to_string(CmcFunctionalKind::MeanCurvature), "mean-curvature");
+  EXPECT_THROW(MeanCurvatureLeastSquares::triangular(1, 5), DegreeError);
+  EXPECT_THROW(MeanCurvatureLeastSquares::tensor(4, 4, 1), ParameterError);
+  const MeanCurvatureLeastSquares f = MeanCurvatureLeastSquares::triangular(4, 5);
+  EXPECT_THROW(f.value(Eigen::MatrixX3d::Zero(3, 3), 0.0), SizeError);
+}
+
+}  // namespace
+}  // namespace bpde
