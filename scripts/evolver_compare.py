@@ -6,12 +6,14 @@
                                        [--quadratic-levels 1..7] [--out DIR]
                                        [--tolerances 1e-7,1e-9,1e-11]
                                        [--library build/example_004_cmc_area_tables]
+                                       [--mc-tolerances 1e-5,1e-7]
 
 Both programs solve the same problem, a surface of constant mean curvature H with a fixed
 boundary, and the error is the distance to the exact sphere:
 
 - circle (non-conformal data): the unit circle in z = 0, H = -0.5. bezierpde: the circle in three
-  arcs parametrised by angle (builder `circle-three-arcs`), `"functional": "area"`. The answer is
+  arcs parametrised by angle (builder `circle-three-arcs`), `"functional": "area"` and
+  `"mean-curvature"` (with --mc-tolerances also at those `mean_curvature_tolerance`). The answer is
   the small spherical cap of radius 2 through the circle, centre (0, 0, -sqrt(3)).
 - sphere (conformal data): the triangle patch of the inverse stereographic projection (builder
   `sphere-triangle`), H = +1, answer the unit sphere; bezierpde with both functionals.
@@ -134,11 +136,13 @@ class Case:
         self.area_exact = area_exact
         self.functionals = functionals
 
-    def job(self, degree, functional):
+    def job(self, degree, functional, mc_tolerance=None):
         boundary = {"type": "triangular", "degree": degree, "builder": self.builder}
         problem = {"kind": "cmc", "H": self.H, "solver": "newton"}
-        if functional == "area":
-            problem["functional"] = "area"
+        if functional != "dirichlet":
+            problem["functional"] = functional
+        if mc_tolerance is not None:
+            problem["mean_curvature_tolerance"] = mc_tolerance
         return {"boundary": boundary, "fixed": "boundary", "problem": problem, "samples": 40}
 
 
@@ -147,7 +151,7 @@ def circle_case():
     R = 1.0 / abs(H)
     h = R - math.sqrt(R * R - 1.0)  # the cap's height over the unit circle
     return Case("circle", "circle-three-arcs", H, (0.0, 0.0, -math.sqrt(R * R - 1.0)), R, 2.0 * math.pi * R * h,
-                ["area"])
+                ["area", "mean-curvature"])
 
 
 def sphere_case():
@@ -301,21 +305,27 @@ def timed(cmd, **kw):
     return p, child_cpu() - t0
 
 
-def run_bpde(bpde, case, degree, functional, work, grid):
-    d = os.path.join(work, "bpde-%s-%s-n%d" % (case.name, functional, degree))
+def run_bpde(bpde, case, degree, functional, work, grid, mc_tolerance=None):
+    """One `bpde solve` of the case's job (with mc_tolerance: the mean-curvature functional to that
+    tolerance, the job's "mean_curvature_tolerance")."""
+    tag = "" if mc_tolerance is None else "-t%g" % mc_tolerance
+    d = os.path.join(work, "bpde-%s-%s-n%d%s" % (case.name, functional, degree, tag))
     os.makedirs(d, exist_ok=True)
     job = os.path.join(d, "job.json")
     with open(job, "w") as f:
-        json.dump(case.job(degree, functional), f, indent=1)
+        json.dump(case.job(degree, functional, mc_tolerance), f, indent=1)
     p, cpu = timed([bpde, "solve", job, "--out", os.path.join(d, "out")])
     res_file = os.path.join(d, "out", "result.json")
+    extra = {} if mc_tolerance is None else {"mc_tolerance": mc_tolerance}
     if p.returncode not in (0, 1) or not os.path.exists(res_file):
-        return {"degree": degree, "functional": functional, "cpu": cpu, "failed": (p.stderr or p.stdout).strip()}
+        return dict({"degree": degree, "functional": functional, "cpu": cpu, "failed": (p.stderr or p.stdout).strip()},
+                    **extra)
     with open(res_file) as f:
         result = json.load(f)
     rep = result["report"]
     mc = rep.get("mean_curvature") or {}
     return {
+        **extra,
         "degree": degree,
         "functional": functional,
         "cpu": cpu,
@@ -392,6 +402,11 @@ def area_err(case, a):
     return "" if case.area_exact is None or a is None else fmt(abs(a - case.area_exact))
 
 
+def label(r):
+    """The functional of a bpde row, with its mean-curvature tolerance when the job set one."""
+    return r["functional"] + ("" if "mc_tolerance" not in r else " (√Φ ≤ %.0e)" % r["mc_tolerance"])
+
+
 def bpde_table(case, rows):
     out = ["| functional | n | error (max over the grid) | \\|A − A_exact\\| | H min … max | residual | converged "
            "| CPU s (process) | solve s (report, wall) |",
@@ -399,11 +414,11 @@ def bpde_table(case, rows):
     for r in rows:
         if "failed" in r:
             out.append("| %s | %d | failed: %s | | | | | %.2f | |" %
-                       (r["functional"], r["degree"], r["failed"], r["cpu"]))
+                       (label(r), r["degree"], r["failed"], r["cpu"]))
             continue
         hr = "%.6f … %.6f" % (r["H_min"], r["H_max"]) if r["H_min"] is not None else ""
         out.append("| %s | %d | %s | %s | %s | %s | %s | %.2f | %.2f |" % (
-            r["functional"], r["degree"], fmt(r["error"]), area_err(case, r["area"]), hr, fmt(r["residual"]),
+            label(r), r["degree"], fmt(r["error"]), area_err(case, r["area"]), hr, fmt(r["residual"]),
             "yes" if r["converged"] else "no", r["cpu"], r["seconds"] or 0.0))
     return "\n".join(out)
 
@@ -426,7 +441,11 @@ def time_to_accuracy(case, brows, erows, targets, lrows=()):
         hits = [r for r in rows if "failed" not in r and r.get("converged", True) and r["error"] <= key]
         return min(hits, key=lambda r: r["cpu"]) if hits else None
 
-    routes = [("bezierpde " + f, [r for r in brows if r["functional"] == f]) for f in case.functionals]
+    routes = [("bezierpde " + f, [r for r in brows if r["functional"] == f and "mc_tolerance" not in r])
+              for f in case.functionals]
+    mc_rows = [r for r in brows if r["functional"] == "mean-curvature"]
+    if any("mc_tolerance" in r for r in mc_rows):
+        routes.append(("bezierpde mean-curvature (degree and tolerance)", mc_rows))
     if lrows:
         routes.append(("bezierpde area, library (degree and tolerance)", list(lrows)))
     routes += [("Evolver " + m, [r for r in erows if r["model"] == m]) for m in ("linear", "quadratic")]
@@ -441,6 +460,8 @@ def time_to_accuracy(case, brows, erows, targets, lrows=()):
                 cells.append("not reached")
             elif "tolerance" in b:
                 cells.append("%.3f s (n = %d, %.0e)" % (b["cpu"], b["degree"], b["tolerance"]))
+            elif "mc_tolerance" in b:
+                cells.append("%.3f s (n = %d, √Φ ≤ %.0e)" % (b["cpu"], b["degree"], b["mc_tolerance"]))
             elif "degree" in b:
                 cells.append("%.2f s (n = %d)" % (b["cpu"], b["degree"]))
             else:
@@ -469,6 +490,9 @@ def main(argv=None):
                     help="keep the jobs, .fe and run.cmd files here (default: a temporary folder)")
     ap.add_argument("--tolerances", default="",
                     help="circle: also the library route at these first-variation tolerances (comma-separated)")
+    ap.add_argument("--mc-tolerances", default="",
+                    help="comma-separated mean_curvature_tolerance values in (0, 1): extra `bpde solve` rows of the "
+                         "mean-curvature functional (circle case)")
     ap.add_argument("--library", default="build/example_004_cmc_area_tables",
                     help="the example program of the library route")
     args = ap.parse_args(argv)
@@ -478,6 +502,14 @@ def main(argv=None):
         tolerances = None
     if tolerances is None or not all(0 < t <= 1e-3 for t in tolerances):
         print("error: --tolerances must be comma-separated numbers in (0, 1e-3], got %r" % args.tolerances,
+              file=sys.stderr)
+        return 2
+    try:
+        mc_tolerances = [float(t) for t in args.mc_tolerances.split(",") if t]
+    except ValueError:
+        mc_tolerances = None
+    if mc_tolerances is None or not all(0 < t < 1 for t in mc_tolerances):
+        print("error: --mc-tolerances must be comma-separated numbers in (0, 1), got %r" % args.mc_tolerances,
               file=sys.stderr)
         return 2
     if tolerances and not (os.path.isfile(args.library) and os.access(args.library, os.X_OK)):
@@ -502,6 +534,9 @@ def main(argv=None):
     for case in cases:
         degrees = parse_list(args.degrees)
         brows = [run_bpde(bpde, case, n, f, work, args.grid) for f in case.functionals for n in degrees]
+        if "mean-curvature" in case.functionals:
+            brows += [run_bpde(bpde, case, n, "mean-curvature", work, args.grid, t) for t in mc_tolerances
+                      for n in degrees]
         lrows = [run_library(os.path.abspath(args.library), case, n, t, args.grid) for n in degrees for t in tolerances] \
             if case.name == "circle" else []
         erows = [run_evolver(evolver, case, k, False, work) for k in parse_list(args.linear_levels)]

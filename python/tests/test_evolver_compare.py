@@ -155,3 +155,30 @@ def test_refuses_malformed_tolerances(capsys):
         assert ec.main(["--tolerances", bad, "--library", SCRIPT]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "--tolerances" in err
+
+
+def test_mean_curvature_rows_by_tolerance():
+    # the circle case runs both geometric functionals; --mc-tolerances adds jobs with the tolerance in them
+    case = ec.circle_case()
+    assert case.functionals == ["area", "mean-curvature"]
+    assert case.job(8, "area")["problem"]["functional"] == "area"
+    j = case.job(8, "mean-curvature", 1e-7)["problem"]
+    assert (j["functional"], j["mean_curvature_tolerance"]) == ("mean-curvature", 1e-7)
+    assert "functional" not in case.job(8, "dirichlet")["problem"]
+    base = {"degree": 8, "functional": "mean-curvature", "converged": True, "error": 1e-7, "residual": 1e-6,
+            "area": None, "H_min": -0.5, "H_max": -0.5, "seconds": 0.1}
+    rows = [dict(base, cpu=0.3), dict(base, cpu=0.1, mc_tolerance=1e-5, error=1e-6),
+            dict(base, cpu=0.05, mc_tolerance=1e-3, error=1e-6, converged=False)]
+    table = ec.time_to_accuracy(case, rows, [], [1e-6, 1e-7])
+    head = table.splitlines()[0]
+    assert "bezierpde mean-curvature |" in head and "bezierpde mean-curvature (degree and tolerance)" in head
+    assert "| 1e-06 | 0.30 s (n = 8) | 0.100 s (n = 8, √Φ ≤ 1e-05) |" in table  # default rows alone; unconverged left out
+    assert "| 1e-07 | 0.30 s (n = 8) | 0.30 s (n = 8) |" in table
+    assert "(√Φ ≤ 1e-05)" in ec.bpde_table(case, rows)
+
+
+def test_refuses_malformed_mc_tolerances(capsys):
+    for bad in ("abc", "1e-7,x", "0", "1"):
+        assert ec.main(["--mc-tolerances", bad]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "--mc-tolerances" in err
