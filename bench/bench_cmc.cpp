@@ -3,7 +3,8 @@
 // Dirichlet extremal (the linear solve, H = 0) as the baseline; CmcArea/{newton,ceres}/<n> for the
 // area functional A + 2HV on the same data; CmcArea/circle/<n> for the area functional on the
 // non-conformal data of the paper's Fig. 1 (the unit circle in three arcs by angle, H = -0.5), the
-// case of docs/cmc_evolver.md. The per-degree setup (Gram and volume quadrature tables) is cached
+// case of docs/cmc_evolver.md; CmcMeanCurvature/circle/<n> for the least squares of the mean curvature
+// on that circle. The per-degree setup (Gram and volume quadrature tables) is cached
 // by CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after
 // the first iteration.
 #include <benchmark/benchmark.h>
@@ -61,13 +62,13 @@ void NLopt(benchmark::State& s) { run(s, CmcSolver::NLopt, false); }
 void AreaNewton(benchmark::State& s) { run(s, CmcSolver::Newton, false, true); }
 void AreaCeres(benchmark::State& s) { run(s, CmcSolver::Ceres, false, true); }
 
-void AreaCircle(benchmark::State& state) {
+void CircleRoute(benchmark::State& state, CmcFunctionalKind functional) {
   const int n = static_cast<int>(state.range(0));
   const TriangularNet data = circle_three_arcs(n);
   CmcFunctional::cached_triangular(n);
   CmcOptions o;
   o.H = -0.5;
-  o.functional = CmcFunctionalKind::Area;
+  o.functional = functional;
   int iters = 0;
   double residual = 0;
   for (auto _ : state) {
@@ -80,6 +81,10 @@ void AreaCircle(benchmark::State& state) {
   state.counters["iterations"] = iters;
   state.counters["residual"] = residual;
 }
+void AreaCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::Area); }
+// The least squares of the mean curvature on the same circle (its residual is √Φ, tolerance 1e-6;
+// it converges from n = 10 on, docs/cmc.md).
+void MeanCurvatureCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::MeanCurvature); }
 
 }  // namespace
 
@@ -90,3 +95,4 @@ BENCHMARK(NLopt)->Name("Cmc/nlopt")->DenseRange(4, 15)->Unit(benchmark::kMicrose
 BENCHMARK(AreaNewton)->Name("CmcArea/newton")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCeres)->Name("CmcArea/ceres")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCircle)->Name("CmcArea/circle")->DenseRange(6, 12, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(MeanCurvatureCircle)->Name("CmcMeanCurvature/circle")->DenseRange(10, 14, 2)->Unit(benchmark::kMillisecond);

@@ -1,6 +1,7 @@
-// 004-cmc-area-tables: the area functional A_H = A + 2HV against the paper's D_H = D + 2HV
-// (Arnal–Lluch–Monterde, triangular CMC) on boundaries whose parametrisation is not conformal, where
-// the answer is known in closed form (docs/cmc.md, "The area functional"):
+// 004-cmc-area-tables: the area functional A_H = A + 2HV and the least squares of the mean curvature
+// Φ = ∫ρ(H_x − H)² dA against the paper's D_H = D + 2HV (Arnal–Lluch–Monterde, triangular CMC) on
+// boundaries whose parametrisation is not conformal, where the answer is known in closed form
+// (docs/cmc.md, "The area functional" and "Least squares of the mean curvature"):
 //   - the unit circle in three arcs by angle (boundaries/reference_boundaries.h: circle_three_arcs),
 //     H = -0.5 and -0.9: the small cap of the sphere of radius 1/|H| through the circle;
 //   - H = 0, tensor: the helicoid piece (s cos t, s sin t, t), s in [0.3, 1], t in [0, 1.2], from its
@@ -9,7 +10,7 @@
 //     (θ, ρ) = (1.2u + 0.4v, 1.1 + 0.8v); checked by |√(x² + y²) - cosh z|.
 //
 // Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
-//                                     --gauge-probe | --lsq-probe | --solve-circle N TOLERANCE]
+//                                     --gauge-probe | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
@@ -22,13 +23,11 @@
 //   rules on the solved nets (docs/cmc.md, "The rule near nearly degenerate corners"; seconds).
 //   --gauge-probe: Newton steps restricted to normal motion of the free points on the solved
 //   circle (docs/cmc.md, "Not done yet"; seconds).
-//   --lsq-probe: from the area route's circle at n = 10 (H = -0.5, -0.9), Levenberg–Marquardt on
-//   ∫ (H_x − H)² dA: how near to CMC the degree-10 space gets (docs/cmc.md, "Not done yet"; about
-//   a minute).
 // Columns: "dist" is the max over a 40-sample grid (every sample, corners included) of the distance
 // measure above; the H range is taken on the 40-grid with corner margin 0.1; "residual" is the
-// relative first variation of the functional solved (eq. (11) for D_H, A_H for area); "iterations"
-// and "seconds" are the solver summary's (all stages included).
+// relative first variation of the functional solved (eq. (11) for D_H, A_H for area) or, for
+// mean-curvature, √Φ (its tolerance 1e-6); "iterations" and "seconds" are the solver summary's
+// (all stages included).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -40,7 +39,6 @@
 #include <vector>
 
 #include "bezierpde/boundaries/reference_boundaries.h"
-#include "bezierpde/core/quadrature.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
@@ -53,16 +51,31 @@ using bpde::examples::stable_small;
 namespace {
 
 template <class Net>
-bpde::CmcResult<Net> solve(const Net& data, double H, bool area) {
+bpde::CmcResult<Net> solve(const Net& data, double H, bpde::CmcFunctionalKind functional) {
   bpde::CmcOptions o;
   o.H = H;
-  if (area) o.functional = bpde::CmcFunctionalKind::Area;
+  o.functional = functional;
   return bpde::solve_cmc(data, o);
 }
+template <class Net>
+bpde::CmcResult<Net> solve(const Net& data, double H, bool area) {
+  return solve(data, H, area ? bpde::CmcFunctionalKind::Area : bpde::CmcFunctionalKind::Dirichlet);
+}
+
+// The three functionals of the tables, in their order.
+constexpr bpde::CmcFunctionalKind kFunctionals[] = {bpde::CmcFunctionalKind::Dirichlet, bpde::CmcFunctionalKind::Area,
+                                                    bpde::CmcFunctionalKind::MeanCurvature};
 
 // A residual for the table: "≤ 1e-11" when it meets the tolerance (its digits there vary with the
-// machine), two digits otherwise.
+// machine), two digits otherwise; for the mean-curvature functional √Φ, "≤ 1e-6" when it meets its
+// tolerance.
 std::string residual_cell(double r) { return r <= 1e-11 ? "≤ 1e-11" : stable_small(r); }
+template <class Net>
+std::string residual_cell(const bpde::CmcResult<Net>& r) {
+  if (r.functional == bpde::CmcFunctionalKind::MeanCurvature)
+    return r.summary.residual <= 1e-6 ? "√Φ ≤ 1e-6" : "√Φ = " + stable_small(r.summary.residual);
+  return residual_cell(r.summary.residual);
+}
 
 std::string status_cell(const bpde::Summary& s) { return bpde::to_string(s.status); }
 
@@ -81,13 +94,13 @@ double worst(const bpde::TensorNet& net, const std::function<double(const Eigen:
 }
 
 template <class Net>
-void row(int n, const char* functional, const bpde::CmcResult<Net>& r, double dist, bool with_h) {
-  std::printf("| %d | %s | %s |", n, functional, stable_small(dist, 1e-10).c_str());
+void row(int n, const bpde::CmcResult<Net>& r, double dist, bool with_h) {
+  std::printf("| %d | %s | %s |", n, bpde::to_string(r.functional).c_str(), stable_small(dist, 1e-10).c_str());
   if (with_h) {
     const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(r.net, 40, 0.1);
     std::printf(" %.5f … %.5f |", s.min, s.max);
   }
-  std::printf(" %s | %s | %d | %.1f |\n", residual_cell(r.summary.residual).c_str(), status_cell(r.summary).c_str(),
+  std::printf(" %s | %s | %d | %.1f |\n", residual_cell(r).c_str(), status_cell(r.summary).c_str(),
               r.summary.iterations, r.summary.seconds);
 }
 
@@ -99,10 +112,9 @@ void circle_table(const char* name, double H, const std::vector<int>& degrees) {
   std::printf("| --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (int n : degrees) {
     const bpde::TriangularNet data = bpde::circle_three_arcs(n);
-    for (bool area : {false, true}) {
-      const auto r = solve(data, H, area);
-      row(n, area ? "area" : "dirichlet", r, worst(r.net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; }),
-          true);
+    for (const bpde::CmcFunctionalKind f : kFunctionals) {
+      const auto r = solve(data, H, f);
+      row(n, r, worst(r.net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; }), true);
     }
   }
 }
@@ -123,10 +135,9 @@ void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<in
     std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
     for (int n : tensor_degrees) {
       const bpde::TensorNet data = bpde::tensor_boundary(n, helicoid);
-      for (bool area : {false, true}) {
-        const auto r = solve(data, 0.0, area);
-        row(n, area ? "area" : "dirichlet", r,
-            worst(r.net, [](const Eigen::Vector3d& x) { return x(0) * std::sin(x(2)) - x(1) * std::cos(x(2)); }),
+      for (const bpde::CmcFunctionalKind f : kFunctionals) {
+        const auto r = solve(data, 0.0, f);
+        row(n, r, worst(r.net, [](const Eigen::Vector3d& x) { return x(0) * std::sin(x(2)) - x(1) * std::cos(x(2)); }),
             false);
       }
     }
@@ -138,10 +149,10 @@ void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<in
     std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
     for (int n : triangular_degrees) {
       const bpde::TriangularNet data = bpde::triangular_boundary(n, catenoid);
-      for (bool area : {false, true}) {
-        const auto r = solve(data, 0.0, area);
-        row(n, area ? "area" : "dirichlet", r,
-            worst(r.net, [](const Eigen::Vector3d& x) { return std::hypot(x(0), x(1)) - std::cosh(x(2)); }), false);
+      for (const bpde::CmcFunctionalKind f : kFunctionals) {
+        const auto r = solve(data, 0.0, f);
+        row(n, r, worst(r.net, [](const Eigen::Vector3d& x) { return std::hypot(x(0), x(1)) - std::cosh(x(2)); }),
+            false);
       }
     }
   }
@@ -358,89 +369,6 @@ void margin_probe() {
   }
 }
 
-// Whether the degree-n space holds a surface nearer to CMC than the A_H critical point
-// (docs/cmc.md, "Not done yet"): from the area route's result on the circle, Levenberg–Marquardt
-// on the least-squares mean-curvature deviation Φ = ∫ (H_x − H)² dA (residuals √(w |x_u ∧ x_v|)
-// (H_x − H) at the nodes of the collapsed Gauss rule q = 20 on the triangle, Jacobian by central
-// differences with step 1e-7, damping λ diag(JᵀJ)). A probe, not a solver: it prints, every 10
-// iterations, the A_H first variation (relative), ‖H_x − H‖ in L²(dA), the distance to the sphere
-// (40-grid, corners included) and max |H_sampled − H| at corner margins 0.1, 0.2, 0.3.
-void lsq_probe() {
-  std::printf("| H | n | iteration | A_H first variation | ‖H_x − H‖ (L², dA) | dist to the sphere | margin 0.1 | 0.2 | 0.3 |\n");
-  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
-  const int n = 10;
-  for (const auto& [H, iterations] : {std::pair{-0.5, 20}, std::pair{-0.9, 40}}) {
-    const double R = 1 / std::abs(H);
-    const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
-    const auto r0 = solve(bpde::circle_three_arcs(n), H, true);
-    const std::vector<int> idx = r0.net.free_indices(bpde::FixedSet::Boundary);
-    const int k = static_cast<int>(idx.size());
-    const auto f = bpde::CmcFunctional::cached_triangular(n);
-    const bpde::AreaForm a = bpde::AreaForm::triangular(n, r0.quadrature_points, 1);
-    const bpde::QuadratureRuleTriangle rule = bpde::gauss_triangle(20);
-    const Eigen::Index M = rule.w.size();
-    auto deviation = [&](const bpde::TriangularNet& net) {
-      Eigen::VectorXd d(M);
-      for (Eigen::Index j = 0; j < M; ++j) {
-        const double u = rule.uv(j, 0), v = rule.uv(j, 1);
-        const bpde::FundamentalForms g = net.geometry(u, v);
-        const double dA = net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).norm();
-        d(j) = std::sqrt(rule.w(j) * dA) * (g.regular ? g.H - H : 0.0);
-      }
-      return d;
-    };
-    auto report = [&](int it, const bpde::TriangularNet& net) {
-      Eigen::MatrixX3d GA, SA, GV, SV;
-      a.gradient_rows_and_scale(net.points(), idx, &GA, &SA);
-      f->volume_form().gradient_rows_and_scale(net.points(), idx, &GV, &SV);
-      const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
-      std::printf("| %g | %d | %d | %.1e | %.1e | %.1e |", H, n, it, G.cwiseAbs().maxCoeff() / S.maxCoeff(),
-                  deviation(net).norm(), worst(net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; }));
-      for (double m : {0.1, 0.2, 0.3}) {
-        const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(net, 40, m);
-        std::printf(" %.1e |", std::max(std::abs(s.min - H), std::abs(s.max - H)));
-      }
-      std::printf("\n");
-      std::fflush(stdout);
-    };
-    bpde::TriangularNet net = r0.net;
-    report(0, net);
-    double lambda = 1e-6;
-    for (int it = 1; it <= iterations; ++it) {
-      const Eigen::VectorXd d0 = deviation(net);
-      Eigen::MatrixXd J(M, 3 * k);
-      const double h = 1e-7;
-      for (int i = 0; i < k; ++i)
-        for (int col = 0; col < 3; ++col) {
-          bpde::TriangularNet p = net, m = net;
-          p.points()(idx[i], col) += h;
-          m.points()(idx[i], col) -= h;
-          J.col(3 * i + col) = (deviation(p) - deviation(m)) / (2 * h);
-        }
-      const Eigen::MatrixXd JtJ = J.transpose() * J;
-      const Eigen::VectorXd Jtd = J.transpose() * d0;
-      const Eigen::VectorXd diag = JtJ.diagonal().cwiseMax(1e-12 * JtJ.diagonal().maxCoeff());
-      bool accepted = false;
-      for (int t = 0; t < 12 && !accepted; ++t) {
-        Eigen::MatrixXd A = JtJ;
-        A.diagonal() += lambda * diag;
-        const Eigen::VectorXd step = -A.ldlt().solve(Jtd);
-        bpde::TriangularNet next = net;
-        for (int i = 0; i < k; ++i) next.points().row(idx[i]) += step.segment<3>(3 * i).transpose();
-        if (deviation(next).norm() < d0.norm()) {
-          net = next;
-          lambda = std::max(lambda / 3, 1e-12);
-          accepted = true;
-        } else {
-          lambda *= 10;
-        }
-      }
-      if (!accepted || it % 10 == 0) report(it, net);
-      if (!accepted) break;
-    }
-  }
-}
-
 // One library solve of the circle (H = -0.5, area functional, solver newton) at degree n and
 // first-variation tolerance t, for scripts/evolver_compare.py --tolerances (docs/cmc_evolver.md,
 // "The circle with the tolerance as a second knob"): prints one JSON object with the summary and
@@ -494,10 +422,6 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string(argv[1]) == "--gauge-probe") {
     gauge_probe();
-    return 0;
-  }
-  if (argc > 1 && std::string(argv[1]) == "--lsq-probe") {
-    lsq_probe();
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--margin-probe") {

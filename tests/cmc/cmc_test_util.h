@@ -1,6 +1,7 @@
 #pragma once
 // Shared data builders for the CMC tests.
 #include <Eigen/Dense>
+#include <Eigen/LU>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -44,6 +45,34 @@ void expect_hessian_is_fd_of_gradient(const Eigen::MatrixXd& J, const Eigen::Mat
           EXPECT_NEAR(J(3 * Eigen::Index(a) + r, 3 * Eigen::Index(b) + s), dG(idx[a], r), tol)
               << "point " << idx[a] << "." << r << " by point " << idx[b] << "." << s;
     }
+}
+
+// The full net interpolating s(u, v) at the tensor Chebyshev–Lobatto nodes (every point, so the
+// boundary and the next ring carry C¹ data of s).
+inline TensorNet tensor_interpolant(int n, const std::function<Eigen::Vector3d(double, double)>& s) {
+  Eigen::MatrixXd A(n + 1, n + 1);
+  std::vector<double> b(static_cast<size_t>(n + 1));
+  std::vector<double> t(static_cast<size_t>(n + 1));
+  for (int k = 0; k <= n; ++k) {
+    t[static_cast<size_t>(k)] = 0.5 * (1 - std::cos(std::numbers::pi * k / n));
+    bernstein_values(n, t[static_cast<size_t>(k)], b.data());
+    for (int i = 0; i <= n; ++i) A(k, i) = b[static_cast<size_t>(i)];
+  }
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+  TensorNet net(n, n);
+  for (int c = 0; c < 3; ++c) {
+    Eigen::MatrixXd S(n + 1, n + 1);
+    for (int a = 0; a <= n; ++a)
+      for (int d = 0; d <= n; ++d) S(a, d) = s(t[static_cast<size_t>(a)], t[static_cast<size_t>(d)])(c);
+    const Eigen::MatrixXd P = lu.solve(lu.solve(S).transpose()).transpose();  // A P Aᵀ = S
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        Eigen::Vector3d x = net.point(i, j);
+        x(c) = P(i, j);
+        net.set_point(i, j, x);
+      }
+  }
+  return net;
 }
 
 }  // namespace bpde::testing

@@ -274,34 +274,6 @@ TEST(CmcArea, MinimalSurfaceIsTheHelicoidPiece) {
 namespace bpde {
 namespace {
 
-// The full net interpolating s(u, v) at the tensor Chebyshev–Lobatto nodes (every point, so the
-// boundary and the next ring carry C¹ data of s).
-TensorNet tensor_interpolant(int n, const std::function<Eigen::Vector3d(double, double)>& s) {
-  Eigen::MatrixXd A(n + 1, n + 1);
-  std::vector<double> b(static_cast<size_t>(n + 1));
-  std::vector<double> t(static_cast<size_t>(n + 1));
-  for (int k = 0; k <= n; ++k) {
-    t[static_cast<size_t>(k)] = 0.5 * (1 - std::cos(std::numbers::pi * k / n));
-    bernstein_values(n, t[static_cast<size_t>(k)], b.data());
-    for (int i = 0; i <= n; ++i) A(k, i) = b[static_cast<size_t>(i)];
-  }
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-  TensorNet net(n, n);
-  for (int c = 0; c < 3; ++c) {
-    Eigen::MatrixXd S(n + 1, n + 1);
-    for (int a = 0; a <= n; ++a)
-      for (int d = 0; d <= n; ++d) S(a, d) = s(t[static_cast<size_t>(a)], t[static_cast<size_t>(d)])(c);
-    const Eigen::MatrixXd P = lu.solve(lu.solve(S).transpose()).transpose();  // A P Aᵀ = S
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j) {
-        Eigen::Vector3d x = net.point(i, j);
-        x(c) = P(i, j);
-        net.set_point(i, j, x);
-      }
-  }
-  return net;
-}
-
 // C¹ data (boundary+adjacent) with a closed-form answer: the helicoid piece of
 // MinimalSurfaceIsTheHelicoidPiece, its boundary and next ring taken from the interpolating net of
 // the helicoid's own non-conformal parametrisation. The minimal surface with these boundary curves
@@ -311,7 +283,7 @@ TEST(CmcArea, C1DataMinimalSurfaceIsTheHelicoidPiece) {
     const double s = 0.3 + 0.7 * u, t = 1.2 * v;
     return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
   };
-  const TensorNet data = tensor_interpolant(6, helicoid);
+  const TensorNet data = testing::tensor_interpolant(6, helicoid);
   CmcOptions o = area_options(0.0);
   o.fixed = FixedSet::BoundaryAdjacent;
   const CmcResult<TensorNet> r = solve_cmc(data, o);
