@@ -24,6 +24,12 @@ Job demo_area_job() {
   return job;
 }
 
+Job demo_mean_curvature_job() {
+  Job job = demo_job();
+  job.problem.functional = CmcFunctionalKind::MeanCurvature;
+  return job;
+}
+
 double unit_circle_cap_distance(const TriangularNet& net, double H) {
   if (!(std::abs(H) < 1.0) || H == 0.0) return INFINITY;
   const double R = 1.0 / std::abs(H);
@@ -59,38 +65,49 @@ double number_or_nan(const Json& j) { return j.is_number() ? j.get<double>() : N
 
 }  // namespace
 
-std::string demo_summary(const Json& d, const Json& a, double dist_d, double dist_a, const std::string& out_dir,
-                         const std::string& area_dir) {
+std::string demo_summary(const std::vector<DemoColumn>& cols) {
   std::string s;
   append(s,
          "bpde demo: the unit circle in three arcs (Arnal-Lluch-Monterde Fig. 1), triangular degree 8, H = -0.5.\n"
          "  The answer is the spherical cap of radius 2; the arcs are parametrised by angle (not conformally).\n\n");
-  append(s, "  %-28s %-24s %-24s\n", "", "D + 2HV (the paper)", "A + 2HV (area)");
-  auto yes = [](const Json& r) { return r["converged"].get<bool>() ? "yes" : "no"; };
-  append(s, "  %-28s %-24s %-24s\n", "converged", yes(d), yes(a));
-  append(s, "  %-28s %-24.3g %-24.3g\n", "first-variation residual", number_or_nan(d["residual"]),
-         number_or_nan(a["residual"]));
-  auto range = [](const Json& r) {
-    if (!r["mean_curvature"].is_object()) return std::string("-");
+  // One line: a label, then one cell per column.
+  auto line = [&](const char* label, auto cell) {
+    append(s, "  %-28s", label);
+    for (const DemoColumn& c : cols) append(s, " %-24s", cell(c).c_str());
+    s.erase(s.find_last_not_of(' ') + 1);
+    s += "\n";
+  };
+  auto num = [](const char* format, double x) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6f .. %.6f", r["mean_curvature"]["min"].get<double>(),
-                  r["mean_curvature"]["max"].get<double>());
+    std::snprintf(buf, sizeof buf, format, x);
     return std::string(buf);
   };
-  append(s, "  %-28s %-24s %-24s\n", "mean curvature (min .. max)", range(d).c_str(), range(a).c_str());
-  append(s, "  %-28s %-24.3g %-24.3g\n", "distance to the exact cap", dist_d, dist_a);
-  append(s, "  %-28s %-24.12g %-24.12g\n", "energy (its functional)", number_or_nan(d["energy"]),
-         number_or_nan(a["energy"]));
-  append(s, "  %-28s %-24.12g %-24.12g\n", "area A", number_or_nan(d["area"]), number_or_nan(a["area"]));
-  append(s, "  %-28s %-24.12g %-24.12g\n", "Dirichlet energy D", number_or_nan(d["D"]), number_or_nan(a["D"]));
-  append(s, "  %-28s %-24.12g %-24.12g\n", "volume V", number_or_nan(d["volume"]), number_or_nan(a["volume"]));
-  append(s, "  %-28s %-24d %-24d\n", "CGAL self-intersections", d["check"]["self_intersections"].get<int>(),
-         a["check"]["self_intersections"].get<int>());
+  line("", [](const DemoColumn& c) { return c.title; });
+  line("converged", [](const DemoColumn& c) { return std::string(c.report["converged"].get<bool>() ? "yes" : "no"); });
+  line("residual (its functional)", [&](const DemoColumn& c) { return num("%.3g", number_or_nan(c.report["residual"])); });
+  line("mean curvature (min .. max)", [](const DemoColumn& c) {
+    if (!c.report["mean_curvature"].is_object()) return std::string("-");
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6f .. %.6f", c.report["mean_curvature"]["min"].get<double>(),
+                  c.report["mean_curvature"]["max"].get<double>());
+    return std::string(buf);
+  });
+  line("distance to the exact cap", [&](const DemoColumn& c) { return num("%.3g", c.distance); });
+  line("energy (its functional)", [&](const DemoColumn& c) { return num("%.12g", number_or_nan(c.report["energy"])); });
+  line("area A", [&](const DemoColumn& c) { return num("%.12g", number_or_nan(c.report["area"])); });
+  line("Dirichlet energy D", [&](const DemoColumn& c) { return num("%.12g", number_or_nan(c.report["D"])); });
+  line("volume V", [&](const DemoColumn& c) { return num("%.12g", number_or_nan(c.report["volume"])); });
+  line("CGAL self-intersections",
+       [](const DemoColumn& c) { return std::to_string(c.report["check"]["self_intersections"].get<int>()); });
   append(s, "  exact cap: A = %.12g, V = %.12g\n", 4 * std::numbers::pi * (2 - std::sqrt(3.0)),
          std::numbers::pi * (2 - std::sqrt(3.0)) * (2 - std::sqrt(3.0)) * (6 - (2 - std::sqrt(3.0))) / 3);
-  if (a.contains("message")) append(s, "  area: %s\n", a["message"].get<std::string>().c_str());
-  append(s, "  files               %s/ and %s/ {result.json, surface.obj, surface.ply, surface.vtp, net.obj}\n", out_dir.c_str(),
-         area_dir.c_str());
+  for (size_t k = 1; k < cols.size(); ++k)
+    if (cols[k].report.contains("message"))
+      append(s, "  %s: %s\n", cols[k].report["functional"].get<std::string>().c_str(),
+             cols[k].report["message"].get<std::string>().c_str());
+  std::string dirs;
+  for (const DemoColumn& c : cols) dirs += (dirs.empty() ? "" : ", ") + c.dir + "/";
+  append(s, "  files               %s {result.json, surface.obj, surface.ply, surface.vtp, net.obj}\n", dirs.c_str());
   return s;
 }
 

@@ -2,6 +2,7 @@
 // The built-in default job of `bpde demo` (the README's main command): the jobs, and the summary
 // the command prints from their results.
 #include <string>
+#include <vector>
 
 #include "bezierpde/io/job.h"
 #include "bezierpde/triangular/triangular_net.h"
@@ -15,16 +16,25 @@ namespace bpde {
 Job demo_job();
 /// The same boundary and H with "functional": "area": the critical point of A + 2HV.
 Job demo_area_job();
+/// The same boundary and H with "functional": "mean-curvature": the least squares of the mean
+/// curvature, ∫ρ(H_x − H)² dA, minimised (solvers/cmc/cmc.h).
+Job demo_mean_curvature_job();
 
 /// max over a 40-sample grid (corners included) of | |x - c| - 1/|H| |, c the centre of the small
 /// spherical cap of mean curvature H (|H| < 1, H ≠ 0) through the unit circle in z = 0, on the
 /// side H < 0 bulges to; +inf when |H| >= 1 or H = 0.
 double unit_circle_cap_distance(const TriangularNet& net, double H);
 
-/// The lines `bpde demo` prints, side by side for the two functionals, from the reports of the
-/// results it wrote (result.json's "report", with `mean_curvature` and `check`), the distances to
-/// the exact cap, and the output directories.
-std::string demo_summary(const Json& dirichlet, const Json& area, double dist_dirichlet, double dist_area,
-                         const std::string& out_dir, const std::string& area_dir);
+/// One column of the demo: the report of a result the demo wrote (result.json's "report", with
+/// `mean_curvature` and `check`), its distance to the exact cap, and its output directory.
+struct DemoColumn {
+  std::string title;  ///< e.g. "D + 2HV (the paper)"
+  Json report;
+  double distance = 0.0;
+  std::string dir;
+};
+
+/// The lines `bpde demo` prints, the functionals side by side (the first column is the paper's).
+std::string demo_summary(const std::vector<DemoColumn>& columns);
 
 }  // namespace bpde
