@@ -34,6 +34,7 @@
 #include <cstdio>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -217,6 +218,47 @@ void rule_probe() {
   }
 }
 
+// A_H on the area route's circle (degree n, H), on the rule the solve ended with: the first
+// variation over the free points as a 3k vector (entry 3a + c) and its relative size, and the
+// Hessian. Used by the probes below.
+struct CircleAreaProblem {
+  double H;
+  int n;
+  bpde::CmcResult<bpde::TriangularNet> r;
+  std::vector<int> idx;
+  int k;
+  std::shared_ptr<const bpde::CmcFunctional> f;
+  bpde::AreaForm a;
+
+  CircleAreaProblem(double H_, int n_)
+      : H(H_),
+        n(n_),
+        r(solve(bpde::circle_three_arcs(n_), H_, true)),
+        idx(r.net.free_indices(bpde::FixedSet::Boundary)),
+        k(static_cast<int>(idx.size())),
+        f(bpde::CmcFunctional::cached_triangular(n_)),
+        a(bpde::AreaForm::triangular(n_, r.quadrature_points, 1)) {}
+
+  double gradient(const Eigen::MatrixX3d& P, Eigen::VectorXd& g) const {
+    Eigen::MatrixX3d GA, SA, GV, SV;
+    a.gradient_rows_and_scale(P, idx, &GA, &SA);
+    f->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
+    const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
+    g.resize(3 * k);
+    for (int i = 0; i < k; ++i) g.segment<3>(3 * i) = G.row(i).transpose();
+    return G.cwiseAbs().maxCoeff() / S.maxCoeff();
+  }
+  Eigen::MatrixXd hessian(const Eigen::MatrixX3d& P) const {
+    return a.hessian(P, idx) + 2 * H * f->volume_form().hessian(P, idx);
+  }
+  // P with the free rows moved by d (3k).
+  Eigen::MatrixX3d moved(const Eigen::MatrixX3d& P, const Eigen::VectorXd& d) const {
+    Eigen::MatrixX3d Pn = P;
+    for (int i = 0; i < k; ++i) Pn.row(idx[i]) += d.segment<3>(3 * i).transpose();
+    return Pn;
+  }
+};
+
 // From the solved circle (H = -0.5 at n = 8 and 10, converged; H = -0.9 at n = 10, stopped at its
 // numerical limit): Newton steps on A_H restricted to the motion of each free point along the
 // surface normal at its parameter (I/n), the gauge that removes the tangential (reparametrisation)
@@ -227,65 +269,37 @@ void gauge_probe() {
   std::printf("| H | n | step | residual | \\|g\\| normal part | \\|g\\| tangential part | reduced Hessian eigenvalues | max \\|H_sampled − H\\| |\n");
   std::printf("| --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const auto& [H, n] : {std::pair{-0.5, 8}, std::pair{-0.5, 10}, std::pair{-0.9, 10}}) {
-    const auto r = solve(bpde::circle_three_arcs(n), H, true);
-    const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
-    const int k = static_cast<int>(idx.size());
-    const auto f = bpde::CmcFunctional::cached_triangular(n);
-    const bpde::AreaForm a = bpde::AreaForm::triangular(n, r.quadrature_points, 1);
-    bpde::TriangularNet net = r.net;
+    const CircleAreaProblem p(H, n);
+    const int k = p.k;
+    bpde::TriangularNet net = p.r.net;
     for (int step = 0; step <= 3; ++step) {
       const Eigen::MatrixX3d& P = net.points();
-      Eigen::MatrixX3d GA, SA, GV, SV;
-      a.gradient_rows_and_scale(P, idx, &GA, &SA);
-      f->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
-      const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
-      Eigen::VectorXd g(3 * k);
+      Eigen::VectorXd g;
+      const double rel = p.gradient(P, g);
       Eigen::MatrixXd Nm = Eigen::MatrixXd::Zero(3 * k, k);
       for (int i = 0; i < k; ++i) {
-        g.segment<3>(3 * i) = G.row(i).transpose();
-        const bpde::MultiIndex I = bpde::TriangularNet::multi_index(n, idx[i]);
+        const bpde::MultiIndex I = bpde::TriangularNet::multi_index(n, p.idx[i]);
         const double u = double(I[0]) / n, v = double(I[1]) / n;
         Nm.block<3, 1>(3 * i, i) = net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).normalized();
       }
-      const Eigen::MatrixXd K = a.hessian(P, idx) + 2 * H * f->volume_form().hessian(P, idx);
+      const Eigen::MatrixXd K = p.hessian(P);
       const Eigen::MatrixXd Kr = Nm.transpose() * K * Nm;
       const Eigen::VectorXd gr = Nm.transpose() * g;
       const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Kr).eigenvalues();
       const bpde::MeanCurvatureStats hs = bpde::mean_curvature_stats(net, 40, 0.1);
-      std::printf("| %g | %d | %d | %.1e | %.1e | %.1e | %.1e … %.1e | %.1e |\n", H, n, step,
-                  G.cwiseAbs().maxCoeff() / S.maxCoeff(), gr.norm(), (g - Nm * gr).norm(), ev(0), ev(k - 1),
-                  std::max(std::abs(hs.min - H), std::abs(hs.max - H)));
-      const Eigen::VectorXd d = Nm * Kr.ldlt().solve(-gr);
-      for (int i = 0; i < k; ++i) net.points().row(idx[i]) += d.segment<3>(3 * i).transpose();
+      std::printf("| %g | %d | %d | %.1e | %.1e | %.1e | %.1e … %.1e | %.1e |\n", H, n, step, rel, gr.norm(),
+                  (g - Nm * gr).norm(), ev(0), ev(k - 1), std::max(std::abs(hs.min - H), std::abs(hs.max - H)));
+      net.points() = p.moved(P, Nm * Kr.ldlt().solve(-gr));
     }
   }
   {
     // One full Newton step over all modes from the H = -0.9 end point (n = 10).
-    const double H = -0.9;
-    const int n = 10;
-    const auto r = solve(bpde::circle_three_arcs(n), H, true);
-    const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
-    const int k = static_cast<int>(idx.size());
-    const auto f = bpde::CmcFunctional::cached_triangular(n);
-    const bpde::AreaForm a = bpde::AreaForm::triangular(n, r.quadrature_points, 1);
-    auto gradient = [&](const Eigen::MatrixX3d& P, double* rel) {
-      Eigen::MatrixX3d GA, SA, GV, SV;
-      a.gradient_rows_and_scale(P, idx, &GA, &SA);
-      f->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
-      const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
-      *rel = G.cwiseAbs().maxCoeff() / S.maxCoeff();
-      Eigen::VectorXd g(3 * k);
-      for (int i = 0; i < k; ++i) g.segment<3>(3 * i) = G.row(i).transpose();
-      return g;
-    };
-    const Eigen::MatrixX3d P = r.net.points();
-    double r0 = 0, r1 = 0;
-    const Eigen::VectorXd g = gradient(P, &r0);
-    const Eigen::MatrixXd K = a.hessian(P, idx) + 2 * H * f->volume_form().hessian(P, idx);
-    const Eigen::VectorXd d = -K.fullPivLu().solve(g);
-    Eigen::MatrixX3d Pn = P;
-    for (int i = 0; i < k; ++i) Pn.row(idx[i]) += d.segment<3>(3 * i).transpose();
-    gradient(Pn, &r1);
+    const CircleAreaProblem p(-0.9, 10);
+    const Eigen::MatrixX3d P = p.r.net.points();
+    Eigen::VectorXd g, gn;
+    const double r0 = p.gradient(P, g);
+    const Eigen::VectorXd d = -p.hessian(P).fullPivLu().solve(g);
+    const double r1 = p.gradient(p.moved(P, d), gn);
     std::printf("\nFull Newton step from the H = -0.9, n = 10 end point: residual %.1e -> %.1e, max |step| %.1e"
                 " (the free points are O(1))\n", r0, r1, d.cwiseAbs().maxCoeff());
   }
@@ -293,38 +307,23 @@ void gauge_probe() {
   // (K² + μC) d = -K g (C the Dirichlet Gram), the μ in 1e-2, 1e-3, …, 1e-22 with the smallest
   // residual among those that lower ‖g‖, from the converged circle at n = 10 (H = -0.5).
   std::printf("\n| n | step | residual | best μ |\n| --- | --- | --- | --- |\n");
-  const double H = -0.5;
   const int n = 10;
-  const auto r = solve(bpde::circle_three_arcs(n), H, true);
-  const std::vector<int> idx = r.net.free_indices(bpde::FixedSet::Boundary);
-  const int k = static_cast<int>(idx.size());
-  const auto f = bpde::CmcFunctional::cached_triangular(n);
-  const bpde::AreaForm a = bpde::AreaForm::triangular(n, r.quadrature_points, 1);
+  const CircleAreaProblem p(-0.5, n);
+  const int k = p.k;
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(3 * k, 3 * k);
   for (int i = 0; i < k; ++i)
-    for (int j = 0; j < k; ++j) C.block<3, 3>(3 * i, 3 * j) = f->gram()(idx[i], idx[j]) * Eigen::Matrix3d::Identity();
-  auto resid = [&](const Eigen::MatrixX3d& P, Eigen::VectorXd& g) {
-    Eigen::MatrixX3d GA, SA, GV, SV;
-    a.gradient_rows_and_scale(P, idx, &GA, &SA);
-    f->volume_form().gradient_rows_and_scale(P, idx, &GV, &SV);
-    const Eigen::MatrixX3d G = GA + 2 * H * GV, S = SA + 2 * std::abs(H) * SV;
-    g.resize(3 * k);
-    for (int i = 0; i < k; ++i) g.segment<3>(3 * i) = G.row(i).transpose();
-    return G.cwiseAbs().maxCoeff() / S.maxCoeff();
-  };
-  Eigen::MatrixX3d P = r.net.points();
+    for (int j = 0; j < k; ++j) C.block<3, 3>(3 * i, 3 * j) = p.f->gram()(p.idx[i], p.idx[j]) * Eigen::Matrix3d::Identity();
+  Eigen::MatrixX3d P = p.r.net.points();
   for (int step = 0; step <= 4; ++step) {
     Eigen::VectorXd g;
-    const double r0 = resid(P, g);
-    const Eigen::MatrixXd K = a.hessian(P, idx) + 2 * H * f->volume_form().hessian(P, idx);
+    const double r0 = p.gradient(P, g);
+    const Eigen::MatrixXd K = p.hessian(P);
     double best = r0, best_mu = 0;
     Eigen::MatrixX3d best_P = P;
     for (double mu = 1e-2; mu >= 1e-22; mu *= 0.1) {
-      const Eigen::VectorXd d = -(K * K + mu * C).ldlt().solve(K * g);
-      Eigen::MatrixX3d Pn = P;
-      for (int i = 0; i < k; ++i) Pn.row(idx[i]) += d.segment<3>(3 * i).transpose();
+      const Eigen::MatrixX3d Pn = p.moved(P, -(K * K + mu * C).ldlt().solve(K * g));
       Eigen::VectorXd gn;
-      const double rn = resid(Pn, gn);
+      const double rn = p.gradient(Pn, gn);
       if (gn.norm() < g.norm() && rn < best) {
         best = rn;
         best_mu = mu;

@@ -32,15 +32,23 @@ T node_residual(const T* j, double H, double w) {
   return sqrt(w * nn) * (Hx - H);
 }
 
-// The corner weight ρ = Π_c (1 − λ_c^8)^4 (mean_curvature_least_squares.h).
-double corner_weight(const std::array<double, 4>& lambda, int corners) {
-  double rho = 1.0;
-  for (int c = 0; c < corners; ++c) {
-    const double l2 = lambda[size_t(c)] * lambda[size_t(c)], l8 = (l2 * l2) * (l2 * l2);
-    const double f = 1.0 - l8, f2 = f * f;
-    rho *= f2 * f2;
+// The rule's weights times the corner weight ρ = Π_c (1 − λ_c^8)^4 (mean_curvature_least_squares.h):
+// λ_c the barycentric coordinates (u, v, 1 - u - v) on the triangle, the bilinear corner
+// functions on the square.
+Eigen::VectorXd weighted(const QuadratureRuleTriangle& rule, bool square) {
+  Eigen::VectorXd w = rule.w;
+  for (Eigen::Index i = 0; i < w.size(); ++i) {
+    const double u = rule.uv(i, 0), v = rule.uv(i, 1);
+    const std::array<double, 4> lambda =
+        square ? std::array<double, 4>{(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v}
+               : std::array<double, 4>{u, v, 1.0 - u - v, 0.0};
+    for (int c = 0; c < (square ? 4 : 3); ++c) {
+      const double l2 = lambda[size_t(c)] * lambda[size_t(c)], l8 = (l2 * l2) * (l2 * l2);
+      const double f = 1.0 - l8, f2 = f * f;
+      w(i) *= f2 * f2;
+    }
   }
-  return rho;
+  return w;
 }
 
 bool singular(const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) {
@@ -55,11 +63,7 @@ MeanCurvatureLeastSquares MeanCurvatureLeastSquares::triangular(int n, int q) {
   MeanCurvatureLeastSquares f;
   f.q_ = q;
   const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(q);
-  f.w_ = rule.w;
-  for (Eigen::Index i = 0; i < f.w_.size(); ++i) {
-    const double u = rule.uv(i, 0), v = rule.uv(i, 1);
-    f.w_(i) *= corner_weight({u, v, 1.0 - u - v, 0.0}, 3);
-  }
+  f.w_ = weighted(rule, false);
   const int du[5] = {1, 0, 2, 1, 0}, dv[5] = {0, 1, 0, 1, 2};
   for (size_t t = 0; t < 5; ++t) f.D_[t] = triangular_basis_table(n, rule.uv, du[t], dv[t]);
   return f;
@@ -71,11 +75,7 @@ MeanCurvatureLeastSquares MeanCurvatureLeastSquares::tensor(int n, int m, int q)
   MeanCurvatureLeastSquares f;
   f.q_ = q;
   const QuadratureRuleTriangle rule = corner_collapsed_square_rule(q);
-  f.w_ = rule.w;
-  for (Eigen::Index i = 0; i < f.w_.size(); ++i) {
-    const double u = rule.uv(i, 0), v = rule.uv(i, 1);
-    f.w_(i) *= corner_weight({(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v}, 4);
-  }
+  f.w_ = weighted(rule, true);
   const Eigen::VectorXd us = rule.uv.col(0), vs = rule.uv.col(1);
   std::array<Eigen::MatrixXd, 3> U, V;
   for (int d = 0; d <= 2; ++d) {

@@ -2,6 +2,7 @@
 // Shared data builders for the CMC tests.
 #include <Eigen/Dense>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -12,6 +13,7 @@
 
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/core/bernstein.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/tensor/tensor_net.h"
 #include "tests/random_points.h"
 #include "bezierpde/triangular/triangular_net.h"
@@ -73,6 +75,42 @@ inline TensorNet tensor_interpolant(int n, const std::function<Eigen::Vector3d(d
       }
   }
   return net;
+}
+
+/// max over the triangular sample grid u = a/N, v = b/N (every sample, corners included) of
+/// | |x - c| - R |: the distance to the sphere of radius R about c.
+inline double sphere_distance(const TriangularNet& net, const Eigen::Vector3d& c, double R, int N = 40) {
+  double d = 0;
+  for (int a = 0; a <= N; ++a)
+    for (int b = 0; b <= N - a; ++b)
+      d = std::max(d, std::abs((net.evaluate(double(a) / N, double(b) / N) - c).norm() - R));
+  return d;
+}
+
+/// The helicoid piece (s cos t, s sin t, t), s = 0.3 + 0.7u in [0.3, 1], t = 1.2v in [0, 1.2]: a
+/// minimal surface in a non-conformal parametrisation.
+inline Eigen::Vector3d helicoid(double u, double v) {
+  const double s = 0.3 + 0.7 * u, t = 1.2 * v;
+  return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
+}
+
+/// max |x sin z − y cos z| over a 31 × 31 grid: the distance-like defect from the helicoid.
+inline double helicoid_off(const TensorNet& net) {
+  double e = 0;
+  for (int a = 0; a <= 30; ++a)
+    for (int b = 0; b <= 30; ++b) {
+      const Eigen::Vector3d x = net.evaluate(a / 30.0, b / 30.0);
+      e = std::max(e, std::abs(x(0) * std::sin(x(2)) - x(1) * std::cos(x(2))));
+    }
+  return e;
+}
+
+/// Options of a cmc solve in H mode with the given functional (the other options at their defaults).
+inline CmcOptions cmc_options(CmcFunctionalKind functional, double H) {
+  CmcOptions o;
+  o.H = H;
+  o.functional = functional;
+  return o;
 }
 
 }  // namespace bpde::testing

@@ -19,38 +19,12 @@
 namespace bpde {
 namespace {
 
-// max over a sample grid (every sample, corners included) of | |x - c| - R |.
-double sphere_distance(const TriangularNet& net, const Eigen::Vector3d& c, double R, int N = 40) {
-  double d = 0;
-  for (int a = 0; a <= N; ++a)
-    for (int b = 0; b <= N - a; ++b)
-      d = std::max(d, std::abs((net.evaluate(double(a) / N, double(b) / N) - c).norm() - R));
-  return d;
-}
-
-CmcOptions area_options(double H) {
-  CmcOptions o;
-  o.H = H;
-  o.functional = CmcFunctionalKind::Area;
-  return o;
-}
+CmcOptions area_options(double H) { return testing::cmc_options(CmcFunctionalKind::Area, H); }
 
 // Fig. 1 of Arnal–Lluch–Monterde: the unit circle in three arcs parametrised by angle (not
 // conformal). The area functional's critical point lies on the exact sphere of radius 1/|H|
 // through the circle (the small cap, centre below the plane for H < 0), corners included; the
 // D_H critical point does not.
-// max |x sin z − y cos z| over a 31 × 31 grid: the distance-like defect from the helicoid
-// (s cos t, s sin t, t).
-double helicoid_off(const TensorNet& net) {
-  double e = 0;
-  for (int a = 0; a <= 30; ++a)
-    for (int b = 0; b <= 30; ++b) {
-      const Eigen::Vector3d x = net.evaluate(a / 30.0, b / 30.0);
-      e = std::max(e, std::abs(x(0) * std::sin(x(2)) - x(1) * std::cos(x(2))));
-    }
-  return e;
-}
-
 TEST(CmcArea, CircleInThreeArcsLiesOnTheExactSphere) {
   const double H = -0.5, R = 1 / std::abs(H);
   const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
@@ -61,7 +35,7 @@ TEST(CmcArea, CircleInThreeArcsLiesOnTheExactSphere) {
   // tolerance (measured 5.9e-12; 8.3e-10 with the ε-continuation alone).
   EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
   EXPECT_LE(r.summary.residual, kConvergenceTolerance);
-  EXPECT_LE(sphere_distance(r.net, c, R), 1e-6);
+  EXPECT_LE(testing::sphere_distance(r.net, c, R), 1e-6);
   const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
   EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-4);
   EXPECT_NEAR(r.energy, r.A + 2 * H * r.V, 1e-12 * r.A);
@@ -75,7 +49,7 @@ TEST(CmcArea, CircleInThreeArcsLiesOnTheExactSphere) {
   CmcOptions od;
   od.H = H;
   const CmcResult<TriangularNet> d = solve_cmc(data, od);
-  EXPECT_GT(sphere_distance(d.net, c, R), 1e-2);
+  EXPECT_GT(testing::sphere_distance(d.net, c, R), 1e-2);
 }
 
 // "A circle of radius r in any plane": the Fig. 1 circle scaled to r = 1.3, rotated into a tilted
@@ -93,7 +67,7 @@ TEST(CmcArea, CircleOfRadiusRInATiltedPlaneLiesOnTheExactSphere) {
   const Eigen::Vector3d c = Q * Eigen::Vector3d(0, 0, -std::sqrt(R * R - r * r)) + t;
   const CmcResult<TriangularNet> res = solve_cmc(data, area_options(H));
   EXPECT_EQ(res.summary.status, Status::Converged) << res.summary.message;
-  EXPECT_LE(sphere_distance(res.net, c, R), 1e-6);
+  EXPECT_LE(testing::sphere_distance(res.net, c, R), 1e-6);
   const MeanCurvatureStats s = mean_curvature_stats(res.net, 40, 0.1);
   EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-4);
   const double hc = R - std::sqrt(R * R - r * r);  // the cap's height
@@ -115,7 +89,7 @@ TEST(CmcArea, CircleInThreeArcsConvergesAtLowDegrees) {
     EXPECT_EQ(r.summary.status, Status::Converged) << n << ": " << r.summary.message;
     EXPECT_LE(r.summary.residual, kConvergenceTolerance) << n;
     // measured: 1.8e-06 (n = 6), 7.2e-08 (n = 8)
-    EXPECT_LE(sphere_distance(r.net, c, R), n == 6 ? 5e-6 : 3e-7) << n;
+    EXPECT_LE(testing::sphere_distance(r.net, c, R), n == 6 ? 5e-6 : 3e-7) << n;
   }
 }
 
@@ -142,7 +116,7 @@ TEST(CmcArea, CircleInThreeArcsAtDegree5MeetsTheRuleTolerance) {
   EXPECT_LE(G.cwiseAbs().maxCoeff() / S.maxCoeff(), kConvergenceTolerance);
   // measured 5.5e-05 (a degree limit)
   const double R = 1 / std::abs(H);
-  EXPECT_LE(sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(R * R - 1)), R), 2e-4);
+  EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(R * R - 1)), R), 2e-4);
 }
 
 // Degree 4: the fitted arcs meet at 180.84° and the discrete critical point folds at the corners
@@ -254,18 +228,14 @@ TEST(CmcArea, BadInput) {
 // [0, 1.2], whose boundary is given in the helicoid's own (non-conformal) parametrisation. The
 // minimal surface is the helicoid piece: |x sin z - y cos z| (≈ the distance) over the samples.
 TEST(CmcArea, MinimalSurfaceIsTheHelicoidPiece) {
-  auto helicoid = [](double u, double v) {
-    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
-    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
-  };
-  const TensorNet data = tensor_boundary(8, helicoid);
+  const TensorNet data = tensor_boundary(8, testing::helicoid);
   CmcOptions o = area_options(0.0);
   const CmcResult<TensorNet> r = solve_cmc(data, o);
   CmcOptions od;
   const CmcResult<TensorNet> d = solve_cmc(data, od);
   EXPECT_TRUE(r.summary.converged) << r.summary.message;  // measured: residual 1.9e-12
-  EXPECT_LE(helicoid_off(r.net), 1e-7);                   // measured: 8.9e-9 at n = 8
-  EXPECT_GT(helicoid_off(d.net), 1e-3);                   // the Dirichlet extremal: 8.2e-3
+  EXPECT_LE(testing::helicoid_off(r.net), 1e-7);                   // measured: 8.9e-9 at n = 8
+  EXPECT_GT(testing::helicoid_off(d.net), 1e-3);                   // the Dirichlet extremal: 8.2e-3
 }
 
 }  // namespace
@@ -279,11 +249,7 @@ namespace {
 // the helicoid's own non-conformal parametrisation. The minimal surface with these boundary curves
 // and tangent planes is the helicoid itself.
 TEST(CmcArea, C1DataMinimalSurfaceIsTheHelicoidPiece) {
-  auto helicoid = [](double u, double v) {
-    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
-    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
-  };
-  const TensorNet data = testing::tensor_interpolant(6, helicoid);
+  const TensorNet data = testing::tensor_interpolant(6, testing::helicoid);
   CmcOptions o = area_options(0.0);
   o.fixed = FixedSet::BoundaryAdjacent;
   const CmcResult<TensorNet> r = solve_cmc(data, o);
@@ -292,8 +258,8 @@ TEST(CmcArea, C1DataMinimalSurfaceIsTheHelicoidPiece) {
   const CmcResult<TensorNet> d = solve_cmc(data, od);
   EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
   EXPECT_LE(r.summary.residual, kConvergenceTolerance);
-  EXPECT_LE(helicoid_off(r.net), 3e-7);  // measured 1.6e-7 at n = 6 (the degree: 1.1e-7 at n = 8)
-  EXPECT_GT(helicoid_off(d.net), 1e-3);  // the C¹ Dirichlet extremal: 8.4e-3
+  EXPECT_LE(testing::helicoid_off(r.net), 3e-7);  // measured 1.6e-7 at n = 6 (the degree: 1.1e-7 at n = 8)
+  EXPECT_GT(testing::helicoid_off(d.net), 1e-3);  // the C¹ Dirichlet extremal: 8.4e-3
 }
 
 // H = 0 on a triangular net: a piece of the catenoid ρ = cosh z, from its radial parametrisation
@@ -331,7 +297,7 @@ TEST(CmcArea, CircleInThreeArcsAtHMinus09) {
   const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
   const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), area_options(H));
   const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
-  EXPECT_LE(sphere_distance(r.net, c, R), 6e-7);
+  EXPECT_LE(testing::sphere_distance(r.net, c, R), 6e-7);
   EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 7.5e-3);
   EXPECT_LE(r.summary.residual, 2e-10);
 }

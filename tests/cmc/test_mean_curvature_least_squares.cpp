@@ -143,19 +143,7 @@ TEST(MeanCurvatureLeastSquares, JacobianAgainstFiniteDifferences) {
   check(MeanCurvatureLeastSquares::tensor(4, 3, 6), s.points(), s.free_indices(FixedSet::Boundary));
 }
 
-double sphere_distance(const TriangularNet& net, const Eigen::Vector3d& c, double R) {
-  double d = 0;
-  for (int a = 0; a <= 40; ++a)
-    for (int b = 0; a + b <= 40; ++b) d = std::max(d, std::abs((net.evaluate(a / 40.0, b / 40.0) - c).norm() - R));
-  return d;
-}
-
-CmcOptions mc_options(double H) {
-  CmcOptions o;
-  o.H = H;
-  o.functional = CmcFunctionalKind::MeanCurvature;
-  return o;
-}
+CmcOptions mc_options(double H) { return testing::cmc_options(CmcFunctionalKind::MeanCurvature, H); }
 
 // The target at degree 10 (Arnal–Lluch–Monterde's Fig. 1 circle, three arcs by angle):
 // on the sphere of radius 1/|H| to 1e-6, corners included, and H within 5e-4 away from the
@@ -171,7 +159,7 @@ TEST(CmcMeanCurvature, CircleInThreeArcsAtDegree10MeetsBothTargets) {
     EXPECT_EQ(r.functional, CmcFunctionalKind::MeanCurvature);
     EXPECT_LE(r.summary.residual, 1e-6) << H;
     EXPECT_NEAR(r.energy, r.summary.residual * r.summary.residual, 1e-15) << H;
-    EXPECT_LE(sphere_distance(r.net, c, R), 1e-7) << H;
+    EXPECT_LE(testing::sphere_distance(r.net, c, R), 1e-7) << H;
     const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
     EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-5) << H;
     EXPECT_NEAR(r.A, 2 * std::numbers::pi * R * hc, 1e-7) << H;
@@ -189,7 +177,7 @@ TEST(CmcMeanCurvature, TooLowADegreeForTheToleranceIsReportedAsSuch) {
   EXPECT_EQ(r.summary.status, Status::NoConvergence);
   EXPECT_NE(r.summary.message.find("degree is too low"), std::string::npos) << r.summary.message;
   EXPECT_GT(r.summary.residual, 1e-6);
-  EXPECT_LE(sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(3.0)), R), 5e-6);
+  EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(3.0)), R), 5e-6);
   // A looser tolerance is met at the same degree.
   CmcOptions o = mc_options(H);
   o.mean_curvature_tolerance = 1e-3;
@@ -200,18 +188,9 @@ TEST(CmcMeanCurvature, TooLowADegreeForTheToleranceIsReportedAsSuch) {
 // CmcArea.MinimalSurfaceIsTheHelicoidPiece). Measured at n = 6: converged, 1.6e-7 off the
 // helicoid (the area route: 1.6e-7), |H_x| ≤ 8.8e-6 away from the corners (the area route: 1.8e-4).
 TEST(CmcMeanCurvature, MinimalSurfaceIsTheHelicoidPiece) {
-  auto helicoid = [](double u, double v) {
-    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
-    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
-  };
-  const CmcResult<TensorNet> r = solve_cmc(testing::tensor_boundary(6, helicoid), mc_options(0.0));
+  const CmcResult<TensorNet> r = solve_cmc(testing::tensor_boundary(6, testing::helicoid), mc_options(0.0));
   EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
-  double off = 0;
-  for (int a = 0; a <= 30; ++a)
-    for (int b = 0; b <= 30; ++b) {
-      const Eigen::Vector3d x = r.net.evaluate(a / 30.0, b / 30.0);
-      off = std::max(off, std::abs(x(0) * std::sin(x(2)) - x(1) * std::cos(x(2))));
-    }
+  const double off = testing::helicoid_off(r.net);
   EXPECT_LE(off, 5e-7);
   const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
   EXPECT_LE(std::max(std::abs(s.min), std::abs(s.max)), 5e-5);
@@ -222,22 +201,13 @@ TEST(CmcMeanCurvature, MinimalSurfaceIsTheHelicoidPiece) {
 // CmcArea.C1DataMinimalSurfaceIsTheHelicoidPiece, where the area route is 1.6e-7 off at n = 6;
 // this route 1.9e-7, in 20 ms instead of 3 s).
 TEST(CmcMeanCurvature, C1DataMinimalSurfaceIsTheHelicoidPiece) {
-  auto helicoid = [](double u, double v) {
-    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
-    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
-  };
-  const TensorNet data = testing::tensor_interpolant(6, helicoid);
+  const TensorNet data = testing::tensor_interpolant(6, testing::helicoid);
   CmcOptions o = mc_options(0.0);
   o.fixed = FixedSet::BoundaryAdjacent;
   o.mean_curvature_tolerance = 1e-5;  // n = 6 with C¹ data stops at √Φ = 2.6e-6 (measured)
   const CmcResult<TensorNet> r = solve_cmc(data, o);
   EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
-  double off = 0;
-  for (int a = 0; a <= 30; ++a)
-    for (int b = 0; b <= 30; ++b) {
-      const Eigen::Vector3d x = r.net.evaluate(a / 30.0, b / 30.0);
-      off = std::max(off, std::abs(x(0) * std::sin(x(2)) - x(1) * std::cos(x(2))));
-    }
+  const double off = testing::helicoid_off(r.net);
   EXPECT_LE(off, 3e-7) << off;  // measured 1.9e-7
   EXPECT_LE(r.summary.residual, 1e-5);
 }
