@@ -83,7 +83,7 @@ void CircleRoute(benchmark::State& state, CmcFunctionalKind functional) {
 }
 void AreaCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::Area); }
 // The least squares of the mean curvature on the same circle (its residual is √Φ, tolerance 1e-6;
-// it converges from n = 10 on, docs/cmc.md).
+// it converges from n = 8 on at H = -0.5, docs/cmc.md).
 void MeanCurvatureCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::MeanCurvature); }
 
 }  // namespace

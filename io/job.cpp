@@ -1,6 +1,7 @@
 #include "bezierpde/io/job.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "bezierpde/core/errors.h"
 #include "bezierpde/io/boundary_json.h"
@@ -151,19 +152,22 @@ Problem problem_from_json(const Json& j, const std::string& path) {
       if (!mean_curvature)
         throw ParseError(path + ".mean_curvature_tolerance: only with \"functional\": \"mean-curvature\"");
       p.mean_curvature_tolerance = number(j["mean_curvature_tolerance"], path + ".mean_curvature_tolerance");
-      if (!(p.mean_curvature_tolerance > 0.0 && p.mean_curvature_tolerance < 1.0))
-        throw ParseError(path + ".mean_curvature_tolerance: must be in (0, 1), got " +
-                         std::to_string(p.mean_curvature_tolerance));
+      if (!(p.mean_curvature_tolerance > 0.0 && p.mean_curvature_tolerance < 1.0)) {
+        char got[32];
+        std::snprintf(got, sizeof got, "%g", p.mean_curvature_tolerance);
+        throw ParseError(path + ".mean_curvature_tolerance: must be in (0, 1), got " + got);
+      }
     }
     if (mean_curvature && hasV)
       throw UnsupportedProblem(path + ": a mean-curvature cmc problem takes \"H\", not \"V\"");
-    if (mean_curvature && j.contains("solver") && j["solver"].is_string() && j["solver"].get<std::string>() != "newton")
-      throw UnsupportedProblem(path + ": a mean-curvature cmc problem is solved by \"solver\": \"newton\"");
+
     if (j.contains("solver")) {
       const std::string s = string(j["solver"], path + ".solver");
       if (s != "newton" && s != "ceres" && s != "nlopt")
         throw ParseError(path + ".solver: unknown solver \"" + s + "\" (expected newton, ceres or nlopt)");
       p.solver = parse_cmc_solver(s);
+      if (mean_curvature && p.solver != CmcSolver::Newton)
+        throw UnsupportedProblem(path + ": a mean-curvature cmc problem is solved by \"solver\": \"newton\"");
     }
     if (hasH) {
       p.kind = ProblemKind::CmcH;

@@ -28,7 +28,7 @@ struct Problem {
   CmcSolver solver = CmcSolver::Newton;  ///< cmc (default newton)
   double H = 0.0;                        ///< cmc with "H"
   double V = 0.0;                        ///< cmc with "V"
-  /// cmc: "dirichlet" (D_H, default) or "area" (A_H)
+  /// cmc: "dirichlet" (D_H, default), "area" (A_H) or "mean-curvature" (least squares of H_x − H)
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
   double mean_curvature_tolerance = 1e-6;  ///< cmc, functional mean-curvature: converged when √Φ ≤ this
 };

@@ -33,12 +33,12 @@ void CmcOptions::validate() const {
       throw UnsupportedProblem("cmc: the mean-curvature functional is solved by the newton solver (Levenberg–Marquardt)");
     if (fixed == FixedSet::UBoundaries)
       throw UnsupportedProblem("cmc: the mean-curvature functional needs fixed \"boundary\" or \"boundary+adjacent\"");
-    if (!(mean_curvature_tolerance > 0.0 && mean_curvature_tolerance < 1.0))
-      throw ParameterError("cmc: mean_curvature_tolerance must be in (0, 1)");
-    if (max_least_squares_iterations < 1) throw ParameterError("cmc: max_least_squares_iterations must be >= 1");
   } else if (V && solver != CmcSolver::NLopt)
     throw UnsupportedProblem("cmc: the volume-constrained problem (V) is solved by the nlopt solver only");
   if (!(tolerance > 0.0 && tolerance <= 1e-3)) throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
+  if (!(mean_curvature_tolerance > 0.0 && mean_curvature_tolerance < 1.0))
+    throw ParameterError("cmc: mean_curvature_tolerance must be in (0, 1)");
+  if (max_least_squares_iterations < 1) throw ParameterError("cmc: max_least_squares_iterations must be >= 1");
   if (max_corrector_iterations < 1) throw ParameterError("cmc: max_corrector_iterations must be >= 1");
   if (max_continuation_steps < 1) throw ParameterError("cmc: max_continuation_steps must be >= 1");
   if (!(min_step > 0.0 && min_step < 1.0)) throw ParameterError("cmc: min_step must be in (0, 1)");

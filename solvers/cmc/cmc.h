@@ -56,7 +56,8 @@
 //
 // The least-squares mean-curvature functional (options.functional = MeanCurvature;
 // solvers/cmc/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
-//  - H mode only: minimise Φ = ∫ (H_x − H)² dA over the free points. Φ = 0 exactly for a CMC
+//  - H mode only: minimise Φ = ∫ ρ (H_x − H)² dA over the free points (ρ a corner weight, 1 away
+//    from the corners and 0 at them: mean_curvature_least_squares.h). Φ = 0 exactly for a CMC
 //    surface, whatever the parametrisation; where the polynomial space holds no CMC surface, its
 //    minimiser is the surface nearest to CMC in that sense (it weighs the deviation on the whole
 //    patch, where a critical point of A_H only makes it orthogonal to the B_I, which vanish on the
@@ -66,7 +67,7 @@
 //    (JᵀJ + λ diag JᵀJ) δ = −Jᵀr, λ by the gain ratio (÷5 above 0.75, ×3 below 0.25, ×10 on a
 //    rejected step).
 //  - converged = true means √Φ ≤ options.mean_curvature_tolerance (1e-6; Φ is dimensionless), with
-//    Φ measured by a rule finer than the one minimised (q + q/2 points per direction), AND the
+//    Φ measured by a rule finer than the one minimised (q + ⌈q/2⌉ points per direction), AND the
 //    regularity test of the area functional. It stops not converged (status NoConvergence, exit 1
 //    from the CLI) when Φ stalls (a relative fall below 1e-6 in 10 iterations: the degree is too
 //    low for the tolerance) or after options.max_least_squares_iterations; summary.residual is
@@ -74,7 +75,8 @@
 //  - Fixed sets boundary and boundary+adjacent; solver newton (its own Levenberg–Marquardt).
 //
 // Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
-// V with a solver other than nlopt (UnsupportedProblem), degree too low for the fixed set
+// V with a solver other than nlopt (UnsupportedProblem; the functionals' own rules: validate()),
+// an option out of its range (ParameterError), degree too low for the fixed set
 // (DegreeError: triangular n >= 3 with C0 data, n >= 6 with C1 data; tensor n, m >= 2 with C0 data
 // and >= 4 with C1 data), u-boundaries on a triangular net (UnsupportedProblem), non-finite data
 // points (NonFiniteError).
@@ -114,16 +116,17 @@ struct CmcOptions {
   int max_corrector_iterations = 30;         ///< per continuation step; default 30, >= 1
   int max_continuation_steps = 400;          ///< default 400, >= 1
   double min_step = 1e-5;                    ///< smallest H step, relative to max(1, |H reached|); default 1e-5
-  /// mean-curvature functional: converged when √Φ = ‖H_x − H‖ in L²(dA) is at most this; default 1e-6, in (0, 1)
+  /// mean-curvature functional: converged when √Φ = ‖H_x − H‖ in L²(ρ dA) is at most this; default 1e-6, in (0, 1)
   double mean_curvature_tolerance = 1e-6;
   /// mean-curvature functional: Levenberg–Marquardt iterations at most; default 2000, >= 1
   int max_least_squares_iterations = 2000;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); default none.
   ProgressFn progress;
-  /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range),
-  /// UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with nlopt, area V
-  /// mode with a solver other than newton).
+  /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
+  /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with
+  /// nlopt, area V mode with a solver other than newton; area or mean-curvature with u-boundaries;
+  /// mean-curvature with V or with a solver other than newton).
   void validate() const;
 };
 
@@ -177,7 +180,7 @@ inline SolverRequirements cmc_mean_curvature_requirements() {
 
 template <class Net>
 struct CmcResult {
-  Net net;                     ///< the critical point (or the last point of the branch if not converged)
+  Net net;                     ///< the solution: critical point (D_H, A_H) or least-squares surface (mean-curvature); the last point reached if not converged
   double H = 0.0;              ///< H of `net`: the requested H, the last H reached, or the V-mode multiplier
   double D = 0.0;              ///< Dirichlet energy
   double V = 0.0;              ///< volume 1/3 ∫ <x_u ∧ x_v, x>

@@ -1,6 +1,6 @@
 // The least-squares mean-curvature functional of the cmc problem (cmc.h, "The least-squares
 // mean-curvature functional"; docs/cmc.md, "Least squares of the mean curvature"): from the D_H
-// critical point, Levenberg–Marquardt on Φ = ∫ (H_x − H)² dA (mean_curvature_least_squares.h).
+// critical point, Levenberg–Marquardt on Φ = ∫ ρ (H_x − H)² dA (mean_curvature_least_squares.h).
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
@@ -39,15 +39,24 @@ MeanCurvatureLeastSquares form_for(const TensorNet& net, int extra) {
   return MeanCurvatureLeastSquares::tensor(net.n(), net.m(), rule_q(std::max(net.n(), net.m()), extra));
 }
 
-struct LsOutcome {
-  int iterations = 0;
-  bool stalled = false;  ///< Φ fell by less than 1e-6 (relative) in 10 iterations, or no step was accepted
+// Why the Levenberg–Marquardt loop stopped.
+enum class LsStop {
+  Reached,        ///< √Φ <= its target on the rule minimised
+  Stalled,        ///< Φ fell by less than 1e-6 (relative) in 10 iterations
+  NoStep,         ///< no trial step lowered Φ (30 tries with growing damping)
+  MaxIterations,  ///< options.max_least_squares_iterations used up
+  NonFinite,      ///< Φ or its Jacobian is not finite at the current net
 };
 
-// Levenberg–Marquardt on Φ(P) = ‖r‖² over the free rows of P (in place), until √Φ <= tol, a stall,
-// or max_iterations.
+struct LsOutcome {
+  int iterations = 0;
+  LsStop stop = LsStop::MaxIterations;
+};
+
+// Levenberg–Marquardt on Φ(P) = ‖r‖² over the free rows of P (in place), until √Φ <= target, a
+// stall, no step, or max_iterations. A trial step is taken only when it and the new Φ are finite.
 LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double H,
-                   double tol, int max_iterations) {
+                   double target, int max_iterations) {
   LsOutcome out;
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
@@ -55,7 +64,19 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
   double phi = r.squaredNorm(), lambda = 1e-3;
   std::deque<double> history{phi};
   const Eigen::Index n = J.cols();
-  while (out.iterations < max_iterations && std::isfinite(phi) && std::sqrt(phi) > tol) {
+  while (true) {
+    if (!std::isfinite(phi) || !J.allFinite()) {
+      out.stop = LsStop::NonFinite;
+      break;
+    }
+    if (std::sqrt(phi) <= target) {
+      out.stop = LsStop::Reached;
+      break;
+    }
+    if (out.iterations >= max_iterations) {
+      out.stop = LsStop::MaxIterations;
+      break;
+    }
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
     A.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
     A = A.selfadjointView<Eigen::Lower>();
@@ -66,11 +87,11 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
       Eigen::MatrixXd M = A;
       M.diagonal() += lambda * diag;
       const Eigen::LLT<Eigen::MatrixXd> llt(M);
-      if (llt.info() != Eigen::Success) {
+      const Eigen::VectorXd d = llt.info() == Eigen::Success ? Eigen::VectorXd(-llt.solve(g)) : Eigen::VectorXd();
+      if (d.size() != g.size() || !d.allFinite()) {
         lambda *= 10;
         continue;
       }
-      const Eigen::VectorXd d = -llt.solve(g);
       Eigen::MatrixX3d Pn = P;
       for (size_t a = 0; a < free.size(); ++a) Pn.row(free[a]) += d.segment<3>(3 * Eigen::Index(a)).transpose();
       Eigen::VectorXd rn;
@@ -87,7 +108,7 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
       }
     }
     if (!accepted) {
-      out.stalled = true;
+      out.stop = LsStop::NoStep;
       break;
     }
     ++out.iterations;
@@ -95,8 +116,8 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
     phi = r.squaredNorm();
     history.push_back(phi);
     if (history.size() > 11) history.pop_front();
-    if (history.size() == 11 && history.front() - phi < 1e-6 * history.front()) {
-      out.stalled = std::sqrt(phi) > tol;
+    if (history.size() == 11 && history.front() - phi < 1e-6 * history.front() && std::sqrt(phi) > target) {
+      out.stop = LsStop::Stalled;
       break;
     }
   }
@@ -147,10 +168,29 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
                                  " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
                                  " (not a CMC surface); " + what);
     } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
+      std::string why;
+      switch (ls.stop) {
+        case LsStop::Reached:
+          why = " by the check rule (q = " + std::to_string(check.points_per_direction()) +
+                "), although the rule minimised (q = " + std::to_string(f.points_per_direction()) +
+                ") reached " + num(0.7 * o.mean_curvature_tolerance) + ": the rule does not resolve Φ at this net";
+          break;
+        case LsStop::Stalled:
+          why = " and no longer falls (the degree is too low for it)";
+          break;
+        case LsStop::NoStep:
+          why = " and no Levenberg–Marquardt step lowers it (the degree is too low for it)";
+          break;
+        case LsStop::MaxIterations:
+          why = " after max_least_squares_iterations = " + std::to_string(o.max_least_squares_iterations) +
+                " (a library option)";
+          break;
+        case LsStop::NonFinite:
+          why = ": Φ or its Jacobian is not finite at the net reached";
+          break;
+      }
       res.summary.set_failed(Status::NoConvergence,
-                             what + " is above the tolerance " + num(o.mean_curvature_tolerance) +
-                                 (ls.stalled ? " and no longer falls (the degree is too low for it)"
-                                             : " (max_least_squares_iterations reached)"));
+                             what + " is above the tolerance " + num(o.mean_curvature_tolerance) + why);
     } else {
       res.summary.message = what;
       res.summary.set_converged();

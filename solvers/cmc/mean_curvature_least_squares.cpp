@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "bezierpde/core/bernstein.h"
@@ -51,8 +52,10 @@ Eigen::VectorXd weighted(const QuadratureRuleTriangle& rule, bool square) {
   return w;
 }
 
+// A regular node: |x_u ∧ x_v| > 1e-14 |x_u||x_v| (a singular one contributes r = 0). Not finite
+// derivatives are neither (their node gets r = NaN, so Φ is NaN, never a silent 0).
 bool singular(const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) {
-  return !(xu.cross(xv).norm() > 1e-14 * xu.norm() * xv.norm());
+  return xu.allFinite() && xv.allFinite() && !(xu.cross(xv).norm() > 1e-14 * xu.norm() * xv.norm());
 }
 
 }  // namespace
@@ -95,6 +98,11 @@ MeanCurvatureLeastSquares MeanCurvatureLeastSquares::tensor(int n, int m, int q)
 void MeanCurvatureLeastSquares::residuals(const Eigen::MatrixX3d& P, double H, Eigen::VectorXd* r,
                                           const std::vector<int>* idx, Eigen::MatrixXd* J) const {
   if (P.rows() != size()) throw SizeError("mean-curvature least squares: the net has the wrong number of points");
+  if (J && !idx) throw ParameterError("mean-curvature least squares: the Jacobian needs the list of points idx");
+  if (idx)
+    for (int i : *idx)
+      if (i < 0 || i >= size())
+        throw ParameterError("mean-curvature least squares: point index " + std::to_string(i) + " out of range");
   const Eigen::Index M = nodes();
   std::array<Eigen::MatrixX3d, 5> X;
   for (size_t t = 0; t < 5; ++t) X[t] = D_[t] * P;

@@ -11,12 +11,13 @@
 //
 // The corner weight ρ = Π_c (1 − λ_c⁸)⁴ over the corners c of the domain, with λ_c the barycentric
 // coordinate of corner c (triangle) or its bilinear corner function ((1 − u)(1 − v) at (0, 0), …;
-// square): ρ = 1 at the centre up to 1e-2, 0.98 at λ_c = 0.5, 0.48 at 0.8, 0.11 at 0.9, and it
+// square): each corner's factor is 0.98 at λ_c = 0.5, 0.48 at 0.8, 0.11 at 0.9 (ρ = 0.97 at an
+// edge midpoint of the triangle, 1 − 2e-3 at its centre), and ρ
 // vanishes like the 4th power of the distance at a corner. Why: where a smooth boundary is given in
 // three (four) arcs, the parametrisation degenerates at the corners (x_u ∥ x_v), a polynomial
 // patch cannot keep its mean curvature bounded there, and the unweighted integral diverges
 // (measured on the area route's circle at degree 6: √Φ grows from 7.7e-3 to 0.29 as the rule goes
-// from q = 7 to 24; with ρ it is 9.45e-5 to three digits from q = 9 to 32). ρ makes Φ depend on
+// from q = 7 to 24; with ρ it is 9.42e-5 … 9.46e-5 from q = 9 to 32). ρ makes Φ depend on
 // the parametrisation near the corners only.
 //
 // Why it is there: the critical points of A_H = A + 2HV satisfy
@@ -24,7 +25,7 @@
 // the deviation by B_I; those vanish on the boundary edges, where the deviation of a
 // polynomial patch from a CMC surface sits. Φ weighs it everywhere (measured on the circle of
 // Arnal–Lluch–Monterde's Fig. 1, H = −0.9, degree 10: the A_H end point deviates 5.3e-3 from H,
-// the Φ minimiser 1e-6; docs/cmc.md).
+// the Φ minimiser 1.1e-5; docs/cmc.md).
 //
 // Discretisation: Φ = Σ_q r_q², r_q = √(w_q |N(u_q, v_q)|) (H_x(u_q, v_q) − H), over the nodes of the
 // corner-collapsed rules of the area functional (core/quadrature.h: corner_collapsed_triangle_rule,

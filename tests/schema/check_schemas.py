@@ -140,6 +140,8 @@ cases = [
     ("mean-curvature tolerance out of range", "solve", JOB,
      mutate(mutate(builder, ["problem", "functional"], "mean-curvature"), ["problem", "mean_curvature_tolerance"], 1.0),
      False),
+    ("mean-curvature cmc job with an unknown solver", "solve", JOB,
+     mutate(mutate(builder, ["problem", "functional"], "mean-curvature"), ["problem", "solver"], "foo"), False),
     ("mean_curvature_tolerance with the area functional", "solve", JOB,
      mutate(mutate(builder, ["problem", "functional"], "area"), ["problem", "mean_curvature_tolerance"], 1e-3), False),
     ("job: unknown mesh_format", "solve", JOB, mutate(job, ["mesh_format"], "float"), False),
