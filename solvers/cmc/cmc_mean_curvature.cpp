@@ -9,6 +9,7 @@
 #include <string>
 #include <type_traits>
 
+#include "bezierpde/core/progress.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
@@ -55,14 +56,22 @@ struct LsOutcome {
 
 // Levenberg–Marquardt on Φ(P) = ‖r‖² over the free rows of P (in place), until √Φ <= target, a
 // stall, no step, or max_iterations. A trial step is taken only when it and the new Φ are finite.
+// Progress (stage "cmc least squares"): the fraction of the way from the start's √Φ to the target
+// on a log scale, reported after every iteration, and 1 at the end.
 LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double H,
-                   double target, int max_iterations) {
+                   double target, int max_iterations, const ProgressFn& progress) {
   LsOutcome out;
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
   f.residuals(P, H, &r, &free, &J);
   double phi = r.squaredNorm(), lambda = 1e-3;
   std::deque<double> history{phi};
+  const double start = std::sqrt(phi);
+  auto fraction = [&] {
+    const double span = std::log(start / target), f0 = span > 0 ? std::log(start / std::sqrt(phi)) / span : 1.0;
+    return std::isfinite(f0) ? std::clamp(f0, 0.0, 0.999) : 0.0;
+  };
+  report(progress, "cmc least squares", 0, 1);
   const Eigen::Index n = J.cols();
   while (true) {
     if (!std::isfinite(phi) || !J.allFinite()) {
@@ -114,6 +123,7 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
     ++out.iterations;
     f.residuals(P, H, &r, &free, &J);
     phi = r.squaredNorm();
+    report(progress, "cmc least squares", fraction(), 1);
     history.push_back(phi);
     if (history.size() > 11) history.pop_front();
     if (history.size() == 11 && history.front() - phi < 1e-6 * history.front() && std::sqrt(phi) > target) {
@@ -121,6 +131,7 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
       break;
     }
   }
+  report(progress, "cmc least squares", 1, 1);
   return out;
 }
 
@@ -141,7 +152,8 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     const std::vector<int> free = data.free_indices(o.fixed);
     const MeanCurvatureLeastSquares f = form_for(data, 0), check = form_for(data, 1);
     // Minimised to 0.7 × the tolerance, so that the check rule (finer) does not miss it by its own small error.
-    const LsOutcome ls = minimise(f, P, free, o.H, 0.7 * o.mean_curvature_tolerance, o.max_least_squares_iterations);
+    const LsOutcome ls =
+        minimise(f, P, free, o.H, 0.7 * o.mean_curvature_tolerance, o.max_least_squares_iterations, o.progress);
     res.summary.iterations += ls.iterations;
     const Net net = make_net(data, P);
     const auto cf = functional_for(data);

@@ -1,5 +1,6 @@
 // CmcOptions::progress (core/progress.h): called once per accepted continuation step with the
-// |H| reached out of |H| requested, ending at the target; never called when not set.
+// |H| reached out of |H| requested, ending at the target; never called when not set; and, for the
+// mean-curvature functional, once per least-squares iteration.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,6 +32,32 @@ TEST(CmcProgress, ReportsTheHReachedPerContinuationStepUpToTheTarget) {
   CmcOptions quiet = o;
   quiet.progress = nullptr;
   EXPECT_EQ(solve_cmc(data, quiet).net.points(), r.net.points());
+}
+
+// The mean-curvature functional: its continuation (the D_H start), then the least squares, whose
+// fraction (the log-scale way from the start's √Φ to the target) lies in [0, 1], never falls, and
+// ends at 1.
+TEST(CmcProgress, MeanCurvatureReportsTheLeastSquaresStage) {
+  CmcOptions o = testing::cmc_options(CmcFunctionalKind::MeanCurvature, -0.5);
+  std::vector<double> ls;
+  int continuation = 0;
+  o.progress = [&](std::string_view stage, double d, double total) {
+    if (stage == "cmc continuation") {
+      ++continuation;
+      return;
+    }
+    EXPECT_EQ(std::string(stage), "cmc least squares");
+    EXPECT_DOUBLE_EQ(total, 1.0);
+    EXPECT_TRUE(d >= 0 && d <= 1) << d;
+    ls.push_back(d);
+  };
+  const auto r = solve_cmc(testing::circle_three_arcs(10), o);
+  ASSERT_TRUE(r.summary.converged) << r.summary.message;
+  EXPECT_GT(continuation, 0);
+  ASSERT_GE(ls.size(), 3u);
+  EXPECT_EQ(ls.front(), 0.0);
+  EXPECT_EQ(ls.back(), 1.0);
+  for (size_t i = 1; i < ls.size(); ++i) EXPECT_GE(ls[i], ls[i - 1]);  // Φ never rises in LM
 }
 
 }  // namespace
