@@ -133,8 +133,7 @@ CorrectorStats newton_correct(CmcProblem& p, double H, const CmcOptions& o, int 
 }
 
 std::string fold_message(double h, bool gram_singular) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", h == 0.0 ? 0.0 : h);
+  const std::string buf = num(h);
   if (gram_singular)
     return std::string("numerical limit: continuation stopped at H ≈ ") + buf +
            ": the Dirichlet Gram over the free points is numerically singular at this degree "
@@ -327,10 +326,8 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFacto
   while (!control.reached_target()) {
     if (!control.attempt()) {
       p.set(y);
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "%.6g", control.h() == 0.0 ? 0.0 : control.h());
       return {control.h(), false, Status::NoConvergence,
-              "continuation stopped at H ≈ " + std::string(buf) + " after max_continuation_steps = " +
+              "continuation stopped at H ≈ " + num(control.h()) + " after max_continuation_steps = " +
                   std::to_string(o.max_continuation_steps) + " attempts, before reaching H = " + std::to_string(Ht) +
                   " (no fold was detected; raise max_continuation_steps)"};
     }

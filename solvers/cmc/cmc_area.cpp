@@ -27,12 +27,6 @@ Eigen::VectorXd to_vector(const Eigen::MatrixX3d& G) {
   return g;
 }
 
-std::string num(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", x == 0.0 ? 0.0 : x);
-  return buf;
-}
-
 }  // namespace
 
 double AreaProblem::value(double H) const {

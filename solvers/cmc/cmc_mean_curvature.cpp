@@ -21,12 +21,6 @@
 namespace bpde::cmc_detail {
 namespace {
 
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
-  return b;
-}
-
 // The rule minimised: the corner-collapsed rules with q = ⌈n/2⌉ + 4 points per direction
 // (n the larger degree of a tensor net); the check rule has q + ⌈q/2⌉.
 int rule_q(int n, int extra) {
@@ -168,15 +162,15 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     res.quadrature_points = f.points_per_direction();
     res.summary.residual = std::sqrt(phi);
     const std::string start_note = start.summary.converged
-                                       ? "from the D_H critical point at H = " + num(o.H)
-                                       : "from the last D_H branch point (H = " + num(start.H) + ")";
+                                       ? "from the D_H critical point at H = " + num(o.H, 3)
+                                       : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
     const std::string what = "least squares of the mean curvature " + start_note + ": √Φ = " +
-                             num(res.summary.residual) + " after " + std::to_string(ls.iterations) +
+                             num(res.summary.residual, 3) + " after " + std::to_string(ls.iterations) +
                              " Levenberg–Marquardt iteration(s)";
     const Regularity reg = regularity(net, res.A);
     if (!reg.ok) {
       res.summary.set_failed(Status::NoConvergence,
-                             "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(reg.min_ratio) +
+                             "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(reg.min_ratio, 3) +
                                  " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
                                  " (not a CMC surface); " + what);
     } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
@@ -185,7 +179,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
         case LsStop::Reached:
           why = " by the check rule (q = " + std::to_string(check.points_per_direction()) +
                 "), although the rule minimised (q = " + std::to_string(f.points_per_direction()) +
-                ") reached " + num(0.7 * o.mean_curvature_tolerance) + ": the rule does not resolve Φ at this net";
+                ") reached " + num(0.7 * o.mean_curvature_tolerance, 3) + ": the rule does not resolve Φ at this net";
           break;
         case LsStop::Stalled:
           why = " and no longer falls (the degree is too low for it)";
@@ -202,7 +196,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
           break;
       }
       res.summary.set_failed(Status::NoConvergence,
-                             what + " is above the tolerance " + num(o.mean_curvature_tolerance) + why);
+                             what + " is above the tolerance " + num(o.mean_curvature_tolerance, 3) + why);
     } else {
       res.summary.message = what;
       res.summary.set_converged();

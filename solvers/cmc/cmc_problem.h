@@ -2,6 +2,7 @@
 // Internal to solvers/cmc/*.cpp: the CMC problem over the free control points, and the correctors.
 // The free unknowns form a vector y of length 3k, y(3a + c) = P(free[a], c).
 #include <Eigen/Core>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,13 @@
 #include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde::cmc_detail {
+
+/// x in a solver message: %g with `digits` significant digits, and 0 for -0.
+inline std::string num(double x, int digits = 6) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x == 0.0 ? 0.0 : x);
+  return buf;
+}
 
 struct CmcProblem {
   std::shared_ptr<const CmcFunctional> f;

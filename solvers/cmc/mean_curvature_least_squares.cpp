@@ -58,27 +58,32 @@ bool singular(const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) {
   return xu.allFinite() && xv.allFinite() && !(xu.cross(xv).norm() > 1e-14 * xu.norm() * xv.norm());
 }
 
+// The rule with the corner weight, after the degree and q checks (the rule checks q <= 200).
+QuadratureRuleTriangle checked_rule(bool square, int n, int m, int q, Eigen::VectorXd& w) {
+  if (n < 2 || m < 2 || n > kMaxDegree || m > kMaxDegree)
+    throw DegreeError(std::string("mean-curvature least squares: ") + (square ? "tensor degrees" : "triangular degree") +
+                      " must be in 2.." + std::to_string(kMaxDegree));
+  if (q < 2) throw ParameterError("mean-curvature least squares: q must be >= 2");
+  const QuadratureRuleTriangle rule = square ? corner_collapsed_square_rule(q) : corner_collapsed_triangle_rule(q);
+  w = weighted(rule, square);
+  return rule;
+}
+
 }  // namespace
 
 MeanCurvatureLeastSquares MeanCurvatureLeastSquares::triangular(int n, int q) {
-  if (n < 2) throw DegreeError("mean-curvature least squares: triangular degree must be >= 2");
-  if (q < 2) throw ParameterError("mean-curvature least squares: q must be >= 2");
   MeanCurvatureLeastSquares f;
   f.q_ = q;
-  const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(q);
-  f.w_ = weighted(rule, false);
+  const QuadratureRuleTriangle rule = checked_rule(false, n, n, q, f.w_);
   const int du[5] = {1, 0, 2, 1, 0}, dv[5] = {0, 1, 0, 1, 2};
   for (size_t t = 0; t < 5; ++t) f.D_[t] = triangular_basis_table(n, rule.uv, du[t], dv[t]);
   return f;
 }
 
 MeanCurvatureLeastSquares MeanCurvatureLeastSquares::tensor(int n, int m, int q) {
-  if (n < 2 || m < 2) throw DegreeError("mean-curvature least squares: tensor degrees must be >= 2");
-  if (q < 2) throw ParameterError("mean-curvature least squares: q must be >= 2");
   MeanCurvatureLeastSquares f;
   f.q_ = q;
-  const QuadratureRuleTriangle rule = corner_collapsed_square_rule(q);
-  f.w_ = weighted(rule, true);
+  const QuadratureRuleTriangle rule = checked_rule(true, n, m, q, f.w_);
   const Eigen::VectorXd us = rule.uv.col(0), vs = rule.uv.col(1);
   std::array<Eigen::MatrixXd, 3> U, V;
   for (int d = 0; d <= 2; ++d) {

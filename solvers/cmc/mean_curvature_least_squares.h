@@ -46,9 +46,11 @@ namespace bpde {
 
 class MeanCurvatureLeastSquares {
  public:
-  /// Triangular net of degree n (>= 2), corner-collapsed rule with q points per direction (2..200).
+  /// Triangular net of degree n (2..kMaxDegree, DegreeError), corner-collapsed rule with q points per
+  /// direction (2..200, ParameterError).
   static MeanCurvatureLeastSquares triangular(int n, int q);
-  /// Tensor net of degree (n, m) (each >= 2), corner-collapsed rule with q points per direction (2..200).
+  /// Tensor net of degree (n, m) (each 2..kMaxDegree), corner-collapsed rule with q points per
+  /// direction (2..200).
   static MeanCurvatureLeastSquares tensor(int n, int m, int q);
 
   int size() const { return static_cast<int>(w_.size() ? D_[0].cols() : 0); }  ///< points of the net

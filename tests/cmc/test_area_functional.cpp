@@ -88,8 +88,10 @@ TEST(AreaFunctional, GradedRulesGradientAndHessianAgainstFiniteDifferences) {
 }
 
 // The first variation of A_H = A + 2HV is the mean-curvature deviation (an independent truth for
-// the gradient of the quadrature value, from geometry): A and V do not change under a
-// reparametrisation, so for every point P_I whose B_I vanishes on the boundary,
+// the gradient of the quadrature value, from geometry: the first variation of area,
+// δA = −2∫H⟨N, δx⟩ dA, do Carmo, "Differential Geometry of Curves and Surfaces", §3-5, and
+// δV = ∫⟨N, δx⟩ dA): A and V do not change under a reparametrisation, so for every point P_I whose
+// B_I vanishes on the boundary,
 //   ∂A_H/∂P_I = 2 ∫ B_I (H − H_x) (x_u ∧ x_v) du dv,
 // with H_x the mean curvature of x (FORMATS.md convention: z = u² + v² has H = +2). The right-hand
 // side is integrated here by a plain Gauss rule with H_x from the fundamental forms at each node,

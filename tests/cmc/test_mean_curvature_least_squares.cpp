@@ -251,6 +251,9 @@ TEST(CmcMeanCurvature, BadInput) {
   EXPECT_EQ(parse_cmc_functional("mean-curvature"), CmcFunctionalKind::MeanCurvature);
   EXPECT_EQ(to_string(CmcFunctionalKind::MeanCurvature), "mean-curvature");
   EXPECT_THROW(MeanCurvatureLeastSquares::triangular(1, 5), DegreeError);
+  EXPECT_THROW(MeanCurvatureLeastSquares::triangular(kMaxDegree + 1, 5), DegreeError);
+  EXPECT_THROW(MeanCurvatureLeastSquares::tensor(4, kMaxDegree + 1, 5), DegreeError);
+  EXPECT_THROW(MeanCurvatureLeastSquares::triangular(4, 201), ParameterError);
   EXPECT_THROW(MeanCurvatureLeastSquares::tensor(4, 4, 1), ParameterError);
   const MeanCurvatureLeastSquares f = MeanCurvatureLeastSquares::triangular(4, 5);
   EXPECT_THROW(f.value(Eigen::MatrixX3d::Zero(3, 3), 0.0), SizeError);

@@ -120,3 +120,36 @@ TEST(Quadrature, GaussExactness) {
   EXPECT_NEAR(m, 1.0 / 2520, 1e-17);
   EXPECT_THROW(gauss_legendre01(0), ParameterError);
 }
+
+// The corner-collapsed rules (core/quadrature.h) against exact monomial integrals:
+// ∫_T u^a v^b = a! b! / (a + b + 2)! on the triangle and 1 / ((a + 1)(b + 1)) on the square, for the
+// plain and the graded (s = σ³) radial coordinate. A polynomial of total degree d pulls back to
+// degree ≤ d + 1 in s (the Jacobian) and ≤ d in t, so q = 6 (exact to 11) covers d ≤ 9 when plain.
+TEST(Quadrature, CornerCollapsedRulesIntegrateMonomialsExactly) {
+  auto fact = [](int k) { return std::tgamma(k + 1.0); };
+  for (int grading : {1, 3}) {
+    const int q = grading == 1 ? 6 : 16;  // s = σ³ triples the degree in σ
+    const QuadratureRuleTriangle t = corner_collapsed_triangle_rule(q, grading);
+    const QuadratureRuleTriangle sq = corner_collapsed_square_rule(q, grading);
+    EXPECT_EQ(t.w.size(), 6 * q * q);
+    EXPECT_EQ(sq.w.size(), 8 * q * q);
+    for (int a = 0; a <= 5; ++a)
+      for (int b = 0; a + b <= 8; ++b) {
+        double it = 0, is = 0;
+        for (Eigen::Index i = 0; i < t.w.size(); ++i) it += t.w(i) * std::pow(t.uv(i, 0), a) * std::pow(t.uv(i, 1), b);
+        for (Eigen::Index i = 0; i < sq.w.size(); ++i)
+          is += sq.w(i) * std::pow(sq.uv(i, 0), a) * std::pow(sq.uv(i, 1), b);
+        EXPECT_NEAR(it, fact(a) * fact(b) / fact(a + b + 2), 1e-15) << a << " " << b << " grading " << grading;
+        EXPECT_NEAR(is, 1.0 / ((a + 1) * (b + 1)), 1e-14) << a << " " << b << " grading " << grading;
+      }
+    for (Eigen::Index i = 0; i < t.w.size(); ++i) {
+      EXPECT_GT(t.w(i), 0.0);
+      EXPECT_GE(t.uv(i, 0), 0.0);
+      EXPECT_GE(t.uv(i, 1), 0.0);
+      EXPECT_LE(t.uv(i, 0) + t.uv(i, 1), 1.0 + 1e-15);
+    }
+  }
+  EXPECT_THROW(corner_collapsed_triangle_rule(0), ParameterError);
+  EXPECT_THROW(corner_collapsed_square_rule(201), ParameterError);
+  EXPECT_THROW(corner_collapsed_triangle_rule(5, 5), ParameterError);
+}
