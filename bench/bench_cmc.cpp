@@ -3,7 +3,7 @@
 // Dirichlet extremal (the linear solve, H = 0) as the baseline; CmcArea/{newton,ceres}/<n> for the
 // area functional A + 2HV on the same data; CmcArea/circle/<n> for the area functional on the
 // non-conformal data of the paper's Fig. 1 (the unit circle in three arcs by angle, H = -0.5), the
-// case of docs/cmc_evolver.md; CmcMeanCurvature/circle/<n> for the least squares of the mean curvature
+// case of docs/cmc_evolver.md; CmcMeanCurvature/{newton,ceres}/circle/<n> for the least squares of the mean curvature
 // on that circle. The per-degree setup (Gram and volume quadrature tables) is cached
 // by CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after
 // the first iteration.
@@ -62,13 +62,14 @@ void NLopt(benchmark::State& s) { run(s, CmcSolver::NLopt, false); }
 void AreaNewton(benchmark::State& s) { run(s, CmcSolver::Newton, false, true); }
 void AreaCeres(benchmark::State& s) { run(s, CmcSolver::Ceres, false, true); }
 
-void CircleRoute(benchmark::State& state, CmcFunctionalKind functional) {
+void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolver solver = CmcSolver::Newton) {
   const int n = static_cast<int>(state.range(0));
   const TriangularNet data = circle_three_arcs(n);
   CmcFunctional::cached_triangular(n);
   CmcOptions o;
   o.H = -0.5;
   o.functional = functional;
+  o.solver = solver;
   int iters = 0;
   double residual = 0;
   for (auto _ : state) {
@@ -84,7 +85,12 @@ void CircleRoute(benchmark::State& state, CmcFunctionalKind functional) {
 void AreaCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::Area); }
 // The least squares of the mean curvature on the same circle (its residual is √Φ, tolerance 1e-6;
 // it converges from n = 8 on at H = -0.5, docs/cmc.md).
+// Solver newton is the library's own Levenberg–Marquardt loop, ceres the same residuals as one
+// Ceres residual block per quadrature node (solvers/cmc/mean_curvature_ceres.cpp).
 void MeanCurvatureCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::MeanCurvature); }
+void MeanCurvatureCircleCeres(benchmark::State& s) {
+  CircleRoute(s, CmcFunctionalKind::MeanCurvature, CmcSolver::Ceres);
+}
 
 }  // namespace
 
@@ -95,4 +101,11 @@ BENCHMARK(NLopt)->Name("Cmc/nlopt")->DenseRange(4, 15)->Unit(benchmark::kMicrose
 BENCHMARK(AreaNewton)->Name("CmcArea/newton")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCeres)->Name("CmcArea/ceres")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCircle)->Name("CmcArea/circle")->DenseRange(6, 12, 2)->Unit(benchmark::kMillisecond);
-BENCHMARK(MeanCurvatureCircle)->Name("CmcMeanCurvature/circle")->DenseRange(10, 14, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(MeanCurvatureCircle)
+    ->Name("CmcMeanCurvature/newton/circle")
+    ->DenseRange(10, 14, 2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(MeanCurvatureCircleCeres)
+    ->Name("CmcMeanCurvature/ceres/circle")
+    ->DenseRange(10, 14, 2)
+    ->Unit(benchmark::kMillisecond);

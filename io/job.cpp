@@ -158,16 +158,14 @@ Problem problem_from_json(const Json& j, const std::string& path) {
         throw ParseError(path + ".mean_curvature_tolerance: must be in (0, 1), got " + got);
       }
     }
-    if (mean_curvature && hasV)
-      throw UnsupportedProblem(path + ": a mean-curvature cmc problem takes \"H\", not \"V\"");
 
     if (j.contains("solver")) {
       const std::string s = string(j["solver"], path + ".solver");
       if (s != "newton" && s != "ceres" && s != "nlopt")
         throw ParseError(path + ".solver: unknown solver \"" + s + "\" (expected newton, ceres or nlopt)");
       p.solver = parse_cmc_solver(s);
-      if (mean_curvature && p.solver != CmcSolver::Newton)
-        throw UnsupportedProblem(path + ": a mean-curvature cmc problem is solved by \"solver\": \"newton\"");
+      if (mean_curvature && p.solver == CmcSolver::NLopt)
+        throw UnsupportedProblem(path + ": a mean-curvature cmc problem is solved by \"solver\": \"newton\" or \"ceres\"");
     }
     if (hasH) {
       p.kind = ProblemKind::CmcH;
@@ -175,10 +173,12 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     } else {
       p.kind = ProblemKind::CmcV;
       p.V = number(j["V"], path + ".V");
-      if (!j.contains("solver")) p.solver = area ? CmcSolver::Newton : CmcSolver::NLopt;
+      if (!j.contains("solver")) p.solver = area || mean_curvature ? CmcSolver::Newton : CmcSolver::NLopt;
       if (area && p.solver != CmcSolver::Newton)
         throw UnsupportedProblem(path + ": an area cmc problem with \"V\" needs \"solver\": \"newton\"");
-      if (!area && p.solver != CmcSolver::NLopt)
+      if (mean_curvature && p.solver != CmcSolver::Newton)
+        throw UnsupportedProblem(path + ": a mean-curvature cmc problem with \"V\" needs \"solver\": \"newton\"");
+      if (!area && !mean_curvature && p.solver != CmcSolver::NLopt)
         throw UnsupportedProblem(path + ": a cmc problem with \"V\" needs \"solver\": \"nlopt\"");
     }
   } else {

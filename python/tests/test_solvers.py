@@ -413,3 +413,11 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     assert r.summary.converged == report["converged"] and r.summary.residual == report["residual"]
     assert bits(np.asarray(r.net.points).tolist()) == bits(bezierpde.points(net_cli).tolist())
     assert r.A == report["area"] and r.energy == report["energy"]
+    # solver "ceres" (one Ceres residual block per quadrature node): the same from both routes
+    job["problem"]["solver"] = "ceres"
+    net_ceres, report_ceres = bezierpde.solve(job)
+    o.solver = "ceres"
+    rc = bezierpde.solve_cmc(data, o)
+    assert rc.summary.converged == report_ceres["converged"] and rc.summary.residual == report_ceres["residual"]
+    assert bits(np.asarray(rc.net.points).tolist()) == bits(bezierpde.points(net_ceres).tolist())
+    assert "Ceres" in rc.summary.message

@@ -28,9 +28,12 @@ void CmcOptions::validate() const {
     if (fixed == FixedSet::UBoundaries)
       throw UnsupportedProblem("cmc: the area functional needs fixed \"boundary\" or \"boundary+adjacent\"");
   } else if (functional == CmcFunctionalKind::MeanCurvature) {
-    if (V) throw UnsupportedProblem("cmc: the mean-curvature functional takes H, not V");
-    if (solver != CmcSolver::Newton)
-      throw UnsupportedProblem("cmc: the mean-curvature functional is solved by the newton solver (Levenberg–Marquardt)");
+    if (V && solver != CmcSolver::Newton)
+      throw UnsupportedProblem(
+          "cmc: the volume-constrained mean-curvature problem (V) is solved by the newton solver only");
+    if (solver == CmcSolver::NLopt)
+      throw UnsupportedProblem(
+          "cmc: the mean-curvature functional is solved by the newton or the ceres solver (Levenberg–Marquardt)");
     if (fixed == FixedSet::UBoundaries)
       throw UnsupportedProblem("cmc: the mean-curvature functional needs fixed \"boundary\" or \"boundary+adjacent\"");
   } else if (V && solver != CmcSolver::NLopt)

@@ -56,14 +56,20 @@
 //
 // The least-squares mean-curvature functional (options.functional = MeanCurvature;
 // solvers/cmc/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
-//  - H mode only: minimise Φ = ∫ ρ (H_x − H)² dA over the free points (ρ a corner weight, 1 away
+//  - H mode: minimise Φ = ∫ ρ (H_x − H)² dA over the free points (ρ a corner weight, 1 away
 //    from the corners and 0 at them: mean_curvature_least_squares.h). Φ = 0 exactly for a CMC
 //    surface, whatever the parametrisation; where the polynomial space holds no CMC surface, its
 //    minimiser is the surface nearest to CMC in that sense (it weighs the deviation on the whole
 //    patch, where a critical point of A_H only makes it orthogonal to the B_I, which vanish on the
 //    boundary).
-//  - The start is the D_H critical point at H (the continuation above; if the branch folds
-//    first, its last point). Levenberg–Marquardt on the residuals of Φ with the exact Jacobian:
+//  - V mode (options.V = V0, solver newton): minimise Φ over the free points AND H subject to
+//    V = V0; result.H is the H found. Each Levenberg–Marquardt step solves the LM subproblem with
+//    the linearised constraint (KKT, one Cholesky factor), and each trial point is put back on
+//    V = V0 along ∇V before Φ is compared (cmc_mean_curvature.cpp). Its start is the minimiser of D
+//    at V = V0 (the nlopt route) with that route's multiplier as H. converged also needs
+//    |V − V0| <= options.tolerance × max(value_scale, |V0|).
+//  - The start is the D_H critical point at H (the newton continuation above, whatever the
+//    solver; if the branch folds first, its last point). Levenberg–Marquardt on the residuals of Φ with the exact Jacobian:
 //    (JᵀJ + λ diag JᵀJ) δ = −Jᵀr, λ by the gain ratio (÷5 above 0.75, ×3 below 0.25, ×10 on a
 //    rejected step).
 //  - converged = true means √Φ ≤ options.mean_curvature_tolerance (1e-6; Φ is dimensionless), with
@@ -72,7 +78,12 @@
 //    from the CLI) when Φ stalls (a relative fall below 1e-6 in 10 iterations: the degree is too
 //    low for the tolerance) or after options.max_least_squares_iterations; summary.residual is
 //    then the √Φ reached.
-//  - Fixed sets boundary and boundary+adjacent; solver newton (its own Levenberg–Marquardt).
+//  - Fixed sets boundary and boundary+adjacent. Solver newton: the library's own Levenberg–Marquardt
+//    loop above. Solver ceres: the same residuals as one Ceres residual block per quadrature node
+//    on one parameter block (the free points), minimised by ceres::Solve (LM, dense normal
+//    Cholesky) with the same stopping tests (solvers/cmc/mean_curvature_minimise.h); both are
+//    measured side by side by CmcMeanCurvature/{newton,ceres}/circle/<n> (docs/performance.md).
+//    summary.iterations counts accepted steps (newton) or steps tried (ceres).
 //
 // Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
 // V with a solver other than nlopt (UnsupportedProblem; the functionals' own rules: validate()),
@@ -126,7 +137,7 @@ struct CmcOptions {
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
   /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with
   /// nlopt, area V mode with a solver other than newton; area or mean-curvature with u-boundaries;
-  /// mean-curvature with V or with a solver other than newton).
+  /// mean-curvature with nlopt, or with V and a solver other than newton).
   void validate() const;
 };
 
@@ -174,7 +185,6 @@ inline SolverRequirements cmc_area_requirements() {
 inline SolverRequirements cmc_mean_curvature_requirements() {
   SolverRequirements r = cmc_area_requirements();
   r.problem = "problem \"cmc\" with \"functional\": \"mean-curvature\"";
-  r.methods = {"newton"};
   return r;
 }
 

@@ -1,21 +1,26 @@
 // The least-squares mean-curvature functional of the cmc problem (cmc.h, "The least-squares
 // mean-curvature functional"; docs/cmc.md, "Least squares of the mean curvature"): from the D_H
-// critical point, Levenberg–Marquardt on Φ = ∫ ρ (H_x − H)² dA (mean_curvature_least_squares.h).
+// critical point, Levenberg–Marquardt on Φ = ∫ ρ (H_x − H)² dA (mean_curvature_least_squares.h):
+// the library's own loop (solver newton, minimise_newton below) or ceres::Solve with one residual
+// block per node (solver ceres, mean_curvature_ceres.cpp).
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <deque>
+#include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 
 #include "bezierpde/core/progress.h"
 #include "bezierpde/energies/cmc.h"
+#include "bezierpde/energies/volume.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 #include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+#include "bezierpde/solvers/cmc/mean_curvature_minimise.h"
 #include "bezierpde/solvers/summary.h"
 
 namespace bpde::cmc_detail {
@@ -34,39 +39,69 @@ MeanCurvatureLeastSquares form_for(const TensorNet& net, int extra) {
   return MeanCurvatureLeastSquares::tensor(net.n(), net.m(), rule_q(std::max(net.n(), net.m()), extra));
 }
 
-// Why the Levenberg–Marquardt loop stopped.
-enum class LsStop {
-  Reached,        ///< √Φ <= its target on the rule minimised
-  Stalled,        ///< Φ fell by less than 1e-6 (relative) in 10 iterations
-  NoStep,         ///< no trial step lowered Φ (30 tries with growing damping)
-  MaxIterations,  ///< options.max_least_squares_iterations used up
-  NonFinite,      ///< Φ or its Jacobian is not finite at the current net
+}  // namespace
+
+namespace {
+
+// The volume constraint of the V form: V(P) = V0 with H an unknown (nullptr in the H form).
+struct VolumeTarget {
+  const VolumeForm& form;
+  double V0;
+  double scale;  ///< value_scale of the start: |V − V0| <= 1e-14 × scale is "on the constraint"
 };
 
-struct LsOutcome {
-  int iterations = 0;
-  LsStop stop = LsStop::MaxIterations;
-};
+// Back onto V = V0 along the volume gradient over the free points: at most 8 Newton steps on the
+// one equation V(P) = V0 (V is cubic in P; two steps from a Levenberg–Marquardt trial suffice in
+// practice). False when it does not get there.
+bool restore_volume(const VolumeTarget& vt, Eigen::MatrixX3d& P, const std::vector<int>& free) {
+  for (int it = 0; it < 8; ++it) {
+    const double c = vt.form.value(P) - vt.V0;
+    if (!std::isfinite(c)) return false;
+    if (std::abs(c) <= 1e-14 * vt.scale) return true;
+    const Eigen::MatrixX3d G = vt.form.gradient_rows(P, free);
+    const double g2 = G.squaredNorm();
+    if (!(g2 > 0)) return false;
+    for (size_t a = 0; a < free.size(); ++a) P.row(free[a]) -= (c / g2) * G.row(Eigen::Index(a));
+  }
+  return std::abs(vt.form.value(P) - vt.V0) <= 1e-14 * vt.scale;
+}
 
-// Levenberg–Marquardt on Φ(P) = ‖r‖² over the free rows of P (in place), until √Φ <= target, a
-// stall, no step, or max_iterations. A trial step is taken only when it and the new Φ are finite.
-// Progress (stage "cmc least squares"): the fraction of the way from the start's √Φ to the target
-// on a log scale, reported after every iteration, and 1 at the end.
-LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double H,
-                   double target, int max_iterations, const ProgressFn& progress) {
+// The residuals r and their Jacobian over the unknowns: the free coordinates (column 3a + c) and,
+// in the V form, H (the last column, ∂r_q/∂H = −√(w_q|N_q|)).
+void evaluate(const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, const std::vector<int>& free, double H,
+              bool with_H, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
+  Eigen::MatrixXd Jp;
+  f.residuals(P, H, &r, &free, &Jp);
+  if (!with_H) {
+    J = std::move(Jp);
+    return;
+  }
+  J.resize(Jp.rows(), Jp.cols() + 1);
+  J.leftCols(Jp.cols()) = Jp;
+  J.col(Jp.cols()) = f.h_derivative(f.derivatives(P));
+}
+
+// Levenberg–Marquardt on Φ = ‖r‖² over the free rows of P (in place) and, with vt, over H too
+// subject to V(P) = V0: the step solves the equality-constrained LM subproblem
+//     min ‖r + J d‖² + λ dᵀ diag(JᵀJ) d   subject to  ∇Vᵀ d_P = V0 − V(P)
+// by its KKT system (two solves with the one Cholesky factor), and a trial point is put back on
+// V = V0 (restore_volume) before Φ is compared, so every iterate is feasible.
+LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double& H,
+                  const VolumeTarget* vt, double target, int max_iterations, const ProgressFn& progress) {
   LsOutcome out;
+  report(progress, "cmc least squares", 0, 1);
+  if (vt && !restore_volume(*vt, P, free)) {
+    out.stop = LsStop::NonFinite;
+    report(progress, "cmc least squares", 1, 1);
+    return out;
+  }
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
-  f.residuals(P, H, &r, &free, &J);
+  evaluate(f, P, free, H, vt, r, J);
   double phi = r.squaredNorm(), lambda = 1e-3;
-  std::deque<double> history{phi};
+  std::vector<double> history{phi};
   const double start = std::sqrt(phi);
-  auto fraction = [&] {
-    const double span = std::log(start / target), f0 = span > 0 ? std::log(start / std::sqrt(phi)) / span : 1.0;
-    return std::isfinite(f0) ? std::clamp(f0, 0.0, 0.999) : 0.0;
-  };
-  report(progress, "cmc least squares", 0, 1);
-  const Eigen::Index n = J.cols();
+  const Eigen::Index n = J.cols(), np = 3 * Eigen::Index(free.size());
   while (true) {
     if (!std::isfinite(phi) || !J.allFinite()) {
       out.stop = LsStop::NonFinite;
@@ -85,26 +120,48 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
     A = A.selfadjointView<Eigen::Lower>();
     const Eigen::VectorXd g = J.transpose() * r;
     const Eigen::VectorXd diag = A.diagonal().cwiseMax(1e-12 * A.diagonal().maxCoeff());
+    Eigen::VectorXd a;  // the constraint's gradient over the unknowns (0 for H)
+    double c = 0.0;
+    if (vt) {
+      a = Eigen::VectorXd::Zero(n);
+      const Eigen::MatrixX3d G = vt->form.gradient_rows(P, free);
+      for (size_t i = 0; i < free.size(); ++i) a.segment<3>(3 * Eigen::Index(i)) = G.row(Eigen::Index(i)).transpose();
+      c = vt->form.value(P) - vt->V0;
+    }
     bool accepted = false;
     for (int tries = 0; tries < 30 && !accepted; ++tries) {
       Eigen::MatrixXd M = A;
       M.diagonal() += lambda * diag;
       const Eigen::LLT<Eigen::MatrixXd> llt(M);
-      const Eigen::VectorXd d = llt.info() == Eigen::Success ? Eigen::VectorXd(-llt.solve(g)) : Eigen::VectorXd();
+      Eigen::VectorXd d;
+      if (llt.info() == Eigen::Success) {
+        d = -llt.solve(g);
+        if (vt) {  // d = d0 − μ e with e = M⁻¹a and aᵀd = −c
+          const Eigen::VectorXd e = llt.solve(a);
+          const double ae = a.dot(e);
+          d = ae > 0 ? Eigen::VectorXd(d - ((a.dot(d) + c) / ae) * e) : Eigen::VectorXd();
+        }
+      }
       if (d.size() != g.size() || !d.allFinite()) {
         lambda *= 10;
         continue;
       }
       Eigen::MatrixX3d Pn = P;
-      for (size_t a = 0; a < free.size(); ++a) Pn.row(free[a]) += d.segment<3>(3 * Eigen::Index(a)).transpose();
+      for (size_t i = 0; i < free.size(); ++i) Pn.row(free[i]) += d.segment<3>(3 * Eigen::Index(i)).transpose();
+      const double Hn = vt ? H + d(np) : H;
       Eigen::VectorXd rn;
-      f.residuals(Pn, H, &rn);
-      const double phin = rn.squaredNorm(), pred = -(2.0 * g.dot(d) + d.dot(A * d));
+      double phin = std::numeric_limits<double>::infinity();
+      if (!vt || restore_volume(*vt, Pn, free)) {
+        f.residuals(Pn, Hn, &rn);
+        phin = rn.squaredNorm();
+      }
+      const double pred = -(2.0 * g.dot(d) + d.dot(A * d));
       if (std::isfinite(phin) && phin < phi) {
         const double rho = pred > 0 ? (phi - phin) / pred : 0.0;
         if (rho > 0.75) lambda = std::max(lambda / 5, 1e-15);
         if (rho < 0.25) lambda *= 3;
         P = Pn;
+        H = Hn;
         accepted = true;
       } else {
         lambda *= 10;
@@ -115,12 +172,12 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
       break;
     }
     ++out.iterations;
-    f.residuals(P, H, &r, &free, &J);
+    evaluate(f, P, free, H, vt, r, J);
     phi = r.squaredNorm();
-    report(progress, "cmc least squares", fraction(), 1);
+    report(progress, "cmc least squares", ls_fraction(start, target, std::sqrt(phi)), 1);
     history.push_back(phi);
-    if (history.size() > 11) history.pop_front();
-    if (history.size() == 11 && history.front() - phi < 1e-6 * history.front() && std::sqrt(phi) > target) {
+    if (history.size() > 11) history.erase(history.begin());
+    if (stalled(history) && std::sqrt(phi) > target) {
       out.stop = LsStop::Stalled;
       break;
     }
@@ -129,6 +186,19 @@ LsOutcome minimise(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, cons
   return out;
 }
 
+}  // namespace
+
+// Levenberg–Marquardt on Φ(P) = ‖r‖² over the free rows of P (in place), until √Φ <= target, a
+// stall, no step, or max_iterations. A trial step is taken only when it and the new Φ are finite.
+// Progress (stage "cmc least squares"): the fraction of the way from the start's √Φ to the target
+// on a log scale, reported after every iteration, and 1 at the end.
+LsOutcome minimise_newton(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
+                          double H, double target, int max_iterations, const ProgressFn& progress) {
+  return lm_loop(f, P, free, H, nullptr, target, max_iterations, progress);
+}
+
+namespace {
+
 template <class Net>
 CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
   CmcResult<Net> res;
@@ -136,43 +206,62 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
   {
     ScopedTimer timer(res.summary.seconds);
     o.validate();
-    // The start: the paper's D_H critical point at H (or the last point of its branch).
+    // The start: the paper's D_H critical point at H (or the last point of its branch), by the
+    // newton continuation whatever o.solver (which picks the least-squares minimiser); in the V
+    // form the minimiser of D at V = V0 (nlopt) and its multiplier H.
     CmcOptions od = o;
     od.functional = CmcFunctionalKind::Dirichlet;
+    od.solver = o.V ? CmcSolver::NLopt : CmcSolver::Newton;
     const CmcResult<Net> start = solve_cmc(data, od);
     res.continuation_steps = start.continuation_steps;
     res.summary.iterations = start.summary.iterations;
     Eigen::MatrixX3d P = start.net.points();
+    double H = o.V ? start.H : o.H;
     const std::vector<int> free = data.free_indices(o.fixed);
     const MeanCurvatureLeastSquares f = form_for(data, 0), check = form_for(data, 1);
+    const auto cf = functional_for(data);
     // Minimised to 0.7 × the tolerance, so that the check rule (finer) does not miss it by its own small error.
-    const LsOutcome ls =
-        minimise(f, P, free, o.H, 0.7 * o.mean_curvature_tolerance, o.max_least_squares_iterations, o.progress);
+    const double target = 0.7 * o.mean_curvature_tolerance;
+    const bool ceres = o.solver == CmcSolver::Ceres;
+    LsOutcome ls;
+    std::optional<VolumeTarget> vt;
+    if (o.V) {
+      vt.emplace(VolumeTarget{cf->volume_form(), *o.V, std::max(cf->volume_form().value_scale(P), std::abs(*o.V))});
+      ls = lm_loop(f, P, free, H, &*vt, target, o.max_least_squares_iterations, o.progress);
+    } else {
+      ls = (ceres ? minimise_ceres : minimise_newton)(f, P, free, H, target, o.max_least_squares_iterations,
+                                                      o.progress);
+    }
     res.summary.iterations += ls.iterations;
     const Net net = make_net(data, P);
-    const auto cf = functional_for(data);
     res.net = net;
-    res.H = o.H;
+    res.H = H;
     res.D = cf->dirichlet(P);
     res.V = cf->volume(P);
-    res.DH = res.D + 2.0 * o.H * res.V;
+    res.DH = res.D + 2.0 * H * res.V;
     res.A = area(net);
-    const double phi = check.value(P, o.H);
+    const double phi = check.value(P, H);
     res.energy = phi;
     res.quadrature_points = f.points_per_direction();
     res.summary.residual = std::sqrt(phi);
-    const std::string start_note = start.summary.converged
-                                       ? "from the D_H critical point at H = " + num(o.H, 3)
-                                       : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
+    const std::string start_note =
+        o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
+        : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
+                                  : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
     const std::string what = "least squares of the mean curvature " + start_note + ": √Φ = " +
-                             num(res.summary.residual, 3) + " after " + std::to_string(ls.iterations) +
-                             " Levenberg–Marquardt iteration(s)";
+                             num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
+                             " after " + std::to_string(ls.iterations) +
+                             (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
+    const double v_off = o.V ? std::abs(res.V - *o.V) / vt->scale : 0.0;
     const Regularity reg = regularity(net, res.A);
     if (!reg.ok) {
       res.summary.set_failed(Status::NoConvergence,
                              "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(reg.min_ratio, 3) +
                                  " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
                                  " (not a CMC surface); " + what);
+    } else if (!(v_off <= o.tolerance)) {
+      res.summary.set_failed(Status::NoConvergence, what + ", but V misses V0 by " + num(v_off, 3) +
+                                                        " (relative): no step kept the volume constraint");
     } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
       std::string why;
       switch (ls.stop) {

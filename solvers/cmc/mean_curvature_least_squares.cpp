@@ -20,7 +20,7 @@ namespace {
 // H_x = (⟨x_uu,N⟩G − 2⟨x_uv,N⟩F + ⟨x_vv,N⟩E) / (2|N|³) (core/differential_geometry.h, with the
 // unit normal written as N/|N|).
 template <class T>
-T node_residual(const T* j, double H, double w) {
+T residual_from_jet(const T* j, double H, double w) {
   using std::sqrt;
   const T* xu = j;
   const T* xv = j + 3;
@@ -100,6 +100,43 @@ MeanCurvatureLeastSquares MeanCurvatureLeastSquares::tensor(int n, int m, int q)
   return f;
 }
 
+MeanCurvatureLeastSquares::NodeDerivatives MeanCurvatureLeastSquares::derivatives(const Eigen::MatrixX3d& P) const {
+  if (P.rows() != size()) throw SizeError("mean-curvature least squares: the net has the wrong number of points");
+  NodeDerivatives X;
+  for (size_t t = 0; t < 5; ++t) X[t] = D_[t] * P;
+  return X;
+}
+
+double MeanCurvatureLeastSquares::node_residual(const NodeDerivatives& X, Eigen::Index q, double H,
+                                                Eigen::Matrix<double, 15, 1>* dr) const {
+  if (singular(X[0].row(q).transpose(), X[1].row(q).transpose())) {
+    if (dr) dr->setZero();
+    return 0.0;
+  }
+  if (dr) {
+    using Jet = ceres::Jet<double, 15>;
+    Jet jet[15];
+    for (int t = 0; t < 5; ++t)
+      for (int c = 0; c < 3; ++c) jet[3 * t + c] = Jet(X[size_t(t)](q, c), 3 * t + c);
+    const Jet v = residual_from_jet(jet, H, w_(q));
+    *dr = v.v;
+    return v.a;
+  }
+  double jet[15];
+  for (int t = 0; t < 5; ++t)
+    for (int c = 0; c < 3; ++c) jet[3 * t + c] = X[size_t(t)](q, c);
+  return residual_from_jet(jet, H, w_(q));
+}
+
+Eigen::VectorXd MeanCurvatureLeastSquares::h_derivative(const NodeDerivatives& X) const {
+  Eigen::VectorXd d(nodes());
+  for (Eigen::Index q = 0; q < nodes(); ++q) {
+    const Eigen::Vector3d xu = X[0].row(q).transpose(), xv = X[1].row(q).transpose();
+    d(q) = singular(xu, xv) ? 0.0 : -std::sqrt(w_(q) * xu.cross(xv).norm());
+  }
+  return d;
+}
+
 void MeanCurvatureLeastSquares::residuals(const Eigen::MatrixX3d& P, double H, Eigen::VectorXd* r,
                                           const std::vector<int>* idx, Eigen::MatrixXd* J) const {
   if (P.rows() != size()) throw SizeError("mean-curvature least squares: the net has the wrong number of points");
@@ -109,30 +146,15 @@ void MeanCurvatureLeastSquares::residuals(const Eigen::MatrixX3d& P, double H, E
       if (i < 0 || i >= size())
         throw ParameterError("mean-curvature least squares: point index " + std::to_string(i) + " out of range");
   const Eigen::Index M = nodes();
-  std::array<Eigen::MatrixX3d, 5> X;
-  for (size_t t = 0; t < 5; ++t) X[t] = D_[t] * P;
-  using Jet = ceres::Jet<double, 15>;
+  const NodeDerivatives X = derivatives(P);
   Eigen::MatrixXd dr;
-  if (J) dr = Eigen::MatrixXd::Zero(M, 15);
+  if (J) dr.resize(M, 15);
   if (r) r->resize(M);
+  Eigen::Matrix<double, 15, 1> d;
   for (Eigen::Index q = 0; q < M; ++q) {
-    if (singular(X[0].row(q).transpose(), X[1].row(q).transpose())) {
-      if (r) (*r)(q) = 0.0;
-      continue;
-    }
-    if (J) {
-      Jet jet[15];
-      for (int t = 0; t < 5; ++t)
-        for (int c = 0; c < 3; ++c) jet[3 * t + c] = Jet(X[size_t(t)](q, c), 3 * t + c);
-      const Jet v = node_residual(jet, H, w_(q));
-      if (r) (*r)(q) = v.a;
-      dr.row(q) = v.v.transpose();
-    } else {
-      double jet[15];
-      for (int t = 0; t < 5; ++t)
-        for (int c = 0; c < 3; ++c) jet[3 * t + c] = X[size_t(t)](q, c);
-      if (r) (*r)(q) = node_residual(jet, H, w_(q));
-    }
+    const double v = node_residual(X, q, H, J ? &d : nullptr);
+    if (r) (*r)(q) = v;
+    if (J) dr.row(q) = d.transpose();
   }
   if (!J) return;
   const std::vector<int>& ix = *idx;

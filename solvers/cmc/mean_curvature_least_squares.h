@@ -64,6 +64,21 @@ class MeanCurvatureLeastSquares {
   /// Φ = Σ r_q².
   double value(const Eigen::MatrixX3d& P, double H) const;
 
+  // Node by node (the Ceres route: one residual block per node, solvers/cmc/mean_curvature_ceres.cpp).
+  /// The surface derivatives at the nodes: X[t] = D_t P (#nodes by 3), t = 0..4 for x_u, x_v, x_uu,
+  /// x_uv, x_vv.
+  using NodeDerivatives = std::array<Eigen::MatrixX3d, 5>;
+  NodeDerivatives derivatives(const Eigen::MatrixX3d& P) const;
+  /// r_q from X = derivatives(P) and, when dr is given, ∂r_q/∂(x_u, x_v, x_uu, x_uv, x_vv) (15
+  /// components, 3t + c for derivative t and coordinate c; zero at a singular node, where r_q = 0).
+  double node_residual(const NodeDerivatives& X, Eigen::Index q, double H, Eigen::Matrix<double, 15, 1>* dr) const;
+  /// ∂r_q/∂H = −√(w_q |N_q|) at X = derivatives(P) (#nodes; 0 at a singular node), for the V form,
+  /// where H is an unknown.
+  Eigen::VectorXd h_derivative(const NodeDerivatives& X) const;
+  /// ∂_t of the basis at the nodes (#nodes by #points), t as in derivatives(): ∂r_q/∂P_{I,c} =
+  /// Σ_t dr(3t + c) basis_derivative(t)(q, I).
+  const Eigen::MatrixXd& basis_derivative(int t) const { return D_[size_t(t)]; }
+
  private:
   MeanCurvatureLeastSquares() = default;
   int q_ = 0;

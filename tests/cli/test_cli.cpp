@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -435,6 +436,19 @@ TEST(Cli, CmcMeanCurvatureJob) {
         fs::exists(out / "result.json") ? bpde::read_json_file((out / "result.json").string())["report"] : bpde::Json();
     return std::make_pair(r, rep);
   };
+  // The V form: the volume of the exact cap of H = -0.9 gives back H = -0.9 (the cap of radius
+  // 1/0.9 and height h over the unit circle: V = πh²(3R − h)/3).
+  {
+    const double R = 1 / 0.9, h = R - std::sqrt(R * R - 1), V0 = std::numbers::pi * h * h * (3 * R - h) / 3;
+    char problem[160];
+    std::snprintf(problem, sizeof problem, R"({"kind": "cmc", "V": %.17g, "functional": "mean-curvature"})", V0);
+    const auto [rv, repv] = solve("mcv", job(10, problem));
+    ASSERT_EQ(rv.status, 0) << rv.err;
+    EXPECT_EQ(repv["solver"], "newton");
+    EXPECT_TRUE(repv["converged"].get<bool>());
+    EXPECT_NEAR(repv["H"].get<double>(), -0.9, 1e-5);
+    EXPECT_NEAR(repv["volume"].get<double>(), V0, 1e-12);
+  }
   const auto [r, rep] = solve("mc", job(10, R"({"kind": "cmc", "H": -0.9, "functional": "mean-curvature"})"));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(rep["functional"], "mean-curvature");
@@ -457,8 +471,9 @@ TEST(Cli, CmcMeanCurvatureJob) {
     expect_bad_input("solve " + write("bad.json", j).string() + " --out " + none.string(), needle);
     EXPECT_FALSE(fs::exists(none));
   };
-  bad(job(6, R"({"kind": "cmc", "V": 1, "functional": "mean-curvature"})"), "not \"V\"");
-  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "solver": "ceres"})"), "newton");
+  bad(job(6, R"({"kind": "cmc", "V": 1, "functional": "mean-curvature", "solver": "ceres"})"),
+      "with \"V\" needs \"solver\": \"newton\"");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "solver": "nlopt"})"), "\"newton\" or \"ceres\"");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "mean_curvature_tolerance": 1e-3})"),
       "mean_curvature_tolerance");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": 0})"),

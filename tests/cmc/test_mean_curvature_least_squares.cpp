@@ -11,12 +11,12 @@
 #include <numbers>
 #include <string>
 
-#include "cmc_test_util.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/quadrature.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+#include "cmc_test_util.h"
 
 namespace bpde {
 namespace {
@@ -61,8 +61,8 @@ TEST(MeanCurvatureLeastSquares, ValueIsTheWeightedSquaredDeviationTriangular) {
     const double u = g.uv(k, 0), v = g.uv(k, 1);
     const FundamentalForms ff = net.geometry(u, v);
     ASSERT_TRUE(ff.regular);
-    const double dA = g.w(k) * net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).norm() *
-                      rho({u, v, 1 - u - v, 0}, 3);
+    const double dA =
+        g.w(k) * net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1)).norm() * rho({u, v, 1 - u - v, 0}, 3);
     A += ff.H * ff.H * dA;
     B += ff.H * dA;
     Cc += dA;
@@ -110,7 +110,8 @@ TEST(MeanCurvatureLeastSquares, PlanarPatchGivesHSquaredTimesTheWeightedArea) {
   }
   const QuadratureRuleTriangle g = gauss_triangle(60);
   double w = 0;
-  for (Eigen::Index k = 0; k < g.w.size(); ++k) w += g.w(k) * rho({g.uv(k, 0), g.uv(k, 1), 1 - g.uv(k, 0) - g.uv(k, 1), 0}, 3);
+  for (Eigen::Index k = 0; k < g.w.size(); ++k)
+    w += g.w(k) * rho({g.uv(k, 0), g.uv(k, 1), 1 - g.uv(k, 0) - g.uv(k, 1), 0}, 3);
   const double H = 0.7, expected = H * H * a.cross(b).norm() * w;
   EXPECT_NEAR(MeanCurvatureLeastSquares::triangular(n, 60).value(net.points(), H), expected, 1e-13 * expected);
   EXPECT_LT(MeanCurvatureLeastSquares::triangular(n, 60).value(net.points(), 0.0), 1e-25);
@@ -137,6 +138,28 @@ TEST(MeanCurvatureLeastSquares, JacobianAgainstFiniteDifferences) {
         const Eigen::VectorXd fd = (rp - rm) / (2 * h);
         EXPECT_LT((J.col(3 * Eigen::Index(a) + c) - fd).cwiseAbs().maxCoeff(), 1e-7 * js) << idx[a] << "." << c;
       }
+    // Node by node, as the Ceres route's residual blocks assemble it: r_q from the node
+    // derivatives, and its row from ∂r_q/∂(jet) times the basis derivatives.
+    const MeanCurvatureLeastSquares::NodeDerivatives X = f.derivatives(P);
+    Eigen::Matrix<double, 15, 1> dr;
+    for (Eigen::Index q = 0; q < f.nodes(); ++q) {
+      EXPECT_EQ(f.node_residual(X, q, H, &dr), r(q));
+      // without the Jacobian: the plain double evaluation, equal up to rounding (FMA contraction)
+      EXPECT_NEAR(f.node_residual(X, q, H, nullptr), r(q), 1e-14 * std::max(1.0, std::abs(r(q))));
+      for (size_t a = 0; a < idx.size(); ++a)
+        for (int c = 0; c < 3; ++c) {
+          double row = 0;
+          for (int t = 0; t < 5; ++t) row += dr(3 * t + c) * f.basis_derivative(t)(q, idx[a]);
+          EXPECT_NEAR(row, J(q, 3 * Eigen::Index(a) + c), 1e-12 * js);
+        }
+    }
+    // ∂r/∂H (the V form's extra column): r is affine in H, so a difference quotient is exact.
+    Eigen::VectorXd r2;
+    f.residuals(P, H + 0.5, &r2);
+    const Eigen::VectorXd dH = f.h_derivative(X);
+    ASSERT_EQ(dH.size(), f.nodes());
+    EXPECT_LT(((r2 - r) / 0.5 - dH).cwiseAbs().maxCoeff(), 1e-12 * dH.cwiseAbs().maxCoeff());
+    EXPECT_LT(dH.maxCoeff(), 0.0);
   };
   const TriangularNet t = perturbed_sphere_triangle(5, 23);
   check(MeanCurvatureLeastSquares::triangular(5, 8), t.points(), t.free_indices(FixedSet::Boundary));
@@ -144,7 +167,15 @@ TEST(MeanCurvatureLeastSquares, JacobianAgainstFiniteDifferences) {
   check(MeanCurvatureLeastSquares::tensor(4, 3, 6), s.points(), s.free_indices(FixedSet::Boundary));
 }
 
-CmcOptions mc_options(double H) { return testing::cmc_options(CmcFunctionalKind::MeanCurvature, H); }
+CmcOptions mc_options(double H, CmcSolver solver = CmcSolver::Newton) {
+  CmcOptions o = testing::cmc_options(CmcFunctionalKind::MeanCurvature, H);
+  o.solver = solver;
+  return o;
+}
+
+// Both minimisers of Φ: the library's own Levenberg–Marquardt loop (newton) and ceres::Solve with
+// one residual block per node (ceres); every target below holds for each.
+constexpr CmcSolver kSolvers[] = {CmcSolver::Newton, CmcSolver::Ceres};
 
 // The target at degree 10 (Arnal–Lluch–Monterde's Fig. 1 circle, three arcs by angle):
 // on the sphere of radius 1/|H| to 1e-6, corners included, and H within 5e-4 away from the
@@ -152,22 +183,44 @@ CmcOptions mc_options(double H) { return testing::cmc_options(CmcFunctionalKind:
 // CmcArea.CircleInThreeArcsAtHMinus09). Measured here: H = -0.5: 1.6e-8 from the sphere, H within
 // 1.5e-5; H = -0.9: 1.1e-8 and 1.1e-5; the cap's area to 2e-9.
 TEST(CmcMeanCurvature, CircleInThreeArcsAtDegree10MeetsBothTargets) {
+  for (const CmcSolver solver : kSolvers)
+    for (double H : {-0.5, -0.9}) {
+      SCOPED_TRACE(to_string(solver));
+      const double R = 1 / std::abs(H), hc = R - std::sqrt(R * R - 1);
+      const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
+      const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), mc_options(H, solver));
+      EXPECT_EQ(r.summary.status, Status::Converged) << H << ": " << r.summary.message;
+      EXPECT_EQ(r.functional, CmcFunctionalKind::MeanCurvature);
+      EXPECT_LE(r.summary.residual, 1e-6) << H;
+      // Φ is resolved by the check rule: a much finer one agrees (measured: to 0.2 %; the rule
+      // minimised, q = 9, reads 15–22 % lower, which is why a finer one decides).
+      const double fine = MeanCurvatureLeastSquares::triangular(10, 30).value(r.net.points(), H);
+      EXPECT_NEAR(fine, r.energy, 0.1 * r.energy) << H;
+      EXPECT_LE(testing::sphere_distance(r.net, c, R), 1e-7) << H;
+      const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
+      EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-5) << H;
+      EXPECT_NEAR(r.A, 2 * std::numbers::pi * R * hc, 1e-7) << H;
+      EXPECT_NEAR(r.V, std::numbers::pi * hc * hc * (3 * R - hc) / 3, 1e-7) << H;
+    }
+}
+
+// The V form: minimise Φ over the free points and H at V = V0. With V0 the volume of the exact
+// cap of H over the circle, it returns that H, the cap and V0 (the same targets as the H form).
+TEST(CmcMeanCurvature, VolumeFormReturnsTheCapAndItsH) {
   for (double H : {-0.5, -0.9}) {
+    SCOPED_TRACE(H);
     const double R = 1 / std::abs(H), hc = R - std::sqrt(R * R - 1);
-    const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
-    const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), mc_options(H));
-    EXPECT_EQ(r.summary.status, Status::Converged) << H << ": " << r.summary.message;
-    EXPECT_EQ(r.functional, CmcFunctionalKind::MeanCurvature);
-    EXPECT_LE(r.summary.residual, 1e-6) << H;
-    // Φ is resolved by the check rule: a much finer one agrees (measured: to 0.2 %; the rule
-    // minimised, q = 9, reads 15–22 % lower, which is why a finer one decides).
-    const double fine = MeanCurvatureLeastSquares::triangular(10, 30).value(r.net.points(), H);
-    EXPECT_NEAR(fine, r.energy, 0.1 * r.energy) << H;
-    EXPECT_LE(testing::sphere_distance(r.net, c, R), 1e-7) << H;
+    const double V0 = std::numbers::pi * hc * hc * (3 * R - hc) / 3;
+    CmcOptions o = mc_options(0.0);
+    o.V = V0;
+    const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), o);
+    EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+    EXPECT_LE(r.summary.residual, 1e-6);
+    EXPECT_NEAR(r.V, V0, 1e-12);
+    EXPECT_NEAR(r.H, H, 1e-5);
+    EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(R * R - 1)), R), 1e-7);
     const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
-    EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-5) << H;
-    EXPECT_NEAR(r.A, 2 * std::numbers::pi * R * hc, 1e-7) << H;
-    EXPECT_NEAR(r.V, std::numbers::pi * hc * hc * (3 * R - hc) / 3, 1e-7) << H;
+    EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-5);
   }
 }
 
@@ -175,29 +228,35 @@ TEST(CmcMeanCurvature, CircleInThreeArcsAtDegree10MeetsBothTargets) {
 // still the least-squares surface (n = 6, H = -0.5: √Φ stalls at 9.5e-5; 1.8e-6 from the sphere,
 // like the area route's 1.8e-6).
 TEST(CmcMeanCurvature, TooLowADegreeForTheToleranceIsReportedAsSuch) {
-  const double H = -0.5, R = 2;
-  const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(6), mc_options(H));
-  EXPECT_FALSE(r.summary.converged);
-  EXPECT_EQ(r.summary.status, Status::NoConvergence);
-  EXPECT_NE(r.summary.message.find("degree is too low"), std::string::npos) << r.summary.message;
-  EXPECT_GT(r.summary.residual, 1e-6);
-  EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(3.0)), R), 5e-6);
-  // A looser tolerance is met at the same degree.
-  CmcOptions o = mc_options(H);
-  o.mean_curvature_tolerance = 1e-3;
-  EXPECT_TRUE(solve_cmc(testing::circle_three_arcs(6), o).summary.converged);
+  for (const CmcSolver solver : kSolvers) {
+    SCOPED_TRACE(to_string(solver));
+    const double H = -0.5, R = 2;
+    const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(6), mc_options(H, solver));
+    EXPECT_FALSE(r.summary.converged);
+    EXPECT_EQ(r.summary.status, Status::NoConvergence);
+    EXPECT_NE(r.summary.message.find("degree is too low"), std::string::npos) << r.summary.message;
+    EXPECT_GT(r.summary.residual, 1e-6);
+    EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(3.0)), R), 5e-6);
+    // A looser tolerance is met at the same degree.
+    CmcOptions o = mc_options(H, solver);
+    o.mean_curvature_tolerance = 1e-3;
+    EXPECT_TRUE(solve_cmc(testing::circle_three_arcs(6), o).summary.converged);
+  }
 }
 
 // H = 0, tensor: the helicoid piece from its own (non-conformal) parametrisation (as
 // CmcArea.MinimalSurfaceIsTheHelicoidPiece). Measured at n = 6: converged, 1.6e-7 off the
 // helicoid (the area route: 1.6e-7), |H_x| ≤ 8.8e-6 away from the corners (the area route: 1.8e-4).
 TEST(CmcMeanCurvature, MinimalSurfaceIsTheHelicoidPiece) {
-  const CmcResult<TensorNet> r = solve_cmc(testing::tensor_boundary(6, testing::helicoid), mc_options(0.0));
-  EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
-  const double off = testing::helicoid_off(r.net);
-  EXPECT_LE(off, 5e-7);
-  const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
-  EXPECT_LE(std::max(std::abs(s.min), std::abs(s.max)), 5e-5);
+  for (const CmcSolver solver : kSolvers) {
+    SCOPED_TRACE(to_string(solver));
+    const CmcResult<TensorNet> r = solve_cmc(testing::tensor_boundary(6, testing::helicoid), mc_options(0.0, solver));
+    EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+    const double off = testing::helicoid_off(r.net);
+    EXPECT_LE(off, 5e-7);
+    const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
+    EXPECT_LE(std::max(std::abs(s.min), std::abs(s.max)), 5e-5);
+  }
 }
 
 // C¹ data (boundary+adjacent) with the answer in closed form: the helicoid piece, its outer two
@@ -206,24 +265,32 @@ TEST(CmcMeanCurvature, MinimalSurfaceIsTheHelicoidPiece) {
 // this route 1.9e-7, in 20 ms instead of 3 s).
 TEST(CmcMeanCurvature, C1DataMinimalSurfaceIsTheHelicoidPiece) {
   const TensorNet data = testing::tensor_interpolant(6, testing::helicoid);
-  CmcOptions o = mc_options(0.0);
-  o.fixed = FixedSet::BoundaryAdjacent;
-  o.mean_curvature_tolerance = 1e-5;  // n = 6 with C¹ data stops at √Φ = 2.6e-6 (measured)
-  const CmcResult<TensorNet> r = solve_cmc(data, o);
-  EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
-  const double off = testing::helicoid_off(r.net);
-  EXPECT_LE(off, 3e-7) << off;  // measured 1.9e-7
-  EXPECT_LE(r.summary.residual, 1e-5);
+  for (const CmcSolver solver : kSolvers) {
+    SCOPED_TRACE(to_string(solver));
+    CmcOptions o = mc_options(0.0, solver);
+    o.fixed = FixedSet::BoundaryAdjacent;
+    o.mean_curvature_tolerance = 1e-5;  // n = 6 with C¹ data stops at √Φ = 2.6e-6 (measured)
+    const CmcResult<TensorNet> r = solve_cmc(data, o);
+    EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+    const double off = testing::helicoid_off(r.net);
+    EXPECT_LE(off, 3e-7) << off;  // measured 1.9e-7
+    EXPECT_LE(r.summary.residual, 1e-5);
+    // the outer two rings are the data's
+    for (int i = 0; i <= 6; ++i)
+      for (int j = 0; j <= 6; ++j)
+        if (std::min({i, j, 6 - i, 6 - j}) <= 1) EXPECT_EQ((r.net.point(i, j) - data.point(i, j)).norm(), 0.0);
+  }
 }
 
 TEST(CmcMeanCurvature, BadInput) {
   const TriangularNet data = testing::circle_three_arcs(6);
   CmcOptions o = mc_options(-0.5);
   o.V = 1.0;
+  o.solver = CmcSolver::Ceres;  // the V form: newton only
   EXPECT_THROW(solve_cmc(data, o), UnsupportedProblem);
-  o = mc_options(-0.5);
-  o.solver = CmcSolver::Ceres;
-  EXPECT_THROW(solve_cmc(data, o), UnsupportedProblem);
+  o.solver = CmcSolver::Newton;
+  o.V = std::nan("");
+  EXPECT_THROW(solve_cmc(data, o), NonFiniteError);
   o = mc_options(-0.5);
   o.mean_curvature_tolerance = 0.0;
   EXPECT_THROW(solve_cmc(data, o), ParameterError);
@@ -284,14 +351,23 @@ TEST(MeanCurvatureLeastSquares, SingularNodesAndNonFiniteNets) {
 
 // The iteration limit is reported as such (not as a stall), and the net is the one reached.
 TEST(CmcMeanCurvature, IterationLimitIsReportedAsSuch) {
-  CmcOptions o = mc_options(-0.9);
-  o.max_least_squares_iterations = 1;
-  const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), o);
-  EXPECT_FALSE(r.summary.converged);
-  EXPECT_EQ(r.summary.status, Status::NoConvergence);
-  EXPECT_NE(r.summary.message.find("max_least_squares_iterations = 1"), std::string::npos) << r.summary.message;
-  EXPECT_EQ(r.summary.message.find("degree is too low"), std::string::npos) << r.summary.message;
-  EXPECT_TRUE(r.net.points().allFinite());
+  for (const CmcSolver solver : kSolvers) {
+    SCOPED_TRACE(to_string(solver));
+    CmcOptions o = mc_options(-0.9, solver);
+    o.max_least_squares_iterations = 1;
+    const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), o);
+    EXPECT_FALSE(r.summary.converged);
+    EXPECT_EQ(r.summary.status, Status::NoConvergence);
+    EXPECT_NE(r.summary.message.find("max_least_squares_iterations = 1"), std::string::npos) << r.summary.message;
+    EXPECT_EQ(r.summary.message.find("degree is too low"), std::string::npos) << r.summary.message;
+    EXPECT_TRUE(r.net.points().allFinite());
+    // The net reached is the start moved by one step: Φ is below the D_H start's.
+    CmcOptions od = o;
+    od.functional = CmcFunctionalKind::Dirichlet;
+    const CmcResult<TriangularNet> start = solve_cmc(testing::circle_three_arcs(10), od);
+    const MeanCurvatureLeastSquares f = MeanCurvatureLeastSquares::triangular(10, 14);
+    EXPECT_LT(f.value(r.net.points(), -0.9), 0.9 * f.value(start.net.points(), -0.9));
+  }
 }
 
 }  // namespace

@@ -1,0 +1,176 @@
+// Solver "ceres" of the least-squares mean-curvature functional (mean_curvature_minimise.h):
+// Φ = Σ_q r_q² (mean_curvature_least_squares.h) as ONE residual block per node q of the quadrature
+// rule, all on one parameter block y = the free control points (3 per point, point-major: y[3a + c]
+// is coordinate c of point free[a]), minimised by ceres::Solve (Levenberg–Marquardt, dense normal
+// Cholesky). Ceres's cost is ½Φ.
+//
+// Every r_q depends on every free point (the Bernstein basis has global support), so each block's
+// Jacobian is a dense 1 × 3k row: ∂r_q/∂y[3a + c] = Σ_t ∂r_q/∂(∂_t x)_c · ∂_t B_{free[a]}(u_q, v_q),
+// the first factor by ceres::Jet on the surface jet at the node (node_residual), the second from the
+// basis tables (basis_derivative), t over x_u, x_v, x_uu, x_uv, x_vv. The surface derivatives at all
+// nodes (one product of the basis tables with the net) are computed once per point y and shared by
+// the blocks (NodeCache), so an evaluation costs what the newton route's does. Ceres runs
+// single-threaded here (the cache is not shared between threads).
+//
+// Stopping: an IterationCallback ends the solve when √Φ <= target or Φ stalls (the tests of the
+// newton route, mean_curvature_minimise.h); Ceres's own function, gradient and parameter tolerances
+// are set out of the way, so they do not stop it earlier.
+#include <ceres/ceres.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "bezierpde/solvers/cmc/mean_curvature_minimise.h"
+
+namespace bpde::cmc_detail {
+namespace {
+
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// The node derivatives at the last point y evaluated, and the basis derivatives restricted to the
+// free points (row q of B[t] is ∂_t B_{free[a]}(u_q, v_q), a = 0..k−1).
+class NodeCache {
+ public:
+  NodeCache(const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, const std::vector<int>& free)
+      : f_(f), P_(P), free_(free) {
+    for (int t = 0; t < 5; ++t) B_[size_t(t)] = f.basis_derivative(t)(Eigen::all, free);
+  }
+  int unknowns() const { return 3 * static_cast<int>(free_.size()); }
+  const MeanCurvatureLeastSquares& form() const { return f_; }
+  const RowMatrix& basis(int t) const { return B_[size_t(t)]; }
+  /// The node derivatives at y (recomputed when y differs from the last point), or nullptr when y is
+  /// not finite.
+  const MeanCurvatureLeastSquares::NodeDerivatives* at(const double* y) {
+    const size_t bytes = sizeof(double) * size_t(unknowns());
+    if (!(valid_ && std::memcmp(last_.data(), y, bytes) == 0)) {
+      last_.assign(y, y + unknowns());
+      for (size_t a = 0; a < free_.size(); ++a)
+        for (int c = 0; c < 3; ++c) P_(free_[a], c) = y[3 * a + size_t(c)];
+      finite_ = P_.allFinite();
+      if (finite_) X_ = f_.derivatives(P_);
+      valid_ = true;
+    }
+    return finite_ ? &X_ : nullptr;
+  }
+
+ private:
+  const MeanCurvatureLeastSquares& f_;
+  Eigen::MatrixX3d P_;
+  const std::vector<int>& free_;
+  std::array<RowMatrix, 5> B_;
+  std::vector<double> last_;
+  bool valid_ = false, finite_ = false;
+  MeanCurvatureLeastSquares::NodeDerivatives X_;
+};
+
+// r_q, one residual on the parameter block y.
+class NodeResidual final : public ceres::CostFunction {
+ public:
+  NodeResidual(NodeCache* cache, Eigen::Index q, double H) : cache_(cache), q_(q), H_(H) {
+    set_num_residuals(1);
+    mutable_parameter_block_sizes()->push_back(cache->unknowns());
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const MeanCurvatureLeastSquares::NodeDerivatives* X = cache_->at(parameters[0]);
+    if (!X) return false;
+    const bool jac = jacobians && jacobians[0];
+    Eigen::Matrix<double, 15, 1> dr;
+    const double r = cache_->form().node_residual(*X, q_, H_, jac ? &dr : nullptr);
+    if (!std::isfinite(r)) return false;
+    residuals[0] = r;
+    if (jac) {
+      if (!dr.allFinite()) return false;
+      const Eigen::Index k = cache_->unknowns() / 3;
+      Eigen::Map<Eigen::Matrix<double, 3, Eigen::Dynamic>> row(jacobians[0], 3, k);  // column a = point free[a]
+      row.noalias() = dr.segment<3>(0) * cache_->basis(0).row(q_);
+      for (int t = 1; t < 5; ++t) row.noalias() += dr.segment<3>(3 * t) * cache_->basis(t).row(q_);
+    }
+    return true;
+  }
+
+ private:
+  NodeCache* cache_;
+  Eigen::Index q_;
+  double H_;
+};
+
+class StopAtTarget final : public ceres::IterationCallback {
+ public:
+  StopAtTarget(double target, const ProgressFn& progress) : target_(target), progress_(progress) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    const double phi = 2.0 * s.cost;
+    if (s.iteration == 0) start_ = std::sqrt(phi);
+    if (s.iteration == 0 || s.step_is_successful) {
+      last11_.push_back(phi);
+      if (last11_.size() > 11) last11_.erase(last11_.begin());
+    }
+    if (s.iteration > 0) report(progress_, "cmc least squares", ls_fraction(start_, target_, std::sqrt(phi)), 1);
+    if (std::sqrt(phi) <= target_) {
+      reached = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (stalled(last11_)) {
+      stall = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+  bool reached = false, stall = false;
+
+ private:
+  double target_, start_ = 0.0;
+  const ProgressFn& progress_;
+  std::vector<double> last11_;
+};
+
+}  // namespace
+
+LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
+                         double H, double target, int max_iterations, const ProgressFn& progress) {
+  LsOutcome out;
+  report(progress, "cmc least squares", 0, 1);
+  NodeCache cache(f, P, free);
+  std::vector<double> y(size_t(cache.unknowns()));
+  for (size_t a = 0; a < free.size(); ++a)
+    for (int c = 0; c < 3; ++c) y[3 * a + size_t(c)] = P(free[a], c);
+  ceres::Problem problem;  // owns the cost functions
+  for (Eigen::Index q = 0; q < f.nodes(); ++q)
+    problem.AddResidualBlock(new NodeResidual(&cache, q, H), nullptr, y.data());
+
+  ceres::Solver::Options so;
+  so.minimizer_type = ceres::TRUST_REGION;
+  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  so.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
+  so.dense_linear_algebra_library_type = ceres::EIGEN;
+  so.max_num_iterations = max_iterations;
+  so.function_tolerance = 1e-30;
+  so.gradient_tolerance = 1e-30;
+  so.parameter_tolerance = 1e-30;
+  so.num_threads = 1;
+  so.logging_type = ceres::SILENT;
+  so.minimizer_progress_to_stdout = false;
+  StopAtTarget cb(target, progress);
+  so.callbacks.push_back(&cb);
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  for (size_t a = 0; a < free.size(); ++a)
+    for (int c = 0; c < 3; ++c) P(free[a], c) = y[3 * a + size_t(c)];
+  out.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
+  if (cb.reached)
+    out.stop = LsStop::Reached;
+  else if (cb.stall)
+    out.stop = LsStop::Stalled;
+  else if (summary.termination_type == ceres::NO_CONVERGENCE)
+    out.stop = LsStop::MaxIterations;
+  else if (!std::isfinite(f.value(P, H)))
+    out.stop = LsStop::NonFinite;  // Ceres could not evaluate the start (FAILURE)
+  else
+    out.stop = LsStop::NoStep;  // the trust region collapsed (CONVERGENCE) or the step solve failed (FAILURE)
+  report(progress, "cmc least squares", 1, 1);
+  return out;
+}
+
+}  // namespace bpde::cmc_detail
