@@ -47,7 +47,7 @@ namespace {
 struct VolumeTarget {
   const VolumeForm& form;
   double V0;
-  double scale;  ///< value_scale of the start: |V − V0| <= 1e-14 × scale is "on the constraint"
+  double scale;  ///< > 0, the volume's scale at the start: |V − V0| <= 1e-14 × scale is "on the constraint"
 };
 
 // Back onto V = V0 along the volume gradient over the free points: at most 8 Newton steps on the
@@ -226,7 +226,10 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     LsOutcome ls;
     std::optional<VolumeTarget> vt;
     if (o.V) {
-      vt.emplace(VolumeTarget{cf->volume_form(), *o.V, std::max(cf->volume_form().value_scale(P), std::abs(*o.V))});
+      // The volume's scale: the size of its terms, |V0|, or the start's area^(3/2), whichever is
+      // largest (a planar start through the origin has value_scale 0; so has V0 = 0).
+      const double vscale = std::max({cf->volume_form().value_scale(P), std::abs(*o.V), std::pow(area(start.net), 1.5)});
+      vt.emplace(VolumeTarget{cf->volume_form(), *o.V, vscale > 0 ? vscale : 1.0});
       ls = lm_loop(f, P, free, H, &*vt, target, o.max_least_squares_iterations, o.progress);
     } else {
       ls = (ceres ? minimise_ceres : minimise_newton)(f, P, free, H, target, o.max_least_squares_iterations,
@@ -235,7 +238,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     res.summary.iterations += ls.iterations;
     const Net net = make_net(data, P);
     res.net = net;
-    res.H = H;
+    res.H = H == 0.0 ? 0.0 : H;  // no "-0" in the report
     res.D = cf->dirichlet(P);
     res.V = cf->volume(P);
     res.DH = res.D + 2.0 * H * res.V;

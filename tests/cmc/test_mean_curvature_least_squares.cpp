@@ -224,6 +224,38 @@ TEST(CmcMeanCurvature, VolumeFormReturnsTheCapAndItsH) {
   }
 }
 
+// Past the hemisphere (V > 2π/3 over the unit circle) the H form has no answer (|H| > 1 has no
+// cap, and the D_H branch folds first), the V form does: the larger cap of radius 1/|H|. n = 10,
+// H = -0.99: converged, H to 1e-9, 2e-8 from the sphere (measured). A larger cap (H = -0.7,
+// V = 11.5) folds the degree-10 parametrisation: reported as degenerate, never as a CMC surface.
+// V0 = 0 gives the flat disk (H = 0, Φ = 0 at the start).
+TEST(CmcMeanCurvature, VolumeFormPastTheHemisphere) {
+  const TriangularNet data = testing::circle_three_arcs(10);
+  auto big_cap = [](double H) {
+    const double R = 1 / std::abs(H), hb = R + std::sqrt(R * R - 1);
+    return std::make_pair(std::numbers::pi * hb * hb * (3 * R - hb) / 3, Eigen::Vector3d(0, 0, std::sqrt(R * R - 1)));
+  };
+  CmcOptions o = mc_options(0.0);
+  const auto [V0, c] = big_cap(-0.99);
+  EXPECT_GT(V0, 2 * std::numbers::pi / 3);
+  o.V = V0;
+  const CmcResult<TriangularNet> r = solve_cmc(data, o);
+  EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+  EXPECT_NEAR(r.H, -0.99, 1e-7);
+  EXPECT_NEAR(r.V, V0, 1e-11);
+  EXPECT_LE(testing::sphere_distance(r.net, c, 1 / 0.99), 1e-7);
+  o.V = big_cap(-0.7).first;
+  const CmcResult<TriangularNet> folded = solve_cmc(data, o);
+  EXPECT_EQ(folded.summary.status, Status::NoConvergence);
+  EXPECT_NE(folded.summary.message.find("degenerate parametrisation"), std::string::npos) << folded.summary.message;
+  o.V = 0.0;
+  const CmcResult<TriangularNet> flat = solve_cmc(data, o);
+  EXPECT_EQ(flat.summary.status, Status::Converged) << flat.summary.message;
+  EXPECT_EQ(flat.H, 0.0);
+  EXPECT_FALSE(std::signbit(flat.H));
+  EXPECT_LE(flat.summary.residual, 1e-12);
+}
+
 // Below the degree the tolerance needs: reported not converged, with the reason, and the net is
 // still the least-squares surface (n = 6, H = -0.5: √Φ stalls at 9.5e-5; 1.8e-6 from the sphere,
 // like the area route's 1.8e-6).
