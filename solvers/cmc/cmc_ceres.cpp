@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 
+#include "bezierpde/solvers/cmc/ceres_lm_options.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 
@@ -114,21 +115,11 @@ CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
   auto* f = new AllResiduals<Problem>(&p, H, o.tolerance);  // owned by problem
   problem.AddResidualBlock(f, nullptr, buf.data());
 
-  ceres::Solver::Options so;
-  so.minimizer_type = ceres::TRUST_REGION;
-  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  ceres::Solver::Options so = ceres_lm_options(o.max_corrector_iterations);
   so.linear_solver_type = kLinearSolver;
-  so.dense_linear_algebra_library_type = ceres::EIGEN;
-  so.max_num_iterations = o.max_corrector_iterations;
   // J is square and non-singular on the branch: start as Gauss–Newton (= Newton on eq. (11)).
   so.initial_trust_region_radius = 1e12;
   so.max_trust_region_radius = 1e16;
-  so.function_tolerance = 1e-30;
-  so.gradient_tolerance = 1e-30;
-  so.parameter_tolerance = 1e-30;
-  so.num_threads = 1;
-  so.logging_type = ceres::SILENT;
-  so.minimizer_progress_to_stdout = false;
   so.update_state_every_iteration = true;
   StopAtTolerance<Problem> cb(&p, f, &buf, H, o.tolerance);
   so.callbacks.push_back(&cb);

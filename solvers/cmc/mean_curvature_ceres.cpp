@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "bezierpde/solvers/cmc/ceres_lm_options.h"
 #include "bezierpde/solvers/cmc/mean_curvature_minimise.h"
 
 namespace bpde::cmc_detail {
@@ -140,18 +141,7 @@ LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P
   for (Eigen::Index q = 0; q < f.nodes(); ++q)
     problem.AddResidualBlock(new NodeResidual(&cache, q, H), nullptr, y.data());
 
-  ceres::Solver::Options so;
-  so.minimizer_type = ceres::TRUST_REGION;
-  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  so.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
-  so.dense_linear_algebra_library_type = ceres::EIGEN;
-  so.max_num_iterations = max_iterations;
-  so.function_tolerance = 1e-30;
-  so.gradient_tolerance = 1e-30;
-  so.parameter_tolerance = 1e-30;
-  so.num_threads = 1;
-  so.logging_type = ceres::SILENT;
-  so.minimizer_progress_to_stdout = false;
+  ceres::Solver::Options so = ceres_lm_options(max_iterations);
   StopAtTarget cb(target, progress);
   so.callbacks.push_back(&cb);
   ceres::Solver::Summary summary;
