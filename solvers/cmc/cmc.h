@@ -67,7 +67,7 @@
 //    the linearised constraint (KKT, one Cholesky factor), and each trial point is put back on
 //    V = V0 along ∇V before Φ is compared (cmc_mean_curvature.cpp). Its start is the minimiser of D
 //    at V = V0 (the nlopt route) with that route's multiplier as H. converged also needs
-//    |V − V0| <= options.tolerance × max(value_scale, |V0|).
+//    |V − V0| <= options.tolerance × max(value_scale, |V0|, area^(3/2)) (of the start).
 //  - The start is the D_H critical point at H (the newton continuation above, whatever the
 //    solver; if the branch folds first, its last point). Levenberg–Marquardt on the residuals of Φ with the exact Jacobian:
 //    (JᵀJ + λ diag JᵀJ) δ = −Jᵀr, λ by the gain ratio (÷5 above 0.75, ×3 below 0.25, ×10 on a
@@ -83,7 +83,8 @@
 //    on one parameter block (the free points), minimised by ceres::Solve (LM, dense normal
 //    Cholesky) with the same stopping tests (solvers/cmc/mean_curvature_minimise.h); both are
 //    measured side by side by CmcMeanCurvature/{newton,ceres}/circle/<n> (docs/performance.md).
-//    summary.iterations counts accepted steps (newton) or steps tried (ceres).
+//    summary.iterations counts accepted steps (newton) or steps tried, accepted and rejected
+//    (ceres); options.max_least_squares_iterations bounds the same counts.
 //
 // Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
 // V with a solver other than nlopt (UnsupportedProblem; the functionals' own rules: validate()),

@@ -17,6 +17,7 @@
 // are set out of the way, so they do not stop it earlier.
 #include <ceres/ceres.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -100,14 +101,18 @@ class NodeResidual final : public ceres::CostFunction {
 
 class StopAtTarget final : public ceres::IterationCallback {
  public:
-  StopAtTarget(double target, const ProgressFn& progress) : target_(target), progress_(progress) {}
+  // y: the parameter block, which Ceres updates at every iteration (update_state_every_iteration).
+  StopAtTarget(double target, const ProgressFn& progress, const std::vector<double>& y)
+      : target_(target), progress_(progress), y_(y), best(y) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    // After a rejected step s.cost is the rejected candidate's (Ceres 2.1), so only accepted
+    // points (and the start, iteration 0, which counts as successful) are tested.
+    if (!s.step_is_successful) return ceres::SOLVER_CONTINUE;
     const double phi = 2.0 * s.cost;
+    best = y_;  // Ceres puts the start back if it ends in FAILURE; the caller keeps this point instead
     if (s.iteration == 0) start_ = std::sqrt(phi);
-    if (s.iteration == 0 || s.step_is_successful) {
-      last11_.push_back(phi);
-      if (last11_.size() > 11) last11_.erase(last11_.begin());
-    }
+    last11_.push_back(phi);
+    if (last11_.size() > 11) last11_.erase(last11_.begin());
     if (s.iteration > 0) report(progress_, "cmc least squares", ls_fraction(start_, target_, std::sqrt(phi)), 1);
     if (std::sqrt(phi) <= target_) {
       reached = true;
@@ -124,6 +129,12 @@ class StopAtTarget final : public ceres::IterationCallback {
  private:
   double target_, start_ = 0.0;
   const ProgressFn& progress_;
+  const std::vector<double>& y_;
+
+ public:
+  std::vector<double> best;  ///< the last accepted point
+
+ private:
   std::vector<double> last11_;
 };
 
@@ -142,13 +153,15 @@ LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P
     problem.AddResidualBlock(new NodeResidual(&cache, q, H), nullptr, y.data());
 
   ceres::Solver::Options so = ceres_lm_options(max_iterations);
-  StopAtTarget cb(target, progress);
+  so.update_state_every_iteration = true;
+  StopAtTarget cb(target, progress, y);
   so.callbacks.push_back(&cb);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   for (size_t a = 0; a < free.size(); ++a)
-    for (int c = 0; c < 3; ++c) P(free[a], c) = y[3 * a + size_t(c)];
-  out.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
+    for (int c = 0; c < 3; ++c) P(free[a], c) = cb.best[3 * a + size_t(c)];
+  // steps tried (Ceres's iteration 0 is the start's evaluation, counted as a successful step)
+  out.iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);
   if (cb.reached)
     out.stop = LsStop::Reached;
   else if (cb.stall)
