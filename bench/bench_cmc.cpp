@@ -3,8 +3,8 @@
 // Dirichlet extremal (the linear solve, H = 0) as the baseline; CmcArea/{newton,ceres}/<n> for the
 // area functional A + 2HV on the same data; CmcArea/circle/<n> for the area functional on the
 // non-conformal data of the paper's Fig. 1 (the unit circle in three arcs by angle, H = -0.5), the
-// case of docs/cmc_evolver.md; CmcMeanCurvature/{newton,ceres}/circle/<n> for the least squares of the mean curvature
-// on that circle. The per-degree setup (Gram and volume quadrature tables) is cached
+// case of docs/cmc_evolver.md; CmcMeanCurvature/{newton,newton-plain,ceres}/circle/<n> for the least squares of
+// the mean curvature on that circle (newton-plain: without geodesic acceleration). The per-degree setup (Gram and volume quadrature tables) is cached
 // by CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after
 // the first iteration.
 #include <benchmark/benchmark.h>
@@ -62,7 +62,8 @@ void NLopt(benchmark::State& s) { run(s, CmcSolver::NLopt, false); }
 void AreaNewton(benchmark::State& s) { run(s, CmcSolver::Newton, false, true); }
 void AreaCeres(benchmark::State& s) { run(s, CmcSolver::Ceres, false, true); }
 
-void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolver solver = CmcSolver::Newton) {
+void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolver solver = CmcSolver::Newton,
+                 bool geodesic = true) {
   const int n = static_cast<int>(state.range(0));
   const TriangularNet data = circle_three_arcs(n);
   CmcFunctional::cached_triangular(n);
@@ -70,6 +71,7 @@ void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolve
   o.H = -0.5;
   o.functional = functional;
   o.solver = solver;
+  o.geodesic_acceleration = geodesic;
   int iters = 0;
   double residual = 0;
   for (auto _ : state) {
@@ -91,6 +93,11 @@ void MeanCurvatureCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind
 void MeanCurvatureCircleCeres(benchmark::State& s) {
   CircleRoute(s, CmcFunctionalKind::MeanCurvature, CmcSolver::Ceres);
 }
+// The newton loop without geodesic acceleration (CmcOptions::geodesic_acceleration = false): plain
+// Levenberg–Marquardt, the baseline of the accelerated default.
+void MeanCurvatureCirclePlain(benchmark::State& s) {
+  CircleRoute(s, CmcFunctionalKind::MeanCurvature, CmcSolver::Newton, false);
+}
 
 }  // namespace
 
@@ -103,6 +110,10 @@ BENCHMARK(AreaCeres)->Name("CmcArea/ceres")->DenseRange(4, 10, 2)->Unit(benchmar
 BENCHMARK(AreaCircle)->Name("CmcArea/circle")->DenseRange(6, 12, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(MeanCurvatureCircle)
     ->Name("CmcMeanCurvature/newton/circle")
+    ->DenseRange(10, 14, 2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(MeanCurvatureCirclePlain)
+    ->Name("CmcMeanCurvature/newton-plain/circle")
     ->DenseRange(10, 14, 2)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(MeanCurvatureCircleCeres)

@@ -165,7 +165,7 @@ Problem problem_from_json(const Json& j, const std::string& path) {
         throw ParseError(path + ".solver: unknown solver \"" + s + "\" (expected newton, ceres or nlopt)");
       p.solver = parse_cmc_solver(s);
       if (mean_curvature && p.solver == CmcSolver::NLopt)
-        throw UnsupportedProblem(path + ": a mean-curvature cmc problem is solved by \"solver\": \"newton\" or \"ceres\"");
+        throw UnsupportedProblem(path + ": " + kMeanCurvatureSolvers);
     }
     if (hasH) {
       p.kind = ProblemKind::CmcH;

@@ -395,7 +395,8 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     """CmcOptions.functional from Python (dirichlet, area, mean-curvature): the C++ defaults, the
     result fields, and the same net and numbers as the job route on the Fig. 1 circle."""
     o = bezierpde.CmcOptions()
-    assert (o.functional, o.mean_curvature_tolerance, o.max_least_squares_iterations) == ("dirichlet", 1e-6, 2000)
+    assert (o.functional, o.mean_curvature_tolerance, o.max_least_squares_iterations, o.geodesic_acceleration) == (
+        "dirichlet", 1e-6, 2000, True)
     with pytest.raises(bezierpde.ParameterError, match="mean-curvature"):
         o.functional = "curvature"
     job = {"boundary": {"type": "triangular", "degree": 8, "builder": "circle-three-arcs"},
@@ -421,3 +422,9 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     assert rc.summary.converged == report_ceres["converged"] and rc.summary.residual == report_ceres["residual"]
     assert bits(np.asarray(rc.net.points).tolist()) == bits(bezierpde.points(net_ceres).tolist())
     assert "Ceres" in rc.summary.message
+    # geodesic_acceleration reaches the library: plain Levenberg–Marquardt takes other steps
+    o.solver = "newton"
+    o.geodesic_acceleration = False
+    plain = bezierpde.solve_cmc(data, o)
+    assert plain.summary.iterations != r.summary.iterations
+    assert bits(np.asarray(plain.net.points).tolist()) != bits(np.asarray(r.net.points).tolist())

@@ -43,6 +43,11 @@ MeanCurvatureLeastSquares form_for(const TensorNet& net, int extra) {
 
 namespace {
 
+// What the V form says when its start cannot be put on V = V0 (LsStop::VolumeUnmet).
+constexpr const char* kVolumeUnmet =
+    "the start could not be put on the volume constraint V = v0 (Newton steps along ∇V from the minimiser of D "
+    "at v0 did not converge)";
+
 // The volume constraint of the V form: V(P) = V0 with H an unknown (nullptr in the H form).
 struct VolumeTarget {
   const VolumeForm& form;
@@ -71,27 +76,42 @@ bool restore_volume(const VolumeTarget& vt, Eigen::MatrixX3d& P, const std::vect
 void evaluate(const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, const std::vector<int>& free, double H,
               bool with_H, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
   Eigen::MatrixXd Jp;
-  f.residuals(P, H, &r, &free, &Jp);
+  Eigen::VectorXd dH;
+  f.residuals(P, H, &r, &free, &Jp, with_H ? &dH : nullptr);
   if (!with_H) {
     J = std::move(Jp);
     return;
   }
   J.resize(Jp.rows(), Jp.cols() + 1);
   J.leftCols(Jp.cols()) = Jp;
-  J.col(Jp.cols()) = f.h_derivative(f.derivatives(P));
+  J.col(Jp.cols()) = dH;
 }
+
+// P with the step s (3 per free point, in the order of free) added to its free rows.
+Eigen::MatrixX3d moved(const Eigen::MatrixX3d& P, const std::vector<int>& free, const Eigen::VectorXd& s) {
+  Eigen::MatrixX3d Pn = P;
+  for (size_t i = 0; i < free.size(); ++i) Pn.row(free[i]) += s.segment<3>(3 * Eigen::Index(i)).transpose();
+  return Pn;
+}
+
+// Geodesic acceleration (Transtrum and Sethna 2012, cmc.h): the finite-difference step h of the
+// second directional derivative (their eq. 19, h = 0.1) and the largest 2‖a‖/‖δ‖ taken (α = 0.75).
+constexpr double kGeodesicH = 0.1;
+constexpr double kGeodesicAlpha = 0.75;
 
 // Levenberg–Marquardt on Φ = ‖r‖² over the free rows of P (in place) and, with vt, over H too
 // subject to V(P) = V0: the step solves the equality-constrained LM subproblem
 //     min ‖r + J d‖² + λ dᵀ diag(JᵀJ) d   subject to  ∇Vᵀ d_P = V0 − V(P)
 // by its KKT system (two solves with the one Cholesky factor), and a trial point is put back on
-// V = V0 (restore_volume) before Φ is compared, so every iterate is feasible.
+// V = V0 (restore_volume) before Φ is compared, so every iterate is feasible. With geodesic, the
+// step is δ + a/2 (geodesic acceleration, cmc.h); the gain ratio's prediction stays δ's.
 LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double& H,
-                  const VolumeTarget* vt, double target, int max_iterations, const ProgressFn& progress) {
+                  const VolumeTarget* vt, double target, int max_iterations, bool geodesic,
+                  const ProgressFn& progress) {
   LsOutcome out;
   report(progress, "cmc least squares", 0, 1);
   if (vt && !restore_volume(*vt, P, free)) {
-    out.stop = LsStop::NonFinite;
+    out.stop = LsStop::VolumeUnmet;
     report(progress, "cmc least squares", 1, 1);
     return out;
   }
@@ -120,12 +140,12 @@ LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const
     A = A.selfadjointView<Eigen::Lower>();
     const Eigen::VectorXd g = J.transpose() * r;
     const Eigen::VectorXd diag = A.diagonal().cwiseMax(1e-12 * A.diagonal().maxCoeff());
-    Eigen::VectorXd a;  // the constraint's gradient over the unknowns (0 for H)
+    Eigen::VectorXd aV;  // the constraint's gradient over the unknowns (0 for H)
     double c = 0.0;
     if (vt) {
-      a = Eigen::VectorXd::Zero(n);
+      aV = Eigen::VectorXd::Zero(n);
       const Eigen::MatrixX3d G = vt->form.gradient_rows(P, free);
-      for (size_t i = 0; i < free.size(); ++i) a.segment<3>(3 * Eigen::Index(i)) = G.row(Eigen::Index(i)).transpose();
+      for (size_t i = 0; i < free.size(); ++i) aV.segment<3>(3 * Eigen::Index(i)) = G.row(Eigen::Index(i)).transpose();
       c = vt->form.value(P) - vt->V0;
     }
     bool accepted = false;
@@ -133,22 +153,38 @@ LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const
       Eigen::MatrixXd M = A;
       M.diagonal() += lambda * diag;
       const Eigen::LLT<Eigen::MatrixXd> llt(M);
-      Eigen::VectorXd d;
+      Eigen::VectorXd d, e;
       if (llt.info() == Eigen::Success) {
         d = -llt.solve(g);
-        if (vt) {  // d = d0 − μ e with e = M⁻¹a and aᵀd = −c
-          const Eigen::VectorXd e = llt.solve(a);
-          const double ae = a.dot(e);
-          d = ae > 0 ? Eigen::VectorXd(d - ((a.dot(d) + c) / ae) * e) : Eigen::VectorXd();
+        if (vt) {  // d = d0 − μ e with e = M⁻¹a and aᵀd = −c (a = aV, the constraint's gradient)
+          e = llt.solve(aV);
+          const double ae = aV.dot(e);
+          d = ae > 0 ? Eigen::VectorXd(d - ((aV.dot(d) + c) / ae) * e) : Eigen::VectorXd();
         }
       }
       if (d.size() != g.size() || !d.allFinite()) {
         lambda *= 10;
         continue;
       }
-      Eigen::MatrixX3d Pn = P;
-      for (size_t i = 0; i < free.size(); ++i) Pn.row(free[i]) += d.segment<3>(3 * Eigen::Index(i)).transpose();
-      const double Hn = vt ? H + d(np) : H;
+      Eigen::VectorXd step = d;
+      const double dd = d.dot(diag.asDiagonal() * d);
+      if (geodesic && dd > 0) {
+        // Transtrum–Sethna geodesic acceleration (cmc.h): r_δδ by the finite difference along δ,
+        // a from the same factor (in the V form also tangent to the constraint, aᵀ∇V = 0).
+        Eigen::VectorXd rh;
+        f.residuals(moved(P, free, kGeodesicH * d), vt ? H + kGeodesicH * d(np) : H, &rh);
+        const Eigen::VectorXd rvv = (2.0 / kGeodesicH) * ((rh - r) / kGeodesicH - J * d);
+        Eigen::VectorXd a = -llt.solve(J.transpose() * rvv);
+        if (vt) a -= (aV.dot(a) / aV.dot(e)) * e;
+        const double ratio2 = a.dot(diag.asDiagonal() * a) / dd;
+        if (!a.allFinite() || !(4.0 * ratio2 <= kGeodesicAlpha * kGeodesicAlpha)) {
+          lambda *= 10;  // the step bends too much for its second-order model: a rejected step
+          continue;
+        }
+        step += 0.5 * a;
+      }
+      Eigen::MatrixX3d Pn = moved(P, free, step);
+      const double Hn = vt ? H + step(np) : H;
       Eigen::VectorXd rn;
       double phin = std::numeric_limits<double>::infinity();
       if (!vt || restore_volume(*vt, Pn, free)) {
@@ -193,8 +229,8 @@ LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const
 // Progress (stage "cmc least squares"): the fraction of the way from the start's √Φ to the target
 // on a log scale, reported after every iteration, and 1 at the end.
 LsOutcome minimise_newton(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
-                          double H, double target, int max_iterations, const ProgressFn& progress) {
-  return lm_loop(f, P, free, H, nullptr, target, max_iterations, progress);
+                          double H, double target, int max_iterations, bool geodesic, const ProgressFn& progress) {
+  return lm_loop(f, P, free, H, nullptr, target, max_iterations, geodesic, progress);
 }
 
 namespace {
@@ -230,10 +266,12 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       // largest (a planar start through the origin has value_scale 0; so has V0 = 0).
       const double vscale = std::max({cf->volume_form().value_scale(P), std::abs(*o.V), std::pow(area(start.net), 1.5)});
       vt.emplace(VolumeTarget{cf->volume_form(), *o.V, vscale > 0 ? vscale : 1.0});
-      ls = lm_loop(f, P, free, H, &*vt, target, o.max_least_squares_iterations, o.progress);
+      ls = lm_loop(f, P, free, H, &*vt, target, o.max_least_squares_iterations, o.geodesic_acceleration, o.progress);
+    } else if (ceres) {
+      ls = minimise_ceres(f, P, free, H, target, o.max_least_squares_iterations, o.progress);
     } else {
-      ls = (ceres ? minimise_ceres : minimise_newton)(f, P, free, H, target, o.max_least_squares_iterations,
-                                                      o.progress);
+      ls = minimise_newton(f, P, free, H, target, o.max_least_squares_iterations, o.geodesic_acceleration,
+                           o.progress);
     }
     res.summary.iterations += ls.iterations;
     const Net net = make_net(data, P);
@@ -263,8 +301,9 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
                                  " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
                                  " (not a CMC surface); " + what);
     } else if (!(v_off <= o.tolerance)) {
-      res.summary.set_failed(Status::NoConvergence, what + ", but V misses V0 by " + num(v_off, 3) +
-                                                        " (relative): no step kept the volume constraint");
+      res.summary.set_failed(Status::NoConvergence,
+                             what + ", but V misses V0 by " + num(v_off, 3) + " (relative): " +
+                                 (ls.stop == LsStop::VolumeUnmet ? kVolumeUnmet : "no step kept the volume constraint"));
     } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
       std::string why;
       switch (ls.stop) {
@@ -285,6 +324,9 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
           break;
         case LsStop::NonFinite:
           why = ": Φ or its Jacobian is not finite at the net reached";
+          break;
+        case LsStop::VolumeUnmet:
+          why = std::string(": ") + kVolumeUnmet;
           break;
       }
       res.summary.set_failed(Status::NoConvergence,

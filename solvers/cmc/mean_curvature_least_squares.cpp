@@ -138,7 +138,7 @@ Eigen::VectorXd MeanCurvatureLeastSquares::h_derivative(const NodeDerivatives& X
 }
 
 void MeanCurvatureLeastSquares::residuals(const Eigen::MatrixX3d& P, double H, Eigen::VectorXd* r,
-                                          const std::vector<int>* idx, Eigen::MatrixXd* J) const {
+                                          const std::vector<int>* idx, Eigen::MatrixXd* J, Eigen::VectorXd* dH) const {
   if (P.rows() != size()) throw SizeError("mean-curvature least squares: the net has the wrong number of points");
   if (J && !idx) throw ParameterError("mean-curvature least squares: the Jacobian needs the list of points idx");
   if (idx)
@@ -156,6 +156,7 @@ void MeanCurvatureLeastSquares::residuals(const Eigen::MatrixX3d& P, double H, E
     if (r) (*r)(q) = v;
     if (J) dr.row(q) = d.transpose();
   }
+  if (dH) *dH = h_derivative(X);
   if (!J) return;
   const std::vector<int>& ix = *idx;
   J->setZero(M, 3 * Eigen::Index(ix.size()));

@@ -58,9 +58,10 @@ class MeanCurvatureLeastSquares {
   int points_per_direction() const { return q_; }
 
   /// The residuals r (#nodes) at P for the target H, and, when J is given, their Jacobian over the
-  /// points idx (#nodes by 3·#idx).
+  /// points idx (#nodes by 3·#idx), and, when dH is given, ∂r/∂H (#nodes, as h_derivative(), from the
+  /// same node derivatives).
   void residuals(const Eigen::MatrixX3d& P, double H, Eigen::VectorXd* r, const std::vector<int>* idx = nullptr,
-                 Eigen::MatrixXd* J = nullptr) const;
+                 Eigen::MatrixXd* J = nullptr, Eigen::VectorXd* dH = nullptr) const;
   /// Φ = Σ r_q².
   double value(const Eigen::MatrixX3d& P, double H) const;
 

@@ -23,6 +23,7 @@ enum class LsStop {
   NoStep,   ///< no trial step lowered Φ (newton: 30 tries with growing damping; ceres: its trust region collapsed)
   MaxIterations,  ///< options.max_least_squares_iterations used up
   NonFinite,      ///< Φ or its Jacobian is not finite at the current net
+  VolumeUnmet,    ///< V form: the start could not be put on V = v0 (restore_volume failed)
 };
 
 struct LsOutcome {
@@ -44,9 +45,9 @@ inline double ls_fraction(double start, double target, double sqrt_phi) {
 }
 
 /// Levenberg–Marquardt on Φ(P) over the rows `free` of P (in place) until √Φ <= target, a stall, no
-/// step, or max_iterations (cmc_mean_curvature.cpp).
+/// step, or max_iterations, with geodesic acceleration when `geodesic` (cmc_mean_curvature.cpp).
 LsOutcome minimise_newton(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
-                          double H, double target, int max_iterations, const ProgressFn& progress);
+                          double H, double target, int max_iterations, bool geodesic, const ProgressFn& progress);
 /// The same problem by ceres::Solve (mean_curvature_ceres.cpp).
 LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
                          double H, double target, int max_iterations, const ProgressFn& progress);

@@ -473,7 +473,7 @@ TEST(Cli, CmcMeanCurvatureJob) {
   };
   bad(job(6, R"({"kind": "cmc", "V": 1, "functional": "mean-curvature", "solver": "ceres"})"),
       "with \"V\" needs \"solver\": \"newton\"");
-  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "solver": "nlopt"})"), "\"newton\" or \"ceres\"");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "solver": "nlopt"})"), "newton or the ceres solver");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "mean_curvature_tolerance": 1e-3})"),
       "mean_curvature_tolerance");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": 0})"),
