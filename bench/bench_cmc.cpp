@@ -3,10 +3,11 @@
 // Dirichlet extremal (the linear solve, H = 0) as the baseline; CmcArea/{newton,ceres}/<n> for the
 // area functional A + 2HV on the same data; CmcArea/circle/<n> for the area functional on the
 // non-conformal data of the paper's Fig. 1 (the unit circle in three arcs by angle, H = -0.5), the
-// case of docs/cmc_evolver.md; CmcMeanCurvature/{newton,newton-plain,ceres}/circle/<n> for the least squares of
-// the mean curvature on that circle (newton-plain: without geodesic acceleration). The per-degree setup (Gram and volume quadrature tables) is cached
-// by CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after
-// the first iteration.
+// case of docs/cmc_evolver.md; CmcMeanCurvature/{newton,newton-plain,ceres}/circle/<n> for the
+// least squares of the mean curvature on that circle (newton-plain: without geodesic
+// acceleration). The per-degree setup (Gram and volume quadrature tables) is cached by
+// CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after the
+// first iteration.
 #include <benchmark/benchmark.h>
 
 #include "bezierpde/boundaries/reference_boundaries.h"

@@ -78,8 +78,8 @@
 //    the step is δ + a/2 when 2‖a‖ ≤ 0.75‖δ‖ (norms scaled by diag JᵀJ; twice as strict as the
 //    paper's ‖a‖ ≤ 0.75‖δ‖, by measurement), else a rejected step. It follows the curved, nearly
 //    tangential valley of Φ that plain LM crawls along (docs/cmc.md, "Geodesic acceleration": on
-//    the circle at n = 8 … 14, 1.6–10× fewer iterations where plain LM needs more than 30, up to
-//    20 % more where it needs about 20).
+//    the circle at n = 8 … 14, 1.6–7.6× fewer iterations where both converge and plain LM needs
+//    more than 30, up to 20 % more where it needs about 20).
 //  - converged = true means √Φ ≤ options.mean_curvature_tolerance (1e-6; Φ is dimensionless), with
 //    Φ measured by a rule finer than the one minimised (q + ⌈q/2⌉ points per direction), AND the
 //    regularity test of the area functional. It stops not converged (status NoConvergence, exit 1
