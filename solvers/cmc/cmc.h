@@ -65,7 +65,7 @@
 //  - V mode (options.V = V0, solver newton): minimise Φ over the free points AND H subject to
 //    V = V0; result.H is the H found. Each Levenberg–Marquardt step solves the LM subproblem with
 //    the linearised constraint (KKT, one Cholesky factor), and each trial point is put back on
-//    V = V0 along ∇V before Φ is compared (cmc_mean_curvature.cpp). Its start is the minimiser of D
+//    V = V0 along ∇V before Φ is compared (cmc_mean_curvature.cpp, levenberg_marquardt.h). Its start is the minimiser of D
 //    at V = V0 (the nlopt route) with that route's multiplier as H. converged also needs
 //    |V − V0| <= options.tolerance × max(value_scale, |V0|, area^(3/2)) (of the start).
 //  - The start is the D_H critical point at H (the newton continuation above, whatever the
@@ -87,7 +87,7 @@
 //    low for the tolerance) or after options.max_least_squares_iterations; summary.residual is
 //    then the √Φ reached.
 //  - Fixed sets boundary and boundary+adjacent. Solver newton: the library's own Levenberg–Marquardt
-//    loop above. Solver ceres: the same residuals as one Ceres residual block per quadrature node
+//    loop above (solvers/cmc/levenberg_marquardt.h, tested on its own against closed forms). Solver ceres: the same residuals as one Ceres residual block per quadrature node
 //    on one parameter block (the free points), minimised by ceres::Solve (LM, dense normal
 //    Cholesky) with the same stopping tests (solvers/cmc/mean_curvature_minimise.h); both are
 //    measured side by side by CmcMeanCurvature/{newton,ceres}/circle/<n> (docs/performance.md).

@@ -1,7 +1,7 @@
 // The least-squares mean-curvature functional of the cmc problem (cmc.h, "The least-squares
 // mean-curvature functional"; docs/cmc.md, "Least squares of the mean curvature"): from the D_H
 // critical point, Levenberg–Marquardt on Φ = ∫ ρ (H_x − H)² dA (mean_curvature_least_squares.h):
-// the library's own loop (solver newton, minimise_newton below) or ceres::Solve with one residual
+// the library's own loop (solver newton, minimise_newton below, over levenberg_marquardt.h) or ceres::Solve with one residual
 // block per node (solver ceres, mean_curvature_ceres.cpp).
 #include <Eigen/Cholesky>
 #include <algorithm>
@@ -19,6 +19,7 @@
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
 #include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
 #include "bezierpde/solvers/cmc/mean_curvature_minimise.h"
 #include "bezierpde/solvers/summary.h"
@@ -43,7 +44,7 @@ MeanCurvatureLeastSquares form_for(const TensorNet& net, int extra) {
 
 namespace {
 
-// What the V form says when its start cannot be put on V = V0 (LsStop::VolumeUnmet).
+// What the V form says when its start cannot be put on V = V0 (LsStop::ConstraintUnmet).
 constexpr const char* kVolumeUnmet =
     "the start could not be put on the volume constraint V = v0 (Newton steps along ∇V from the minimiser of D "
     "at v0 did not converge)";
@@ -71,164 +72,75 @@ bool restore_volume(const VolumeTarget& vt, Eigen::MatrixX3d& P, const std::vect
   return std::abs(vt.form.value(P) - vt.V0) <= 1e-14 * vt.scale;
 }
 
-// The residuals r and their Jacobian over the unknowns: the free coordinates (column 3a + c) and,
-// in the V form, H (the last column, ∂r_q/∂H = −√(w_q|N_q|)).
-void evaluate(const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, const std::vector<int>& free, double H,
-              bool with_H, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
-  Eigen::MatrixXd Jp;
-  Eigen::VectorXd dH;
-  f.residuals(P, H, &r, &free, &Jp, with_H ? &dH : nullptr);
-  if (!with_H) {
-    J = std::move(Jp);
-    return;
-  }
-  J.resize(Jp.rows(), Jp.cols() + 1);
-  J.leftCols(Jp.cols()) = Jp;
-  J.col(Jp.cols()) = dH;
+// The unknowns of the loop (levenberg_marquardt.h): the free coordinates of P, point-major
+// (3a + c for free[a], coordinate c), and in the V form H last.
+Eigen::VectorXd unknowns(const Eigen::MatrixX3d& P, const std::vector<int>& free, const double* H) {
+  const Eigen::Index np = 3 * Eigen::Index(free.size());
+  Eigen::VectorXd x(np + (H ? 1 : 0));
+  for (size_t a = 0; a < free.size(); ++a) x.segment<3>(3 * Eigen::Index(a)) = P.row(free[a]).transpose();
+  if (H) x(np) = *H;
+  return x;
+}
+// P with its free rows from x (the inverse of unknowns for P).
+void set_free(Eigen::MatrixX3d& P, const std::vector<int>& free, const Eigen::VectorXd& x) {
+  for (size_t a = 0; a < free.size(); ++a) P.row(free[a]) = x.segment<3>(3 * Eigen::Index(a)).transpose();
 }
 
-// P with the step s (3 per free point, in the order of free) added to its free rows.
-Eigen::MatrixX3d moved(const Eigen::MatrixX3d& P, const std::vector<int>& free, const Eigen::VectorXd& s) {
-  Eigen::MatrixX3d Pn = P;
-  for (size_t i = 0; i < free.size(); ++i) Pn.row(free[i]) += s.segment<3>(3 * Eigen::Index(i)).transpose();
-  return Pn;
-}
-
-// Geodesic acceleration (Transtrum and Sethna 2012, cmc.h): the finite-difference step h of the
-// second directional derivative along δ (δ is scaled to the problem, so h is relative; GSL's
-// default is 0.02) and the largest 2‖a‖/‖δ‖ taken, α = 0.75. The paper and GSL take ‖a‖/‖δ‖ ≤ α;
-// the bound here is twice as strict because that was measured better on the circle (docs/cmc.md,
-// "Geodesic acceleration": the paper's bound takes the same iterations or up to 1.4× fewer at
-// n = 8 … 14, except at n = 10, H = −0.9: 15 % more at √Φ ≤ 7e-7, and at √Φ ≤ 7e-9 it runs out of
-// 2000 iterations where this one takes 407).
-constexpr double kGeodesicH = 0.1;
-constexpr double kGeodesicAlpha = 0.75;
-
-// Levenberg–Marquardt on Φ = ‖r‖² over the free rows of P (in place) and, with vt, over H too
-// subject to V(P) = V0: the step solves the equality-constrained LM subproblem
-//     min ‖r + J d‖² + λ dᵀ diag(JᵀJ) d   subject to  ∇Vᵀ d_P = V0 − V(P)
-// by its KKT system (two solves with the one Cholesky factor), and a trial point is put back on
-// V = V0 (restore_volume) before Φ is compared, so every iterate is feasible. With geodesic, the
-// step is δ + a/2 (geodesic acceleration, cmc.h); the gain ratio's prediction stays δ's.
+// Levenberg–Marquardt with geodesic acceleration (levenberg_marquardt.h) on Φ = ‖r‖² over the free
+// rows of P (in place) and, with vt, over H too subject to V(P) = V0 (each trial point put back on
+// V = V0 by restore_volume, so every iterate is feasible). Progress stage "cmc least squares".
 LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double& H,
                   const VolumeTarget* vt, double target, int max_iterations, bool geodesic,
                   const ProgressFn& progress) {
-  LsOutcome out;
-  report(progress, "cmc least squares", 0, 1);
-  if (vt) {  // on a copy: a start that cannot be restored is reported as it was given
-    Eigen::MatrixX3d Pr = P;
-    if (!restore_volume(*vt, Pr, free)) {
-      out.stop = LsStop::VolumeUnmet;
-      report(progress, "cmc least squares", 1, 1);
-      return out;
+  const Eigen::Index np = 3 * Eigen::Index(free.size());
+  const double H_fixed = H;
+  // Scratch net of the callbacks: only its free rows change.
+  Eigen::MatrixX3d Q = P;
+  LeastSquaresProblem problem;
+  problem.residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    set_free(Q, free, x);
+    const double h = vt ? x(np) : H_fixed;
+    if (!J) {
+      f.residuals(Q, h, &r);
+      return;
     }
-    P = std::move(Pr);
+    Eigen::MatrixXd Jp;
+    Eigen::VectorXd dH;
+    f.residuals(Q, h, &r, &free, &Jp, vt ? &dH : nullptr);
+    if (!vt) {
+      *J = std::move(Jp);
+      return;
+    }
+    J->resize(Jp.rows(), Jp.cols() + 1);
+    J->leftCols(Jp.cols()) = Jp;
+    J->col(Jp.cols()) = dH;  // ∂r_q/∂H = −√(w_q ρ_q |N_q|)
+  };
+  if (vt) {
+    problem.constraint = [&](const Eigen::VectorXd& x, Eigen::VectorXd* grad) {
+      set_free(Q, free, x);
+      if (grad) {
+        const Eigen::MatrixX3d G = vt->form.gradient_rows(Q, free);
+        *grad = Eigen::VectorXd::Zero(x.size());  // 0 for H
+        for (size_t a = 0; a < free.size(); ++a) grad->segment<3>(3 * Eigen::Index(a)) = G.row(Eigen::Index(a)).transpose();
+      }
+      return vt->form.value(Q) - vt->V0;
+    };
+    problem.restore = [&](Eigen::VectorXd& x) {
+      set_free(Q, free, x);
+      const bool ok = restore_volume(*vt, Q, free);
+      x.head(np) = unknowns(Q, free, nullptr);
+      return ok;
+    };
   }
-  Eigen::VectorXd r;
-  Eigen::MatrixXd J;
-  evaluate(f, P, free, H, vt, r, J);
-  double phi = r.squaredNorm(), lambda = 1e-3;
-  std::vector<double> history{phi};
-  const double start = std::sqrt(phi);
-  const Eigen::Index n = J.cols(), np = 3 * Eigen::Index(free.size());
-  while (true) {
-    if (!std::isfinite(phi) || !J.allFinite()) {
-      out.stop = LsStop::NonFinite;
-      break;
-    }
-    if (std::sqrt(phi) <= target) {
-      out.stop = LsStop::Reached;
-      break;
-    }
-    if (out.iterations >= max_iterations) {
-      out.stop = LsStop::MaxIterations;
-      break;
-    }
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
-    A.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
-    A = A.selfadjointView<Eigen::Lower>();
-    const Eigen::VectorXd g = J.transpose() * r;
-    const Eigen::VectorXd diag = A.diagonal().cwiseMax(1e-12 * A.diagonal().maxCoeff());
-    Eigen::VectorXd aV;  // the constraint's gradient over the unknowns (0 for H)
-    double c = 0.0;
-    if (vt) {
-      aV = Eigen::VectorXd::Zero(n);
-      const Eigen::MatrixX3d G = vt->form.gradient_rows(P, free);
-      for (size_t i = 0; i < free.size(); ++i) aV.segment<3>(3 * Eigen::Index(i)) = G.row(Eigen::Index(i)).transpose();
-      c = vt->form.value(P) - vt->V0;
-    }
-    bool accepted = false;
-    for (int tries = 0; tries < 30 && !accepted; ++tries) {
-      Eigen::MatrixXd M = A;
-      M.diagonal() += lambda * diag;
-      const Eigen::LLT<Eigen::MatrixXd> llt(M);
-      Eigen::VectorXd d, e;
-      if (llt.info() == Eigen::Success) {
-        d = -llt.solve(g);
-        if (vt) {  // d = d0 − μ e with e = M⁻¹a and aᵀd = −c (a = aV, the constraint's gradient)
-          e = llt.solve(aV);
-          const double ae = aV.dot(e);
-          d = ae > 0 ? Eigen::VectorXd(d - ((aV.dot(d) + c) / ae) * e) : Eigen::VectorXd();
-        }
-      }
-      if (d.size() != g.size() || !d.allFinite()) {
-        lambda *= 10;
-        continue;
-      }
-      Eigen::VectorXd step = d;
-      const double dd = d.dot(diag.asDiagonal() * d);
-      if (geodesic && dd > 0) {
-        // Transtrum–Sethna geodesic acceleration (cmc.h): r_δδ by the finite difference along δ,
-        // a from the same factor (in the V form also tangent to the constraint, aᵀ∇V = 0: first
-        // order only; restore_volume puts the trial point back on V = V0).
-        Eigen::VectorXd rh;
-        f.residuals(moved(P, free, kGeodesicH * d), vt ? H + kGeodesicH * d(np) : H, &rh);
-        const Eigen::VectorXd rvv = (2.0 / kGeodesicH) * ((rh - r) / kGeodesicH - J * d);
-        Eigen::VectorXd a = -llt.solve(J.transpose() * rvv);
-        if (vt) a -= (aV.dot(a) / aV.dot(e)) * e;
-        const double ratio2 = a.dot(diag.asDiagonal() * a) / dd;
-        if (!a.allFinite() || !(4.0 * ratio2 <= kGeodesicAlpha * kGeodesicAlpha)) {
-          lambda *= 10;  // the step bends too much for its second-order model: a rejected step
-          continue;
-        }
-        step += 0.5 * a;
-      }
-      Eigen::MatrixX3d Pn = moved(P, free, step);
-      const double Hn = vt ? H + step(np) : H;
-      Eigen::VectorXd rn;
-      double phin = std::numeric_limits<double>::infinity();
-      if (!vt || restore_volume(*vt, Pn, free)) {
-        f.residuals(Pn, Hn, &rn);
-        phin = rn.squaredNorm();
-      }
-      const double pred = -(2.0 * g.dot(d) + d.dot(A * d));
-      if (std::isfinite(phin) && phin < phi) {
-        const double rho = pred > 0 ? (phi - phin) / pred : 0.0;
-        if (rho > 0.75) lambda = std::max(lambda / 5, 1e-15);
-        if (rho < 0.25) lambda *= 3;
-        P = Pn;
-        H = Hn;
-        accepted = true;
-      } else {
-        lambda *= 10;
-      }
-    }
-    if (!accepted) {
-      out.stop = LsStop::NoStep;
-      break;
-    }
-    ++out.iterations;
-    evaluate(f, P, free, H, vt, r, J);
-    phi = r.squaredNorm();
-    report(progress, "cmc least squares", ls_fraction(start, target, std::sqrt(phi)), 1);
-    history.push_back(phi);
-    if (history.size() > 11) history.erase(history.begin());
-    if (stalled(history) && std::sqrt(phi) > target) {
-      out.stop = LsStop::Stalled;
-      break;
-    }
-  }
-  report(progress, "cmc least squares", 1, 1);
+  LevenbergMarquardtOptions lo;
+  lo.target = target;
+  lo.max_iterations = max_iterations;
+  lo.geodesic_acceleration = geodesic;
+  lo.stage = "cmc least squares";
+  Eigen::VectorXd x = unknowns(P, free, vt ? &H : nullptr);
+  const LsOutcome out = levenberg_marquardt(problem, x, lo, progress);
+  set_free(P, free, x);
+  if (vt) H = x(np);
   return out;
 }
 
@@ -313,7 +225,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     } else if (!(v_off <= o.tolerance)) {
       res.summary.set_failed(Status::NoConvergence,
                              what + ", but V misses V0 by " + num(v_off, 3) + " (relative): " +
-                                 (ls.stop == LsStop::VolumeUnmet ? kVolumeUnmet : "above the tolerance"));
+                                 (ls.stop == LsStop::ConstraintUnmet ? kVolumeUnmet : "above the tolerance"));
     } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
       std::string why;
       switch (ls.stop) {
@@ -335,7 +247,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
         case LsStop::NonFinite:
           why = ": Φ or its Jacobian is not finite at the net reached";
           break;
-        case LsStop::VolumeUnmet:
+        case LsStop::ConstraintUnmet:
           why = std::string(": ") + kVolumeUnmet;
           break;
       }

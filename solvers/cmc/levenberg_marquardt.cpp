@@ -1,0 +1,177 @@
+// Levenberg–Marquardt with geodesic acceleration (levenberg_marquardt.h).
+#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
+
+#include <Eigen/Cholesky>
+#include <limits>
+
+#include "bezierpde/core/errors.h"
+
+namespace bpde::cmc_detail {
+
+void LevenbergMarquardtOptions::validate() const {
+  auto bad = [](const std::string& what) { throw ParameterError("Levenberg–Marquardt options: " + what); };
+  if (!(target >= 0) || !std::isfinite(target)) bad("target must be finite and >= 0");
+  if (max_iterations < 0) bad("max_iterations must be >= 0");
+  if (!(initial_lambda >= 0) || !std::isfinite(initial_lambda)) bad("initial_lambda must be finite and >= 0");
+  if (!(geodesic_h > 0 && geodesic_h <= 1)) bad("geodesic_h must be in (0, 1]");
+  if (!(geodesic_alpha > 0) || !std::isfinite(geodesic_alpha)) bad("geodesic_alpha must be finite and > 0");
+}
+
+Eigen::VectorXd second_directional_derivative(const Eigen::VectorXd& r, const Eigen::VectorXd& r_h,
+                                              const Eigen::MatrixXd& J, const Eigen::VectorXd& delta, double h) {
+  return (2.0 / h) * ((r_h - r) / h - J * delta);
+}
+
+namespace {
+
+// What one iteration shares between its trials: JᵀJ, the gradient Jᵀr, D, and the constraint's
+// value and gradient at x.
+struct Linearisation {
+  Eigen::MatrixXd A;
+  Eigen::VectorXd g, diag, cgrad;
+  double c = 0.0;
+};
+
+Linearisation linearise(const LeastSquaresProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& r,
+                        const Eigen::MatrixXd& J) {
+  Linearisation L;
+  const Eigen::Index k = J.cols();
+  L.A = Eigen::MatrixXd::Zero(k, k);
+  L.A.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
+  L.A = L.A.selfadjointView<Eigen::Lower>();
+  L.g = J.transpose() * r;
+  L.diag = L.A.diagonal().cwiseMax(1e-12 * L.A.diagonal().maxCoeff());
+  if (p.constraint) L.c = p.constraint(x, &L.cgrad);
+  return L;
+}
+
+LmTrial trial(const LeastSquaresProblem& p, const Linearisation& L, const Eigen::VectorXd& x,
+              const Eigen::VectorXd& r, const Eigen::MatrixXd& J, double lambda, const LevenbergMarquardtOptions& o) {
+  LmTrial t;
+  Eigen::MatrixXd M = L.A;
+  M.diagonal() += lambda * L.diag;
+  const Eigen::LLT<Eigen::MatrixXd> llt(M);
+  if (llt.info() != Eigen::Success) return t;
+  Eigen::VectorXd d = -llt.solve(L.g), e;
+  if (p.constraint) {  // δ = δ₀ − μ e with e = M⁻¹∇c and ∇cᵀδ = −c
+    e = llt.solve(L.cgrad);
+    const double ce = L.cgrad.dot(e);
+    if (!(ce > 0)) return t;
+    d -= ((L.cgrad.dot(d) + L.c) / ce) * e;
+  }
+  if (!d.allFinite()) return t;
+  t.velocity = d;
+  t.ok = true;
+  const double dd = d.dot(L.diag.asDiagonal() * d);
+  if (!o.geodesic_acceleration || !(dd > 0)) return t;
+  Eigen::VectorXd rh;
+  p.residuals(x + o.geodesic_h * d, rh, nullptr);
+  Eigen::VectorXd a = -llt.solve(J.transpose() * second_directional_derivative(r, rh, J, d, o.geodesic_h));
+  if (p.constraint) a -= (L.cgrad.dot(a) / L.cgrad.dot(e)) * e;  // ∇cᵀa = 0 (first order only)
+  t.acceleration = a;
+  const double ratio2 = a.dot(L.diag.asDiagonal() * a) / dd;  // (‖a‖_D/‖δ‖_D)²
+  t.bend = 2.0 * std::sqrt(ratio2);
+  t.bent = !(4.0 * ratio2 <= o.geodesic_alpha * o.geodesic_alpha);
+  if (!a.allFinite() || !std::isfinite(t.bend)) t.ok = false;
+  return t;
+}
+
+void evaluate(const LeastSquaresProblem& p, const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
+  p.residuals(x, r, &J);
+  if (r.size() == 0 || J.rows() != r.size() || J.cols() != x.size())
+    throw SizeError("Levenberg–Marquardt: the residuals' Jacobian is " + std::to_string(J.rows()) + " by " +
+                    std::to_string(J.cols()) + " for " + std::to_string(r.size()) + " residuals and " +
+                    std::to_string(x.size()) + " unknowns");
+}
+
+}  // namespace
+
+LmTrial levenberg_marquardt_trial(const LeastSquaresProblem& problem, const Eigen::VectorXd& x,
+                                  const Eigen::VectorXd& r, const Eigen::MatrixXd& J, double lambda,
+                                  const LevenbergMarquardtOptions& options) {
+  options.validate();
+  return trial(problem, linearise(problem, x, r, J), x, r, J, lambda, options);
+}
+
+LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, const LevenbergMarquardtOptions& o,
+                              const ProgressFn& progress) {
+  o.validate();
+  if (!x.allFinite()) throw NonFiniteError("Levenberg–Marquardt: the start is not finite");
+  LsOutcome out;
+  report(progress, o.stage, 0, 1);
+  if (p.constraint) {  // on a copy: a start that cannot be restored is reported as it was given
+    Eigen::VectorXd xr = x;
+    if (!p.restore || !p.restore(xr)) {
+      out.stop = LsStop::ConstraintUnmet;
+      report(progress, o.stage, 1, 1);
+      return out;
+    }
+    x = std::move(xr);
+  }
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  evaluate(p, x, r, J);
+  double phi = r.squaredNorm(), lambda = o.initial_lambda;
+  std::vector<double> history{phi};
+  const double start = std::sqrt(phi);
+  while (true) {
+    if (!std::isfinite(phi) || !J.allFinite()) {
+      out.stop = LsStop::NonFinite;
+      break;
+    }
+    if (std::sqrt(phi) <= o.target) {
+      out.stop = LsStop::Reached;
+      break;
+    }
+    if (out.iterations >= o.max_iterations) {
+      out.stop = LsStop::MaxIterations;
+      break;
+    }
+    const Linearisation L = linearise(p, x, r, J);
+    bool accepted = false;
+    for (int tries = 0; tries < 30 && !accepted; ++tries) {
+      const LmTrial t = trial(p, L, x, r, J, lambda, o);
+      if (!t.ok || t.bent) {
+        lambda = std::max(lambda, 1e-15) * 10;  // not solvable, or bending too much for its second-order model
+        continue;
+      }
+      const Eigen::VectorXd& d = t.velocity;
+      Eigen::VectorXd xn = t.acceleration.size() ? Eigen::VectorXd(d + 0.5 * t.acceleration) : d;
+      xn += x;
+      Eigen::VectorXd rn;
+      double phin = std::numeric_limits<double>::infinity();
+      if (!p.constraint || p.restore(xn)) {
+        p.residuals(xn, rn, nullptr);
+        phin = rn.squaredNorm();
+      }
+      const double pred = -(2.0 * L.g.dot(d) + d.dot(L.A * d));  // the fall of Φ the velocity predicts
+      if (std::isfinite(phin) && phin < phi) {
+        const double rho = pred > 0 ? (phi - phin) / pred : 0.0;
+        if (rho > 0.75) lambda = std::max(lambda / 5, 1e-15);
+        if (rho < 0.25) lambda *= 3;
+        x = std::move(xn);
+        accepted = true;
+      } else {
+        lambda = std::max(lambda, 1e-15) * 10;
+      }
+    }
+    if (!accepted) {
+      out.stop = LsStop::NoStep;
+      break;
+    }
+    ++out.iterations;
+    evaluate(p, x, r, J);
+    phi = r.squaredNorm();
+    report(progress, o.stage, ls_fraction(start, o.target, std::sqrt(phi)), 1);
+    history.push_back(phi);
+    if (history.size() > 11) history.erase(history.begin());
+    if (stalled(history) && std::sqrt(phi) > o.target) {
+      out.stop = LsStop::Stalled;
+      break;
+    }
+  }
+  report(progress, o.stage, 1, 1);
+  return out;
+}
+
+}  // namespace bpde::cmc_detail
