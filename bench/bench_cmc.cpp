@@ -5,10 +5,13 @@
 // non-conformal data of the paper's Fig. 1 (the unit circle in three arcs by angle, H = -0.5), the
 // case of docs/cmc_evolver.md; CmcMeanCurvature/{newton,newton-plain,ceres}/circle/<n> for the
 // least squares of the mean curvature on that circle (newton-plain: without geodesic
-// acceleration). The per-degree setup (Gram and volume quadrature tables) is cached by
+// acceleration), and {newton,ceres}-volume/circle/<n> for its V form. The per-degree setup (Gram and volume quadrature tables) is cached by
 // CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after the
 // first iteration.
 #include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
 
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/energies/cmc.h"
@@ -63,13 +66,19 @@ void NLopt(benchmark::State& s) { run(s, CmcSolver::NLopt, false); }
 void AreaNewton(benchmark::State& s) { run(s, CmcSolver::Newton, false, true); }
 void AreaCeres(benchmark::State& s) { run(s, CmcSolver::Ceres, false, true); }
 
+// volume: the V form, v0 the volume of the exact cap of H = -0.5 over the unit circle.
 void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolver solver = CmcSolver::Newton,
-                 bool geodesic = true) {
+                 bool geodesic = true, bool volume = false) {
   const int n = static_cast<int>(state.range(0));
   const TriangularNet data = circle_three_arcs(n);
   CmcFunctional::cached_triangular(n);
   CmcOptions o;
   o.H = -0.5;
+  if (volume) {
+    const double R = 2.0, h = R - std::sqrt(R * R - 1);
+    o.V = std::numbers::pi * h * h * (3 * R - h) / 3;
+    o.H = 0.0;
+  }
   o.functional = functional;
   o.solver = solver;
   o.geodesic_acceleration = geodesic;
@@ -100,6 +109,15 @@ void MeanCurvatureCirclePlain(benchmark::State& s) {
   CircleRoute(s, CmcFunctionalKind::MeanCurvature, CmcSolver::Newton, false);
 }
 
+// The V form on the same circle: newton (the KKT step of levenberg_marquardt.h) and ceres (the free
+// points on the manifold V = v0, mean_curvature_ceres.cpp).
+void MeanCurvatureCircleVolume(benchmark::State& s) {
+  CircleRoute(s, CmcFunctionalKind::MeanCurvature, CmcSolver::Newton, true, true);
+}
+void MeanCurvatureCircleVolumeCeres(benchmark::State& s) {
+  CircleRoute(s, CmcFunctionalKind::MeanCurvature, CmcSolver::Ceres, true, true);
+}
+
 }  // namespace
 
 BENCHMARK(Dirichlet)->Name("Cmc/dirichlet")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
@@ -120,4 +138,12 @@ BENCHMARK(MeanCurvatureCirclePlain)
 BENCHMARK(MeanCurvatureCircleCeres)
     ->Name("CmcMeanCurvature/ceres/circle")
     ->DenseRange(10, 14, 2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(MeanCurvatureCircleVolume)
+    ->Name("CmcMeanCurvature/newton-volume/circle")
+    ->DenseRange(10, 12, 2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(MeanCurvatureCircleVolumeCeres)
+    ->Name("CmcMeanCurvature/ceres-volume/circle")
+    ->DenseRange(10, 12, 2)
     ->Unit(benchmark::kMillisecond);

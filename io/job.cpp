@@ -176,8 +176,6 @@ Problem problem_from_json(const Json& j, const std::string& path) {
       if (!j.contains("solver")) p.solver = area || mean_curvature ? CmcSolver::Newton : CmcSolver::NLopt;
       if (area && p.solver != CmcSolver::Newton)
         throw UnsupportedProblem(path + ": an area cmc problem with \"V\" needs \"solver\": \"newton\"");
-      if (mean_curvature && p.solver != CmcSolver::Newton)
-        throw UnsupportedProblem(path + ": a mean-curvature cmc problem with \"V\" needs \"solver\": \"newton\"");
       if (!area && !mean_curvature && p.solver != CmcSolver::NLopt)
         throw UnsupportedProblem(path + ": a cmc problem with \"V\" needs \"solver\": \"nlopt\"");
     }

@@ -28,12 +28,8 @@ void CmcOptions::validate() const {
     if (fixed == FixedSet::UBoundaries)
       throw UnsupportedProblem("cmc: the area functional needs fixed \"boundary\" or \"boundary+adjacent\"");
   } else if (functional == CmcFunctionalKind::MeanCurvature) {
-    // nlopt first, so that the job reader (io/job.cpp, the same text) and this check give one
-    // wording for mean-curvature with nlopt, with or without V.
+    // The job reader (io/job.cpp) gives the same text for mean-curvature with nlopt.
     if (solver == CmcSolver::NLopt) throw UnsupportedProblem(std::string("cmc: ") + kMeanCurvatureSolvers);
-    if (V && solver != CmcSolver::Newton)
-      throw UnsupportedProblem(
-          "cmc: the volume-constrained mean-curvature problem (V) is solved by the newton solver only");
     if (fixed == FixedSet::UBoundaries)
       throw UnsupportedProblem("cmc: the mean-curvature functional needs fixed \"boundary\" or \"boundary+adjacent\"");
   } else if (V && solver != CmcSolver::NLopt)

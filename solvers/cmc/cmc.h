@@ -62,10 +62,12 @@
 //    minimiser is the surface nearest to CMC in that sense (it weighs the deviation on the whole
 //    patch, where a critical point of A_H only makes it orthogonal to the B_I, which vanish on the
 //    boundary).
-//  - V mode (options.V = V0, solver newton): minimise Φ over the free points AND H subject to
-//    V = V0; result.H is the H found. Each Levenberg–Marquardt step solves the LM subproblem with
-//    the linearised constraint (KKT, one Cholesky factor), and each trial point is put back on
-//    V = V0 along ∇V before Φ is compared (cmc_mean_curvature.cpp, levenberg_marquardt.h). Its start is the minimiser of D
+//  - V mode (options.V = V0, solvers newton and ceres): minimise Φ over the free points AND H
+//    subject to V = V0; result.H is the H found. Solver newton: each Levenberg–Marquardt step
+//    solves the LM subproblem with the linearised constraint (KKT, one Cholesky factor), and each
+//    trial point is put back on V = V0 along ∇V before Φ is compared (cmc_mean_curvature.cpp,
+//    levenberg_marquardt.h). Solver ceres: the free points are a ceres::Manifold, the level set
+//    V = V0 (steps in ∇V⊥, trial points put back the same way; mean_curvature_ceres.cpp). Its start is the minimiser of D
 //    at V = V0 (the nlopt route) with that route's multiplier as H. converged also needs
 //    |V − V0| <= options.tolerance × max(value_scale, |V0|, area^(3/2)) (of the start).
 //  - The start is the D_H critical point at H (the newton continuation above, whatever the
@@ -150,15 +152,14 @@ struct CmcOptions {
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
   /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with
   /// nlopt, area V mode with a solver other than newton; area or mean-curvature with u-boundaries;
-  /// mean-curvature with nlopt, or with V and a solver other than newton).
+  /// mean-curvature with nlopt, with or without V).
   void validate() const;
 };
 
 /// The one wording of "mean-curvature with a solver it does not have" (CmcOptions::validate and the
 /// job reader, io/job.cpp).
 inline constexpr const char* kMeanCurvatureSolvers =
-    "the mean-curvature functional is solved by the newton or the ceres solver (Levenberg–Marquardt; with V, newton "
-    "only)";
+    "the mean-curvature functional is solved by the newton or the ceres solver (Levenberg–Marquardt)";
 
 /// Largest degrees of a cmc job: above them the Dirichlet Gram over the free points is no longer
 /// Cholesky-factorable (condition ~4^n; docs/cmc.md "Numerical limit"), so eq. (11) cannot be

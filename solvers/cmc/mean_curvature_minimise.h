@@ -12,17 +12,34 @@
 #include <vector>
 
 #include "bezierpde/core/progress.h"
+#include "bezierpde/energies/volume.h"
 #include "bezierpde/solvers/cmc/levenberg_marquardt.h"
 #include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
 
 namespace bpde::cmc_detail {
 
+/// The volume constraint of the V form: V(P) = V0, with H an unknown.
+struct VolumeTarget {
+  const VolumeForm& form;
+  double V0;
+  double scale;  ///< > 0, the volume's scale at the start: |V − V0| <= 1e-14 × scale is "on the constraint"
+};
+
+/// Back onto V = V0 along the volume gradient over the rows `free` of P (in place): at most 8 Newton
+/// steps on the one equation (V is cubic in P). False when it does not get there
+/// (cmc_mean_curvature.cpp).
+bool restore_volume(const VolumeTarget& vt, Eigen::MatrixX3d& P, const std::vector<int>& free);
+
 /// Levenberg–Marquardt on Φ(P) over the rows `free` of P (in place) until √Φ <= target, a stall, no
 /// step, or max_iterations, with geodesic acceleration when `geodesic` (cmc_mean_curvature.cpp).
 LsOutcome minimise_newton(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
                           double H, double target, int max_iterations, bool geodesic, const ProgressFn& progress);
-/// The same problem by ceres::Solve (mean_curvature_ceres.cpp).
+/// The same problem by ceres::Solve (mean_curvature_ceres.cpp). With vt (the V form) H is an unknown
+/// too (in and out) and the free points move on the manifold V = V0 (a ceres::Manifold: steps in the
+/// tangent space of ∇V⊥, each trial point put back by restore_volume); the start is put on it first,
+/// on a copy (ConstraintUnmet, P and H as given, when that fails).
 LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
-                         double H, double target, int max_iterations, const ProgressFn& progress);
+                         double& H, const VolumeTarget* vt, double target, int max_iterations,
+                         const ProgressFn& progress);
 
 }  // namespace bpde::cmc_detail

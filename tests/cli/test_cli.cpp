@@ -448,6 +448,15 @@ TEST(Cli, CmcMeanCurvatureJob) {
     EXPECT_TRUE(repv["converged"].get<bool>());
     EXPECT_NEAR(repv["H"].get<double>(), -0.9, 1e-5);
     EXPECT_NEAR(repv["volume"].get<double>(), V0, 1e-12);
+    // The same by Ceres (the free points on the manifold V = v0).
+    std::snprintf(problem, sizeof problem,
+                  R"({"kind": "cmc", "V": %.17g, "functional": "mean-curvature", "solver": "ceres"})", V0);
+    const auto [rc, repc] = solve("mcvc", job(10, problem));
+    ASSERT_EQ(rc.status, 0) << rc.err;
+    EXPECT_EQ(repc["solver"], "ceres");
+    EXPECT_TRUE(repc["converged"].get<bool>());
+    EXPECT_NEAR(repc["H"].get<double>(), -0.9, 1e-5);
+    EXPECT_NEAR(repc["volume"].get<double>(), V0, 1e-12);
   }
   const auto [r, rep] = solve("mc", job(10, R"({"kind": "cmc", "H": -0.9, "functional": "mean-curvature"})"));
   ASSERT_EQ(r.status, 0) << r.err;
@@ -471,8 +480,8 @@ TEST(Cli, CmcMeanCurvatureJob) {
     expect_bad_input("solve " + write("bad.json", j).string() + " --out " + none.string(), needle);
     EXPECT_FALSE(fs::exists(none));
   };
-  bad(job(6, R"({"kind": "cmc", "V": 1, "functional": "mean-curvature", "solver": "ceres"})"),
-      "with \"V\" needs \"solver\": \"newton\"");
+  bad(job(6, R"({"kind": "cmc", "V": 1, "functional": "mean-curvature", "solver": "nlopt"})"),
+      "newton or the ceres solver");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "solver": "nlopt"})"), "newton or the ceres solver");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "mean_curvature_tolerance": 1e-3})"),
       "mean_curvature_tolerance");

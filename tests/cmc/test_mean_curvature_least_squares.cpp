@@ -207,12 +207,15 @@ TEST(CmcMeanCurvature, CircleInThreeArcsAtDegree10MeetsBothTargets) {
 
 // The V form: minimise Φ over the free points and H at V = V0. With V0 the volume of the exact
 // cap of H over the circle, it returns that H, the cap and V0 (the same targets as the H form).
+// Both solvers: newton (the KKT step of levenberg_marquardt.h) and ceres (the free points on the
+// manifold V = V0, mean_curvature_ceres.cpp).
 TEST(CmcMeanCurvature, VolumeFormReturnsTheCapAndItsH) {
+  for (const CmcSolver solver : kSolvers)
   for (double H : {-0.5, -0.9}) {
-    SCOPED_TRACE(H);
+    SCOPED_TRACE(to_string(solver) + " H = " + std::to_string(H));
     const double R = 1 / std::abs(H), hc = R - std::sqrt(R * R - 1);
     const double V0 = std::numbers::pi * hc * hc * (3 * R - hc) / 3;
-    CmcOptions o = mc_options(0.0);
+    CmcOptions o = mc_options(0.0, solver);
     o.V = V0;
     const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), o);
     EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
@@ -319,7 +322,7 @@ TEST(CmcMeanCurvature, BadInput) {
   const TriangularNet data = testing::circle_three_arcs(6);
   CmcOptions o = mc_options(-0.5);
   o.V = 1.0;
-  o.solver = CmcSolver::Ceres;  // the V form: newton only
+  o.solver = CmcSolver::NLopt;  // the V form too: newton or ceres
   EXPECT_THROW(solve_cmc(data, o), UnsupportedProblem);
   o.solver = CmcSolver::Newton;
   o.V = std::nan("");
