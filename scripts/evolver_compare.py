@@ -16,7 +16,9 @@ boundary, and the error is the distance to the exact sphere:
   `"mean-curvature"` (with --mc-tolerances also at those `mean_curvature_tolerance`). The answer is
   the small spherical cap of radius 2 through the circle, centre (0, 0, -sqrt(3)).
 - sphere (conformal data): the triangle patch of the inverse stereographic projection (builder
-  `sphere-triangle`), H = +1, answer the unit sphere; bezierpde with both functionals.
+  `sphere-triangle`), H = +1, answer the unit sphere; bezierpde with all three functionals
+  (`"dirichlet"`, the paper's D_H, `"area"` and `"mean-curvature"`, the latter with --mc-tolerances
+  too).
 
 bezierpde runs `bpde solve` on a job per degree; the error is max | |x - c| - R | over the
 triangular grid u = a/N, v = b/N (a + b <= N, N = --grid, corners included), evaluated here from
@@ -155,7 +157,7 @@ def circle_case():
 
 
 def sphere_case():
-    return Case("sphere", "sphere-triangle", 1.0, (0.0, 0.0, 0.0), 1.0, None, ["dirichlet", "area"])
+    return Case("sphere", "sphere-triangle", 1.0, (0.0, 0.0, 0.0), 1.0, None, ["dirichlet", "area", "mean-curvature"])
 
 
 def evolver_pressure(H):
@@ -492,7 +494,7 @@ def main(argv=None):
                     help="circle: also the library route at these first-variation tolerances (comma-separated)")
     ap.add_argument("--mc-tolerances", default="",
                     help="comma-separated mean_curvature_tolerance values in (0, 1): extra `bpde solve` rows of the "
-                         "mean-curvature functional (circle case)")
+                         "mean-curvature functional (both cases)")
     ap.add_argument("--library", default="build/example_004_cmc_area_tables",
                     help="the example program of the library route")
     args = ap.parse_args(argv)

@@ -161,6 +161,7 @@ def test_mean_curvature_rows_by_tolerance():
     # the circle case runs both geometric functionals; --mc-tolerances adds jobs with the tolerance in them
     case = ec.circle_case()
     assert case.functionals == ["area", "mean-curvature"]
+    assert ec.sphere_case().functionals == ["dirichlet", "area", "mean-curvature"]
     assert case.job(8, "area")["problem"]["functional"] == "area"
     j = case.job(8, "mean-curvature", 1e-7)["problem"]
     assert (j["functional"], j["mean_curvature_tolerance"]) == ("mean-curvature", 1e-7)

@@ -581,8 +581,12 @@ struct AreaSolve {
             "A_H continued from H = 0 to H = " + num(Ht) + " in " + std::to_string(steps) + " step(s)"};
   }
 
-  // V mode: bordered regularised Newton on (Y, H) for ∇A + 2H∇V = 0, V = V0, at fixed V0.
-  CorrectorStats bordered_correct(double V0, double& H) {
+  // V mode: bordered regularised Newton on (Y, H) for ∇F_ε + 2H∇V = 0, V = V0, at fixed V0 (F_ε
+  // = A + ε(D − A) at the current p.eps; ε = 0: A itself), to the relative residual `tol` (default:
+  // o.tolerance).
+  CorrectorStats bordered_correct(double V0, double& H, double tol = -1.0, int max_iterations = -1) {
+    if (tol < 0) tol = o.tolerance;
+    if (max_iterations < 0) max_iterations = 2 * o.max_corrector_iterations;
     CorrectorStats st;
     const VolumeForm& vf = p.base.f->volume_form();
     auto resid = [&](double h, Eigen::VectorXd& g, double& c) {
@@ -596,11 +600,11 @@ struct AreaSolve {
     st.residual = resid(H, g, c);
     for (int it = 0;; ++it) {
       if (!std::isfinite(st.residual)) return st;
-      if (st.residual <= o.tolerance) {
+      if (st.residual <= tol) {
         st.ok = true;
         return st;
       }
-      if (it >= 2 * o.max_corrector_iterations) return st;
+      if (it >= max_iterations) return st;
       const Eigen::MatrixXd K = p.hessian(H);
       const Eigen::VectorXd gV = p.volume_gradient(), y = p.get();
       bool accepted = false;
@@ -635,7 +639,146 @@ struct AreaSolve {
     }
   }
 
-  // V mode: continuation in V from the critical point of A at H = 0 (V = V_min) to V0.
+  // The V form's residual at ε = 0: the larger of the relative first variation of A_H and |V − V0|
+  // relative to the volume's scale (as the report computes it).
+  double vresidual(double V0, double H) const {
+    const double vs = p.base.f->volume_form().value_scale(p.P());
+    return std::max(p.residual_at(H, 0.0), std::abs(p.base.f->volume(p.P()) - V0) / (vs > 0 ? vs : 1.0));
+  }
+
+  // Euler predictor along the ε-path at fixed V0 (H varies): from a critical point of F_ε + 2HV
+  // with V = V0, the bordered system [K_ε 2∇V; ∇Vᵀ 0][dY; dH] = [−∇(D − A); 0] gives the
+  // derivative along ε; the net moves to ε = next (left unchanged when it is not regular).
+  void predict_volume(double& H, double eps, double next) {
+    const Eigen::VectorXd y = p.get();
+    const double e0 = p.eps;
+    p.eps = eps;
+    Eigen::VectorXd g1, g0;
+    p.residual_at(H, 1.0, &g1);
+    p.residual_at(H, 0.0, &g0);
+    const Eigen::MatrixXd K = p.hessian(H);
+    p.eps = e0;
+    const Eigen::LDLT<Eigen::MatrixXd> f(K);
+    const Eigen::VectorXd gV = p.volume_gradient(), a = f.solve(g1 - g0), b = f.solve(gV);
+    const double den = gV.dot(b);
+    if (!(std::abs(den) > 0) || !a.allFinite() || !b.allFinite()) return;
+    const double dH = -gV.dot(a) / (2.0 * den);
+    const Eigen::VectorXd dy = -a - 2.0 * dH * b;
+    p.set(y + (next - eps) * dy);
+    if (!(p.a->min_normal(p.P()) > 0.0)) {
+      p.set(y);
+      return;
+    }
+    H += (next - eps) * dH;
+  }
+
+  // V mode, route 1 (the V form of from_dirichlet): the minimiser of D at V = V0 (the nlopt route,
+  // a critical point of F_1 = D + 2HV at V0 with its multiplier H), then the vanishing Dirichlet
+  // regulariser at fixed V0: F_ε for ε = 1, 1/10, 1/100, … (ratio adapted as in homotopy()), each
+  // stage by the bordered corrector from the bordered Euler predictor, until the first variation
+  // of A_H itself meets the tolerance, then ε = 0. Route 2 (volume_continuation, from the critical
+  // point of A at H = 0) fails on non-conformal data: that start is planar on planar boundaries,
+  // where A's Hessian is singular in every in-plane direction.
+  AreaOutcome from_dirichlet_volume(double V0) {
+    CmcOptions od = o;
+    od.functional = CmcFunctionalKind::Dirichlet;
+    od.solver = CmcSolver::NLopt;
+    const CmcResult<Net> d = solve_cmc(data, od);
+    if (!d.summary.converged) return {d.H, false, Status::NoConvergence, "no minimiser of D at V = " + num(V0)};
+    p.base.P = d.net.points();
+    double H = d.H;
+    choose_rule();
+    auto stage = [&](double e) {
+      p.eps = e;
+      const CmcOptions so = stage_options(e);
+      choose_rule_for(so.tolerance);
+      theta = 1e-3;
+      return bordered_correct(V0, H, e == 0.0 ? o.tolerance : so.tolerance).ok;
+    };
+    const std::string from = "from the minimiser of D at V = " + num(V0) + " (H = " + num(d.H) + ")";
+    // The jump to ε = 0 from a stage with ε <= 1e-4 (as jump() in the H form): the bordered
+    // predictor to ε = 0, then at most 8 bordered iterations on A_H; kept when they reach the
+    // tolerance.
+    auto jump = [&](double e) {
+      const Eigen::VectorXd y = p.get();
+      const double Hs = H;
+      const std::shared_ptr<const AreaForm> a0 = p.a;
+      predict_volume(H, e, 0.0);
+      p.eps = 0.0;
+      choose_rule();
+      theta = 1e-8;
+      if (bordered_correct(V0, H, o.tolerance, 8).ok) return true;
+      p.set(y);
+      H = Hs;
+      p.eps = e;
+      p.a = a0;
+      return false;
+    };
+    double eps = 1.0, ratio = 0.1;
+    int failures = 0;
+    std::string note;
+    if (!stage(eps)) {
+      p.eps = 0.0;
+      return {H, false, Status::NoConvergence, "the minimiser of D at V = " + num(V0) + " is not a critical point of D + 2HV"};
+    }
+    while (p.residual_at(H, 0.0) > o.tolerance && eps > 0.0) {
+      double next = eps * ratio;
+      if (next < 1e-12) next = 0.0;
+      const Eigen::VectorXd y = p.get();
+      const double Hs = H;
+      predict_volume(H, eps, next);
+      if (stage(next)) {
+        eps = next;
+        ratio = std::max(ratio * ratio, 1e-2);
+        if (eps > 0.0 && eps <= 1e-4 && p.residual_at(H, 0.0) > o.tolerance && jump(eps)) eps = 0.0;
+      } else {
+        p.set(y);
+        H = Hs;
+        p.eps = eps;
+        ratio = std::sqrt(ratio);
+        if (ratio > 0.7 || ++failures > 12) {
+          if (eps > 1e-4) {
+            p.eps = 0.0;
+            return {H, false, Status::NumericalLimit,
+                    "the Dirichlet regulariser could not be removed below ε = " + num(eps) + " at fixed V " + from};
+          }
+          note = " (the regulariser stopped at ε = " + num(eps) + ")";
+          break;
+        }
+      }
+    }
+    if (p.residual_at(H, 0.0) > o.tolerance && p.eps > 0.0) {
+      // A last stage at ε = 0 from the predictor; kept when it lowers the first variation of A_H.
+      const Eigen::VectorXd y = p.get();
+      const double Hs = H, r0 = p.residual_at(H, 0.0), e = p.eps;
+      predict_volume(H, e, 0.0);
+      if (!stage(0.0) && !(p.residual_at(H, 0.0) < r0)) {
+        p.set(y);
+        H = Hs;
+      }
+    }
+    p.eps = 0.0;
+    if (vresidual(V0, H) > o.tolerance && o.solver != CmcSolver::Ceres) {
+      // The V form's critical point is the A_H critical point at its multiplier H: the H form's
+      // truncated Newton phase at the H reached, then bordered iterations back onto V = V0; kept
+      // when the V form's residual falls.
+      const Eigen::VectorXd y = p.get();
+      const double Hs = H, r0 = vresidual(V0, H);
+      const CorrectorStats t = area_truncated_newton(p, H, o, 2 * o.max_corrector_iterations);
+      summary.iterations += t.iterations;
+      theta = 1e-8;
+      bordered_correct(V0, H, o.tolerance, 8);
+      if (!(vresidual(V0, H) < r0)) {
+        p.set(y);
+        H = Hs;
+      } else {
+        note += "; finished by the truncated Newton phase at H and the bordered corrector";
+      }
+    }
+    return {H, true, Status::Converged, "the volume-constrained critical point of A " + from + note};
+  }
+
+  // V mode, route 2: continuation in V from the critical point of A at H = 0 (V = V_min) to V0.
   AreaOutcome volume_continuation(const Eigen::MatrixX3d& start, int& steps) {
     const double V0 = *o.V;
     p.base.P = start;
@@ -712,7 +855,12 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     if constexpr (std::is_same_v<Net, TriangularNet>) s.m = data.n();
     AreaOutcome out;
     if (o.V) {
-      out = s.volume_continuation(extremal, res.continuation_steps);
+      out = s.from_dirichlet_volume(*o.V);
+      if (!out.ok) {
+        const AreaOutcome route1 = out;
+        out = s.volume_continuation(extremal, res.continuation_steps);
+        if (!out.ok) out.message += " (and route 1: " + route1.message + ")";
+      }
     } else if (o.H == 0.0) {
       s.p.base.P = extremal;
       out.ok = s.minimal_surface();

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <functional>
 #include <numbers>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "cmc_test_util.h"
@@ -204,6 +206,29 @@ TEST(CmcArea, EnneperAgreesWithDirichletOnConformalData) {
       }
     EXPECT_LE(e, 1e-12) << n;
     EXPECT_NEAR(a.A, d.D, 1e-12 * d.D) << n;
+  }
+}
+
+// The V form: minimise A subject to V = V0 over the circle in three arcs, V0 the volume of the
+// exact cap of H; the multiplier is H and the surface is the cap. Measured (one probe run): n = 10,
+// H = -0.5: first variation 9.9e-12, H to 1e-11, 3.5e-8 from the sphere, 1.3 s; n = 12, H = -0.5
+// and -0.9: 4.8e-12 and 6.0e-12, H to 1e-10, 2.7e-8 and 2.6e-8, 0.2 s and 2.4 s. Before route 1 (the
+// ε-path at fixed V from the minimiser of D at V0) only n = 12, H = -0.5 converged; the others
+// ended at V ≈ 1e-4 with H ≈ 0 (the continuation in V from the flat minimal surface, whose area
+// Hessian is singular in every in-plane direction).
+TEST(CmcArea, VolumeFormReturnsTheCapAndItsH) {
+  for (auto [n, H] : {std::pair{10, -0.5}, {12, -0.5}, {12, -0.9}}) {
+    SCOPED_TRACE("n = " + std::to_string(n) + ", H = " + std::to_string(H));
+    const double R = 1 / std::abs(H), hc = R - std::sqrt(R * R - 1);
+    const double V0 = std::numbers::pi * hc * hc * (3 * R - hc) / 3;
+    CmcOptions o = area_options(0.0);
+    o.V = V0;
+    const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(n), o);
+    EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+    EXPECT_LE(r.summary.residual, 1e-11);
+    EXPECT_NEAR(r.V, V0, 1e-11);
+    EXPECT_NEAR(r.H, H, 1e-8);
+    EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(R * R - 1)), R), 1e-7);
   }
 }
 
