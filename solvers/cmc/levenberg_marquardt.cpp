@@ -32,6 +32,22 @@ struct Linearisation {
   double c = 0.0;
 };
 
+// The sizes of a problem at x: r and J from its residuals (J #r by k, k = x.size() >= 1), and the
+// constraint's gradient (k) when there is one; SizeError naming the mismatch otherwise.
+void check_sizes(const Eigen::VectorXd& x, const Eigen::VectorXd& r, const Eigen::MatrixXd& J) {
+  if (x.size() == 0) throw SizeError("Levenberg–Marquardt: no unknowns");
+  if (r.size() == 0 || J.rows() != r.size() || J.cols() != x.size())
+    throw SizeError("Levenberg–Marquardt: the residuals' Jacobian is " + std::to_string(J.rows()) + " by " +
+                    std::to_string(J.cols()) + " for " + std::to_string(r.size()) + " residuals and " +
+                    std::to_string(x.size()) + " unknowns");
+}
+
+void check_problem(const LeastSquaresProblem& p) {
+  if (!p.residuals) throw ParameterError("Levenberg–Marquardt: the problem has no residuals");
+  if (p.constraint && !p.restore)
+    throw ParameterError("Levenberg–Marquardt: a constraint needs its restore callback");
+}
+
 Linearisation linearise(const LeastSquaresProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& r,
                         const Eigen::MatrixXd& J) {
   Linearisation L;
@@ -41,7 +57,12 @@ Linearisation linearise(const LeastSquaresProblem& p, const Eigen::VectorXd& x, 
   L.A = L.A.selfadjointView<Eigen::Lower>();
   L.g = J.transpose() * r;
   L.diag = L.A.diagonal().cwiseMax(1e-12 * L.A.diagonal().maxCoeff());
-  if (p.constraint) L.c = p.constraint(x, &L.cgrad);
+  if (p.constraint) {
+    L.c = p.constraint(x, &L.cgrad);
+    if (L.cgrad.size() != k)
+      throw SizeError("Levenberg–Marquardt: the constraint's gradient has " + std::to_string(L.cgrad.size()) +
+                      " entries for " + std::to_string(k) + " unknowns");
+  }
   return L;
 }
 
@@ -66,6 +87,9 @@ LmTrial trial(const LeastSquaresProblem& p, const Linearisation& L, const Eigen:
   if (!o.geodesic_acceleration || !(dd > 0)) return t;
   Eigen::VectorXd rh;
   p.residuals(x + o.geodesic_h * d, rh, nullptr);
+  if (rh.size() != r.size())
+    throw SizeError("Levenberg–Marquardt: the residuals changed size from " + std::to_string(r.size()) + " to " +
+                    std::to_string(rh.size()));
   Eigen::VectorXd a = -llt.solve(J.transpose() * second_directional_derivative(r, rh, J, d, o.geodesic_h));
   if (p.constraint) a -= (L.cgrad.dot(a) / L.cgrad.dot(e)) * e;  // ∇cᵀa = 0 (first order only)
   t.acceleration = a;
@@ -78,10 +102,7 @@ LmTrial trial(const LeastSquaresProblem& p, const Linearisation& L, const Eigen:
 
 void evaluate(const LeastSquaresProblem& p, const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
   p.residuals(x, r, &J);
-  if (r.size() == 0 || J.rows() != r.size() || J.cols() != x.size())
-    throw SizeError("Levenberg–Marquardt: the residuals' Jacobian is " + std::to_string(J.rows()) + " by " +
-                    std::to_string(J.cols()) + " for " + std::to_string(r.size()) + " residuals and " +
-                    std::to_string(x.size()) + " unknowns");
+  check_sizes(x, r, J);
 }
 
 }  // namespace
@@ -90,18 +111,23 @@ LmTrial levenberg_marquardt_trial(const LeastSquaresProblem& problem, const Eige
                                   const Eigen::VectorXd& r, const Eigen::MatrixXd& J, double lambda,
                                   const LevenbergMarquardtOptions& options) {
   options.validate();
+  check_problem(problem);
+  check_sizes(x, r, J);
+  if (!(lambda >= 0) || !std::isfinite(lambda)) throw ParameterError("Levenberg–Marquardt: λ must be finite and >= 0");
   return trial(problem, linearise(problem, x, r, J), x, r, J, lambda, options);
 }
 
 LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, const LevenbergMarquardtOptions& o,
                               const ProgressFn& progress) {
   o.validate();
+  check_problem(p);
+  if (x.size() == 0) throw SizeError("Levenberg–Marquardt: no unknowns");
   if (!x.allFinite()) throw NonFiniteError("Levenberg–Marquardt: the start is not finite");
   LsOutcome out;
   report(progress, o.stage, 0, 1);
   if (p.constraint) {  // on a copy: a start that cannot be restored is reported as it was given
     Eigen::VectorXd xr = x;
-    if (!p.restore || !p.restore(xr)) {
+    if (!p.restore(xr)) {
       out.stop = LsStop::ConstraintUnmet;
       report(progress, o.stage, 1, 1);
       return out;
@@ -142,6 +168,9 @@ LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, 
       double phin = std::numeric_limits<double>::infinity();
       if (!p.constraint || p.restore(xn)) {
         p.residuals(xn, rn, nullptr);
+        if (rn.size() != r.size())
+          throw SizeError("Levenberg–Marquardt: the residuals changed size from " + std::to_string(r.size()) + " to " +
+                          std::to_string(rn.size()));
         phin = rn.squaredNorm();
       }
       const double pred = -(2.0 * L.g.dot(d) + d.dot(L.A * d));  // the fall of Φ the velocity predicts

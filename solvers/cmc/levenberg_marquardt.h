@@ -107,7 +107,8 @@ struct LmTrial {
 Eigen::VectorXd second_directional_derivative(const Eigen::VectorXd& r, const Eigen::VectorXd& r_h,
                                               const Eigen::MatrixXd& J, const Eigen::VectorXd& delta, double h);
 
-/// One trial at x (r, J its residuals and Jacobian) and damping λ, as the loop takes it.
+/// One trial at x (r, J its residuals and Jacobian) and damping λ, as the loop takes it. Throws
+/// ParameterError (options, λ < 0, a missing callback) and SizeError (sizes that do not match).
 LmTrial levenberg_marquardt_trial(const LeastSquaresProblem& problem, const Eigen::VectorXd& x,
                                   const Eigen::VectorXd& r, const Eigen::MatrixXd& J, double lambda,
                                   const LevenbergMarquardtOptions& options);
@@ -116,8 +117,9 @@ LmTrial levenberg_marquardt_trial(const LeastSquaresProblem& problem, const Eige
 /// that fails x is left as given and the stop is ConstraintUnmet). Stops at √Φ <= target, a stall,
 /// no step, max_iterations or a non-finite Φ; x is the last accepted point. Progress: options.stage
 /// with ls_fraction after every iteration, 0 at the start and 1 at the end. Throws ParameterError
-/// for invalid options, SizeError when J does not have x.size() columns or r has none, and
-/// NonFiniteError for a start x that is not finite.
+/// for invalid options or a missing callback (residuals; restore with a constraint), SizeError for
+/// no unknowns, a J without x.size() columns, residuals that change size or a constraint gradient
+/// of the wrong size, and NonFiniteError for a start x that is not finite.
 LsOutcome levenberg_marquardt(const LeastSquaresProblem& problem, Eigen::VectorXd& x,
                               const LevenbergMarquardtOptions& options, const ProgressFn& progress = {});
 

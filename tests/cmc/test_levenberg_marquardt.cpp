@@ -86,6 +86,48 @@ TEST(LevenbergMarquardt, AcceleratedStepIsChebyshevsThirdOrderStep) {
   EXPECT_GT(std::abs(n2(0) - std::sqrt(2.0)), 1e-6);
 }
 
+// From x = 3 the accelerated step bends too much for its model: with λ = 0, 2|a|/|δ| = 4|δ|/r' =
+// 4·(7/6)/6 = 0.78 > α = 0.75, so the trial is rejected and the first iterate is a damped one, not
+// Chebyshev's (which the loop would take if it ignored the bound).
+TEST(LevenbergMarquardt, TrialThatBendsTooMuchIsRejected) {
+  const LeastSquaresProblem p = square_root_of_two();
+  LevenbergMarquardtOptions o;
+  o.initial_lambda = 0;
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(1, 3.0);
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  p.residuals(x0, r, &J);
+  const LmTrial t = levenberg_marquardt_trial(p, x0, r, J, 0.0, o);
+  ASSERT_TRUE(t.ok);
+  EXPECT_NEAR(t.bend, 4.0 * (7.0 / 6.0) / 6.0, 1e-12);
+  EXPECT_TRUE(t.bent);
+  const double cheb = 3.0 - 7.0 / 6.0 - 2 * 49.0 / (2 * 216.0);
+  Eigen::VectorXd x = x0;
+  o.max_iterations = 1;
+  levenberg_marquardt(p, x, o);
+  EXPECT_GT(std::abs(x(0) - cheb), 1e-3) << x(0);
+  EXPECT_LT(std::abs(x(0) - std::sqrt(2.0)), std::abs(3.0 - std::sqrt(2.0)));  // still a step towards √2
+}
+
+// r = (1, 1e-4 e^{-x}): Φ = 1 + 1e-8 e^{-2x} falls by a factor e^{-2} of its small part a step (the
+// Gauss–Newton step is 1 in x) until it rounds to 1; over 10 iterations it falls by 1e-8 of Φ, below
+// the stall test's 1e-6, so the loop stops Stalled (without the test it would stop at NoStep).
+TEST(LevenbergMarquardt, StallsWhenPhiNoLongerFalls) {
+  LeastSquaresProblem p;
+  p.residuals = [](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    r = Eigen::Vector2d(1.0, 1e-4 * std::exp(-x(0)));
+    if (J) *J = Eigen::Vector2d(0.0, -1e-4 * std::exp(-x(0)));
+  };
+  LevenbergMarquardtOptions o;
+  o.geodesic_acceleration = false;
+  o.target = 0.5;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(1);
+  const LsOutcome out = levenberg_marquardt(p, x, o);
+  EXPECT_EQ(out.stop, LsStop::Stalled) << int(out.stop);
+  EXPECT_GE(out.iterations, 10);
+  EXPECT_GT(x(0), 5.0);
+}
+
 // The trial as the loop takes it: δ solves (JᵀJ + λD)δ = −Jᵀr, a = −(JᵀJ + λD)⁻¹Jᵀr_δδ, and the
 // bend is 2‖a‖_D/‖δ‖_D, each against its closed form on the quadratic residuals.
 TEST(LevenbergMarquardt, TrialIsTheDampedVelocityAndItsAcceleration) {
@@ -166,17 +208,24 @@ LeastSquaresProblem nearest_on_sphere(const Eigen::Vector3d& p) {
 TEST(LevenbergMarquardt, ConstrainedStepIsTangentAndEndsAtTheNearestPoint) {
   const Eigen::Vector3d p(1.0, 2.0, -3.0);
   const LeastSquaresProblem q = nearest_on_sphere(p);
-  // Off the constraint (|x|² = 1.69): the velocity meets the linearised constraint, ∇cᵀδ = −c, and
-  // the acceleration is tangent to it, ∇cᵀa = 0.
+  // Off the constraint (|x|² = 1.69), with the quadratic residuals (so that the acceleration is not
+  // rounding noise): the velocity meets the linearised constraint, ∇cᵀδ = −c, and the acceleration
+  // is tangent to it, ∇cᵀa = 0.
+  LeastSquaresProblem nq = q;
+  nq.residuals = [](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    r = quadratic_r(x);
+    if (J) *J = quadratic_J(x);
+  };
   const Eigen::VectorXd x0 = Eigen::Vector3d(1.2, 0.5, 0.0);
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
-  q.residuals(x0, r, &J);
-  const LmTrial t = levenberg_marquardt_trial(q, x0, r, J, 1e-3, LevenbergMarquardtOptions{});
+  nq.residuals(x0, r, &J);
+  const LmTrial t = levenberg_marquardt_trial(nq, x0, r, J, 1e-3, LevenbergMarquardtOptions{});
   ASSERT_TRUE(t.ok);
   ASSERT_EQ(t.acceleration.size(), 3);
+  ASSERT_GT(t.acceleration.norm(), 1e-3 * t.velocity.norm());
   EXPECT_NEAR((2 * x0).dot(t.velocity), -(x0.squaredNorm() - 1), 1e-14);
-  EXPECT_NEAR((2 * x0).dot(t.acceleration), 0.0, 1e-14 * t.acceleration.norm());
+  EXPECT_NEAR((2 * x0).dot(t.acceleration), 0.0, 1e-13 * t.acceleration.norm());
   for (bool accel : {false, true}) {
     LevenbergMarquardtOptions o;
     o.geodesic_acceleration = accel;
@@ -240,6 +289,34 @@ TEST(LevenbergMarquardt, BadInput) {
   EXPECT_THROW(levenberg_marquardt(p, x, LevenbergMarquardtOptions{}), NonFiniteError);
   x = Eigen::Vector2d(1.5, 1.0);  // two unknowns for a one-column Jacobian
   EXPECT_THROW(levenberg_marquardt(p, x, LevenbergMarquardtOptions{}), SizeError);
+  x.resize(0);  // no unknowns
+  EXPECT_THROW(levenberg_marquardt(p, x, LevenbergMarquardtOptions{}), SizeError);
+  // The trial checks its sizes and λ too.
+  const Eigen::VectorXd x1 = Eigen::VectorXd::Constant(1, 1.5), r1 = Eigen::VectorXd::Constant(1, 0.25);
+  EXPECT_THROW(levenberg_marquardt_trial(p, x1, r1, Eigen::MatrixXd::Ones(1, 2), 0.1, LevenbergMarquardtOptions{}),
+               SizeError);
+  EXPECT_THROW(levenberg_marquardt_trial(p, x1, Eigen::VectorXd::Ones(3), Eigen::MatrixXd::Ones(1, 1), 0.1,
+                                         LevenbergMarquardtOptions{}),
+               SizeError);
+  EXPECT_THROW(levenberg_marquardt_trial(p, Eigen::VectorXd(), Eigen::VectorXd(), Eigen::MatrixXd(), 0.1,
+                                         LevenbergMarquardtOptions{}),
+               SizeError);
+  EXPECT_THROW(levenberg_marquardt_trial(p, x1, r1, Eigen::MatrixXd::Constant(1, 1, 3.0), -1.0,
+                                         LevenbergMarquardtOptions{}),
+               ParameterError);
+  // Missing callbacks, and a constraint gradient of the wrong size.
+  x = x1;
+  EXPECT_THROW(levenberg_marquardt(LeastSquaresProblem{}, x, LevenbergMarquardtOptions{}), ParameterError);
+  LeastSquaresProblem c = nearest_on_sphere(Eigen::Vector3d(1, 2, 3));
+  c.restore = nullptr;
+  x = Eigen::Vector3d(1, 0, 0);
+  EXPECT_THROW(levenberg_marquardt(c, x, LevenbergMarquardtOptions{}), ParameterError);
+  c = nearest_on_sphere(Eigen::Vector3d(1, 2, 3));
+  c.constraint = [](const Eigen::VectorXd& y, Eigen::VectorXd* grad) {
+    if (grad) *grad = Eigen::VectorXd::Ones(5);
+    return y.squaredNorm() - 1;
+  };
+  EXPECT_THROW(levenberg_marquardt(c, x, LevenbergMarquardtOptions{}), SizeError);
 }
 
 }  // namespace
