@@ -66,14 +66,26 @@ void set_free(Eigen::MatrixX3d& P, const std::vector<int>& free, const Eigen::Ve
 // Levenberg–Marquardt with geodesic acceleration (levenberg_marquardt.h) on Φ = ‖r‖² over the free
 // rows of P (in place) and, with vt, over H too subject to V(P) = V0 (each trial point put back on
 // V = V0 by restore_volume, so every iterate is feasible). Progress stage "cmc least squares".
-LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free, double& H,
-                  const VolumeTarget* vt, double target, int max_iterations, bool geodesic,
-                  const ProgressFn& progress) {
+// With check (the finer rule), every kRuleCheckEvery accepted steps √Φ is also taken by it; when it
+// reads more than kRuleAgreement × √Φ of the rule minimised (and above the target), the loop stops
+// (LsStop::Interrupted) and P, H go back to the last point where the two agreed.
+LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, const MeanCurvatureLeastSquares* check, Eigen::MatrixX3d& P,
+                  const std::vector<int>& free, double& H, const VolumeTarget* vt, double target, int max_iterations,
+                  bool geodesic, const ProgressFn& progress) {
   const Eigen::Index np = 3 * Eigen::Index(free.size());
   const double H_fixed = H;
   // Scratch net of the callbacks: only its free rows change.
   Eigen::MatrixX3d Q = P;
+  Eigen::VectorXd agreed = unknowns(P, free, vt ? &H : nullptr);
   LeastSquaresProblem problem;
+  if (check)
+    problem.monitor = [&, Qm = P](const Eigen::VectorXd& x, int iterations, double phi) mutable {
+      if (iterations % kRuleCheckEvery != 0) return true;
+      set_free(Qm, free, x);
+      if (!rules_agree(*check, Qm, vt ? x(np) : H_fixed, phi, target)) return false;
+      agreed = x;
+      return true;
+    };
   problem.residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
     set_free(Q, free, x);
     const double h = vt ? x(np) : H_fixed;
@@ -116,6 +128,7 @@ LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const
   lo.stage = "cmc least squares";
   Eigen::VectorXd x = unknowns(P, free, vt ? &H : nullptr);
   const LsOutcome out = levenberg_marquardt(problem, x, lo, progress);
+  if (out.stop == LsStop::Interrupted) x = agreed;
   set_free(P, free, x);
   if (vt) H = x(np);
   return out;
@@ -143,9 +156,10 @@ bool restore_volume(const VolumeTarget& vt, Eigen::MatrixX3d& P, const std::vect
 // stall, no step, or max_iterations. A trial step is taken only when it and the new Φ are finite.
 // Progress (stage "cmc least squares"): the fraction of the way from the start's √Φ to the target
 // on a log scale, reported after every iteration, and 1 at the end.
-LsOutcome minimise_newton(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
-                          double H, double target, int max_iterations, bool geodesic, const ProgressFn& progress) {
-  return lm_loop(f, P, free, H, nullptr, target, max_iterations, geodesic, progress);
+LsOutcome minimise_newton(const MeanCurvatureLeastSquares& f, const MeanCurvatureLeastSquares* check,
+                          Eigen::MatrixX3d& P, const std::vector<int>& free, double H, double target,
+                          int max_iterations, bool geodesic, const ProgressFn& progress) {
+  return lm_loop(f, check, P, free, H, nullptr, target, max_iterations, geodesic, progress);
 }
 
 namespace {
@@ -169,7 +183,6 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     Eigen::MatrixX3d P = start.net.points();
     double H = o.V ? start.H : o.H;
     const std::vector<int> free = data.free_indices(o.fixed);
-    const MeanCurvatureLeastSquares f = form_for(data, 0), check = form_for(data, 1);
     const auto cf = functional_for(data);
     // Minimised to 0.7 × the tolerance, so that the check rule (finer) does not miss it by its own small error.
     const double target = 0.7 * o.mean_curvature_tolerance;
@@ -181,15 +194,31 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       // largest (a planar start through the origin has value_scale 0; so has V0 = 0).
       const double vscale = std::max({cf->volume_form().value_scale(P), std::abs(*o.V), std::pow(area(start.net), 1.5)});
       vt.emplace(VolumeTarget{cf->volume_form(), *o.V, vscale > 0 ? vscale : 1.0});
-      ls = ceres ? minimise_ceres(f, P, free, H, &*vt, target, o.max_least_squares_iterations, o.progress)
-                 : lm_loop(f, P, free, H, &*vt, target, o.max_least_squares_iterations, o.geodesic_acceleration,
-                           o.progress);
-    } else if (ceres) {
-      ls = minimise_ceres(f, P, free, H, nullptr, target, o.max_least_squares_iterations, o.progress);
-    } else {
-      ls = minimise_newton(f, P, free, H, target, o.max_least_squares_iterations, o.geodesic_acceleration,
-                           o.progress);
     }
+    // The rule minimised and its check rule; when the check rule stops agreeing with it during the
+    // minimisation (the iterate is exploiting the gaps between the nodes, folding the
+    // parametrisation where Φ cannot see it), the minimisation goes on from the last agreed point
+    // with the next finer pair of rules, at most kMaxRuleRefinements times.
+    int extra = 0, ls_iterations = 0;
+    std::optional<MeanCurvatureLeastSquares> f, check;
+    while (true) {
+      f.emplace(form_for(data, extra));
+      check.emplace(form_for(data, extra + 1));
+      const int left = o.max_least_squares_iterations - ls_iterations;
+      const VolumeTarget* v = vt ? &*vt : nullptr;
+      if (ceres)
+        ls = minimise_ceres(*f, &*check, P, free, H, v, target, left, o.progress);
+      else if (v)
+        ls = lm_loop(*f, &*check, P, free, H, v, target, left, o.geodesic_acceleration, o.progress);
+      else
+        ls = minimise_newton(*f, &*check, P, free, H, target, left, o.geodesic_acceleration, o.progress);
+      ls_iterations += ls.iterations;
+      if (ls.stop != LsStop::Interrupted || extra >= kMaxRuleRefinements || ls_iterations >= o.max_least_squares_iterations)
+        break;
+      ++extra;
+    }
+    ls.iterations = ls_iterations;
+    if (ls.stop == LsStop::Interrupted && ls_iterations >= o.max_least_squares_iterations) ls.stop = LsStop::MaxIterations;
     res.summary.iterations += ls.iterations;
     if (vt && ls.stop != LsStop::ConstraintUnmet) {
       // Φ is quadratic in H (r = r₀ + H ∂r/∂H): the V form reports the best H for the surface
@@ -197,9 +226,9 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       // V as it is). The loops stop at √Φ <= target, not at ∂Φ/∂H = 0; on the circle their last H
       // was up to 9.6e-8 off the cap's, H* is within 4.2e-8 (docs/cmc.md, "The V form").
       Eigen::VectorXd r0, dH;
-      f.residuals(P, 0.0, &r0, nullptr, nullptr, &dH);
+      f->residuals(P, 0.0, &r0, nullptr, nullptr, &dH);
       const double hh = dH.squaredNorm(), Hs = hh > 0 ? -dH.dot(r0) / hh : H;
-      if (std::isfinite(Hs) && f.value(P, Hs) <= f.value(P, H)) H = Hs;
+      if (std::isfinite(Hs) && f->value(P, Hs) <= f->value(P, H)) H = Hs;
     }
     const Net net = make_net(data, P);
     res.net = net;
@@ -208,15 +237,19 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     res.V = cf->volume(P);
     res.DH = res.D + 2.0 * H * res.V;
     res.A = area(net);
-    const double phi = check.value(P, H);
+    const double phi = check->value(P, H);
     res.energy = phi;
-    res.quadrature_points = f.points_per_direction();
+    res.quadrature_points = f->points_per_direction();
     res.summary.residual = std::sqrt(phi);
     const std::string start_note =
         o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
         : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
                                   : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
-    const std::string what = "least squares of the mean curvature " + start_note + ": √Φ = " +
+    const std::string refined =
+        extra > 0 ? " (rule refined to q = " + std::to_string(f->points_per_direction()) +
+                        ": the check rule stopped agreeing with the coarser one)"
+                  : std::string();
+    const std::string what = "least squares of the mean curvature " + start_note + refined + ": √Φ = " +
                              num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
                              " after " + std::to_string(ls.iterations) +
                              (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
@@ -235,8 +268,8 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       std::string why;
       switch (ls.stop) {
         case LsStop::Reached:
-          why = " by the check rule (q = " + std::to_string(check.points_per_direction()) +
-                "), although the rule minimised (q = " + std::to_string(f.points_per_direction()) +
+          why = " by the check rule (q = " + std::to_string(check->points_per_direction()) +
+                "), although the rule minimised (q = " + std::to_string(f->points_per_direction()) +
                 ") reached " + num(0.7 * o.mean_curvature_tolerance, 3) + ": the rule does not resolve Φ at this net";
           break;
         case LsStop::Stalled:
@@ -254,6 +287,11 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
           break;
         case LsStop::ConstraintUnmet:
           why = std::string(": ") + kVolumeUnmet;
+          break;
+        case LsStop::Interrupted:
+          why = " where the finer rules still disagree (q = " + std::to_string(f->points_per_direction()) + " and " +
+                std::to_string(check->points_per_direction()) +
+                " points per direction, refined twice): the parametrisation is folding where Φ's rule does not see it";
           break;
       }
       res.summary.set_failed(Status::NoConvergence,

@@ -192,6 +192,10 @@ LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, 
     evaluate(p, x, r, J);
     phi = r.squaredNorm();
     report(progress, o.stage, ls_fraction(start, o.target, std::sqrt(phi)), 1);
+    if (p.monitor && std::isfinite(phi) && !p.monitor(x, out.iterations, phi)) {
+      out.stop = LsStop::Interrupted;
+      break;
+    }
     history.push_back(phi);
     if (history.size() > 11) history.erase(history.begin());
     if (stalled(history) && std::sqrt(phi) > o.target) {

@@ -50,6 +50,7 @@ enum class LsStop {
   MaxIterations,    ///< the iteration limit used up
   NonFinite,        ///< Φ or its Jacobian is not finite at the current point
   ConstraintUnmet,  ///< with a constraint: the start could not be put on c = 0 (`restore` failed)
+  Interrupted,      ///< the problem's monitor stopped it (the mean-curvature route: the rule no longer resolves Φ)
 };
 
 struct LsOutcome {
@@ -78,6 +79,9 @@ struct LeastSquaresProblem {
   std::function<double(const Eigen::VectorXd& x, Eigen::VectorXd* grad)> constraint;
   /// With a constraint: moves x onto c = 0 in place; false when it cannot (x is then unspecified).
   std::function<bool(Eigen::VectorXd& x)> restore;
+  /// Optional: called after every accepted step with the new point, the accepted steps so far and
+  /// Φ there; false stops the loop (LsStop::Interrupted, x the point just accepted).
+  std::function<bool(const Eigen::VectorXd& x, int iterations, double phi)> monitor;
 };
 
 struct LevenbergMarquardtOptions {

@@ -192,9 +192,13 @@ class VolumeManifold final : public ceres::Manifold {
 class StopAtTarget final : public ceres::IterationCallback {
  public:
   // y: the parameter block, which Ceres updates at every iteration (update_state_every_iteration).
-  // h: the H block (the V form; Ceres updates it too), or the fixed H.
-  StopAtTarget(double target, const ProgressFn& progress, const std::vector<double>& y, const double& h)
-      : target_(target), progress_(progress), y_(y), h_(h), best(y), best_h(h) {}
+  // h: the H block (the V form; Ceres updates it too), or the fixed H. With check (the finer rule)
+  // and P (a net whose free rows are y's), the rules are compared every kRuleCheckEvery accepted
+  // steps (rules_agree, mean_curvature_minimise.h).
+  StopAtTarget(double target, const ProgressFn& progress, const std::vector<double>& y, const double& h,
+               const MeanCurvatureLeastSquares* check, const Eigen::MatrixX3d& P, const std::vector<int>& free)
+      : target_(target), progress_(progress), y_(y), h_(h), check_(check), P_(P), free_(free), best(y), best_h(h),
+        agreed_(y), agreed_h_(h) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     // After a rejected step s.cost is the rejected candidate's (Ceres 2.1), so only accepted
     // points (and the start, iteration 0, which counts as successful) are tested.
@@ -202,6 +206,18 @@ class StopAtTarget final : public ceres::IterationCallback {
     const double phi = 2.0 * s.cost;
     best = y_;  // Ceres puts the start back if it ends in FAILURE; the caller keeps this point instead
     best_h = h_;
+    if (check_ && s.iteration > 0 && ++accepted_ % kRuleCheckEvery == 0) {
+      for (size_t a = 0; a < free_.size(); ++a)
+        for (int c = 0; c < 3; ++c) P_(free_[a], c) = y_[3 * a + size_t(c)];
+      if (!rules_agree(*check_, P_, h_, phi, target_)) {
+        interrupted = true;
+        best = agreed_;
+        best_h = agreed_h_;
+        return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+      }
+      agreed_ = y_;
+      agreed_h_ = h_;
+    }
     if (s.iteration == 0) start_ = std::sqrt(phi);
     last11_.push_back(phi);
     if (last11_.size() > 11) last11_.erase(last11_.begin());
@@ -216,13 +232,16 @@ class StopAtTarget final : public ceres::IterationCallback {
     }
     return ceres::SOLVER_CONTINUE;
   }
-  bool reached = false, stall = false;
+  bool reached = false, stall = false, interrupted = false;
 
  private:
   double target_, start_ = 0.0;
   const ProgressFn& progress_;
   const std::vector<double>& y_;
   const double& h_;
+  const MeanCurvatureLeastSquares* check_;
+  Eigen::MatrixX3d P_;
+  const std::vector<int>& free_;
 
  public:
   std::vector<double> best;  ///< the last accepted point
@@ -230,13 +249,16 @@ class StopAtTarget final : public ceres::IterationCallback {
 
  private:
   std::vector<double> last11_;
+  std::vector<double> agreed_;
+  double agreed_h_;
+  int accepted_ = 0;
 };
 
 }  // namespace
 
-LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P, const std::vector<int>& free,
-                         double& H, const VolumeTarget* vt, double target, int max_iterations,
-                         const ProgressFn& progress) {
+LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, const MeanCurvatureLeastSquares* check,
+                         Eigen::MatrixX3d& P, const std::vector<int>& free, double& H, const VolumeTarget* vt,
+                         double target, int max_iterations, const ProgressFn& progress) {
   LsOutcome out;
   report(progress, "cmc least squares", 0, 1);
   if (vt) {  // on a copy: a start that cannot be restored is reported as it was given
@@ -267,7 +289,7 @@ LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P
 
   ceres::Solver::Options so = ceres_lm_options(max_iterations);
   so.update_state_every_iteration = true;
-  StopAtTarget cb(target, progress, y, h);
+  StopAtTarget cb(target, progress, y, h, check, P, free);
   so.callbacks.push_back(&cb);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
@@ -276,7 +298,9 @@ LsOutcome minimise_ceres(const MeanCurvatureLeastSquares& f, Eigen::MatrixX3d& P
   if (vt) H = cb.best_h;
   // steps tried (Ceres's iteration 0 is the start's evaluation, counted as a successful step)
   out.iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);
-  if (cb.reached)
+  if (cb.interrupted)
+    out.stop = LsStop::Interrupted;
+  else if (cb.reached)
     out.stop = LsStop::Reached;
   else if (cb.stall)
     out.stop = LsStop::Stalled;

@@ -251,6 +251,24 @@ TEST(LevenbergMarquardt, UnmetConstraintAtTheStartLeavesTheStartAsGiven) {
   EXPECT_EQ(x, given);
 }
 
+// The monitor sees every accepted point with its Φ and can stop the loop (LsStop::Interrupted).
+TEST(LevenbergMarquardt, MonitorSeesEveryAcceptedPointAndCanStop) {
+  LeastSquaresProblem p = square_root_of_two();
+  std::vector<double> seen;
+  p.monitor = [&](const Eigen::VectorXd& x, int iterations, double phi) {
+    EXPECT_EQ(iterations, static_cast<int>(seen.size()) + 1);
+    EXPECT_NEAR(phi, std::pow(x(0) * x(0) - 2, 2), 1e-15);
+    seen.push_back(x(0));
+    return iterations < 2;
+  };
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(1, 1.5);
+  const LsOutcome out = levenberg_marquardt(p, x, LevenbergMarquardtOptions{});
+  EXPECT_EQ(out.stop, LsStop::Interrupted);
+  EXPECT_EQ(out.iterations, 2);
+  ASSERT_EQ(seen.size(), 2u);
+  EXPECT_EQ(x(0), seen.back());
+}
+
 TEST(LevenbergMarquardt, BadInput) {
   const LeastSquaresProblem p = square_root_of_two();
   auto rejects = [&](LevenbergMarquardtOptions o, const std::string& name) {

@@ -325,6 +325,27 @@ TEST(CmcMeanCurvature, C1DataMinimalSurfaceIsTheHelicoidPiece) {
   }
 }
 
+// Conformal data (the sphere triangle, H = 1) at n = 10: Φ's floor at this degree is about 7e-6
+// (rules of q >= 20 agree), above the default tolerance. With the rule minimised alone (q = 9) the
+// iterate went on lowering that rule's Φ by folding the parametrisation near a corner, between its
+// nodes: after 822 steps the check rule read 1.4e-2 and the result was reported as a degenerate
+// parametrisation. The rule check (every 10 steps) catches the disagreement, refines the rules
+// (q = 14) from the last agreed point, and the result is a regular surface that stops at the floor,
+// reported as such.
+TEST(CmcMeanCurvature, RuleCheckKeepsTheParametrisationRegularOnConformalData) {
+  const TriangularNet data = testing::triangular_boundary(10, testing::sphere_triangle);
+  for (const CmcSolver solver : kSolvers) {
+    SCOPED_TRACE(to_string(solver));
+    const CmcResult<TriangularNet> r = solve_cmc(data, mc_options(1.0, solver));
+    EXPECT_EQ(r.summary.status, Status::NoConvergence);
+    EXPECT_EQ(r.summary.message.find("degenerate"), std::string::npos) << r.summary.message;
+    EXPECT_NE(r.summary.message.find("rule refined"), std::string::npos) << r.summary.message;
+    EXPECT_LE(r.summary.residual, 1e-5);  // the check rule's √Φ: at the floor, not a fold
+    EXPECT_GT(r.summary.residual, 1e-6);
+    EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d::Zero(), 1.0), 1e-5);
+  }
+}
+
 TEST(CmcMeanCurvature, BadInput) {
   const TriangularNet data = testing::circle_three_arcs(6);
   CmcOptions o = mc_options(-0.5);
