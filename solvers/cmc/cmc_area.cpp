@@ -387,9 +387,15 @@ struct AreaSolve {
   // A_H itself meets the tolerance; after each stage with ε <= 1e-4 the jump to ε = 0 is tried
   // (jump()); ε then drops to 0 for a last stage. A failed stage is retried with a ratio closer to 1 (√ of the
   // last); successful ones square the ratio again (not below 1/100). F_ε is well conditioned in the
-  // tangential directions for ε > 0, where A_H alone is nearly singular.
+  // tangential directions for ε > 0, where A_H alone is nearly singular. With V0 (the V form) the
+  // stages hold V = *V0 and move H (stage(H, ε) updates it), the predictor is the bordered one and
+  // the jump corrects with the bordered corrector; ε below 1e-12 (not 1e-16) goes to 0, and when
+  // the stages stop below ε = 1e-4 the last stage at ε = 0 is still tried (measured on the circle:
+  // with the H form's rules the V form misses the tolerance at n = 6, H = −0.9 (3.8e-8) and n = 10,
+  // H = −0.5 (1.1e-11), docs/cmc.md, "The V form on the circle").
   template <class Stage>
-  bool homotopy(double& H, Stage stage, std::string& note) {
+  bool homotopy(double& H, Stage stage, std::string& note, const double* V0 = nullptr) {
+    const bool fixed_volume = V0 != nullptr;
     double eps = 1.0, ratio = 0.1;
     int failures = 0;
     p.eps = eps;
@@ -400,16 +406,16 @@ struct AreaSolve {
     while (true) {
       if (p.residual_at(H, 0.0) <= o.tolerance || eps == 0.0) break;
       double next = eps * ratio;
-      if (next < 1e-16) next = 0.0;
+      if (next < (fixed_volume ? 1e-12 : 1e-16)) next = 0.0;
       const Eigen::VectorXd y = p.get();
       const double Hs = H;
-      predict(H, eps, next);
+      predict(H, eps, next, fixed_volume);
       p.eps = next;
       const bool sok = stage(H, next);
       if (sok) {
         eps = next;
         ratio = std::max(ratio * ratio, 1e-2);
-        if (eps <= 1e-4 && p.residual_at(H, 0.0) > o.tolerance && jump(H, eps)) {
+        if (eps <= 1e-4 && p.residual_at(H, 0.0) > o.tolerance && jump(H, eps, V0)) {
           eps = 0.0;
           break;
         }
@@ -422,17 +428,18 @@ struct AreaSolve {
           // Keep the last stage: its first variation of A_H is ≈ ε |∇(D - A)| (reported by the
           // caller as a numerical limit when above the tolerance).
           note = "the Dirichlet regulariser could not be removed below ε = " + num(eps);
+          if (fixed_volume && eps <= 1e-4) break;  // the V form tries the last stage below
           p.eps = 0.0;
           return eps <= 1e-4;
         }
       }
     }
     p.eps = 0.0;
-    if (p.residual_at(H, 0.0) <= o.tolerance) return true;
+    if (p.residual_at(H, 0.0) <= o.tolerance || (fixed_volume && eps == 0.0)) return true;
     const Eigen::VectorXd y = p.get();
     const double Hs = H, r0 = p.residual_at(H, 0.0);
     p.eps = eps;
-    predict(H, eps, 0.0);
+    predict(H, eps, 0.0, fixed_volume);
     p.eps = 0.0;
     if (!stage(H, 0.0) && !(p.residual_at(H, 0.0) < r0)) {
       p.set(y);
@@ -447,14 +454,21 @@ struct AreaSolve {
   // goes back to the F_ε critical point and the stages go on. Measured (docs/cmc.md, "Final
   // convergence"): the predictor puts the start of the A_H corrector inside its basin, where the
   // stages alone (no predictor) stopped at ε ≈ 1e-8 … 1e-6 with the first variation at 1e-9 … 1e-7.
-  bool jump(double H, double eps) {
+  // With V0 (the V form): the bordered predictor, and the bordered corrector, which moves H too
+  // (restored with the net when the jump is not kept).
+  bool jump(double& H, double eps, const double* V0 = nullptr) {
     const Eigen::VectorXd y = p.get();
+    const double Hs = H;
     const std::shared_ptr<const AreaForm> a0 = p.a;
-    predict(H, eps, 0.0);
+    predict(H, eps, 0.0, V0 != nullptr);
     p.eps = 0.0;
     choose_rule();
     CorrectorStats st;
-    if (o.solver == CmcSolver::Ceres) {
+    if (V0) {
+      theta = 1e-8;
+      st = bordered_correct(*V0, H, o.tolerance, 8);
+      st.iterations = 0;  // bordered_correct counts its own into summary
+    } else if (o.solver == CmcSolver::Ceres) {
       CmcOptions co = o;
       co.max_corrector_iterations = 8;
       st = ceres_correct(p, H, co);
@@ -465,14 +479,17 @@ struct AreaSolve {
     summary.iterations += st.iterations;
     if (st.ok) return true;
     p.set(y);
+    H = Hs;
     p.eps = eps;
     p.a = a0;
     return false;
   }
 
   // Euler predictor along the ε-path: dY/dε = -K_ε^{-1} ∇(D - A), from the current point (a critical
-  // point of F_ε) to ε = next. Left unchanged when the predicted net is not regular.
-  void predict(double H, double eps, double next) {
+  // point of F_ε) to ε = next. With fixed_volume (the V form, H varies): from a critical point of
+  // F_ε + 2HV with V = V0, the bordered system [K_ε 2∇V; ∇Vᵀ 0][dY; dH] = [−∇(D − A); 0], and H
+  // moves too. Left unchanged when the predicted net is not regular.
+  void predict(double& H, double eps, double next, bool fixed_volume = false) {
     const Eigen::VectorXd y = p.get();
     const double e0 = p.eps;
     p.eps = eps;
@@ -482,10 +499,22 @@ struct AreaSolve {
     const Eigen::MatrixXd K = p.hessian(H);
     p.eps = e0;
     const Eigen::LDLT<Eigen::MatrixXd> f(K);
-    const Eigen::VectorXd dy = -f.solve(g1 - g0);
+    Eigen::VectorXd dy = -f.solve(g1 - g0);
+    double dH = 0.0;
+    if (fixed_volume) {
+      const Eigen::VectorXd gV = p.volume_gradient(), b = f.solve(gV);
+      const double den = gV.dot(b);
+      if (!(std::abs(den) > 0) || !b.allFinite()) return;
+      dH = gV.dot(dy) / (2.0 * den);
+      dy -= 2.0 * dH * b;
+    }
     if (!dy.allFinite()) return;
     p.set(y + (next - eps) * dy);
-    if (!(p.a->min_normal(p.P()) > 0.0)) p.set(y);
+    if (!(p.a->min_normal(p.P()) > 0.0)) {
+      p.set(y);
+      return;
+    }
+    H += (next - eps) * dH;
   }
 
   // The stage tolerance: the F_ε residual that keeps the A_H residual (≈ ε |∇(D - A)|) on track.
@@ -646,32 +675,6 @@ struct AreaSolve {
     return std::max(p.residual_at(H, 0.0), std::abs(p.base.f->volume(p.P()) - V0) / (vs > 0 ? vs : 1.0));
   }
 
-  // Euler predictor along the ε-path at fixed V0 (H varies): from a critical point of F_ε + 2HV
-  // with V = V0, the bordered system [K_ε 2∇V; ∇Vᵀ 0][dY; dH] = [−∇(D − A); 0] gives the
-  // derivative along ε; the net moves to ε = next (left unchanged when it is not regular).
-  void predict_volume(double& H, double eps, double next) {
-    const Eigen::VectorXd y = p.get();
-    const double e0 = p.eps;
-    p.eps = eps;
-    Eigen::VectorXd g1, g0;
-    p.residual_at(H, 1.0, &g1);
-    p.residual_at(H, 0.0, &g0);
-    const Eigen::MatrixXd K = p.hessian(H);
-    p.eps = e0;
-    const Eigen::LDLT<Eigen::MatrixXd> f(K);
-    const Eigen::VectorXd gV = p.volume_gradient(), a = f.solve(g1 - g0), b = f.solve(gV);
-    const double den = gV.dot(b);
-    if (!(std::abs(den) > 0) || !a.allFinite() || !b.allFinite()) return;
-    const double dH = -gV.dot(a) / (2.0 * den);
-    const Eigen::VectorXd dy = -a - 2.0 * dH * b;
-    p.set(y + (next - eps) * dy);
-    if (!(p.a->min_normal(p.P()) > 0.0)) {
-      p.set(y);
-      return;
-    }
-    H += (next - eps) * dH;
-  }
-
   // V mode, route 1 (the V form of from_dirichlet): the minimiser of D at V = V0 (the nlopt route,
   // a critical point of F_1 = D + 2HV at V0 with its multiplier H), then the vanishing Dirichlet
   // regulariser at fixed V0: F_ε for ε = 1, 1/10, 1/100, … (ratio adapted as in homotopy()), each
@@ -688,75 +691,23 @@ struct AreaSolve {
     p.base.P = d.net.points();
     double H = d.H;
     choose_rule();
-    auto stage = [&](double e) {
-      p.eps = e;
-      const CmcOptions so = stage_options(e);
-      choose_rule_for(so.tolerance);
-      theta = 1e-3;
-      return bordered_correct(V0, H, e == 0.0 ? o.tolerance : so.tolerance).ok;
-    };
     const std::string from = "from the minimiser of D at V = " + num(V0) + " (H = " + num(d.H) + ")";
-    // The jump to ε = 0 from a stage with ε <= 1e-4 (as jump() in the H form): the bordered
-    // predictor to ε = 0, then at most 8 bordered iterations on A_H; kept when they reach the
-    // tolerance.
-    auto jump = [&](double e) {
-      const Eigen::VectorXd y = p.get();
-      const double Hs = H;
-      const std::shared_ptr<const AreaForm> a0 = p.a;
-      predict_volume(H, e, 0.0);
-      p.eps = 0.0;
-      choose_rule();
-      theta = 1e-8;
-      if (bordered_correct(V0, H, o.tolerance, 8).ok) return true;
-      p.set(y);
-      H = Hs;
-      p.eps = e;
-      p.a = a0;
-      return false;
-    };
-    double eps = 1.0, ratio = 0.1;
-    int failures = 0;
     std::string note;
-    if (!stage(eps)) {
+    const bool ok = homotopy(
+        H,
+        [&](double& h, double e) {
+          p.eps = e;
+          const CmcOptions so = stage_options(e);
+          choose_rule_for(so.tolerance);
+          theta = 1e-3;
+          return bordered_correct(V0, h, e == 0.0 ? o.tolerance : so.tolerance).ok;
+        },
+        note, &V0);
+    if (!ok) {
       p.eps = 0.0;
-      return {H, false, Status::NoConvergence, "the minimiser of D at V = " + num(V0) + " is not a critical point of D + 2HV"};
+      return {H, false, Status::NoConvergence, note + " at fixed V " + from};
     }
-    while (p.residual_at(H, 0.0) > o.tolerance && eps > 0.0) {
-      double next = eps * ratio;
-      if (next < 1e-12) next = 0.0;
-      const Eigen::VectorXd y = p.get();
-      const double Hs = H;
-      predict_volume(H, eps, next);
-      if (stage(next)) {
-        eps = next;
-        ratio = std::max(ratio * ratio, 1e-2);
-        if (eps > 0.0 && eps <= 1e-4 && p.residual_at(H, 0.0) > o.tolerance && jump(eps)) eps = 0.0;
-      } else {
-        p.set(y);
-        H = Hs;
-        p.eps = eps;
-        ratio = std::sqrt(ratio);
-        if (ratio > 0.7 || ++failures > 12) {
-          if (eps > 1e-4) {
-            p.eps = 0.0;
-            return {H, false, Status::NumericalLimit,
-                    "the Dirichlet regulariser could not be removed below ε = " + num(eps) + " at fixed V " + from};
-          }
-          note = " (the regulariser stopped at ε = " + num(eps) + ")";
-          break;
-        }
-      }
-    }
-    if (p.residual_at(H, 0.0) > o.tolerance && p.eps > 0.0) {
-      // A last stage at ε = 0 from the predictor; kept when it lowers the first variation of A_H.
-      const Eigen::VectorXd y = p.get();
-      const double Hs = H, r0 = p.residual_at(H, 0.0), e = p.eps;
-      predict_volume(H, e, 0.0);
-      if (!stage(0.0) && !(p.residual_at(H, 0.0) < r0)) {
-        p.set(y);
-        H = Hs;
-      }
-    }
+    if (!note.empty()) note = " (" + note + ")";
     p.eps = 0.0;
     if (vresidual(V0, H) > o.tolerance && o.solver != CmcSolver::Ceres) {
       // The V form's critical point is the A_H critical point at its multiplier H: the H form's
