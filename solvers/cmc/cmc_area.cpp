@@ -390,9 +390,10 @@ struct AreaSolve {
   // tangential directions for ε > 0, where A_H alone is nearly singular. With V0 (the V form) the
   // stages hold V = *V0 and move H (stage(H, ε) updates it), the predictor is the bordered one and
   // the jump corrects with the bordered corrector; ε below 1e-12 (not 1e-16) goes to 0, and when
-  // the stages stop below ε = 1e-4 the last stage at ε = 0 is still tried (measured on the circle:
-  // with the H form's rules the V form misses the tolerance at n = 6, H = −0.9 (3.8e-8) and n = 10,
-  // H = −0.5 (1.1e-11), docs/cmc.md, "The V form on the circle").
+  // the stages stop below ε = 1e-4 the last stage at ε = 0 is still tried (measured on the circle
+  // when the two loops were merged: with the H form's rules the V form missed the tolerance at
+  // n = 6, H = −0.9 (first variation 3.8e-8) and n = 10, H = −0.5 (1.1e-11), which converge as the
+  // table in docs/cmc.md, "The V form on the circle", has them).
   template <class Stage>
   bool homotopy(double& H, Stage stage, std::string& note, const double* V0 = nullptr) {
     const bool fixed_volume = V0 != nullptr;
@@ -809,6 +810,8 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       out = s.from_dirichlet_volume(*o.V);
       if (!out.ok) {
         const AreaOutcome route1 = out;
+        s.theta = 1.0;  // route 2 as it was, not with route 1's damping or regulariser
+        s.p.eps = 0.0;
         out = s.volume_continuation(extremal, res.continuation_steps);
         if (!out.ok) out.message += " (and route 1: " + route1.message + ")";
       }

@@ -80,6 +80,10 @@ LsOutcome lm_loop(const MeanCurvatureLeastSquares& f, const MeanCurvatureLeastSq
   LeastSquaresProblem problem;
   if (check)
     problem.monitor = [&, Qm = P](const Eigen::VectorXd& x, int iterations, double phi) mutable {
+      if (iterations == 0) {  // the start, restored onto V = V0 in the V form: agreed by definition
+        agreed = x;
+        return true;
+      }
       if (iterations % kRuleCheckEvery != 0) return true;
       set_free(Qm, free, x);
       if (!rules_agree(*check, Qm, vt ? x(np) : H_fixed, phi, target)) return false;
@@ -289,9 +293,10 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
           why = std::string(": ") + kVolumeUnmet;
           break;
         case LsStop::Interrupted:
-          why = " where the finer rules still disagree (q = " + std::to_string(f->points_per_direction()) + " and " +
-                std::to_string(check->points_per_direction()) +
-                " points per direction, refined twice): the parametrisation is folding where Φ's rule does not see it";
+          why = ": the rules refined " + std::to_string(kMaxRuleRefinements) + " times (now q = " +
+                std::to_string(f->points_per_direction()) + " and " + std::to_string(check->points_per_direction()) +
+                " points per direction) still stop agreeing, so the parametrisation is folding where Φ's rule does not "
+                "see it; the net is the last point where they agreed";
           break;
       }
       res.summary.set_failed(Status::NoConvergence,

@@ -138,6 +138,11 @@ LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, 
   Eigen::MatrixXd J;
   evaluate(p, x, r, J);
   double phi = r.squaredNorm(), lambda = o.initial_lambda;
+  if (p.monitor && std::isfinite(phi) && !p.monitor(x, 0, phi)) {
+    out.stop = LsStop::Interrupted;
+    report(progress, o.stage, 1, 1);
+    return out;
+  }
   std::vector<double> history{phi};
   const double start = std::sqrt(phi);
   while (true) {

@@ -79,8 +79,9 @@ struct LeastSquaresProblem {
   std::function<double(const Eigen::VectorXd& x, Eigen::VectorXd* grad)> constraint;
   /// With a constraint: moves x onto c = 0 in place; false when it cannot (x is then unspecified).
   std::function<bool(Eigen::VectorXd& x)> restore;
-  /// Optional: called after every accepted step with the new point, the accepted steps so far and
-  /// Φ there; false stops the loop (LsStop::Interrupted, x the point just accepted).
+  /// Optional: called at the start (iterations = 0, after the restoration onto c = 0) and after
+  /// every accepted step, with the point, the accepted steps so far and Φ there; false stops the
+  /// loop (LsStop::Interrupted, x that point).
   std::function<bool(const Eigen::VectorXd& x, int iterations, double phi)> monitor;
 };
 

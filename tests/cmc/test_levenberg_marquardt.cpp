@@ -251,12 +251,13 @@ TEST(LevenbergMarquardt, UnmetConstraintAtTheStartLeavesTheStartAsGiven) {
   EXPECT_EQ(x, given);
 }
 
-// The monitor sees every accepted point with its Φ and can stop the loop (LsStop::Interrupted).
+// The monitor sees the start and every accepted point with its Φ and can stop the loop
+// (LsStop::Interrupted).
 TEST(LevenbergMarquardt, MonitorSeesEveryAcceptedPointAndCanStop) {
   LeastSquaresProblem p = square_root_of_two();
   std::vector<double> seen;
   p.monitor = [&](const Eigen::VectorXd& x, int iterations, double phi) {
-    EXPECT_EQ(iterations, static_cast<int>(seen.size()) + 1);
+    EXPECT_EQ(iterations, static_cast<int>(seen.size()));
     EXPECT_NEAR(phi, std::pow(x(0) * x(0) - 2, 2), 1e-15);
     seen.push_back(x(0));
     return iterations < 2;
@@ -265,8 +266,14 @@ TEST(LevenbergMarquardt, MonitorSeesEveryAcceptedPointAndCanStop) {
   const LsOutcome out = levenberg_marquardt(p, x, LevenbergMarquardtOptions{});
   EXPECT_EQ(out.stop, LsStop::Interrupted);
   EXPECT_EQ(out.iterations, 2);
-  ASSERT_EQ(seen.size(), 2u);
+  ASSERT_EQ(seen.size(), 3u);
+  EXPECT_EQ(seen.front(), 1.5);
   EXPECT_EQ(x(0), seen.back());
+  // Stopped at the start: no step taken.
+  p.monitor = [](const Eigen::VectorXd&, int, double) { return false; };
+  x = Eigen::VectorXd::Constant(1, 1.5);
+  EXPECT_EQ(levenberg_marquardt(p, x, LevenbergMarquardtOptions{}).iterations, 0);
+  EXPECT_EQ(x(0), 1.5);
 }
 
 TEST(LevenbergMarquardt, BadInput) {
