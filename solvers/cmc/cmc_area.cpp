@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "bezierpde/core/progress.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/kron.h"
 #include "bezierpde/solvers/cmc/area_rule.h"
@@ -404,6 +405,8 @@ struct AreaSolve {
       note = "the start is not a critical point of D_H";
       return false;
     }
+    // Progress (stage "cmc area"): the decades of ε removed, out of 12; 1 when the solve ends.
+    report(o.progress, "cmc area", 0, 1);
     while (true) {
       if (p.residual_at(H, 0.0) <= o.tolerance || eps == 0.0) break;
       double next = eps * ratio;
@@ -416,6 +419,7 @@ struct AreaSolve {
       if (sok) {
         eps = next;
         ratio = std::max(ratio * ratio, 1e-2);
+        report(o.progress, "cmc area", eps > 0.0 ? std::min(0.999, std::log10(1.0 / eps) / 12.0) : 0.999, 1);
         if (eps <= 1e-4 && p.residual_at(H, 0.0) > o.tolerance && jump(H, eps, V0)) {
           eps = 0.0;
           break;
@@ -893,6 +897,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       res.summary.set_failed(out.why, out.message);
     }
   }
+  report(o.progress, "cmc area", 1, 1);
   return res;
 }
 

@@ -60,5 +60,33 @@ TEST(CmcProgress, MeanCurvatureReportsTheLeastSquaresStage) {
   for (size_t i = 1; i < ls.size(); ++i) EXPECT_GE(ls[i], ls[i - 1]);  // Φ never rises in LM
 }
 
+// The area functional: after its D_H start ("cmc continuation"), the stage "cmc area" reports the
+// decades of the Dirichlet regulariser removed (out of 12), never falling, from 0 to 1; the same
+// for the V form (its start is the nlopt minimiser of D).
+TEST(CmcProgress, AreaReportsTheRegulariserStages) {
+  for (bool volume : {false, true}) {
+    SCOPED_TRACE(volume ? "V form" : "H form");
+    CmcOptions o = testing::cmc_options(CmcFunctionalKind::Area, -0.5);
+    if (volume) {
+      const double R = 2.0, h = R - std::sqrt(R * R - 1);
+      o.V = std::acos(-1.0) * h * h * (3 * R - h) / 3;
+      o.H = 0.0;
+    }
+    std::vector<double> area;
+    o.progress = [&](std::string_view stage, double d, double total) {
+      if (stage != "cmc area") return;
+      EXPECT_DOUBLE_EQ(total, 1.0);
+      EXPECT_TRUE(d >= 0 && d <= 1) << d;
+      area.push_back(d);
+    };
+    const auto r = solve_cmc(testing::circle_three_arcs(8), o);
+    ASSERT_TRUE(r.summary.converged) << r.summary.message;
+    ASSERT_GE(area.size(), 3u);
+    EXPECT_EQ(area.front(), 0.0);
+    EXPECT_EQ(area.back(), 1.0);
+    for (size_t i = 1; i < area.size(); ++i) EXPECT_GE(area[i], area[i - 1]);
+  }
+}
+
 }  // namespace
 }  // namespace bpde
