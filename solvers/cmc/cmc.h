@@ -34,8 +34,12 @@
 //    When that fails (no D_H branch point, or the regulariser cannot be taken below 1e-4), the
 //    A_H branch is continued in H itself from the critical point of A at H = 0, started at the
 //    Dirichlet extremal, with a positive-definiteness test per step (before the fold).
-//  - V mode: minimise A subject to V = V0, continued in V from the critical point of A at H = 0;
-//    the multiplier H (∇A + 2H∇V = 0 on the free points) is reported.
+//  - V mode: minimise A subject to V = V0 from the minimiser of D at V = V0 (the nlopt route),
+//    through the same vanishing Dirichlet regulariser at fixed V0 (bordered corrector on (Y, H),
+//    bordered Euler predictor), then the truncated Newton phase at the H reached; if that route
+//    fails, continued in V from the critical point of A at H = 0 (which fails on planar data: the
+//    flat start's area Hessian is singular in every in-plane direction). The multiplier H
+//    (∇A + 2H∇V = 0 on the free points) is reported.
 //  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
 //    over the free points and μ = θ · (relative residual); a step is accepted when F falls as
 //    predicted (ratio > 0.1) or ‖∇F‖₂ falls, with up to three chord corrections by the same factor;
