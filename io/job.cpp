@@ -174,8 +174,6 @@ Problem problem_from_json(const Json& j, const std::string& path) {
       p.kind = ProblemKind::CmcV;
       p.V = number(j["V"], path + ".V");
       if (!j.contains("solver")) p.solver = area || mean_curvature ? CmcSolver::Newton : CmcSolver::NLopt;
-      if (area && p.solver != CmcSolver::Newton)
-        throw UnsupportedProblem(path + ": an area cmc problem with \"V\" needs \"solver\": \"newton\"");
       if (!area && !mean_curvature && p.solver != CmcSolver::NLopt)
         throw UnsupportedProblem(path + ": a cmc problem with \"V\" needs \"solver\": \"nlopt\"");
     }

@@ -23,8 +23,6 @@ void CmcOptions::validate() const {
   if (functional == CmcFunctionalKind::Area) {
     if (solver == CmcSolver::NLopt)
       throw UnsupportedProblem("cmc: the area functional is solved by the newton or the ceres solver");
-    if (V && solver != CmcSolver::Newton)
-      throw UnsupportedProblem("cmc: the volume-constrained area problem (V) is solved by the newton solver only");
     if (fixed == FixedSet::UBoundaries)
       throw UnsupportedProblem("cmc: the area functional needs fixed \"boundary\" or \"boundary+adjacent\"");
   } else if (functional == CmcFunctionalKind::MeanCurvature) {

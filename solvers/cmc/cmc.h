@@ -56,7 +56,8 @@
 //    two neighbouring samples have opposite normals. A degenerating surface is reported with
 //    converged = false, status NoConvergence, and a message that says "degenerate
 //    parametrisation".
-//  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode: newton).
+//  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode too: with ceres
+//    the bordered corrector is Ceres's LM and there is no truncated Newton phase).
 //
 // The least-squares mean-curvature functional (options.functional = MeanCurvature;
 // solvers/cmc/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
@@ -155,7 +156,7 @@ struct CmcOptions {
   ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
   /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with
-  /// nlopt, area V mode with a solver other than newton; area or mean-curvature with u-boundaries;
+  /// nlopt, with or without V; area or mean-curvature with u-boundaries;
   /// mean-curvature with nlopt, with or without V).
   void validate() const;
 };

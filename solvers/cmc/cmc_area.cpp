@@ -629,6 +629,16 @@ struct AreaSolve {
       const double vs = vf.value_scale(p.P());
       return std::max(rg, vs > 0 ? std::abs(c) / vs : std::abs(c));
     };
+    if (o.solver == CmcSolver::Ceres) {  // the same residuals and stopping measure, Ceres's LM
+      const std::function<double(double)> measure = [&](double h) {
+        Eigen::VectorXd g;
+        double c = 0;
+        return resid(h, g, c);
+      };
+      st = ceres_bordered_correct(p, V0, H, tol, max_iterations, measure);
+      summary.iterations += st.iterations;
+      return st;
+    }
     Eigen::VectorXd g;
     double c = 0;
     st.residual = resid(H, g, c);

@@ -1,6 +1,8 @@
 #pragma once
 // Internal to solvers/cmc/*.cpp: the A_H = A + 2HV problem over the free control points (cmc.h,
 // "The area functional"), in the vector layout of cmc_problem.h (y(3a + c) = P(free[a], c)).
+#include <functional>
+
 #include <Eigen/Core>
 #include <memory>
 #include <vector>
@@ -63,5 +65,12 @@ CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOption
 
 /// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);
+
+/// The V form's corrector by Ceres (cmc_ceres.cpp): LM on the 3k + 1 residuals (∇F_ε + 2H∇V over
+/// the free points; (V − V0)/|∇V|) over (Y, H), with the exact bordered Jacobian
+/// [∇²F_ε + 2H∇²V, 2∇V; ∇Vᵀ/|∇V|, 0], until `residual(H)` (the V form's stopping measure, at the
+/// current p.eps) is at most tol, or max_iterations steps. H in and out.
+CorrectorStats ceres_bordered_correct(AreaProblem& p, double V0, double& H, double tol, int max_iterations,
+                                      const std::function<double(double)>& residual);
 
 }  // namespace bpde::cmc_detail

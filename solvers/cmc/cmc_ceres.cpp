@@ -8,6 +8,7 @@
 #include <ceres/ceres.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include "bezierpde/solvers/cmc/ceres_lm_options.h"
@@ -132,7 +133,95 @@ CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
   return st;
 }
 
+// The V form: residuals (g, c/|∇V|) with g = ∇F_ε + 2H∇V over the free points and c = V − V0, on
+// the parameter blocks Y (3k) and H (1).
+class BorderedResiduals final : public ceres::CostFunction {
+ public:
+  BorderedResiduals(AreaProblem* p, double V0) : p_(p), V0_(V0) {
+    set_num_residuals(3 * p->k() + 1);
+    mutable_parameter_block_sizes()->push_back(3 * p->k());
+    mutable_parameter_block_sizes()->push_back(1);
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const int n = 3 * p_->k();
+    const Eigen::Map<const Eigen::VectorXd> y(parameters[0], n);
+    const double H = parameters[1][0];
+    if (!y.allFinite() || !std::isfinite(H)) return false;
+    p_->set(y);
+    Eigen::VectorXd g;
+    p_->residual(H, &g);
+    const Eigen::VectorXd gV = p_->volume_gradient();
+    const double nV = gV.norm(), c = p_->base.f->volume(p_->P()) - V0_;
+    if (!(nV > 0) || !g.allFinite() || !std::isfinite(c)) return false;
+    Eigen::Map<Eigen::VectorXd> F(residuals, n + 1);
+    F.head(n) = g;
+    F(n) = c / nV;
+    if (jacobians && jacobians[0]) {
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(jacobians[0], n + 1, n);
+      J.topRows(n) = p_->hessian(H);
+      J.row(n) = gV.transpose() / nV;
+      if (!J.allFinite()) return false;
+    }
+    if (jacobians && jacobians[1]) {
+      Eigen::Map<Eigen::VectorXd> JH(jacobians[1], n + 1);
+      JH.head(n) = 2.0 * gV;
+      JH(n) = 0.0;
+    }
+    return true;
+  }
+
+ private:
+  AreaProblem* p_;
+  double V0_;
+};
+
+class StopAtBorderedTolerance final : public ceres::IterationCallback {
+ public:
+  StopAtBorderedTolerance(AreaProblem* p, const Eigen::VectorXd* y, const double* H, double tol,
+                          const std::function<double(double)>& residual)
+      : p_(p), y_(y), H_(H), tol_(tol), residual_(residual) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    p_->set(*y_);
+    return residual_(*H_) <= tol_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  AreaProblem* p_;
+  const Eigen::VectorXd* y_;
+  const double* H_;
+  double tol_;
+  const std::function<double(double)>& residual_;
+};
+
 }  // namespace
+
+CorrectorStats ceres_bordered_correct(AreaProblem& p, double V0, double& H, double tol, int max_iterations,
+                                      const std::function<double(double)>& residual) {
+  CorrectorStats st;
+  st.residual = residual(H);
+  st.ok = std::isfinite(st.residual) && st.residual <= tol;
+  if (st.ok || !std::isfinite(st.residual) || max_iterations <= 0) return st;
+  Eigen::VectorXd buf = p.get();
+  double h = H;
+  ceres::Problem problem;
+  problem.AddResidualBlock(new BorderedResiduals(&p, V0), nullptr, buf.data(), &h);  // owned by problem
+  ceres::Solver::Options so = ceres_lm_options(max_iterations);
+  so.linear_solver_type = kLinearSolver;
+  // The bordered Jacobian is square and non-singular at a regular point: start as Gauss–Newton.
+  so.initial_trust_region_radius = 1e12;
+  so.max_trust_region_radius = 1e16;
+  so.update_state_every_iteration = true;
+  StopAtBorderedTolerance cb(&p, &buf, &h, tol, residual);
+  so.callbacks.push_back(&cb);
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  p.set(buf);
+  H = h;
+  st.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
+  st.residual = residual(H);
+  st.ok = std::isfinite(st.residual) && st.residual <= tol;
+  return st;
+}
 
 CorrectorStats ceres_correct(CmcProblem& p, double H, const CmcOptions& o) { return ceres_correct_impl(p, H, o); }
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o) { return ceres_correct_impl(p, H, o); }

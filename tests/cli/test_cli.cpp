@@ -417,7 +417,7 @@ TEST(Cli, CmcAreaJobReportsTheAreaFunctional) {
   bad(job(R"({"kind": "cmc", "H": 0, "functional": "areal"})"), "functional");
   bad(job(R"({"kind": "cmc", "H": 0, "functional": "area", "solver": "nlopt"})"), "nlopt");
   bad(job(R"({"kind": "cmc", "H": 0, "functional": "area"})", R"(, "fixed": "u-boundaries")"), "fixed");
-  bad(job(R"({"kind": "cmc", "V": 1, "functional": "area", "solver": "ceres"})"), "newton");
+  bad(job(R"({"kind": "cmc", "V": 1, "functional": "area", "solver": "nlopt"})"), "nlopt");
 }
 
 // The mean-curvature functional as a job (FORMATS.md, "functional": "mean-curvature"): the Fig. 1
