@@ -34,6 +34,9 @@
 //    When that fails (no D_H branch point, or the regulariser cannot be taken below 1e-4), the
 //    A_H branch is continued in H itself from the critical point of A at H = 0, started at the
 //    Dirichlet extremal, with a positive-definiteness test per step (before the fold).
+//    H = 0: the corrector on A from the Dirichlet extremal, then the truncated Newton phase; a stop
+//    above the tolerance but within 1e-6 (relative first variation) is status NumericalLimit,
+//    further off NoConvergence ("no critical point of the area (H = 0) ...").
 //  - V mode: minimise A subject to V = V0 from the minimiser of D at V = V0 (the nlopt route),
 //    through the same vanishing Dirichlet regulariser at fixed V0 (bordered corrector on (Y, H),
 //    bordered Euler predictor), then the truncated Newton phase at the H reached; if that route

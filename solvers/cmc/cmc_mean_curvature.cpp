@@ -202,8 +202,11 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     // The rule minimised and its check rule; when the check rule stops agreeing with it during the
     // minimisation (the iterate is exploiting the gaps between the nodes, folding the
     // parametrisation where Φ cannot see it), the minimisation goes on from the last agreed point
-    // with the next finer pair of rules, at most kMaxRuleRefinements times.
-    int extra = 0, ls_iterations = 0;
+    // with the next finer pair of rules; when the rule minimised reaches the target but the check
+    // rule reads above the tolerance (they disagree by less than the 2× of the fold test, e.g.
+    // 1.0e-6 … 1.4e-6 against 7e-7 on the circle at n = 12, 14: docs/cmc.md, "The V form"), it goes
+    // on from the point reached with the next finer pair. At most kMaxRuleRefinements times in all.
+    int extra = 0, ls_iterations = 0, folds = 0, misses = 0;
     std::optional<MeanCurvatureLeastSquares> f, check;
     while (true) {
       f.emplace(form_for(data, extra));
@@ -217,8 +220,12 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       else
         ls = minimise_newton(*f, &*check, P, free, H, target, left, o.geodesic_acceleration, o.progress);
       ls_iterations += ls.iterations;
-      if (ls.stop != LsStop::Interrupted || extra >= kMaxRuleRefinements || ls_iterations >= o.max_least_squares_iterations)
+      const bool check_misses =
+          ls.stop == LsStop::Reached && !(std::sqrt(check->value(P, H)) <= o.mean_curvature_tolerance);
+      if (!(ls.stop == LsStop::Interrupted || check_misses) || extra >= kMaxRuleRefinements ||
+          ls_iterations >= o.max_least_squares_iterations)
         break;
+      ++(check_misses ? misses : folds);
       ++extra;
     }
     ls.iterations = ls_iterations;
@@ -250,8 +257,10 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
         : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
                                   : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
     const std::string refined =
-        extra > 0 ? " (rule refined to q = " + std::to_string(f->points_per_direction()) +
-                        ": the check rule stopped agreeing with the coarser one)"
+        extra > 0 ? " (rule refined to q = " + std::to_string(f->points_per_direction()) + ": " +
+                        (folds > 0 ? "the check rule stopped agreeing with the coarser one" : "") +
+                        (folds > 0 && misses > 0 ? "; " : "") +
+                        (misses > 0 ? "the check rule read above the tolerance where the coarser one met it" : "") + ")"
                   : std::string();
     const std::string what = "least squares of the mean curvature " + start_note + refined + ": √Φ = " +
                              num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
