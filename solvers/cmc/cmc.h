@@ -92,7 +92,9 @@
 //    more than 30, up to 20 % more where it needs about 20).
 //  - converged = true means √Φ ≤ options.mean_curvature_tolerance (1e-6; Φ is dimensionless), with
 //    Φ measured by a rule finer than the one minimised (q + ⌈q/2⌉ points per direction), AND the
-//    regularity test of the area functional. It stops not converged (status NoConvergence, exit 1
+//    regularity test of the area functional. When the rule minimised reaches 0.7 × the tolerance
+//    and the check rule does not meet it, or the two disagree by more than 2× on the way (every
+//    10 steps), the minimisation goes on with the next finer pair of rules (at most twice). It stops not converged (status NoConvergence, exit 1
 //    from the CLI) when Φ stalls (a relative fall below 1e-6 in 10 iterations: the degree is too
 //    low for the tolerance) or after options.max_least_squares_iterations; summary.residual is
 //    then the √Φ reached.
