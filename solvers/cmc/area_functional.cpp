@@ -129,12 +129,12 @@ double AreaForm::min_normal(const Eigen::MatrixX3d& P) const {
 }
 
 Eigen::MatrixX3d AreaForm::gradient(const Eigen::MatrixX3d& P) const {
-  check(P);
-  const NodeFrame f = frame(Bu_, Bv_, P);
-  const Eigen::MatrixX3d nh = f.len.cwiseInverse().asDiagonal() * f.N;
-  const Eigen::MatrixX3d a = w_.asDiagonal() * cross_rows(f.Xv, nh);
-  const Eigen::MatrixX3d b = w_.asDiagonal() * cross_rows(nh, f.Xu);
-  return times_t(Bu_, a) + times_t(Bv_, b);
+  // All rows by the same pass as gradient_rows_and_scale, so the two agree to the bit.
+  std::vector<int> all(static_cast<std::size_t>(size()));
+  for (int I = 0; I < size(); ++I) all[static_cast<std::size_t>(I)] = I;
+  Eigen::MatrixX3d G;
+  gradient_rows_and_scale(P, all, &G, nullptr);
+  return G;
 }
 
 void AreaForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
@@ -145,11 +145,20 @@ void AreaForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vec
   const NodeFrame f = frame(Bu_, Bv_, P);
   const Eigen::MatrixX3d nh = f.len.cwiseInverse().asDiagonal() * f.N;
   const Eigen::MatrixX3d a = cross_rows(f.Xv, nh), b = cross_rows(nh, f.Xu);
-  const Eigen::MatrixXd Bus = Bu_(Eigen::all, idx), Bvs = Bv_(Eigen::all, idx);
-  if (G) *G = times_t(Bus, w_.asDiagonal() * a) + times_t(Bvs, w_.asDiagonal() * b);
+  const Eigen::MatrixX3d wa = w_.asDiagonal() * a, wb = w_.asDiagonal() * b;
+  Eigen::MatrixX3d aa, bb;
   if (S) {
-    const Eigen::MatrixX3d aa = w_.asDiagonal() * a.cwiseAbs(), bb = w_.asDiagonal() * b.cwiseAbs();
-    *S = times_t(Bus.cwiseAbs(), aa) + times_t(Bvs.cwiseAbs(), bb);
+    aa = w_.asDiagonal() * a.cwiseAbs();
+    bb = w_.asDiagonal() * b.cwiseAbs();
+  }
+  const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
+  if (G) G->resize(k, 3);
+  if (S) S->resize(k, 3);
+  // One pass over the basis columns of the rows asked for (no copy of the #nodes x k sub-tables).
+  for (Eigen::Index r = 0; r < k; ++r) {
+    const auto bu = Bu_.col(idx[r]), bv = Bv_.col(idx[r]);
+    if (G) G->row(r).noalias() = bu.transpose() * wa + bv.transpose() * wb;
+    if (S) S->row(r).noalias() = bu.cwiseAbs().transpose() * aa + bv.cwiseAbs().transpose() * bb;
   }
 }
 
