@@ -8,7 +8,10 @@
 // acceleration), and {newton,ceres}-volume/circle/<n> for its V form. AreaForm/{gradient,rows-and-scale}/
 // {triangle,square}/<n>: one evaluation of the area's first variation on the rule the solves take
 // at that degree (q = 15 on the triangle, 2n + 4 on the square), all rows against the free rows
-// with their scale (what every residual of the area route costs; the baseline is the full gradient). The per-degree setup (Gram and volume quadrature tables) is cached by
+// with their scale (what every residual of the area route costs; the baseline is the full gradient);
+// AreaForm/hessian/{triangle,square}/<n> the free block of the Hessian on the same rules, and
+// AreaForm/hessian/triangle-graded/<n> on the graded q = 64 rule of the nearly degenerate corners
+// (docs/performance.md, section 9). The per-degree setup (Gram and volume quadrature tables) is cached by
 // CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after the
 // first iteration.
 #include <benchmark/benchmark.h>
@@ -123,23 +126,30 @@ void MeanCurvatureCircleVolumeCeres(benchmark::State& s) {
   CircleRoute(s, CmcFunctionalKind::MeanCurvature, CmcSolver::Ceres, true, true);
 }
 
-// The area's first variation on a perturbed catenoid-like net (regular, non-conformal): the full N x 3
+// The area's first variation on a catenoid piece's net (regular, non-conformal): the full N x 3
 // gradient (the baseline) and the free rows with their scale (AreaProblem::residual_at).
-void AreaFormRoute(benchmark::State& state, bool triangle, bool rows) {
+void AreaFormRoute(benchmark::State& state, bool triangle, bool rows, bool hessian = false, bool graded = false) {
   const int n = static_cast<int>(state.range(0));
   auto surface = [](double u, double v) {
     const double th = 1.2 * u, rho = 1.1 + 0.8 * v;
     return Eigen::Vector3d(rho * std::cos(th), rho * std::sin(th), std::acosh(rho));
   };
   const std::shared_ptr<const AreaForm> f =
-      triangle ? AreaForm::cached_triangular(n, 15) : AreaForm::cached_tensor(n, n, 2 * n + 4);
-  const Eigen::MatrixX3d P = triangle ? triangular_boundary(n, surface).points() : tensor_boundary(n, surface).points();
+      graded     ? AreaForm::cached_triangular(n, 64, 3)
+      : triangle ? AreaForm::cached_triangular(n, 15)
+                 : AreaForm::cached_tensor(n, n, 2 * n + 4);
+  // The boundary of the catenoid piece, the interior from the Dirichlet extremal (a regular net).
+  const Eigen::MatrixX3d P =
+      triangle || graded ? dirichlet_extremal(triangular_boundary(n, surface), FixedSet::Boundary).points()
+                         : dirichlet_extremal(tensor_boundary(n, surface), FixedSet::Boundary).points();
   std::vector<int> idx;
   for (int i = 0; i < f->size(); ++i)
     if (i % 3 != 0) idx.push_back(i);  // about the share of free points at these degrees
   Eigen::MatrixX3d G, S;
   for (auto _ : state) {
-    if (rows)
+    if (hessian)
+      benchmark::DoNotOptimize(f->hessian(P, idx));
+    else if (rows)
       f->gradient_rows_and_scale(P, idx, &G, &S);
     else
       G = f->gradient(P);
@@ -151,6 +161,9 @@ void AreaGradientTriangle(benchmark::State& s) { AreaFormRoute(s, true, false); 
 void AreaRowsTriangle(benchmark::State& s) { AreaFormRoute(s, true, true); }
 void AreaGradientSquare(benchmark::State& s) { AreaFormRoute(s, false, false); }
 void AreaRowsSquare(benchmark::State& s) { AreaFormRoute(s, false, true); }
+void AreaHessianTriangle(benchmark::State& s) { AreaFormRoute(s, true, false, true); }
+void AreaHessianSquare(benchmark::State& s) { AreaFormRoute(s, false, false, true); }
+void AreaHessianGraded(benchmark::State& s) { AreaFormRoute(s, true, false, true, true); }
 
 }  // namespace
 
@@ -158,6 +171,9 @@ BENCHMARK(AreaGradientTriangle)->Name("AreaForm/gradient/triangle")->Arg(6)->Arg
 BENCHMARK(AreaRowsTriangle)->Name("AreaForm/rows-and-scale/triangle")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(AreaGradientSquare)->Name("AreaForm/gradient/square")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(AreaRowsSquare)->Name("AreaForm/rows-and-scale/square")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
+BENCHMARK(AreaHessianTriangle)->Name("AreaForm/hessian/triangle")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
+BENCHMARK(AreaHessianSquare)->Name("AreaForm/hessian/square")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
+BENCHMARK(AreaHessianGraded)->Name("AreaForm/hessian/triangle-graded")->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Dirichlet)->Name("Cmc/dirichlet")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Newton)->Name("Cmc/newton")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Ceres)->Name("Cmc/ceres")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);

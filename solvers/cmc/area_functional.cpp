@@ -162,45 +162,88 @@ void AreaForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vec
   }
 }
 
+namespace {
+struct HessianScratch {
+  Eigen::MatrixXd R, DB, Bub, Bvb;
+  Eigen::MatrixX3d U0, W0, U1, W1, nh;
+};
+HessianScratch& hessian_scratch() {
+  thread_local HessianScratch scratch;
+  return scratch;
+}
+}  // namespace
+
+void AreaForm::release_scratch() { hessian_scratch() = HessianScratch{}; }
+
 Eigen::MatrixXd AreaForm::hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
   check(P);
   for (int I : idx)
     if (I < 0 || I >= size()) throw SizeError("AreaForm: point index out of range");
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size()), Q = w_.size();
   const NodeFrame f = frame(Bu_, Bv_, P);
-  const Eigen::MatrixXd Bus = Bu_(Eigen::all, idx), Bvs = Bv_(Eigen::all, idx);
+  // H = RᵀR + the antisymmetric part below, with
   // R(2q + r, 3a + c) = sqrt(w/|N|) [ (B_a)_u (x_v ∧ t_r) + (B_a)_v (t_r ∧ x_u) ]_c, t_0, t_1 ⊥ n̂.
-  Eigen::MatrixXd R(2 * Q, 3 * k);
-  Eigen::MatrixX3d nh(Q, 3);
-  for (Eigen::Index q = 0; q < Q; ++q) {
-    const Eigen::Vector3d n = f.N.row(q).transpose() / f.len(q);
-    nh.row(q) = n.transpose();
-    // An orthonormal tangent pair: t0 along x_u's component ⊥ n̂ (x_u ⊥ n̂ already), t1 = n̂ ∧ t0.
-    Eigen::Vector3d t0 = f.Xu.row(q).transpose();
-    const double l0 = t0.norm();
-    if (l0 > 0) {
-      t0 /= l0;
-    } else {
-      t0 = n.unitOrthogonal();
+  // Both are accumulated over blocks of kHessianBlock nodes: R is never #nodes × 3k (64 MB at
+  // triangular n = 10 with the graded q = 64 rule), and each block's R is filled column by column
+  // (contiguous), not row by row. Usual rules (up to 8192 nodes) are one block.
+  constexpr Eigen::Index kHessianBlock = 8192;
+  Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
+  std::array<Eigen::MatrixXd, 3> M;
+  for (auto& m : M) m = Eigen::MatrixXd::Zero(k, k);
+  // The blocks' scratch (hessian_scratch() below), kept per thread until release_scratch(): the
+  // solves call the Hessian hundreds of times, and a fresh R per call costs its page faults on
+  // every call where the allocator has returned it to the system in between (3–13× slower Hessians
+  // on the build machine: docs/performance.md, section 9).
+  HessianScratch& sc = hessian_scratch();
+  Eigen::MatrixXd &R = sc.R, &DB = sc.DB, &Bub = sc.Bub, &Bvb = sc.Bvb;
+  Eigen::MatrixX3d &U0 = sc.U0, &W0 = sc.W0, &U1 = sc.U1, &W1 = sc.W1, &nh = sc.nh;
+  R.resize(2 * std::min(kHessianBlock, Q), 3 * k);
+  for (Eigen::Index q0 = 0; q0 < Q; q0 += kHessianBlock) {
+    const Eigen::Index len = std::min(kHessianBlock, Q - q0);
+    U0.resize(len, 3);
+    W0.resize(len, 3);
+    U1.resize(len, 3);
+    W1.resize(len, 3);
+    nh.resize(len, 3);
+    for (Eigen::Index r = 0; r < len; ++r) {
+      const Eigen::Index q = q0 + r;
+      const Eigen::Vector3d n = f.N.row(q).transpose() / f.len(q);
+      nh.row(r) = n.transpose();
+      // An orthonormal tangent pair: t0 along x_u (x_u ⊥ n̂ already), t1 = n̂ ∧ t0.
+      Eigen::Vector3d t0 = f.Xu.row(q).transpose();
+      const double l0 = t0.norm();
+      if (l0 > 0) {
+        t0 /= l0;
+      } else {
+        t0 = n.unitOrthogonal();
+      }
+      const Eigen::Vector3d t1 = n.cross(t0);
+      const double sw = std::sqrt(w_(q) / f.len(q));
+      const Eigen::Vector3d xu = f.Xu.row(q).transpose(), xv = f.Xv.row(q).transpose();
+      U0.row(r) = sw * xv.cross(t0).transpose();
+      W0.row(r) = sw * t0.cross(xu).transpose();
+      U1.row(r) = sw * xv.cross(t1).transpose();
+      W1.row(r) = sw * t1.cross(xu).transpose();
     }
-    const Eigen::Vector3d t1 = n.cross(t0);
-    const double s = std::sqrt(w_(q) / f.len(q));
-    const Eigen::Vector3d xu = f.Xu.row(q).transpose(), xv = f.Xv.row(q).transpose();
-    const Eigen::Vector3d U0 = s * xv.cross(t0), W0 = s * t0.cross(xu);
-    const Eigen::Vector3d U1 = s * xv.cross(t1), W1 = s * t1.cross(xu);
-    for (Eigen::Index a = 0; a < k; ++a) {
-      const double bu = Bus(q, a), bv = Bvs(q, a);
-      R.block<1, 3>(2 * q, 3 * a) = (bu * U0 + bv * W0).transpose();
-      R.block<1, 3>(2 * q + 1, 3 * a) = (bu * U1 + bv * W1).transpose();
+    Bub = Bu_.middleRows(q0, len)(Eigen::all, idx);
+    Bvb = Bv_.middleRows(q0, len)(Eigen::all, idx);
+    using Strided = Eigen::Map<Eigen::VectorXd, 0, Eigen::InnerStride<2>>;
+    for (Eigen::Index a = 0; a < k; ++a)
+      for (int c = 0; c < 3; ++c) {
+        double* col = R.col(3 * a + c).data();
+        Strided(col, len) = Bub.col(a).cwiseProduct(U0.col(c)) + Bvb.col(a).cwiseProduct(W0.col(c));
+        Strided(col + 1, len) = Bub.col(a).cwiseProduct(U1.col(c)) + Bvb.col(a).cwiseProduct(W1.col(c));
+      }
+    Hs.selfadjointView<Eigen::Lower>().rankUpdate(R.topRows(2 * len).transpose());
+    // ((B_I)_u (B_L)_v - (B_I)_v (B_L)_u) <n̂, e_c ∧ e_d> = sum_k eps(c,d,k) n̂_k (...).
+    for (int kk = 0; kk < 3; ++kk) {
+      DB.noalias() = (w_.segment(q0, len).cwiseProduct(nh.col(kk))).asDiagonal() * Bvb;
+      M[kk].noalias() += Bub.transpose() * DB;  // a GEMM (with the diagonal inside, Eigen goes coefficient-wise)
     }
   }
-  Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
-  Hs.selfadjointView<Eigen::Lower>().rankUpdate(R.transpose());
   Hs.triangularView<Eigen::StrictlyUpper>() = Hs.transpose();
-  // ((B_I)_u (B_L)_v - (B_I)_v (B_L)_u) <n̂, e_c ∧ e_d> = sum_k eps(c,d,k) n̂_k (...).
   for (int kk = 0; kk < 3; ++kk) {
-    const Eigen::MatrixXd M = Bus.transpose() * (w_.cwiseProduct(nh.col(kk))).asDiagonal() * Bvs;
-    const Eigen::MatrixXd A = M - M.transpose();
+    const Eigen::MatrixXd A = M[kk] - M[kk].transpose();
     const int c = (kk + 1) % 3, d = (kk + 2) % 3;  // eps(c, d, kk) = +1
     for (Eigen::Index I = 0; I < k; ++I)
       for (Eigen::Index L = 0; L < k; ++L) {

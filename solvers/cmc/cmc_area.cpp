@@ -813,6 +813,10 @@ struct AreaSolve {
 
 template <class Net>
 CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
+  // The Hessian's per-thread scratch lives as long as the solve (AreaForm::hessian).
+  struct ReleaseScratch {
+    ~ReleaseScratch() { AreaForm::release_scratch(); }
+  } release_scratch;
   CmcResult<Net> res;
   res.functional = CmcFunctionalKind::Area;
   {
