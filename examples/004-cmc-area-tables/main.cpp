@@ -136,46 +136,33 @@ Eigen::Vector3d catenoid_square(double u, double v) {
 }
 double catenoid_off(const Eigen::Vector3d& x) { return std::hypot(x(0), x(1)) - std::cosh(x(2)); }
 
+double helicoid_off(const Eigen::Vector3d& x) { return x(0) * std::sin(x(2)) - x(1) * std::cos(x(2)); }
+
+// One H = 0 table: the three functionals on the nets make(n), the distance to the surface by `off`.
+template <class MakeNet>
+void minimal_table(const char* name, const char* column, const std::vector<int>& degrees, MakeNet make,
+                   double (*off)(const Eigen::Vector3d&)) {
+  const GeneratedSection section(name, "iterations, seconds");
+  std::printf("| n | functional | %s | residual | status | iterations | seconds |\n", column);
+  std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
+  for (int n : degrees) {
+    const auto data = make(n);
+    for (const bpde::CmcFunctionalKind f : kFunctionals) {
+      const auto r = solve(data, 0.0, f);
+      row(n, r, worst(r.net, off), false);
+    }
+  }
+}
+
 void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<int>& triangular_degrees) {
-  {
-    const GeneratedSection section("cmc-area-helicoid-full", "iterations, seconds");
-    std::printf("| n | functional | \\|x sin z − y cos z\\| | residual | status | iterations | seconds |\n");
-    std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
-    for (int n : tensor_degrees) {
-      const bpde::TensorNet data = bpde::tensor_boundary(n, helicoid);
-      for (const bpde::CmcFunctionalKind f : kFunctionals) {
-        const auto r = solve(data, 0.0, f);
-        row(n, r, worst(r.net, [](const Eigen::Vector3d& x) { return x(0) * std::sin(x(2)) - x(1) * std::cos(x(2)); }),
-            false);
-      }
-    }
-  }
+  minimal_table("cmc-area-helicoid-full", "\\|x sin z − y cos z\\|", tensor_degrees,
+                [](int n) { return bpde::tensor_boundary(n, helicoid); }, helicoid_off);
   std::printf("\n");
-  {
-    const GeneratedSection section("cmc-area-catenoid-full", "iterations, seconds");
-    std::printf("| n | functional | \\|√(x² + y²) − cosh z\\| | residual | status | iterations | seconds |\n");
-    std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
-    for (int n : triangular_degrees) {
-      const bpde::TriangularNet data = bpde::triangular_boundary(n, catenoid);
-      for (const bpde::CmcFunctionalKind f : kFunctionals) {
-        const auto r = solve(data, 0.0, f);
-        row(n, r, worst(r.net, catenoid_off), false);
-      }
-    }
-  }
+  minimal_table("cmc-area-catenoid-full", "\\|√(x² + y²) − cosh z\\|", triangular_degrees,
+                [](int n) { return bpde::triangular_boundary(n, catenoid); }, catenoid_off);
   std::printf("\n");
-  {
-    const GeneratedSection section("cmc-area-catenoid-tensor-full", "iterations, seconds");
-    std::printf("| n | functional | \\|√(x² + y²) − cosh z\\| | residual | status | iterations | seconds |\n");
-    std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
-    for (int n : tensor_degrees) {
-      const bpde::TensorNet data = bpde::tensor_boundary(n, catenoid_square);
-      for (const bpde::CmcFunctionalKind f : kFunctionals) {
-        const auto r = solve(data, 0.0, f);
-        row(n, r, worst(r.net, catenoid_off), false);
-      }
-    }
-  }
+  minimal_table("cmc-area-catenoid-tensor-full", "\\|√(x² + y²) − cosh z\\|", tensor_degrees,
+                [](int n) { return bpde::tensor_boundary(n, catenoid_square); }, catenoid_off);
 }
 
 // The circle at n = 10 solved to tighter first-variation tolerances than the default 1e-11
