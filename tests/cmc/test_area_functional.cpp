@@ -87,6 +87,18 @@ TEST(AreaFunctional, GradedRulesGradientAndHessianAgainstFiniteDifferences) {
   check_derivatives(q, perturbed_sphere_tensor(3, 4, 5), idx);
 }
 
+// A rule with more nodes than one block of the Hessian's accumulation (8192 nodes, area_functional.h):
+// the blocks' sum is the derivative of the gradient too, and the blocks' scratch, grown here, serves
+// a smaller form afterwards.
+TEST(AreaFunctional, HessianOverSeveralNodeBlocksAgainstFiniteDifferences) {
+  const AreaForm big = AreaForm::triangular(5, 40);
+  ASSERT_GT(big.nodes(), 8192);  // 9600: two blocks
+  std::vector<int> idx;
+  for (int r = 1; r < big.size(); r += 2) idx.push_back(r);
+  check_derivatives(big, perturbed_sphere_triangle(5, 9), idx);
+  check_derivatives(AreaForm::triangular(5, 7), perturbed_sphere_triangle(5, 9), idx);
+}
+
 // The first variation of A_H = A + 2HV is the mean-curvature deviation (an independent truth for
 // the gradient of the quadrature value, from geometry: the first variation of area,
 // δA = −2∫H⟨N, δx⟩ dA, do Carmo, "Differential Geometry of Curves and Surfaces", §3-5, and
