@@ -238,7 +238,7 @@ Eigen::MatrixXd AreaForm::hessian(const Eigen::MatrixX3d& P, const std::vector<i
     // ((B_I)_u (B_L)_v - (B_I)_v (B_L)_u) <n̂, e_c ∧ e_d> = sum_k eps(c,d,k) n̂_k (...).
     for (int kk = 0; kk < 3; ++kk) {
       DB.noalias() = (w_.segment(q0, len).cwiseProduct(nh.col(kk))).asDiagonal() * Bvb;
-      M[kk].noalias() += Bub.transpose() * DB;  // a GEMM (with the diagonal inside, Eigen goes coefficient-wise)
+      M[kk].noalias() += Bub.transpose() * DB;
     }
   }
   Hs.triangularView<Eigen::StrictlyUpper>() = Hs.transpose();
