@@ -173,6 +173,10 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
   }
 }
 
+// The soft-mode phase's iteration bound, in units of o.max_corrector_iterations (default 30: 300
+// iterations; the circle at n = 10, H = -0.9 takes 188, docs/cmc.md "The soft-mode phase").
+constexpr int kSoftModeIterationsPerCorrector = 10;
+
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations) {
   // Newton on A_H (ε = 0) restricted to the well-conditioned part of the Hessian. K v = λ C v (C the
   // Dirichlet Gram, so the cut does not depend on how the free points are scaled), v_iᵀ C v_j = δ_ij;
@@ -253,6 +257,16 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
     st.residual = best_r;
   }
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
+  if (!st.ok && std::isfinite(st.residual)) {
+    // What the truncated phase leaves is in the soft modes: the soft-mode phase
+    // (area_soft_mode_newton.cpp) eliminates the hard ones and solves the reduced system.
+    const CorrectorStats soft = area_soft_mode_newton(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
+    st.iterations += soft.iterations;
+    st.soft_iterations = soft.iterations;
+    st.residual = soft.residual;
+    st.ok = soft.ok;
+    st.soft_stationary = soft.soft_stationary;
+  }
   p.eps = e0;
   return st;
 }
@@ -367,6 +381,15 @@ struct AreaSolve {
     return r.ok;
   }
 
+  // Set when the last truncated Newton phase ended in the soft-mode phase at a stationary point of
+  // the reduced first variation's norm (area_soft_mode_newton.cpp); the messages say so.
+  bool soft_stationary = false;
+  CorrectorStats finish(double H, int max_iterations) {
+    const CorrectorStats t = area_truncated_newton(p, H, o, max_iterations);
+    soft_stationary = t.soft_stationary;
+    return t;
+  }
+
   CorrectorStats correct(double H) {
     CorrectorStats st;
     if (o.solver == CmcSolver::Ceres) {
@@ -375,7 +398,7 @@ struct AreaSolve {
       st = area_newton_correct(p, H, o, 2 * o.max_corrector_iterations, theta, 0.0);
       if (!st.ok && p.eps == 0.0 && std::isfinite(st.residual)) {
         // LM stalls in the tangential valley: finish with the truncated Newton phase.
-        const CorrectorStats t = area_truncated_newton(p, H, o, o.max_corrector_iterations);
+        const CorrectorStats t = finish(H, o.max_corrector_iterations);
         st.iterations += t.iterations;
         st.ok = t.ok;
         st.residual = t.residual;
@@ -579,11 +602,12 @@ struct AreaSolve {
     p.eps = 0.0;
     if (!ok) return false;
     if (o.solver != CmcSolver::Ceres && p.residual_at(h, 0.0) > o.tolerance) {
-      const CorrectorStats st = area_truncated_newton(p, h, o, 2 * o.max_corrector_iterations);
+      const CorrectorStats st = finish(h, 2 * o.max_corrector_iterations);
       summary.iterations += st.iterations;
       if (st.ok)
         note += std::string(note.empty() ? "" : "; ") + "finished by the truncated Newton phase in " +
-                std::to_string(st.iterations) + " iteration(s)";
+                std::to_string(st.iterations - st.soft_iterations) + " iteration(s)" +
+                (st.soft_iterations > 0 ? " and the soft-mode phase in " + std::to_string(st.soft_iterations) : "");
     }
     // No stability test here: the point is tied to the D_H branch point by the homotopy, and a
     // spherical patch larger than a hemisphere is a critical point of A_H but not a minimum.
@@ -743,7 +767,7 @@ struct AreaSolve {
       // when the V form's residual falls.
       const Eigen::VectorXd y = p.get();
       const double Hs = H, r0 = vresidual(V0, H);
-      const CorrectorStats t = area_truncated_newton(p, H, o, 2 * o.max_corrector_iterations);
+      const CorrectorStats t = finish(H, 2 * o.max_corrector_iterations);
       summary.iterations += t.iterations;
       theta = 1e-8;
       bordered_correct(V0, H, o.tolerance, 8);
@@ -751,7 +775,8 @@ struct AreaSolve {
         p.set(y);
         H = Hs;
       } else {
-        note += "; finished by the truncated Newton phase at H and the bordered corrector";
+        note += std::string("; finished by the truncated Newton phase") +
+                (t.soft_iterations > 0 ? " and the soft-mode phase" : "") + " at H and the bordered corrector";
       }
     }
     return {H, true, Status::Converged, "the volume-constrained critical point of A " + from + note};
@@ -895,7 +920,9 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
         if (!st.ok) {
           out = {out.H, false, Status::NumericalLimit,
                  "the correction with the refined quadrature rule (q = " +
-                     std::to_string(s.p.a->points_per_direction()) + ") did not converge"};
+                     std::to_string(s.p.a->points_per_direction()) + ") stopped at a relative first variation of " +
+                     num(st.residual) +
+                     (s.soft_stationary ? ", where no step over the soft (tangential) modes lowers it" : "")};
           break;
         }
       }
@@ -918,8 +945,11 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     const Regularity reg = regularity(net, res.A);
     if (out.ok && !(res.summary.residual <= o.tolerance)) {
       out = {out.H, false, Status::NumericalLimit,
-             "the final net misses the first variation of A_H by " + num(res.summary.residual) +
-                 " (relative) after: " + out.message};
+             "the final net misses the first variation of A_H by " + num(res.summary.residual) + " (relative)" +
+                 (s.soft_stationary ? "; no step over the soft (tangential) modes lowers it (a stationary point of its "
+                                      "norm there, not a critical point of A_H)"
+                                    : "") +
+                 "; reached after: " + out.message};
     }
     if (!reg.ok) {
       out.ok = false;

@@ -54,6 +54,10 @@ struct CorrectorStats {
   double residual = 0.0;
   int pd = -1;           ///< 1/0: Hessian at the solution (positive definite / not); -1 unknown
   int polish_steps = 0;  ///< Newton steps added after NLopt
+  /// Area soft-mode phase: it stopped because no step lowers the reduced first variation (a
+  /// stationary point of its norm over the soft modes, not a critical point of A_H).
+  bool soft_stationary = false;
+  int soft_iterations = 0;  ///< of `iterations`, those of the area soft-mode phase
 };
 
 /// The stats of the start point of a corrector: its eq. (11) residual at H, ok when it already

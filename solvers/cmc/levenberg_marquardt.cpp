@@ -49,14 +49,16 @@ void check_problem(const LeastSquaresProblem& p) {
 }
 
 Linearisation linearise(const LeastSquaresProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& r,
-                        const Eigen::MatrixXd& J) {
+                        const Eigen::MatrixXd& J, const LevenbergMarquardtOptions& o) {
   Linearisation L;
   const Eigen::Index k = J.cols();
   L.A = Eigen::MatrixXd::Zero(k, k);
   L.A.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
   L.A = L.A.selfadjointView<Eigen::Lower>();
   L.g = J.transpose() * r;
-  L.diag = L.A.diagonal().cwiseMax(1e-12 * L.A.diagonal().maxCoeff());
+  const double top = L.A.diagonal().maxCoeff();
+  L.diag = o.marquardt_scaling ? Eigen::VectorXd(L.A.diagonal().cwiseMax(1e-12 * top))
+                               : Eigen::VectorXd::Constant(k, top);
   if (p.constraint) {
     L.c = p.constraint(x, &L.cgrad);
     if (L.cgrad.size() != k)
@@ -114,7 +116,7 @@ LmTrial levenberg_marquardt_trial(const LeastSquaresProblem& problem, const Eige
   check_problem(problem);
   check_sizes(x, r, J);
   if (!(lambda >= 0) || !std::isfinite(lambda)) throw ParameterError("Levenberg–Marquardt: λ must be finite and >= 0");
-  return trial(problem, linearise(problem, x, r, J), x, r, J, lambda, options);
+  return trial(problem, linearise(problem, x, r, J, options), x, r, J, lambda, options);
 }
 
 LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, const LevenbergMarquardtOptions& o,
@@ -158,7 +160,7 @@ LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, 
       out.stop = LsStop::MaxIterations;
       break;
     }
-    const Linearisation L = linearise(p, x, r, J);
+    const Linearisation L = linearise(p, x, r, J, o);
     bool accepted = false;
     for (int tries = 0; tries < 30 && !accepted; ++tries) {
       const LmTrial t = trial(p, L, x, r, J, lambda, o);

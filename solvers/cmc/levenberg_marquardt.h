@@ -9,7 +9,7 @@
 // closed-form answer (tests/cmc/test_levenberg_marquardt.cpp).
 //
 // Method. Each iteration factors M = JᵀJ + λ D once (Cholesky; D = diag JᵀJ, floored at 1e-12 of
-// its largest entry) and takes the velocity
+// its largest entry, or with options.marquardt_scaling = false D = max diag JᵀJ · Id) and takes the velocity
 //     δ = −M⁻¹Jᵀr,   or with the constraint the KKT solution of
 //     min ‖r + Jδ‖² + λ δᵀDδ  subject to  ∇cᵀδ = −c:   δ = δ₀ − μ e,  e = M⁻¹∇c,  μ = (∇cᵀδ₀ + c)/(∇cᵀe).
 // With geodesic acceleration (Transtrum and Sethna, "Improvements to the Levenberg–Marquardt
@@ -92,6 +92,10 @@ struct LevenbergMarquardtOptions {
   double initial_lambda = 1e-3;       ///< λ of the first trial; default 1e-3, >= 0 and finite
   double geodesic_h = 0.1;            ///< finite-difference step of r_δδ, relative to δ; default 0.1, in (0, 1]
   double geodesic_alpha = 0.75;       ///< taken when 2‖a‖_D <= α‖δ‖_D; default 0.75, > 0
+  /// D = diag JᵀJ (Marquardt's scaling, true) or D = max diag JᵀJ · Id (Levenberg's, false: the
+  /// damping a trust region in the Euclidean norm of x, which the area soft-mode phase takes, its
+  /// x being C-orthonormal coordinates); default true.
+  bool marquardt_scaling = true;
   std::string stage = "least squares";  ///< progress stage name; default "least squares"
   /// Throws ParameterError naming the first option out of range.
   void validate() const;

@@ -160,6 +160,37 @@ TEST(LevenbergMarquardt, TrialIsTheDampedVelocityAndItsAcceleration) {
   EXPECT_EQ(plain.bend, 0.0);
 }
 
+// Levenberg's scaling (marquardt_scaling = false): D = max diag JᵀJ · Id in the velocity, the
+// acceleration and the bend, each against its closed form; at this x the diagonal of JᵀJ is
+// (9.25, 5.65, 50.36), so Marquardt's velocity differs from it by far more than the tolerance.
+TEST(LevenbergMarquardt, LevenbergScalingDampsEveryUnknownAlike) {
+  LeastSquaresProblem p;
+  p.residuals = [](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    r = quadratic_r(x);
+    if (J) *J = quadratic_J(x);
+  };
+  const Eigen::Vector3d x(0.3, -1.1, 0.7);
+  const Eigen::VectorXd r = quadratic_r(x);
+  const Eigen::MatrixXd J = quadratic_J(x);
+  const double lambda = 0.3;
+  LevenbergMarquardtOptions o;
+  o.marquardt_scaling = false;
+  const LmTrial t = levenberg_marquardt_trial(p, x, r, J, lambda, o);
+  ASSERT_TRUE(t.ok);
+  const Eigen::Matrix3d A = J.transpose() * J;
+  const double top = A.diagonal().maxCoeff();
+  Eigen::Matrix3d M = A;
+  M.diagonal().array() += lambda * top;
+  const Eigen::Vector3d d = -M.inverse() * (J.transpose() * r);
+  const Eigen::Vector3d rdd(2 * d(0) * d(0) + 6 * d(0) * d(1), 2 * d(1) * d(1) - 4 * d(0) * d(2), 10 * d(2) * d(2));
+  const Eigen::Vector3d a = -M.inverse() * (J.transpose() * rdd);
+  EXPECT_LT((t.velocity - d).norm(), 1e-12 * d.norm());
+  EXPECT_LT((t.acceleration - a).norm(), 1e-10 * a.norm());
+  EXPECT_NEAR(t.bend, 2 * a.norm() / d.norm(), 1e-10 * t.bend);
+  const LmTrial marquardt = levenberg_marquardt_trial(p, x, r, J, lambda, LevenbergMarquardtOptions{});
+  EXPECT_GT((marquardt.velocity - d).norm(), 1e-3 * d.norm());
+}
+
 // Rosenbrock's valley as least squares (the worked example of the header): both loops reach
 // (1, 1); the accelerated one in fewer iterations.
 TEST(LevenbergMarquardt, RosenbrockValley) {
