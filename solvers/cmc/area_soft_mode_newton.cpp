@@ -15,8 +15,8 @@
 // damping is a trust region in the C-norm, as the corrector's μC).
 //
 // Why. Measured at the end of stalled solves (docs/cmc.md, "The soft-mode phase"): J has singular
-// values down to 1e-12 of its largest, so the Newton step in the soft modes is long (|d|_C = 2.6
-// on the tensor catenoid at n = 6), while G(s) is quadratic in s on a far smaller scale: with the
+// values down to 6e-12 (its largest 1.5e-4 on the tensor catenoid at n = 6), so the Newton step in
+// the soft modes is long (|d|_C = 2.6 there), while G(s) is quadratic in s on a far smaller scale: with the
 // hard modes eliminated exactly, ‖G‖ along the Newton direction rises from 1e-3 of the step on.
 // The whole-space methods (the corrector, the truncated phase) do not separate the two scales. On
 // the reduced system the loop moves s by up to 0.08 (C-norm; probe) and takes the Fig. 1 circle at

@@ -34,6 +34,10 @@
 //    When that fails (no D_H branch point, or the regulariser cannot be taken below 1e-4), the
 //    A_H branch is continued in H itself from the critical point of A at H = 0, started at the
 //    Dirichlet extremal, with a positive-definiteness test per step (before the fold).
+//    Where the truncated Newton phase (the last stage) stops above the tolerance, the soft-mode
+//    phase follows: the hard modes eliminated, Levenberg–Marquardt on the first variation over the
+//    soft (tangential) modes (solvers/cmc/area_soft_mode_newton.cpp); where no step lowers it the
+//    message says so ("a stationary point of its norm there, not a critical point of A_H").
 //    H = 0: the corrector on A from the Dirichlet extremal, then the truncated Newton phase; a stop
 //    above the tolerance but within 1e-6 (relative first variation) is status NumericalLimit,
 //    further off NoConvergence ("no critical point of the area (H = 0) ...").
