@@ -28,8 +28,8 @@
 // along the nearly null directions of the reduced Hessian, a stationary point of ‖G‖ that is not a
 // critical point of A_H (soft_stationary; cmc_area.cpp words the message). It leaves p at the point
 // with the smallest residual it met.
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -83,14 +83,18 @@ CorrectorStats area_soft_mode_newton(AreaProblem& p, double H, const CmcOptions&
     double r = std::numeric_limits<double>::infinity();
   };
   // At accepted points: the Schur complement J and the factor of Khh for the chord steps.
-  Eigen::LDLT<Eigen::MatrixXd> Khh;
+  // Khh is symmetric but indefinite where A_H is a saddle in hard modes (a cap past the
+  // hemisphere is a critical point of A_H, not a minimum): LU with partial pivoting, not LDLᵀ.
+  Eigen::PartialPivLU<Eigen::MatrixXd> Khh;
   Eigen::MatrixXd J;
   auto linearise = [&]() {
     K = p.hessian(H);
     if (!K.allFinite()) return false;
     const Eigen::MatrixXd KVh = K * Vh;
     Khh.compute(Vh.transpose() * KVh);
-    if (Khh.info() != Eigen::Success) return false;
+    // At the split point Vhᵀ K Vh is diag(λ_h) with |λ_h| >= kSoftCut λ_max: a pivot far below
+    // that means the hard block lost its conditioning on the way.
+    if (!(Khh.matrixLU().diagonal().cwiseAbs().minCoeff() > 1e-3 * kSoftCut * lmax)) return false;
     const Eigen::MatrixXd Khs = KVh.transpose() * Vs;
     J = Vs.transpose() * K * Vs - Khs.transpose() * Khh.solve(Khs);
     return J.allFinite();
