@@ -36,7 +36,7 @@
 //    Dirichlet extremal, with a positive-definiteness test per step (before the fold).
 //    Where the truncated Newton phase (the last stage) stops above the tolerance, the soft-mode
 //    phase follows: the hard modes eliminated, Levenberg–Marquardt on the first variation over the
-//    soft (tangential) modes (solvers/cmc/area_soft_mode_newton.cpp); where no step lowers it the
+//    soft (tangential) modes (solvers/cmc/area_soft_mode_phase.cpp); where no step lowers it the
 //    message says so ("a stationary point of its norm there, not a critical point of A_H").
 //    H = 0: the corrector on A from the Dirichlet extremal, then the truncated Newton phase; a stop
 //    above the tolerance but within 1e-6 (relative first variation) is status NumericalLimit,
@@ -64,7 +64,8 @@
 //    converged = false, status NoConvergence, and a message that says "degenerate
 //    parametrisation".
 //  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode too: with ceres
-//    the bordered corrector is Ceres's LM and there is no truncated Newton phase).
+//    the bordered corrector is Ceres's LM, there is no truncated Newton phase, and the soft-mode
+//    phase follows the last corrector directly, minimised by ceres::Solve).
 //
 // The least-squares mean-curvature functional (options.functional = MeanCurvature;
 // solvers/cmc/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):

@@ -259,8 +259,8 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
   if (!st.ok && std::isfinite(st.residual)) {
     // What the truncated phase leaves is in the soft modes: the soft-mode phase
-    // (area_soft_mode_newton.cpp) eliminates the hard ones and solves the reduced system.
-    const CorrectorStats soft = area_soft_mode_newton(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
+    // (area_soft_mode_phase.cpp) eliminates the hard ones and solves the reduced system.
+    const CorrectorStats soft = area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
     st.iterations += soft.iterations;
     st.soft_iterations = soft.iterations;
     st.residual = soft.residual;
@@ -382,27 +382,32 @@ struct AreaSolve {
   }
 
   // Set when the last truncated Newton phase ended in the soft-mode phase at a stationary point of
-  // the reduced first variation's norm (area_soft_mode_newton.cpp); the messages say so.
+  // the reduced first variation's norm (area_soft_mode_phase.cpp); the messages say so.
   bool soft_stationary = false;
+  // The final phases at ε = 0: newton, the truncated Newton phase, which ends in the soft-mode
+  // phase; ceres, the soft-mode phase (by Ceres) alone.
   CorrectorStats finish(double H, int max_iterations) {
-    const CorrectorStats t = area_truncated_newton(p, H, o, max_iterations);
+    CorrectorStats t;
+    if (o.solver == CmcSolver::Ceres) {
+      t = area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
+      t.soft_iterations = t.iterations;
+    } else {
+      t = area_truncated_newton(p, H, o, max_iterations);
+    }
     soft_stationary = t.soft_stationary;
     return t;
   }
 
   CorrectorStats correct(double H) {
     CorrectorStats st;
-    if (o.solver == CmcSolver::Ceres) {
-      st = ceres_correct(p, H, o);
-    } else {
-      st = area_newton_correct(p, H, o, 2 * o.max_corrector_iterations, theta, 0.0);
-      if (!st.ok && p.eps == 0.0 && std::isfinite(st.residual)) {
-        // LM stalls in the tangential valley: finish with the truncated Newton phase.
-        const CorrectorStats t = finish(H, o.max_corrector_iterations);
-        st.iterations += t.iterations;
-        st.ok = t.ok;
-        st.residual = t.residual;
-      }
+    st = o.solver == CmcSolver::Ceres ? ceres_correct(p, H, o)
+                                      : area_newton_correct(p, H, o, 2 * o.max_corrector_iterations, theta, 0.0);
+    if (!st.ok && p.eps == 0.0 && std::isfinite(st.residual)) {
+      // The corrector stalls in the tangential valley: finish with the final phases.
+      const CorrectorStats t = finish(H, o.max_corrector_iterations);
+      st.iterations += t.iterations;
+      st.ok = t.ok;
+      st.residual = t.residual;
     }
     summary.iterations += st.iterations;
     return st;
@@ -601,13 +606,18 @@ struct AreaSolve {
         note);
     p.eps = 0.0;
     if (!ok) return false;
-    if (o.solver != CmcSolver::Ceres && p.residual_at(h, 0.0) > o.tolerance) {
+    if (p.residual_at(h, 0.0) > o.tolerance) {
       const CorrectorStats st = finish(h, 2 * o.max_corrector_iterations);
       summary.iterations += st.iterations;
-      if (st.ok)
-        note += std::string(note.empty() ? "" : "; ") + "finished by the truncated Newton phase in " +
-                std::to_string(st.iterations - st.soft_iterations) + " iteration(s)" +
-                (st.soft_iterations > 0 ? " and the soft-mode phase in " + std::to_string(st.soft_iterations) : "");
+      if (st.ok) {
+        const int truncated = st.iterations - st.soft_iterations;
+        note += std::string(note.empty() ? "" : "; ") + "finished by " +
+                (truncated > 0 ? "the truncated Newton phase in " + std::to_string(truncated) + " iteration(s)" : "") +
+                (truncated > 0 && st.soft_iterations > 0 ? " and " : "") +
+                (st.soft_iterations > 0 ? "the soft-mode phase in " + std::to_string(st.soft_iterations) +
+                                              (truncated > 0 ? "" : " iteration(s)")
+                                        : "");
+      }
     }
     // No stability test here: the point is tied to the D_H branch point by the homotopy, and a
     // spherical patch larger than a hemisphere is a critical point of A_H but not a minimum.
@@ -761,7 +771,7 @@ struct AreaSolve {
     }
     if (!note.empty()) note = " (" + note + ")";
     p.eps = 0.0;
-    if (vresidual(V0, H) > o.tolerance && o.solver != CmcSolver::Ceres) {
+    if (vresidual(V0, H) > o.tolerance) {
       // The V form's critical point is the A_H critical point at its multiplier H: the H form's
       // truncated Newton phase at the H reached, then bordered iterations back onto V = V0; kept
       // when the V form's residual falls.
@@ -775,8 +785,10 @@ struct AreaSolve {
         p.set(y);
         H = Hs;
       } else {
-        note += std::string("; finished by the truncated Newton phase") +
-                (t.soft_iterations > 0 ? " and the soft-mode phase" : "") + " at H and the bordered corrector";
+        const bool truncated = t.iterations > t.soft_iterations;
+        note += std::string("; finished by the ") + (truncated ? "truncated Newton phase" : "") +
+                (truncated && t.soft_iterations > 0 ? " and the " : "") +
+                (t.soft_iterations > 0 ? "soft-mode phase" : "") + " at H and the bordered corrector";
       }
     }
     return {H, true, Status::Converged, "the volume-constrained critical point of A " + from + note};

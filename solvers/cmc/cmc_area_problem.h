@@ -50,10 +50,10 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
 /// The soft-mode phase on A_H (ε = 0), run by area_truncated_newton when it stops above the
 /// tolerance: the hard modes eliminated by chord Newton steps, Levenberg–Marquardt on the reduced
-/// first variation over the soft modes (area_soft_mode_newton.cpp, where the method is explained).
+/// first variation over the soft modes (area_soft_mode_phase.cpp, where the method is explained).
 /// Leaves p at the point of smallest residual met; ok when it reaches o.tolerance;
 /// soft_stationary when no step lowers the reduced first variation.
-CorrectorStats area_soft_mode_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
+CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
 /// Regularity of a solved net on a 40 × 40 grid away from the corners (margin 0.05): |x_u ∧ x_v|
 /// relative to its mean A / |domain| at least 1e-3, and no two neighbouring samples with opposite
 /// normals (cmc_area.cpp). Shared by the area and the mean-curvature solves.

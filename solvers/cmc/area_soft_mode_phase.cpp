@@ -1,0 +1,286 @@
+// The soft-mode phase of the area functional (cmc_area_problem.h, area_soft_mode_phase;
+// docs/cmc.md, "The soft-mode phase").
+//
+// The method. At the point y0 where the truncated Newton phase stops, split the free coordinates
+// by the generalised eigenproblem K v = λ C v (K the Hessian of A_H, C the Dirichlet Gram over the
+// free points ⊗ Id_3, eigenvectors C-orthonormal): the soft modes Vs (|λ| < 1e-4 max|λ|: the
+// nearly tangential, reparametrisation-like directions) and the hard modes Vh. Write
+// y = y0 + Vs s + Vh h. For each s the hard equations Vhᵀ∇A_H(y) = 0 are well conditioned (their
+// Hessian Vhᵀ K Vh has eigenvalues ≥ 1e-4 max|λ|) and are solved for h(s) by chord Newton steps
+// (the factor of Vhᵀ K Vh from the last accepted point); what is left is the reduced first
+// variation G(s) = Vsᵀ∇A_H(y0 + Vs s + Vh h(s)), whose Jacobian is the Schur complement
+// J = Kss − Ksh Khh⁻¹ Khs (K in the split basis, at the point). The phase minimises ‖G‖² over s:
+//  - solver newton: the library's Levenberg–Marquardt loop (levenberg_marquardt.h) with geodesic
+//    acceleration and Levenberg's scaling (D = max diag JᵀJ · Id: s is in C-orthonormal
+//    coordinates, so the damping is a trust region in the C-norm, as the corrector's μC);
+//  - solver ceres: ceres::Solve on one residual block (G, with J as its Jacobian, both divided by
+//    the largest column norm of J at the split point), Levenberg–Marquardt with the same scaling
+//    (no Jacobi scaling, diag JᵀJ clamped to 1 from above and below: D = Id), and the same
+//    stopping tests in an IterationCallback. The ceres route has no truncated Newton phase; this
+//    phase follows its last corrector directly.
+//
+// Why. Measured at the end of stalled solves (docs/cmc.md, "The soft-mode phase"): J has singular
+// values down to 6e-12 (its largest 1.5e-4 on the tensor catenoid at n = 6), so the Newton step in
+// the soft modes is long (|d|_C = 2.6 there), while G(s) is quadratic in s on a far smaller scale: with the
+// hard modes eliminated exactly, ‖G‖ along the Newton direction rises from 1e-3 of the step on.
+// The whole-space methods (the corrector, the truncated phase) do not separate the two scales. On
+// the reduced system the loop moves s by up to 0.08 (C-norm; probe) and takes the Fig. 1 circle at
+// H = −0.9 from 1.7e-10 (n = 8) and 5.9e-11 (n = 10) to below the tolerance 1e-11.
+//
+// It stops at the tolerance (max-norm relative residual, the solve's measure), after
+// max_iterations, when ‖G‖ falls by less than 10 % in 30 iterations, or when no step lowers ‖G‖
+// (30 trials with growing damping: LsStop::NoStep). In the last case Jᵀ G ≈ 0 to rounding: G lies
+// along the nearly null directions of the reduced Hessian, a stationary point of ‖G‖ that is not a
+// critical point of A_H (soft_stationary; cmc_area.cpp words the message). It leaves p at the point
+// with the smallest residual it met.
+#include <ceres/ceres.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "bezierpde/solvers/cmc/ceres_lm_options.h"
+#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
+
+namespace bpde::cmc_detail {
+
+namespace {
+// Relative eigenvalue below which a mode is soft (measured: 21 … 136 soft modes of 63 … 243 on
+// the cases of docs/cmc.md, "The soft-mode phase").
+constexpr double kSoftCut = 1e-4;
+// Chord steps in the hard modes per evaluation, until the hard part of the gradient is below
+// kHardFraction of ‖G‖; where they stop falling by 2x a step above kHardAccept of ‖G‖, the factor
+// is renewed at the point (at most twice), and an evaluation that ends above it is rejected.
+constexpr int kMaxHardSteps = 10;
+constexpr double kHardFraction = 1e-6;
+constexpr double kHardAccept = 1e-3;
+// Stall test: ‖G‖ falls by less than this factor in kStallWindow iterations.
+constexpr double kStallFactor = 0.9;
+constexpr int kStallWindow = 30;
+
+// The reduced system at the point p holds when it is built (the split point y0).
+class SoftModeSystem {
+ public:
+  SoftModeSystem(AreaProblem& p, double H) : p_(p), H_(H), y0_(p.get()) {
+    best_y_ = y0_;
+    best_r_ = p_.residual(H_);
+    K_ = p_.hessian(H_);
+    if (!K_.allFinite() || !std::isfinite(best_r_)) return;
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K_, p_.C);
+    if (es.info() != Eigen::Success) return;
+    const Eigen::VectorXd& lam = es.eigenvalues();
+    lmax_ = lam.cwiseAbs().maxCoeff();
+    if (!(lmax_ > 0) || !std::isfinite(lmax_)) return;
+    std::vector<Eigen::Index> soft, hard;
+    for (Eigen::Index i = 0; i < lam.size(); ++i) (std::abs(lam(i)) < kSoftCut * lmax_ ? soft : hard).push_back(i);
+    if (soft.empty() || hard.empty()) return;
+    Vs_ = es.eigenvectors()(Eigen::all, soft);
+    Vh_ = es.eigenvectors()(Eigen::all, hard);
+    h_ = Eigen::VectorXd::Zero(Vh_.cols());
+    ok_ = linearise();
+  }
+  bool ok() const { return ok_; }
+  Eigen::Index size() const { return Vs_.cols(); }
+  /// G(s) into G and, when J is not null, the Schur complement at that point (which also renews
+  /// the factor of the hard block for the chord steps). false when not finite. Leaves p at the
+  /// point and keeps the point of smallest residual met.
+  bool evaluate(const Eigen::VectorXd& s, Eigen::VectorXd& G, Eigen::MatrixXd* J) {
+    if (!s.allFinite()) return false;
+    double prev = std::numeric_limits<double>::infinity(), nh = 0;
+    Eigen::VectorXd g;
+    double r = 0;
+    int refreshes = 0;
+    for (int j = 0; j <= kMaxHardSteps; ++j) {
+      p_.set(y0_ + Vs_ * s + Vh_ * h_);
+      r = p_.residual(H_, &g);
+      if (!std::isfinite(r)) return false;
+      G = Vs_.transpose() * g;
+      const Eigen::VectorXd gh = Vh_.transpose() * g;
+      nh = gh.norm();
+      if (nh <= kHardFraction * G.norm() || j == kMaxHardSteps) break;
+      if (nh > 0.5 * prev) {
+        // The chord steps stopped gaining: at the rounding floor (accepted below), or the factor
+        // is from a point too far away: renew it here (at most twice).
+        if (nh <= kHardAccept * G.norm() || refreshes++ >= 2 || !factor_hard()) break;
+        prev = std::numeric_limits<double>::infinity();
+      } else {
+        prev = nh;
+      }
+      h_ -= Khh_.solve(gh);
+    }
+    // G is a function of s only when h(s) is solved: a point where it is not is out.
+    if (!(nh <= kHardAccept * G.norm())) return false;
+    last_r_ = r;
+    if (r < best_r_) best_r_ = r, best_y_ = p_.get();
+    if (J) {
+      if (!linearise()) return false;
+      *J = J_;
+    }
+    return true;
+  }
+  double last_residual() const { return last_r_; }
+  double best_residual() const { return best_r_; }
+  const Eigen::VectorXd& best_point() const { return best_y_; }
+
+ private:
+  // The Hessian K and the factor of its hard block Khh at p's point.
+  bool factor_hard() {
+    K_ = p_.hessian(H_);
+    if (!K_.allFinite()) return false;
+    KVh_ = K_ * Vh_;
+    // Khh is symmetric but indefinite where A_H is a saddle in hard modes (a cap past the
+    // hemisphere is a critical point of A_H, not a minimum): LU with partial pivoting, not LDLᵀ.
+    Khh_.compute(Vh_.transpose() * KVh_);
+    // At the split point Vhᵀ K Vh is diag(λ_h) with |λ_h| >= kSoftCut λ_max: a pivot far below
+    // that means the hard block lost its conditioning on the way.
+    return Khh_.matrixLU().diagonal().cwiseAbs().minCoeff() > 1e-3 * kSoftCut * lmax_;
+  }
+  // The Schur complement J and the factor of Khh at p's point.
+  bool linearise() {
+    if (!factor_hard()) return false;
+    const Eigen::MatrixXd Khs = KVh_.transpose() * Vs_;
+    J_ = Vs_.transpose() * K_ * Vs_ - Khs.transpose() * Khh_.solve(Khs);
+    return J_.allFinite();
+  }
+
+  AreaProblem& p_;
+  double H_;
+  Eigen::VectorXd y0_, h_, best_y_;
+  Eigen::MatrixXd K_, KVh_, Vs_, Vh_, J_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> Khh_;
+  double lmax_ = 0, best_r_ = std::numeric_limits<double>::infinity(), last_r_ = 0;
+  bool ok_ = false;
+};
+
+// ‖G‖ of the accepted points, oldest first: stalled when it fell by less than 10 % over the last
+// kStallWindow iterations.
+bool soft_stalled(const std::vector<double>& history) {
+  const size_t m = history.size();
+  return m > kStallWindow && history[m - 1] > kStallFactor * history[m - 1 - kStallWindow];
+}
+
+struct SoftOutcome {
+  int iterations = 0;
+  bool stationary = false;
+};
+
+SoftOutcome minimise_newton(SoftModeSystem& sys, double tol, int max_iterations) {
+  LeastSquaresProblem problem;
+  problem.residuals = [&](const Eigen::VectorXd& s, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
+    if (!sys.evaluate(s, r, J)) {
+      r = Eigen::VectorXd::Constant(sys.size(), std::numeric_limits<double>::quiet_NaN());
+      if (J) *J = Eigen::MatrixXd::Constant(sys.size(), sys.size(), std::numeric_limits<double>::quiet_NaN());
+    }
+  };
+  std::vector<double> history;
+  problem.monitor = [&](const Eigen::VectorXd&, int, double phi) {
+    history.push_back(std::sqrt(phi));
+    return sys.best_residual() > tol && !soft_stalled(history);
+  };
+  LevenbergMarquardtOptions lo;
+  lo.max_iterations = max_iterations;
+  lo.marquardt_scaling = false;
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(sys.size());
+  const LsOutcome lm = levenberg_marquardt(problem, s, lo);
+  return {lm.iterations, lm.stop == LsStop::NoStep};
+}
+
+// G(s) as one Ceres residual block on one parameter block, divided by `scale`.
+class ReducedFirstVariation final : public ceres::CostFunction {
+ public:
+  ReducedFirstVariation(SoftModeSystem* sys, double scale) : sys_(sys), scale_(scale) {
+    set_num_residuals(static_cast<int>(sys->size()));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(sys->size()));
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const Eigen::Index n = sys_->size();
+    const Eigen::Map<const Eigen::VectorXd> s(parameters[0], n);
+    Eigen::VectorXd G;
+    Eigen::MatrixXd J;
+    const bool want_j = jacobians && jacobians[0];
+    if (!sys_->evaluate(s, G, want_j ? &J : nullptr)) return false;
+    Eigen::Map<Eigen::VectorXd>(residuals, n) = G / scale_;
+    if (want_j)  // Ceres wants the Jacobian row-major
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(jacobians[0], n, n) = J / scale_;
+    return true;
+  }
+
+ private:
+  SoftModeSystem* sys_;
+  double scale_;
+};
+
+class SoftStop final : public ceres::IterationCallback {
+ public:
+  SoftStop(const SoftModeSystem* sys, double tol, double scale) : sys_(sys), tol_(tol), scale_(scale) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& it) override {
+    if (sys_->best_residual() <= tol_) {
+      reached = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (it.step_is_successful) history_.push_back(std::sqrt(2 * it.cost) * scale_);
+    if (soft_stalled(history_)) {
+      stall = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+  bool reached = false, stall = false;
+
+ private:
+  const SoftModeSystem* sys_;
+  double tol_, scale_;
+  std::vector<double> history_;
+};
+
+SoftOutcome minimise_ceres(SoftModeSystem& sys, double tol, int max_iterations) {
+  const Eigen::Index n = sys.size();
+  Eigen::VectorXd G;
+  Eigen::MatrixXd J;
+  if (!sys.evaluate(Eigen::VectorXd::Zero(n), G, &J)) return {};
+  const double scale = J.colwise().norm().maxCoeff();
+  if (!(scale > 0) || !std::isfinite(scale)) return {};
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(n);
+  ceres::Problem problem;
+  problem.AddResidualBlock(new ReducedFirstVariation(&sys, scale), nullptr, s.data());  // owned by problem
+  ceres::Solver::Options so = ceres_lm_options(max_iterations);
+  so.jacobi_scaling = false;  // with diag JᵀJ clamped to [1, 1]: D = Id, Levenberg's scaling
+  so.min_lm_diagonal = 1.0;
+  so.max_lm_diagonal = 1.0;
+  SoftStop cb(&sys, tol, scale);
+  so.callbacks.push_back(&cb);
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  SoftOutcome out;
+  out.iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);  // steps tried
+  out.stationary = !cb.reached && !cb.stall && summary.termination_type != ceres::NO_CONVERGENCE;
+  return out;
+}
+
+}  // namespace
+
+CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& o, int max_iterations) {
+  CorrectorStats st;
+  const double e0 = p.eps;
+  p.eps = 0.0;
+  st.residual = p.residual(H);
+  if (std::isfinite(st.residual) && st.residual > o.tolerance && max_iterations > 0) {
+    SoftModeSystem sys(p, H);
+    if (sys.ok()) {
+      const SoftOutcome r = o.solver == CmcSolver::Ceres ? minimise_ceres(sys, o.tolerance, max_iterations)
+                                                         : minimise_newton(sys, o.tolerance, max_iterations);
+      st.iterations = r.iterations;
+      st.soft_stationary = r.stationary;
+    }
+    p.set(sys.best_point());
+    st.residual = sys.best_residual();
+  }
+  st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
+  p.eps = e0;
+  return st;
+}
+
+}  // namespace bpde::cmc_detail
