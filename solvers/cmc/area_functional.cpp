@@ -276,18 +276,58 @@ double streamed_area(const Eigen::MatrixX2d& uv, const Eigen::VectorXd& w,
 
 int report_q(int n) { return std::min(200, 3 * n + 8); }
 
+// The report rules, cached per (kind, q) (0 triangle, 1 square): building one (Gauss–Legendre
+// nodes, the Duffy maps) cost more than the D_H solve at n = 4 (docs/performance.md, section 10).
+std::shared_ptr<const QuadratureRuleTriangle> report_rule(int kind, int q) {
+  static KeyedCache<std::array<int, 2>, QuadratureRuleTriangle> cache(8);
+  return cache.get({kind, q}, [](const std::array<int, 2>& k) {
+    return k[0] == 0 ? corner_collapsed_triangle_rule(k[1]) : corner_collapsed_square_rule(k[1]);
+  });
+}
+
+// Small nets keep the derivative tables of the report rule: x_u = Bu Du and x_v = Bv Dv at all
+// nodes (Bu = Bv = B_{n-1} on the triangle). Cached per degree while the tables hold at most this
+// many doubles (4 MB: triangular n <= 10, tensor n = m <= 6); larger nets stream.
+constexpr Eigen::Index kReportTableDoubles = Eigen::Index(1) << 19;
+struct ReportTables {
+  Eigen::VectorXd w;
+  Eigen::MatrixXd Bu, Bv;  // #nodes x #points of the derivative nets (Bv empty on the triangle)
+};
+// In blocks of 256 nodes: whole-rule temporaries (#nodes x 3, four of them) made the heap grow and
+// shrink on every call, and the page faults and TLB flushes of that cost more than the products
+// (measured on the D_H solve at n = 4, docs/performance.md, section 10).
+double tabled_area(const ReportTables& t, const Eigen::MatrixX3d& Du, const Eigen::MatrixX3d& Dv) {
+  constexpr Eigen::Index kBlock = 256;
+  const Eigen::MatrixXd& Bv = t.Bv.size() ? t.Bv : t.Bu;
+  Eigen::MatrixX3d Xu(kBlock, 3), Xv(kBlock, 3);
+  double A = 0.0;
+  for (Eigen::Index r0 = 0; r0 < t.w.size(); r0 += kBlock) {
+    const Eigen::Index len = std::min(kBlock, t.w.size() - r0);
+    Xu.topRows(len).noalias() = t.Bu.middleRows(r0, len) * Du;
+    Xv.topRows(len).noalias() = Bv.middleRows(r0, len) * Dv;
+    for (Eigen::Index r = 0; r < len; ++r)
+      A += t.w(r0 + r) * Xu.row(r).cross(Xv.row(r)).norm();
+  }
+  return A;
+}
+
 }  // namespace
 
 double area(const TriangularNet& net) {
   const int n = net.n();
-  Eigen::MatrixX2d uv;
-  Eigen::VectorXd w;
-  {
-    const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(report_q(n));
-    uv = rule.uv;
-    w = rule.w;
-  }
   const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
+  const int q = report_q(n);
+  if (Eigen::Index(6) * q * q * TriangularNet::count(n - 1) <= kReportTableDoubles) {
+    static KeyedCache<int, ReportTables> cache(8);
+    const auto t = cache.get(n, [q](int deg) {
+      const auto rule = report_rule(0, q);
+      return ReportTables{rule->w, TriangularNet::basis_matrix(deg - 1, rule->uv), Eigen::MatrixXd()};
+    });
+    return tabled_area(*t, Du, Dv);
+  }
+  const auto rule = report_rule(0, q);
+  const Eigen::MatrixX2d& uv = rule->uv;
+  const Eigen::VectorXd& w = rule->w;
   return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
     const Eigen::MatrixXd B = TriangularNet::basis_matrix(n - 1, b);
     Xu = times(B, Du);
@@ -297,15 +337,29 @@ double area(const TriangularNet& net) {
 
 double area(const TensorNet& net) {
   const int n = net.n(), m = net.m();
-  Eigen::MatrixX2d uv;
-  Eigen::VectorXd w;
-  {
-    const QuadratureRuleTriangle rule = corner_collapsed_square_rule(report_q(std::max(n, m)));
-    uv = rule.uv;
-    w = rule.w;
-  }
   // Derivative nets: degree (n-1, m) for x_u and (n, m-1) for x_v, rows i(m'+1) + j.
   const Eigen::MatrixX3d Du = net.derivative_points(1, 0), Dv = net.derivative_points(0, 1);
+  const int q = report_q(std::max(n, m));
+  if (Eigen::Index(8) * q * q * (n * (m + 1) + (n + 1) * m) <= kReportTableDoubles) {
+    static KeyedCache<std::array<int, 2>, ReportTables> cache(8);
+    const auto t = cache.get({n, m}, [q](const std::array<int, 2>& k) {
+      const int a = k[0], b = k[1];
+      const auto rule = report_rule(1, q);
+      const Eigen::VectorXd us = rule->uv.col(0), vs = rule->uv.col(1);
+      const Eigen::MatrixXd Tu0 = bernstein_table(a, us), Tu1 = bernstein_table(a - 1, us);
+      const Eigen::MatrixXd Tv0 = bernstein_table(b, vs), Tv1 = bernstein_table(b - 1, vs);
+      ReportTables r{rule->w, Eigen::MatrixXd(us.size(), a * (b + 1)), Eigen::MatrixXd(us.size(), (a + 1) * b)};
+      for (int i = 0; i < a; ++i)
+        for (int j = 0; j <= b; ++j) r.Bu.col(i * (b + 1) + j) = Tu1.col(i).cwiseProduct(Tv0.col(j));
+      for (int i = 0; i <= a; ++i)
+        for (int j = 0; j < b; ++j) r.Bv.col(i * b + j) = Tu0.col(i).cwiseProduct(Tv1.col(j));
+      return r;
+    });
+    return tabled_area(*t, Du, Dv);
+  }
+  const auto rule = report_rule(1, q);
+  const Eigen::MatrixX2d& uv = rule->uv;
+  const Eigen::VectorXd& w = rule->w;
   return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
     const Eigen::VectorXd us = b.col(0), vs = b.col(1);
     const Eigen::MatrixXd Tu0 = bernstein_table(n, us), Tu1 = bernstein_table(n - 1, us);
