@@ -128,67 +128,64 @@ TEST(LevenbergMarquardt, StallsWhenPhiNoLongerFalls) {
   EXPECT_GT(x(0), 5.0);
 }
 
-// The trial as the loop takes it: δ solves (JᵀJ + λD)δ = −Jᵀr, a = −(JᵀJ + λD)⁻¹Jᵀr_δδ, and the
-// bend is 2‖a‖_D/‖δ‖_D, each against its closed form on the quadratic residuals.
-TEST(LevenbergMarquardt, TrialIsTheDampedVelocityAndItsAcceleration) {
+// The quadratic residuals as a problem, at x = (0.3, -1.1, 0.7): there the diagonal of JᵀJ is
+// (9.25, 5.65, 50.36).
+struct QuadraticAtX {
   LeastSquaresProblem p;
-  p.residuals = [](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
-    r = quadratic_r(x);
-    if (J) *J = quadratic_J(x);
-  };
-  const Eigen::Vector3d x(0.3, -1.1, 0.7);
-  const Eigen::VectorXd r = quadratic_r(x);
-  const Eigen::MatrixXd J = quadratic_J(x);
+  Eigen::Vector3d x{0.3, -1.1, 0.7};
+  Eigen::VectorXd r = quadratic_r(x);
+  Eigen::MatrixXd J = quadratic_J(x);
+  QuadraticAtX() {
+    p.residuals = [](const Eigen::VectorXd& y, Eigen::VectorXd& ry, Eigen::MatrixXd* Jy) {
+      ry = quadratic_r(y);
+      if (Jy) *Jy = quadratic_J(y);
+    };
+  }
+};
+
+// The trial at λ = 0.3 against its closed form: δ = −(JᵀJ + λD)⁻¹Jᵀr, a = −(JᵀJ + λD)⁻¹Jᵀr_δδ
+// and the bend 2‖a‖_D/‖δ‖_D, with D = diag JᵀJ (Marquardt's scaling) or max diag JᵀJ · Id
+// (Levenberg's, o.marquardt_scaling = false). Returns δ.
+Eigen::Vector3d expect_trial_closed_form(const LevenbergMarquardtOptions& o) {
+  const QuadraticAtX q;
   const double lambda = 0.3;
-  LevenbergMarquardtOptions o;
-  const LmTrial t = levenberg_marquardt_trial(p, x, r, J, lambda, o);
-  ASSERT_TRUE(t.ok);
-  const Eigen::Matrix3d A = J.transpose() * J;
-  const Eigen::Vector3d D = A.diagonal();
+  const LmTrial t = levenberg_marquardt_trial(q.p, q.x, q.r, q.J, lambda, o);
+  EXPECT_TRUE(t.ok);
+  const Eigen::Matrix3d A = q.J.transpose() * q.J;
+  const Eigen::Vector3d D = o.marquardt_scaling ? Eigen::Vector3d(A.diagonal())
+                                                : Eigen::Vector3d::Constant(A.diagonal().maxCoeff());
   Eigen::Matrix3d M = A;
   M.diagonal() += lambda * D;
-  const Eigen::Vector3d d = -M.inverse() * (J.transpose() * r);
+  const Eigen::Vector3d d = -M.inverse() * (q.J.transpose() * q.r);
   const Eigen::Vector3d rdd(2 * d(0) * d(0) + 6 * d(0) * d(1), 2 * d(1) * d(1) - 4 * d(0) * d(2), 10 * d(2) * d(2));
-  const Eigen::Vector3d a = -M.inverse() * (J.transpose() * rdd);
+  const Eigen::Vector3d a = -M.inverse() * (q.J.transpose() * rdd);
   EXPECT_LT((t.velocity - d).norm(), 1e-12 * d.norm());
   EXPECT_LT((t.acceleration - a).norm(), 1e-10 * a.norm());
   const double bend = 2 * std::sqrt(a.dot(D.asDiagonal() * a) / d.dot(D.asDiagonal() * d));
   EXPECT_NEAR(t.bend, bend, 1e-10 * bend);
+  return d;
+}
+
+// The trial as the loop takes it (Marquardt's scaling, the default), and without acceleration.
+TEST(LevenbergMarquardt, TrialIsTheDampedVelocityAndItsAcceleration) {
+  expect_trial_closed_form(LevenbergMarquardtOptions{});
+  const QuadraticAtX q;
+  LevenbergMarquardtOptions o;
   o.geodesic_acceleration = false;
-  const LmTrial plain = levenberg_marquardt_trial(p, x, r, J, lambda, o);
+  const LmTrial plain = levenberg_marquardt_trial(q.p, q.x, q.r, q.J, 0.3, o);
   EXPECT_EQ(plain.acceleration.size(), 0);
   EXPECT_EQ(plain.bend, 0.0);
 }
 
 // Levenberg's scaling (marquardt_scaling = false): D = max diag JᵀJ · Id in the velocity, the
-// acceleration and the bend, each against its closed form; at this x the diagonal of JᵀJ is
-// (9.25, 5.65, 50.36), so Marquardt's velocity differs from it by far more than the tolerance.
+// acceleration and the bend; the diagonal of JᵀJ differs by 9× across the unknowns here, so the two
+// velocities differ by far more than the tolerance.
 TEST(LevenbergMarquardt, LevenbergScalingDampsEveryUnknownAlike) {
-  LeastSquaresProblem p;
-  p.residuals = [](const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J) {
-    r = quadratic_r(x);
-    if (J) *J = quadratic_J(x);
-  };
-  const Eigen::Vector3d x(0.3, -1.1, 0.7);
-  const Eigen::VectorXd r = quadratic_r(x);
-  const Eigen::MatrixXd J = quadratic_J(x);
-  const double lambda = 0.3;
   LevenbergMarquardtOptions o;
   o.marquardt_scaling = false;
-  const LmTrial t = levenberg_marquardt_trial(p, x, r, J, lambda, o);
-  ASSERT_TRUE(t.ok);
-  const Eigen::Matrix3d A = J.transpose() * J;
-  const double top = A.diagonal().maxCoeff();
-  Eigen::Matrix3d M = A;
-  M.diagonal().array() += lambda * top;
-  const Eigen::Vector3d d = -M.inverse() * (J.transpose() * r);
-  const Eigen::Vector3d rdd(2 * d(0) * d(0) + 6 * d(0) * d(1), 2 * d(1) * d(1) - 4 * d(0) * d(2), 10 * d(2) * d(2));
-  const Eigen::Vector3d a = -M.inverse() * (J.transpose() * rdd);
-  EXPECT_LT((t.velocity - d).norm(), 1e-12 * d.norm());
-  EXPECT_LT((t.acceleration - a).norm(), 1e-10 * a.norm());
-  EXPECT_NEAR(t.bend, 2 * a.norm() / d.norm(), 1e-10 * t.bend);
-  const LmTrial marquardt = levenberg_marquardt_trial(p, x, r, J, lambda, LevenbergMarquardtOptions{});
-  EXPECT_GT((marquardt.velocity - d).norm(), 1e-3 * d.norm());
+  const Eigen::Vector3d levenberg = expect_trial_closed_form(o);
+  const Eigen::Vector3d marquardt = expect_trial_closed_form(LevenbergMarquardtOptions{});
+  EXPECT_GT((marquardt - levenberg).norm(), 1e-3 * levenberg.norm());
 }
 
 // Rosenbrock's valley as least squares (the worked example of the header): both loops reach
