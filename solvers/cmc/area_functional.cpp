@@ -259,7 +259,8 @@ namespace {
 // The report's area of one net (area() below) needs no node tables of the control points: it
 // evaluates x_u and x_v from the derivative nets, a block of nodes at a time, so that its memory
 // stays O(block × N) whatever q (the tables of AreaForm are #nodes × N twice: 232 MB at
-// triangular n = 25, q = 83) and nothing is kept between calls.
+// triangular n = 25, q = 83). Only the rule is kept between calls, and for small nets the
+// derivative tables (report_rule, ReportTables below).
 constexpr Eigen::Index kAreaBlock = 1024;
 
 double streamed_area(const Eigen::MatrixX2d& uv, const Eigen::VectorXd& w,

@@ -29,10 +29,13 @@
 //
 // It stops at the tolerance (max-norm relative residual, the solve's measure), after
 // max_iterations, when ‖G‖ falls by less than 10 % in 30 iterations, or when no step lowers ‖G‖
-// (30 trials with growing damping: LsStop::NoStep). In the last case Jᵀ G ≈ 0 to rounding: G lies
-// along the nearly null directions of the reduced Hessian, a stationary point of ‖G‖ that is not a
-// critical point of A_H (soft_stationary; cmc_area.cpp words the message). It leaves p at the point
-// with the smallest residual it met.
+// (30 trials with growing damping: LsStop::NoStep; with Ceres, its own convergence tests). In the
+// last case the point is called stationary (soft_stationary; cmc_area.cpp words the message) only
+// when ‖JᵀG‖ <= 1e-3 ‖J‖_F ‖G‖ there: G lies along the nearly null directions of the reduced
+// Hessian, a stationary point of ‖G‖ that is not a critical point of A_H. An evaluation that fails
+// (a non-finite residual, h(s) not solved) restores h and the hard factor of the last good one.
+// The phase starts only within a relative first variation of 1e-6. It leaves p at the point with
+// the smallest residual it met.
 #include <ceres/ceres.h>
 
 #include <Eigen/Eigenvalues>
@@ -60,6 +63,15 @@ constexpr double kHardAccept = 1e-3;
 // Stall test: ‖G‖ falls by less than this factor in kStallWindow iterations.
 constexpr double kStallFactor = 0.9;
 constexpr int kStallWindow = 30;
+// Where no step lowers ‖G‖, it is called stationary only when ‖JᵀG‖ <= this × ‖J‖_F ‖G‖: G nearly
+// orthogonal to the range of J, so that no direction descends. Measured at such ends: 2.3e-5 on
+// the tensor catenoid at n = 6 (G along a singular vector of J with singular value 6e-12, the
+// largest 1.5e-4; the rest is the rounding of G, ~6e-15), 7.9e-6 on the circle at n = 6,
+// H = -0.9, solver ceres.
+constexpr double kStationary = 1e-3;
+// The phase starts only within this relative first variation: farther off (a failed continuation
+// step) the hard modes are not converged and the phase would only cost time.
+constexpr double kSoftPhaseStart = 1e-6;
 
 // The reduced system at the point p holds when it is built (the split point y0).
 class SoftModeSystem {
@@ -81,6 +93,7 @@ class SoftModeSystem {
     Vh_ = es.eigenvectors()(Eigen::all, hard);
     h_ = Eigen::VectorXd::Zero(Vh_.cols());
     ok_ = linearise();
+    keep();
   }
   bool ok() const { return ok_; }
   Eigen::Index size() const { return Vs_.cols(); }
@@ -89,6 +102,32 @@ class SoftModeSystem {
   /// point and keeps the point of smallest residual met.
   bool evaluate(const Eigen::VectorXd& s, Eigen::VectorXd& G, Eigen::MatrixXd* J) {
     if (!s.allFinite()) return false;
+    // A failed evaluation leaves nothing behind: the next starts from the last good h and factor.
+    if (!solve_hard(s, G, J)) {
+      h_ = kept_h_;
+      Khh_ = kept_Khh_;
+      return false;
+    }
+    keep();
+    return true;
+  }
+  double best_residual() const { return best_r_; }
+  const Eigen::VectorXd& best_point() const { return best_y_; }
+  /// ‖JᵀG‖ / (‖J‖_F ‖G‖) at s (+inf when s cannot be evaluated): 0 at a stationary point of ‖G‖.
+  double stationarity(const Eigen::VectorXd& s) {
+    Eigen::VectorXd G;
+    Eigen::MatrixXd J;
+    if (!evaluate(s, G, &J)) return std::numeric_limits<double>::infinity();
+    const double den = J.norm() * G.norm();
+    return den > 0 ? (J.transpose() * G).norm() / den : 0.0;
+  }
+
+ private:
+  void keep() {
+    kept_h_ = h_;
+    kept_Khh_ = Khh_;
+  }
+  bool solve_hard(const Eigen::VectorXd& s, Eigen::VectorXd& G, Eigen::MatrixXd* J) {
     double prev = std::numeric_limits<double>::infinity(), nh = 0;
     Eigen::VectorXd g;
     double r = 0;
@@ -113,7 +152,6 @@ class SoftModeSystem {
     }
     // G is a function of s only when h(s) is solved: a point where it is not is out.
     if (!(nh <= kHardAccept * G.norm())) return false;
-    last_r_ = r;
     if (r < best_r_) best_r_ = r, best_y_ = p_.get();
     if (J) {
       if (!linearise()) return false;
@@ -121,11 +159,7 @@ class SoftModeSystem {
     }
     return true;
   }
-  double last_residual() const { return last_r_; }
-  double best_residual() const { return best_r_; }
-  const Eigen::VectorXd& best_point() const { return best_y_; }
 
- private:
   // The Hessian K and the factor of its hard block Khh at p's point.
   bool factor_hard() {
     K_ = p_.hessian(H_);
@@ -148,10 +182,10 @@ class SoftModeSystem {
 
   AreaProblem& p_;
   double H_;
-  Eigen::VectorXd y0_, h_, best_y_;
+  Eigen::VectorXd y0_, h_, best_y_, kept_h_;
   Eigen::MatrixXd K_, KVh_, Vs_, Vh_, J_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> Khh_;
-  double lmax_ = 0, best_r_ = std::numeric_limits<double>::infinity(), last_r_ = 0;
+  Eigen::PartialPivLU<Eigen::MatrixXd> Khh_, kept_Khh_;
+  double lmax_ = 0, best_r_ = std::numeric_limits<double>::infinity();
   bool ok_ = false;
 };
 
@@ -185,7 +219,7 @@ SoftOutcome minimise_newton(SoftModeSystem& sys, double tol, int max_iterations)
   lo.marquardt_scaling = false;
   Eigen::VectorXd s = Eigen::VectorXd::Zero(sys.size());
   const LsOutcome lm = levenberg_marquardt(problem, s, lo);
-  return {lm.iterations, lm.stop == LsStop::NoStep};
+  return {lm.iterations, lm.stop == LsStop::NoStep && sys.stationarity(s) <= kStationary};
 }
 
 // G(s) as one Ceres residual block on one parameter block, divided by `scale`.
@@ -256,7 +290,10 @@ SoftOutcome minimise_ceres(SoftModeSystem& sys, double tol, int max_iterations) 
   ceres::Solve(so, &problem, &summary);
   SoftOutcome out;
   out.iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);  // steps tried
-  out.stationary = !cb.reached && !cb.stall && summary.termination_type != ceres::NO_CONVERGENCE;
+  // Ceres's own tests (its trust region collapsed, the step vanished) end in CONVERGENCE; a
+  // FAILURE (an evaluation failed) says nothing about stationarity.
+  out.stationary = !cb.reached && !cb.stall && summary.termination_type == ceres::CONVERGENCE &&
+                   sys.stationarity(s) <= kStationary;
   return out;
 }
 
@@ -267,7 +304,8 @@ CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& 
   const double e0 = p.eps;
   p.eps = 0.0;
   st.residual = p.residual(H);
-  if (std::isfinite(st.residual) && st.residual > o.tolerance && max_iterations > 0) {
+  if (std::isfinite(st.residual) && st.residual > o.tolerance && st.residual <= kSoftPhaseStart &&
+      max_iterations > 0) {
     SoftModeSystem sys(p, H);
     if (sys.ok()) {
       const SoftOutcome r = o.solver == CmcSolver::Ceres ? minimise_ceres(sys, o.tolerance, max_iterations)

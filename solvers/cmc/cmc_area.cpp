@@ -174,7 +174,7 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
 }
 
 // The soft-mode phase's iteration bound, in units of o.max_corrector_iterations (default 30: 300
-// iterations; the circle at n = 10, H = -0.9 takes 188, docs/cmc.md "The soft-mode phase").
+// iterations; the circle at n = 10, H = -0.9 takes 21, docs/cmc.md "The soft-mode phase").
 constexpr int kSoftModeIterationsPerCorrector = 10;
 
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations) {
@@ -381,9 +381,14 @@ struct AreaSolve {
     return r.ok;
   }
 
-  // Set when the last truncated Newton phase ended in the soft-mode phase at a stationary point of
-  // the reduced first variation's norm (area_soft_mode_phase.cpp); the messages say so.
-  bool soft_stationary = false;
+  // The residual at which the last final phase ended at a stationary point of the reduced first
+  // variation's norm (area_soft_mode_phase.cpp), else -1. The messages say so only when the net
+  // reported is still that point (the same residual: it is a function of the net and the rule) and
+  // in the H form (the V form's residual includes the volume).
+  double stationary_at = -1.0;
+  bool at_stationary_point(double residual) const {
+    return !o.V && stationary_at > 0 && std::abs(residual - stationary_at) <= 1e-12 * stationary_at;
+  }
   // The final phases at ε = 0: newton, the truncated Newton phase, which ends in the soft-mode
   // phase; ceres, the soft-mode phase (by Ceres) alone.
   CorrectorStats finish(double H, int max_iterations) {
@@ -394,7 +399,7 @@ struct AreaSolve {
     } else {
       t = area_truncated_newton(p, H, o, max_iterations);
     }
-    soft_stationary = t.soft_stationary;
+    stationary_at = t.soft_stationary ? t.residual : -1.0;
     return t;
   }
 
@@ -934,7 +939,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
                  "the correction with the refined quadrature rule (q = " +
                      std::to_string(s.p.a->points_per_direction()) + ") stopped at a relative first variation of " +
                      num(st.residual) +
-                     (s.soft_stationary ? ", where no step over the soft (tangential) modes lowers it" : "")};
+                     (s.at_stationary_point(st.residual) ? ", where no step over the soft (tangential) modes lowers it" : "")};
           break;
         }
       }
@@ -958,7 +963,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     if (out.ok && !(res.summary.residual <= o.tolerance)) {
       out = {out.H, false, Status::NumericalLimit,
              "the final net misses the first variation of A_H by " + num(res.summary.residual) + " (relative)" +
-                 (s.soft_stationary ? "; no step over the soft (tangential) modes lowers it (a stationary point of its "
+                 (s.at_stationary_point(res.summary.residual) ? "; no step over the soft (tangential) modes lowers it (a stationary point of its "
                                       "norm there, not a critical point of A_H)"
                                     : "") +
                  "; reached after: " + out.message};
