@@ -14,7 +14,7 @@
 //    acceleration and Levenberg's scaling (D = max diag JᵀJ · Id: s is in C-orthonormal
 //    coordinates, so the damping is a trust region in the C-norm, as the corrector's μC);
 //  - solver ceres: ceres::Solve on one residual block (G, with J as its Jacobian, both divided by
-//    the largest column norm of J at the split point), Levenberg–Marquardt with the same scaling
+//    the largest column norm of J at the split point, from the split itself), Levenberg–Marquardt with the same scaling
 //    (no Jacobi scaling, diag JᵀJ clamped to 1 from above and below: D = Id), and the same
 //    stopping tests in an IterationCallback. The ceres route has no truncated Newton phase; this
 //    phase follows its last corrector directly.
@@ -93,10 +93,13 @@ class SoftModeSystem {
     Vh_ = es.eigenvectors()(Eigen::all, hard);
     h_ = Eigen::VectorXd::Zero(Vh_.cols());
     ok_ = linearise();
+    J0_ = J_;
     keep();
   }
   bool ok() const { return ok_; }
   Eigen::Index size() const { return Vs_.cols(); }
+  /// The Schur complement at the split point (s = 0), from the constructor.
+  const Eigen::MatrixXd& split_jacobian() const { return J0_; }
   /// G(s) into G and, when J is not null, the Schur complement at that point (which also renews
   /// the factor of the hard block for the chord steps). false when not finite. Leaves p at the
   /// point and keeps the point of smallest residual met.
@@ -183,7 +186,7 @@ class SoftModeSystem {
   AreaProblem& p_;
   double H_;
   Eigen::VectorXd y0_, h_, best_y_, kept_h_;
-  Eigen::MatrixXd K_, KVh_, Vs_, Vh_, J_;
+  Eigen::MatrixXd K_, KVh_, Vs_, Vh_, J_, J0_;
   Eigen::PartialPivLU<Eigen::MatrixXd> Khh_, kept_Khh_;
   double lmax_ = 0, best_r_ = std::numeric_limits<double>::infinity();
   bool ok_ = false;
@@ -272,10 +275,7 @@ class SoftStop final : public ceres::IterationCallback {
 
 SoftOutcome minimise_ceres(SoftModeSystem& sys, double tol, int max_iterations) {
   const Eigen::Index n = sys.size();
-  Eigen::VectorXd G;
-  Eigen::MatrixXd J;
-  if (!sys.evaluate(Eigen::VectorXd::Zero(n), G, &J)) return {};
-  const double scale = J.colwise().norm().maxCoeff();
+  const double scale = sys.split_jacobian().colwise().norm().maxCoeff();
   if (!(scale > 0) || !std::isfinite(scale)) return {};
   Eigen::VectorXd s = Eigen::VectorXd::Zero(n);
   ceres::Problem problem;

@@ -403,9 +403,20 @@ struct AreaSolve {
     return t;
   }
 
+  // "the truncated Newton phase [in N iteration(s)] and the soft-mode phase [in M]": what finish()
+  // ran, for the messages.
+  static std::string final_phases(const CorrectorStats& t, bool counts) {
+    const int truncated = t.iterations - t.soft_iterations;
+    auto phase = [&](const char* name, int it) {
+      return std::string(name) + (counts ? " in " + std::to_string(it) + " iteration(s)" : "");
+    };
+    std::string s = truncated > 0 ? phase("the truncated Newton phase", truncated) : "";
+    if (t.soft_iterations > 0) s += (s.empty() ? "" : " and ") + phase("the soft-mode phase", t.soft_iterations);
+    return s;
+  }
+
   CorrectorStats correct(double H) {
-    CorrectorStats st;
-    st = o.solver == CmcSolver::Ceres ? ceres_correct(p, H, o)
+    CorrectorStats st = o.solver == CmcSolver::Ceres ? ceres_correct(p, H, o)
                                       : area_newton_correct(p, H, o, 2 * o.max_corrector_iterations, theta, 0.0);
     if (!st.ok && p.eps == 0.0 && std::isfinite(st.residual)) {
       // The corrector stalls in the tangential valley: finish with the final phases.
@@ -614,15 +625,7 @@ struct AreaSolve {
     if (p.residual_at(h, 0.0) > o.tolerance) {
       const CorrectorStats st = finish(h, 2 * o.max_corrector_iterations);
       summary.iterations += st.iterations;
-      if (st.ok) {
-        const int truncated = st.iterations - st.soft_iterations;
-        note += std::string(note.empty() ? "" : "; ") + "finished by " +
-                (truncated > 0 ? "the truncated Newton phase in " + std::to_string(truncated) + " iteration(s)" : "") +
-                (truncated > 0 && st.soft_iterations > 0 ? " and " : "") +
-                (st.soft_iterations > 0 ? "the soft-mode phase in " + std::to_string(st.soft_iterations) +
-                                              (truncated > 0 ? "" : " iteration(s)")
-                                        : "");
-      }
+      if (st.ok) note += std::string(note.empty() ? "" : "; ") + "finished by " + final_phases(st, true);
     }
     // No stability test here: the point is tied to the D_H branch point by the homotopy, and a
     // spherical patch larger than a hemisphere is a critical point of A_H but not a minimum.
@@ -790,10 +793,9 @@ struct AreaSolve {
         p.set(y);
         H = Hs;
       } else {
-        const bool truncated = t.iterations > t.soft_iterations;
-        note += std::string("; finished by the ") + (truncated ? "truncated Newton phase" : "") +
-                (truncated && t.soft_iterations > 0 ? " and the " : "") +
-                (t.soft_iterations > 0 ? "soft-mode phase" : "") + " at H and the bordered corrector";
+        const std::string phases = final_phases(t, false);
+        note += "; finished by " + (phases.empty() ? std::string("the bordered corrector")
+                                                   : phases + " at H and the bordered corrector");
       }
     }
     return {H, true, Status::Converged, "the volume-constrained critical point of A " + from + note};
