@@ -261,7 +261,9 @@ namespace {
 // stays O(block × N) whatever q (the tables of AreaForm are #nodes × N twice: 232 MB at
 // triangular n = 25, q = 83). Only the rule is kept between calls, and for small nets the
 // derivative tables (report_rule, ReportTables below).
-constexpr Eigen::Index kAreaBlock = 1024;
+// Blocks of 256 nodes: the block's basis matrix (256 x 78 doubles at triangular n = 11) stays in
+// the L2 cache between its two products (1024: 9-20 % slower at n = 11 ... 16, measured).
+constexpr Eigen::Index kAreaBlock = 256;
 
 double streamed_area(const Eigen::MatrixX2d& uv, const Eigen::VectorXd& w,
                      const std::function<void(const Eigen::MatrixX2d&, Eigen::MatrixX3d&, Eigen::MatrixX3d&)>& eval) {
@@ -331,8 +333,8 @@ double area(const TriangularNet& net) {
   const Eigen::VectorXd& w = rule->w;
   return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
     const Eigen::MatrixXd B = TriangularNet::basis_matrix(n - 1, b);
-    Xu = times(B, Du);
-    Xv = times(B, Dv);
+    Xu.noalias() = B * Du;
+    Xv.noalias() = B * Dv;
   });
 }
 
