@@ -7,6 +7,10 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <iostream>
 #include <optional>
 
@@ -17,7 +21,26 @@
 #include "bezierpde/jobs/exit_status.h"
 #include "bezierpde/jobs/job_progress.h"
 
+namespace {
+
+// The solvers make a fresh Hessian (and its factor or eigen-decomposition) each iteration. Above
+// glibc's mmap and trim thresholds each is a new mapping whose every page faults when first
+// written; a whole-process tool keeps freed memory instead (docs/performance.md, section 11:
+// the area route on the tensor catenoid at n = 10, 6.0 -> 4.6 s). A threshold the user sets in
+// the environment is left alone.
+void keep_freed_memory() {
+#if defined(__GLIBC__)
+  if (std::getenv("GLIBC_TUNABLES") || std::getenv("MALLOC_TRIM_THRESHOLD_") || std::getenv("MALLOC_MMAP_THRESHOLD_"))
+    return;
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);   // blocks up to 32 MB come from the heap
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);  // and up to 256 MB of freed heap stay mapped
+#endif
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  keep_freed_memory();
   CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)", "bpde"};
   app.require_subcommand(0, 1);  // bare `bpde` prints the usage (below)
   app.set_version_flag("-V,--version", "bpde " BPDE_VERSION, "Print the version and exit");
