@@ -60,6 +60,13 @@ constexpr double kSoftCut = 1e-4;
 constexpr int kMaxHardSteps = 10;
 constexpr double kHardFraction = 1e-6;
 constexpr double kHardAccept = 1e-3;
+// Near the tolerance the chord steps stop at the rounding of the gradient, which kHardAccept ‖G‖
+// passes below as G falls (measured on the tensor catenoid at n = 10: the hard part stalls at
+// 2.1e-13 … 3.6e-13 where 1e-3 ‖G‖ = 2.1e-13, and every evaluation past |s| = 4.5e-3 was
+// rejected). So the hard part also counts as solved below this fraction of what ‖G‖ is at the
+// tolerance (‖G‖ tol / r, r the relative residual): then it cannot keep the end point from the
+// tolerance, and it moves G by at most that much.
+constexpr double kHardNearTol = 0.1;
 // Stall test: ‖G‖ falls by less than this factor in kStallWindow iterations.
 constexpr double kStallFactor = 0.9;
 constexpr int kStallWindow = 30;
@@ -76,7 +83,7 @@ constexpr double kSoftPhaseStart = 1e-6;
 // The reduced system at the point p holds when it is built (the split point y0).
 class SoftModeSystem {
  public:
-  SoftModeSystem(AreaProblem& p, double H) : p_(p), H_(H), y0_(p.get()) {
+  SoftModeSystem(AreaProblem& p, double H, double tolerance) : p_(p), H_(H), tol_(tolerance), y0_(p.get()) {
     best_y_ = y0_;
     best_r_ = p_.residual(H_);
     K_ = p_.hessian(H_);
@@ -146,7 +153,7 @@ class SoftModeSystem {
       if (nh > 0.5 * prev) {
         // The chord steps stopped gaining: at the rounding floor (accepted below), or the factor
         // is from a point too far away: renew it here (at most twice).
-        if (nh <= kHardAccept * G.norm() || refreshes++ >= 2 || !factor_hard()) break;
+        if (nh <= hard_accept(G.norm(), r) || refreshes++ >= 2 || !factor_hard()) break;
         prev = std::numeric_limits<double>::infinity();
       } else {
         prev = nh;
@@ -154,7 +161,7 @@ class SoftModeSystem {
       h_ -= Khh_.solve(gh);
     }
     // G is a function of s only when h(s) is solved: a point where it is not is out.
-    if (!(nh <= kHardAccept * G.norm())) return false;
+    if (!(nh <= hard_accept(G.norm(), r))) return false;
     if (r < best_r_) best_r_ = r, best_y_ = p_.get();
     if (J) {
       if (!linearise()) return false;
@@ -163,6 +170,11 @@ class SoftModeSystem {
     return true;
   }
 
+  // The hard part of the gradient that counts as solved, given ‖G‖ and the relative residual r:
+  // kHardAccept of ‖G‖, or kHardNearTol of ‖G‖ scaled to the tolerance (‖G‖ tol / r).
+  double hard_accept(double nG, double r) const {
+    return std::max(kHardAccept * nG, r > 0 ? kHardNearTol * nG * tol_ / r : 0.0);
+  }
   // The Hessian K and the factor of its hard block Khh at p's point.
   bool factor_hard() {
     K_ = p_.hessian(H_);
@@ -184,7 +196,7 @@ class SoftModeSystem {
   }
 
   AreaProblem& p_;
-  double H_;
+  double H_, tol_;
   Eigen::VectorXd y0_, h_, best_y_, kept_h_;
   Eigen::MatrixXd K_, KVh_, Vs_, Vh_, J_, J0_;
   Eigen::PartialPivLU<Eigen::MatrixXd> Khh_, kept_Khh_;
@@ -306,7 +318,7 @@ CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& 
   st.residual = p.residual(H);
   if (std::isfinite(st.residual) && st.residual > o.tolerance && st.residual <= kSoftPhaseStart &&
       max_iterations > 0) {
-    SoftModeSystem sys(p, H);
+    SoftModeSystem sys(p, H, o.tolerance);
     if (sys.ok()) {
       const SoftOutcome r = o.solver == CmcSolver::Ceres ? minimise_ceres(sys, o.tolerance, max_iterations)
                                                          : minimise_newton(sys, o.tolerance, max_iterations);
