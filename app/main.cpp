@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -26,11 +27,14 @@ namespace {
 // The solvers make a fresh Hessian (and its factor or eigen-decomposition) each iteration. Above
 // glibc's mmap and trim thresholds each is a new mapping whose every page faults when first
 // written; a whole-process tool keeps freed memory instead (docs/performance.md, section 11:
-// the area route on the tensor catenoid at n = 10, 6.0 -> 4.6 s). A threshold the user sets in
-// the environment is left alone.
+// the area route on the tensor catenoid at n = 10, 5.31 -> 4.42 s wall). A malloc threshold the
+// user sets in the environment is left alone.
 void keep_freed_memory() {
 #if defined(__GLIBC__)
-  if (std::getenv("GLIBC_TUNABLES") || std::getenv("MALLOC_TRIM_THRESHOLD_") || std::getenv("MALLOC_MMAP_THRESHOLD_"))
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if ((tunables && (std::strstr(tunables, "glibc.malloc.mmap_threshold") ||
+                    std::strstr(tunables, "glibc.malloc.trim_threshold"))) ||
+      std::getenv("MALLOC_TRIM_THRESHOLD_") || std::getenv("MALLOC_MMAP_THRESHOLD_"))
     return;
   mallopt(M_MMAP_THRESHOLD, 32 << 20);   // blocks up to 32 MB come from the heap
   mallopt(M_TRIM_THRESHOLD, 256 << 20);  // and up to 256 MB of freed heap stay mapped

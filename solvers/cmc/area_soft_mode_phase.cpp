@@ -55,8 +55,9 @@ namespace {
 // the cases of docs/cmc.md, "The soft-mode phase").
 constexpr double kSoftCut = 1e-4;
 // Chord steps in the hard modes per evaluation, until the hard part of the gradient is below
-// kHardFraction of ‖G‖; where they stop falling by 2x a step above kHardAccept of ‖G‖, the factor
-// is renewed at the point (at most twice), and an evaluation that ends above it is rejected.
+// kHardFraction of ‖G‖; where they stop falling by 2x a step above hard_accept (kHardAccept of ‖G‖,
+// or kHardNearTol below), the factor is renewed at the point (at most twice), and an evaluation
+// that ends above it is rejected.
 constexpr int kMaxHardSteps = 10;
 constexpr double kHardFraction = 1e-6;
 constexpr double kHardAccept = 1e-3;
@@ -64,8 +65,11 @@ constexpr double kHardAccept = 1e-3;
 // passes below as G falls (measured on the tensor catenoid at n = 10: the hard part stalls at
 // 2.1e-13 … 3.6e-13 where 1e-3 ‖G‖ = 2.1e-13, and every evaluation past |s| = 4.5e-3 was
 // rejected). So the hard part also counts as solved below this fraction of what ‖G‖ is at the
-// tolerance (‖G‖ tol / r, r the relative residual): then it cannot keep the end point from the
-// tolerance, and it moves G by at most that much.
+// tolerance (‖G‖ tol / r, r the relative residual). To first order its share of the first
+// variation is then about a tenth of the tolerance (a first-order estimate: C maps the hard and
+// soft coordinates with different gains), and G is less accurate for the reduced LM by up to 10 %
+// near the tolerance. It cannot cause a false "converged": the point is kept by its true relative
+// first variation (best_r_), evaluated in full.
 constexpr double kHardNearTol = 0.1;
 // Stall test: ‖G‖ falls by less than this factor in kStallWindow iterations.
 constexpr double kStallFactor = 0.9;
