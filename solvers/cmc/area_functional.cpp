@@ -261,16 +261,18 @@ namespace {
 // stays O(block × N) whatever q (the tables of AreaForm are #nodes × N twice: 232 MB at
 // triangular n = 25, q = 83). Only the rule is kept between calls, and for small nets the
 // derivative tables (report_rule, ReportTables below).
-// Blocks of 256 nodes: the block's basis matrix (256 x 78 doubles at triangular n = 11) stays in
-// the L2 cache between its two products (1024: 9-20 % slower at n = 11 ... 16, measured).
-constexpr Eigen::Index kAreaBlock = 256;
+// Nodes per block, measured (docs/performance.md, section 11): triangular 256, so that the
+// block's basis matrix (256 x 78 doubles at n = 11) stays in the L2 cache between its two products
+// (1024: 9-20 % slower at n = 11 ... 16); tensor 1024, whose univariate tables are small (256:
+// 12-16 % slower at n = m = 7 ... 9).
+constexpr Eigen::Index kTriangleAreaBlock = 256, kSquareAreaBlock = 1024;
 
-double streamed_area(const Eigen::MatrixX2d& uv, const Eigen::VectorXd& w,
+double streamed_area(const Eigen::MatrixX2d& uv, const Eigen::VectorXd& w, Eigen::Index block,
                      const std::function<void(const Eigen::MatrixX2d&, Eigen::MatrixX3d&, Eigen::MatrixX3d&)>& eval) {
   double A = 0.0;
   Eigen::MatrixX3d Xu, Xv;
-  for (Eigen::Index r0 = 0; r0 < uv.rows(); r0 += kAreaBlock) {
-    const Eigen::Index len = std::min(kAreaBlock, uv.rows() - r0);
+  for (Eigen::Index r0 = 0; r0 < uv.rows(); r0 += block) {
+    const Eigen::Index len = std::min(block, uv.rows() - r0);
     eval(uv.middleRows(r0, len), Xu, Xv);
     A += w.segment(r0, len).dot(cross_rows(Xu, Xv).rowwise().norm());
   }
@@ -331,7 +333,7 @@ double area(const TriangularNet& net) {
   const auto rule = report_rule(0, q);
   const Eigen::MatrixX2d& uv = rule->uv;
   const Eigen::VectorXd& w = rule->w;
-  return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
+  return streamed_area(uv, w, kTriangleAreaBlock, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
     const Eigen::MatrixXd B = TriangularNet::basis_matrix(n - 1, b);
     Xu.noalias() = B * Du;
     Xv.noalias() = B * Dv;
@@ -363,7 +365,7 @@ double area(const TensorNet& net) {
   const auto rule = report_rule(1, q);
   const Eigen::MatrixX2d& uv = rule->uv;
   const Eigen::VectorXd& w = rule->w;
-  return streamed_area(uv, w, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
+  return streamed_area(uv, w, kSquareAreaBlock, [&](const Eigen::MatrixX2d& b, Eigen::MatrixX3d& Xu, Eigen::MatrixX3d& Xv) {
     const Eigen::VectorXd us = b.col(0), vs = b.col(1);
     const Eigen::MatrixXd Tu0 = bernstein_table(n, us), Tu1 = bernstein_table(n - 1, us);
     const Eigen::MatrixXd Tv0 = bernstein_table(m, vs), Tv1 = bernstein_table(m - 1, vs);
