@@ -77,7 +77,10 @@ constexpr double kHardNearTol = 0.1;
 // Stall test: ‖G‖ falls by less than this factor in kStallWindow iterations. 100, not 30: with 30
 // the sphere patch at n = 8 and 10 stopped while ‖G‖ still fell slowly towards a stationary point
 // of its norm (now reached and reported: 5.1e-10 and 1.26e-11, was 1.9e-11 at n = 10), and the
-// tensor catenoid at n = 8 at 9.6e-11 (now 1.2e-11, in 11 s instead of 5 s).
+// tensor catenoid at n = 8 at 9.6e-11 (now 1.3e-11, in 10-11 s instead of 4-5 s, where the phase
+// reaches its cap of 10 x max_corrector_iterations = 300). The test can first fire after 100
+// iterations, so with max_corrector_iterations <= 10 the cap always ends a phase that does not
+// reach the tolerance or run out of steps first.
 constexpr double kStallFactor = 0.9;
 constexpr int kStallWindow = 100;
 // Where no step lowers ‖G‖, it is called stationary only when ‖JᵀG‖ <= this × ‖J‖_F ‖G‖: G nearly
