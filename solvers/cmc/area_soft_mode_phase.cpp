@@ -112,7 +112,7 @@ class SoftModeSystem {
     Vs_ = es.eigenvectors()(Eigen::all, soft);
     Vh_ = es.eigenvectors()(Eigen::all, hard);
     h_ = Eigen::VectorXd::Zero(Vh_.cols());
-    ok_ = linearise();
+    ok_ = linearise(/*fresh_hessian=*/false);  // K_ is the Hessian at this point already
     J0_ = J_;
     keep();
   }
@@ -188,9 +188,10 @@ class SoftModeSystem {
   double hard_accept(double nG, double r) const {
     return std::max(kHardAccept * nG, r > 0 ? kHardNearTol * nG * tol_ / r : 0.0);
   }
-  // The Hessian K and the factor of its hard block Khh at p's point.
-  bool factor_hard() {
-    K_ = p_.hessian(H_);
+  // The Hessian K (unless fresh_hessian is false: K_ is already the one at p's point) and the
+  // factor of its hard block Khh at p's point.
+  bool factor_hard(bool fresh_hessian = true) {
+    if (fresh_hessian) K_ = p_.hessian(H_);
     if (!K_.allFinite()) return false;
     KVh_ = K_ * Vh_;
     // Khh is symmetric but indefinite where A_H is a saddle in hard modes (a cap past the
@@ -201,8 +202,8 @@ class SoftModeSystem {
     return Khh_.matrixLU().diagonal().cwiseAbs().minCoeff() > 1e-3 * kSoftCut * lmax_;
   }
   // The Schur complement J and the factor of Khh at p's point.
-  bool linearise() {
-    if (!factor_hard()) return false;
+  bool linearise(bool fresh_hessian = true) {
+    if (!factor_hard(fresh_hessian)) return false;
     const Eigen::MatrixXd Khs = KVh_.transpose() * Vs_;
     J_ = Vs_.transpose() * K_ * Vs_ - Khs.transpose() * Khh_.solve(Khs);
     return J_.allFinite();
