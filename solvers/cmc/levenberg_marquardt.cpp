@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/gram.h"
 
 namespace bpde::cmc_detail {
 
@@ -53,7 +54,7 @@ Linearisation linearise(const LeastSquaresProblem& p, const Eigen::VectorXd& x, 
   Linearisation L;
   const Eigen::Index k = J.cols();
   L.A = Eigen::MatrixXd::Zero(k, k);
-  L.A.selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
+  add_gram_lower(L.A, J);  // by row blocks: core/gram.h
   L.A = L.A.selfadjointView<Eigen::Lower>();
   L.g = J.transpose() * r;
   const double top = L.A.diagonal().maxCoeff();

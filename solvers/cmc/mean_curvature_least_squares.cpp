@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bezierpde/core/bernstein.h"
+#include "bezierpde/core/columns3.h"
 #include "bezierpde/energies/triangular_gram.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/quadrature.h"
@@ -103,7 +104,9 @@ MeanCurvatureLeastSquares MeanCurvatureLeastSquares::tensor(int n, int m, int q)
 MeanCurvatureLeastSquares::NodeDerivatives MeanCurvatureLeastSquares::derivatives(const Eigen::MatrixX3d& P) const {
   if (P.rows() != size()) throw SizeError("mean-curvature least squares: the net has the wrong number of points");
   NodeDerivatives X;
-  for (size_t t = 0; t < 5; ++t) X[t] = D_[t] * P;
+  // Three matrix-vector products per table (core/columns3.h), not a GEMM that packs the
+  // #nodes x #points table on every call for three columns.
+  for (size_t t = 0; t < 5; ++t) X[t] = times(D_[t], P);
   return X;
 }
 

@@ -1,0 +1,37 @@
+// core/gram: A += JᵀJ by row blocks against the sum of outer products of the rows, in long double.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+
+#include "bezierpde/core/gram.h"
+
+using namespace bpde;
+
+namespace {
+
+// Row counts on both sides of the block size (a partial last block, exactly one and two blocks,
+// none) and a row block of a larger matrix (the expression form the callers pass).
+TEST(Gram, AddsTheLowerTriangleOfJtJOverEveryRowCount) {
+  std::srand(3);
+  for (Eigen::Index rows : {Eigen::Index(0), Eigen::Index(1), kGramRows - 1, kGramRows, kGramRows + 1, 2 * kGramRows,
+                            5 * kGramRows + 17})
+    for (Eigen::Index k : {1, 7, 40}) {
+      const Eigen::MatrixXd big = Eigen::MatrixXd::Random(rows + 3, k);
+      const auto J = big.middleRows(2, rows);
+      Eigen::MatrixXd A = Eigen::MatrixXd::Constant(k, k, 0.25);  // the sum is added to what A holds
+      add_gram_lower(A, J);
+      for (Eigen::Index i = 0; i < k; ++i)
+        for (Eigen::Index j = 0; j < k; ++j) {
+          if (j > i) {  // the strict upper triangle is not touched
+            EXPECT_EQ(A(i, j), 0.25);
+            continue;
+          }
+          long double s = 0.25L;
+          for (Eigen::Index r = 0; r < rows; ++r) s += static_cast<long double>(J(r, i)) * J(r, j);
+          EXPECT_NEAR(A(i, j), static_cast<double>(s), 1e-13 * (1.0 + double(rows)))
+              << "rows " << rows << ", k " << k << ", entry (" << i << ", " << j << ")";
+        }
+    }
+}
+
+}  // namespace
