@@ -2,7 +2,8 @@
 // A += Jᵀ J (the lower triangle, selfadjointView<Lower>) for a tall dense J, by blocks of
 // kGramRows rows of J.
 //
-//   J: #rows by k (any expression Eigen can take a row block of); A: k by k.
+//   J: #rows by k, a matrix or a block of one (direct access: an expression such as a product
+//      would be evaluated again for every block); A: k by k.
 //
 // The normal matrix JᵀJ of the library's Levenberg–Marquardt loop (solvers/cmc/levenberg_marquardt.cpp:
 // the mean-curvature functional, whose Jacobian is #nodes by 3·#free, and the area soft-mode
@@ -13,11 +14,11 @@
 // so nothing caps them), and takes buffers above Eigen's 128 KB stack limit from the heap on every
 // call. Whether glibc then maps fresh pages for them depends on its dynamic thresholds, i.e. on
 // the process's allocation history, and on this VM every page fault costs several µs
-// (docs/performance.md, section 12). Blocks of 64 rows keep the buffers small. Measured (random J,
+// (docs/performance.md, sections 11 and 12). Blocks of 64 rows keep the buffers small. Measured (random J,
 // CPU time per call, one run, glibc's defaults; then with the thresholds the CLI sets):
 //
 //   J          one product   by 64 rows   (CLI thresholds: one product, by 64 rows)
-//   243 × 243  2.28 ms       0.27 ms      (0.28, 0.27)   the area soft-mode phase, tensor n = 10
+//   243 × 243  2.28 ms       0.27 ms      (0.28, 0.27)   square, as the soft-mode phase's reduced system
 //   363 × 363  6.62 ms       0.87 ms      (0.95, 0.89)
 //   500 × 500  13.8 ms       2.27 ms      (2.86, 2.17)
 //   648 × 243  0.77 … 9.6 ms 0.69 ms      (0.73, 0.73)   the mean-curvature Jacobian, tensor n = 10

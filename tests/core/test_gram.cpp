@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cstdlib>
 
 #include "bezierpde/core/gram.h"
 
@@ -10,7 +11,8 @@ using namespace bpde;
 namespace {
 
 // Row counts on both sides of the block size (a partial last block, exactly one and two blocks,
-// none) and a row block of a larger matrix (the expression form the callers pass).
+// none), on a row block of a larger matrix (a block expression) and on a plain matrix (what the
+// Levenberg–Marquardt loop passes).
 TEST(Gram, AddsTheLowerTriangleOfJtJOverEveryRowCount) {
   std::srand(3);
   for (Eigen::Index rows : {Eigen::Index(0), Eigen::Index(1), kGramRows - 1, kGramRows, kGramRows + 1, 2 * kGramRows,
@@ -20,6 +22,9 @@ TEST(Gram, AddsTheLowerTriangleOfJtJOverEveryRowCount) {
       const auto J = big.middleRows(2, rows);
       Eigen::MatrixXd A = Eigen::MatrixXd::Constant(k, k, 0.25);  // the sum is added to what A holds
       add_gram_lower(A, J);
+      Eigen::MatrixXd Aplain = Eigen::MatrixXd::Constant(k, k, 0.25);
+      add_gram_lower(Aplain, Eigen::MatrixXd(J));
+      EXPECT_EQ(A, Aplain) << "rows " << rows << ", k " << k;
       for (Eigen::Index i = 0; i < k; ++i)
         for (Eigen::Index j = 0; j < k; ++j) {
           if (j > i) {  // the strict upper triangle is not touched
