@@ -27,8 +27,10 @@
 // (the spread of one product across runs is the allocation history). Blocks of 128 rows were as
 // slow as one product at 243 × 243; blocks of 16384/k rows (the packing buffer under the stack
 // limit) were up to 20 % slower than 64 at k = 500. The area Hessian's RᵀR (blocks of up to 16384
-// rows by 3·#free) was measured by blocks too and kept as one product: 1.9x faster at triangular
-// n = 10, 1.2x slower at tensor n = 12 (docs/performance.md, section 12).
+// rows by 3·#free) was measured by blocks too and kept as one product: by 64 rows (with its three
+// cross products) a Hessian call was 1.8–1.9x faster at triangular n = 10, q = 20, 1.2x slower at
+// tensor n = 12, q = 30 and level at two others; by 128 rows the area solves did not change
+// (docs/performance.md, section 12).
 //
 // The sum is over the same terms in another order, so A differs from the one-product value by
 // rounding only.
