@@ -3,7 +3,7 @@
 // kGramRows rows of J.
 //
 //   J: #rows by k, a matrix or a block of one (direct access: an expression such as a product
-//      would be evaluated again for every block); A: k by k.
+//      would be evaluated again for every block); A: k by k (SizeError otherwise).
 //
 // The normal matrix JᵀJ of the library's Levenberg–Marquardt loop (solvers/cmc/levenberg_marquardt.cpp:
 // the mean-curvature functional, whose Jacobian is #nodes by 3·#free, and the area soft-mode
@@ -36,6 +36,9 @@
 // rounding only.
 #include <Eigen/Core>
 #include <algorithm>
+#include <string>
+
+#include "bezierpde/core/errors.h"
 
 namespace bpde {
 
@@ -43,6 +46,9 @@ inline constexpr Eigen::Index kGramRows = 64;
 
 template <class Derived>
 void add_gram_lower(Eigen::MatrixXd& A, const Eigen::MatrixBase<Derived>& J) {
+  if (A.rows() != J.cols() || A.cols() != J.cols())
+    throw SizeError("add_gram_lower: A is " + std::to_string(A.rows()) + " by " + std::to_string(A.cols()) +
+                    " for a J with " + std::to_string(J.cols()) + " columns");
   for (Eigen::Index s = 0; s < J.rows(); s += kGramRows) {
     const Eigen::Index b = std::min(kGramRows, J.rows() - s);
     A.selfadjointView<Eigen::Lower>().rankUpdate(J.middleRows(s, b).transpose());

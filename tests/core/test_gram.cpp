@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cstdlib>
 
+#include "bezierpde/core/errors.h"
 #include "bezierpde/core/gram.h"
 
 using namespace bpde;
@@ -37,6 +38,15 @@ TEST(Gram, AddsTheLowerTriangleOfJtJOverEveryRowCount) {
               << "rows " << rows << ", k " << k << ", entry (" << i << ", " << j << ")";
         }
     }
+}
+
+TEST(Gram, ASumOfTheWrongSizeIsASizeError) {
+  const Eigen::MatrixXd J = Eigen::MatrixXd::Ones(5, 3);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(3, 4);
+  EXPECT_THROW(add_gram_lower(A, J), SizeError);
+  A = Eigen::MatrixXd::Zero(2, 2);
+  EXPECT_THROW(add_gram_lower(A, J), SizeError);
+  EXPECT_EQ(A, Eigen::MatrixXd::Zero(2, 2));  // left as it was
 }
 
 }  // namespace
