@@ -336,6 +336,7 @@ Regularity regularity(const TensorNet& net, double A) {
 
 namespace {
 
+
 // ---------------------------------------------------------------- the solve
 
 // A corrector on A (H = 0) that stops above the tolerance but within this relative first variation
@@ -352,6 +353,37 @@ struct AreaOutcome {
 
 bool is_triangular(const TriangularNet&) { return true; }
 bool is_triangular(const TensorNet&) { return false; }
+
+// The samples of normal_gap: a 10 x 10 grid of the domain without the corners (the regularity
+// test's margin 0.05, where |x_u ∧ x_v| may vanish).
+std::vector<Eigen::Vector2d> gap_samples(bool triangular) {
+  const int Ns = 10;
+  std::vector<Eigen::Vector2d> uv;
+  for (int a = 0; a <= Ns; ++a)
+    for (int b = 0; b <= (triangular ? Ns - a : Ns); ++b) {
+      const double u = double(a) / Ns, v = double(b) / Ns;
+      const bool corner = triangular ? std::max({u, v, 1 - u - v}) > 0.95
+                                     : std::min(u, 1 - u) < 0.05 && std::min(v, 1 - v) < 0.05;
+      if (!corner) uv.emplace_back(u, v);
+    }
+  return uv;
+}
+
+// max over the samples of |<x_b − x_a, N_a>| (N_a the unit normal of a): how far surface b lies
+// from surface a along a's normals. A motion of the points along the surface (a reparametrisation,
+// the nearly singular directions of A_H) changes it only to second order, where the distance of
+// the points themselves changes to first order.
+template <class Net>
+double normal_gap(const Net& a, const Net& b) {
+  double gap = 0.0;
+  for (const Eigen::Vector2d& uv : gap_samples(is_triangular(a))) {
+    const Eigen::Vector3d N = normal_at(a, uv[0], uv[1]);
+    const double len = N.norm();
+    if (!(len > 0)) return std::numeric_limits<double>::infinity();
+    gap = std::max(gap, std::abs((b.evaluate(uv[0], uv[1]) - a.evaluate(uv[0], uv[1])).dot(N)) / len);
+  }
+  return gap;
+}
 
 template <class Net>
 struct AreaSolve {
@@ -756,6 +788,7 @@ struct AreaSolve {
     CmcOptions od = o;
     od.functional = CmcFunctionalKind::Dirichlet;
     od.solver = CmcSolver::NLopt;
+    od.V = V0;
     const CmcResult<Net> d = solve_cmc(data, od);
     if (!d.summary.converged) return {d.H, false, Status::NoConvergence, "no minimiser of D at V = " + num(V0)};
     p.base.P = d.net.points();
@@ -779,38 +812,55 @@ struct AreaSolve {
     }
     if (!note.empty()) note = " (" + note + ")";
     p.eps = 0.0;
-    if (vresidual(V0, H) > o.tolerance) {
-      // The V form's critical point is the A_H critical point at its multiplier H: the H form's
-      // truncated Newton phase at the H reached, then bordered iterations back onto V = V0; kept
-      // when the V form's residual falls.
-      const Eigen::VectorXd y = p.get();
-      const double Hs = H, r0 = vresidual(V0, H);
-      const CorrectorStats t = finish(H, 2 * o.max_corrector_iterations);
-      summary.iterations += t.iterations;
-      theta = 1e-8;
-      bordered_correct(V0, H, o.tolerance, 8);
-      if (!(vresidual(V0, H) < r0)) {
-        p.set(y);
-        H = Hs;
-      } else {
-        const std::string phases = final_phases(t, false);
-        note += "; finished by " + (phases.empty() ? std::string("the bordered corrector")
-                                                   : phases + " at H and the bordered corrector");
-      }
-    }
+    note += finish_volume(V0, H);
     return {H, true, Status::Converged, "the volume-constrained critical point of A " + from + note};
   }
 
-  // V mode, route 2: continuation in V from the critical point of A at H = 0 (V = V_min) to V0.
+  // The end of the V form at ε = 0 when its residual is above the tolerance. The V form's critical
+  // point is the A_H critical point at its multiplier H: the H form's final phases at the H
+  // reached, then bordered iterations back onto V = V0; kept when the V form's residual falls.
+  // Returns "; finished by …" for the message when kept, else "".
+  std::string finish_volume(double V0, double& H) {
+    if (vresidual(V0, H) <= o.tolerance) return "";
+    const Eigen::VectorXd y = p.get();
+    const double Hs = H, r0 = vresidual(V0, H);
+    const CorrectorStats t = finish(H, 2 * o.max_corrector_iterations);
+    summary.iterations += t.iterations;
+    theta = 1e-8;
+    bordered_correct(V0, H, o.tolerance, 8);
+    if (!(vresidual(V0, H) < r0)) {
+      p.set(y);
+      H = Hs;
+      return "";
+    }
+    const std::string phases = final_phases(t, false);
+    return "; finished by " +
+           (phases.empty() ? std::string("the bordered corrector") : phases + " at H and the bordered corrector");
+  }
+
+  // V mode, route 3 (the last; docs/cmc.md, V mode step 4): continuation in V from the critical
+  // point of A at H = 0 (V = V_min) to V0.
   AreaOutcome volume_continuation(const Eigen::MatrixX3d& start, int& steps) {
-    const double V0 = *o.V;
     p.base.P = start;
     if (!minimal_surface())
       return {0.0, false, Status::NoConvergence, "no critical point of the area (H = 0) from the Dirichlet extremal"};
-    const VolumeForm& vf = p.base.f->volume_form();
-    const double Vmin = vf.value(p.P());
-    double H = 0.0;
-    // The tangent per unit V: K dY + 2 gV dH = 0, gV·dY = 1.
+    const double Vmin = p.base.f->volume_form().value(p.P());
+    if (*o.V == Vmin) return {0.0, true, Status::Converged, "V0 is the volume of the critical point of the area"};
+    AreaOutcome out = continue_volume(Vmin, 0.0, *o.V, steps, o.tolerance);
+    if (out.ok) out.message = "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) + " step(s)";
+    return out;
+  }
+
+  // Continuation in V along the volume-constrained critical points of A, from the one in p (volume
+  // Vs, multiplier H) to V0: the Euler predictor along the tangent per unit V (K dY + 2∇V dH = 0,
+  // ∇V·dY = 1; K regularised by 1e-8 C), the bordered corrector to `step_tol` at each step, and the
+  // step control of the H continuation (StepController over V − Vs). A corrected point is on the
+  // branch when it lies closer to the prediction than half its distance to the last point, both
+  // measured along the surface normals (normal_gap): the corrector moves the points along the
+  // surface too, in the nearly singular tangential modes, by as much as the step itself (measured
+  // on the circle past the hemisphere: the point test of the H continuation, on_branch, then
+  // rejected every step from V = 1.81 on).
+  AreaOutcome continue_volume(double Vs, double H, double V0, int& steps, double step_tol) {
     auto tangent = [&](double h, Eigen::VectorXd& dY, double& dH) {
       const SymFactor fac(p.hessian(h) + 1e-8 * p.C);
       const Eigen::VectorXd gV = p.volume_gradient(), b = fac.solve(gV);
@@ -823,22 +873,26 @@ struct AreaSolve {
     Eigen::VectorXd dY;
     double dH = 0;
     if (!tangent(H, dY, dH))
-      return {0.0, false, Status::NoConvergence, "the volume has no gradient at the critical point of the area"};
+      return {H, false, Status::NoConvergence, "the volume has no gradient at the start of the volume continuation"};
     Eigen::VectorXd y = p.get();
-    const double target = V0 - Vmin;
-    if (target == 0.0) return {0.0, true, Status::Converged, "V0 is the volume of the critical point of the area"};
+    Net last = make_net(data, p.P());
+    const double target = V0 - Vs;
     StepController control(target, target, o);
     while (!control.reached_target()) {
       if (!control.attempt())
         return {H, false, Status::NoConvergence,
-                "volume continuation stopped at V ≈ " + num(Vmin + control.h()) + " after max_continuation_steps"};
+                "volume continuation stopped at V ≈ " + num(Vs + control.h()) + " after max_continuation_steps"};
       const StepController::Step step = control.propose();
-      const Eigen::VectorXd pred = y + dY * step.s;
+      p.set(y + dY * step.s);
+      const Net pred = make_net(data, p.P());
       double Hn = H + dH * step.s;
-      p.set(pred);
-      const CorrectorStats st = bordered_correct(Vmin + step.hn, Hn);
-      if (st.ok && on_branch(y, pred, p.get()) && tangent(Hn, dY, dH)) {
+      theta = 1e-3;
+      const CorrectorStats st = bordered_correct(Vs + step.hn, Hn, step_tol);
+      const Net now = make_net(data, p.P());
+      if (st.ok && normal_gap(pred, now) <= 0.5 * normal_gap(last, now) + 1e-12 * std::max(1.0, y.norm()) &&
+          tangent(Hn, dY, dH)) {
         y = p.get();
+        last = now;
         H = Hn;
         ++steps;
         control.accept(step, st.iterations);
@@ -847,11 +901,40 @@ struct AreaSolve {
         tangent(H, dY, dH);
         if (!control.reject(step))
           return {H, false, Status::NoConvergence,
-                  "no volume-constrained critical point of the area beyond V ≈ " + num(Vmin + control.h())};
+                  "no volume-constrained critical point of the area beyond V ≈ " + num(Vs + control.h())};
       }
     }
-    return {H, true, Status::Converged,
-            "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) + " step(s)"};
+    return {H, true, Status::Converged, "V continued from V = " + num(Vs) + " in " + std::to_string(steps) + " step(s)"};
+  }
+
+  // V mode, route 2 (docs/cmc.md, V mode step 3): where route 1 fails at V0 (measured: the larger caps over the circle, whose D
+  // minimiser keeps the regulariser above ε = 0.018 at H = −0.7), route 1 at V1 = V0/16, V0/64,
+  // V0/256 (the first that meets 1e-8), then the continuation in V from there to V0, each step
+  // corrected to 1e-8 (relative; the crawl below it is left to the end), and the V form's end
+  // (finish_volume) at V0. (V0/4 first cost 7 s more on the circle at n = 10, H = −0.7, where
+  // route 1 fails at V0/4 = 2.88, and at n = 12 it ends there at 9e-7, too far for a start.)
+  AreaOutcome volume_continuation_from_smaller(double V0, int& steps) {
+    std::string tried;
+    for (double V1 = V0 / 16; std::abs(V1) >= std::abs(V0) / 256; V1 /= 4) {
+      const double step_tol = std::max(o.tolerance, 1e-8);
+      AreaOutcome start = from_dirichlet_volume(V1);
+      // Route 1 may end "ok" above the tolerance (a numerical limit at V0); a start for the
+      // continuation must meet the steps' tolerance.
+      if (!start.ok || !(vresidual(V1, start.H) <= step_tol)) {
+        tried += (tried.empty() ? "" : ", ") + num(V1);
+        continue;
+      }
+      AreaOutcome out = continue_volume(V1, start.H, V0, steps, step_tol);
+      if (!out.ok) return out;
+      double H = out.H;
+      theta = 1e-3;
+      bordered_correct(V0, H);
+      const std::string note = finish_volume(V0, H);
+      return {H, true, Status::Converged,
+              "the volume-constrained critical point of A continued in V from V1 = " + num(V1) + " (H = " +
+                  num(start.H) + ", from the minimiser of D there) in " + std::to_string(steps) + " step(s)" + note};
+    }
+    return {0.0, false, Status::NoConvergence, "no volume-constrained critical point of A from the minimiser of D at V1 = " + tried};
   }
 };
 
@@ -885,10 +968,17 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       out = s.from_dirichlet_volume(*o.V);
       if (!out.ok) {
         const AreaOutcome route1 = out;
-        s.theta = 1.0;  // route 2 as it was, not with route 1's damping or regulariser
-        s.p.eps = 0.0;
-        out = s.volume_continuation(extremal, res.continuation_steps);
-        if (!out.ok) out.message += " (and route 1: " + route1.message + ")";
+        out = s.volume_continuation_from_smaller(*o.V, res.continuation_steps);
+        if (!out.ok) {
+          const AreaOutcome route2 = out;
+          s.theta = 1.0;  // route 3 as it was, not with route 1's damping or regulariser
+          s.p.eps = 0.0;
+          res.continuation_steps = 0;
+          out = s.volume_continuation(extremal, res.continuation_steps);
+          if (!out.ok)
+            out.message += " (and from the minimiser of D at V0: " + route1.message +
+                           "; from smaller volumes: " + route2.message + ")";
+        }
       }
     } else if (o.H == 0.0) {
       s.p.base.P = extremal;
