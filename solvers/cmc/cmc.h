@@ -44,13 +44,15 @@
 //  - V mode: minimise A subject to V = V0 from the minimiser of D at V = V0 (the nlopt route),
 //    through the same vanishing Dirichlet regulariser at fixed V0 (bordered corrector on (Y, H),
 //    bordered Euler predictor), then the truncated Newton phase at the H reached. If that route
-//    fails (e.g. the larger caps past the hemisphere, whose D minimiser keeps the regulariser
-//    above ε = 1e-4), the same route at V1 = V0/16, V0/64 or V0/256, then continued in V from V1 to
-//    V0 (each step to 1e-8, a step on the branch when the corrected surface lies nearer the
-//    prediction than half its distance to the last point, both along the surface normals). Last,
-//    continued in V from the critical point of A at H = 0 (which fails on planar data: the flat
-//    start's area Hessian is singular in every in-plane direction). The multiplier H
-//    (∇A + 2H∇V = 0 on the free points) is reported.
+//    fails (e.g. some larger caps past the hemisphere, whose D minimiser keeps the regulariser
+//    above ε = 1e-4) or ends above the tolerance: the same route at V1 = Vref + (V0 − Vref)/k,
+//    k = 16, 64, 256 (Vref the Dirichlet extremal's volume), then continued in V from V1 to V0
+//    (each step to 1e-8, a step on the branch when the corrected surface lies nearer the
+//    prediction than half its distance to the last point, both along the surface normals), the
+//    bordered corrector and the final phases at V0; after a route that ended above the tolerance
+//    the lower residual is kept. Last, continued in V from the critical point of A at H = 0
+//    (which fails on planar data: the flat start's area Hessian is singular in every in-plane
+//    direction). The multiplier H (∇A + 2H∇V = 0 on the free points) is reported.
 //  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
 //    over the free points and μ = θ · (relative residual); a step is accepted when F falls as
 //    predicted (ratio > 0.1) or ‖∇F‖₂ falls, with up to three chord corrections by the same factor;

@@ -279,12 +279,21 @@ template <class Net>
 Eigen::Vector3d normal_at(const Net& net, double u, double v) {
   return net.derivative(u, v, 1, 0).cross(net.derivative(u, v, 0, 1));
 }
+
+// The corners, where |x_u ∧ x_v| may vanish (an edge's tangents meet at an angle the net cannot
+// open): a barycentric coordinate (u, v, 1 − u − v) above 1 − 0.05 (triangular), or both u and v
+// within 0.05 of 0 or 1 (tensor). The regularity test and normal_gap leave them out.
+constexpr double kCornerMargin = 0.05;
+bool near_corner(bool triangular, double u, double v) {
+  if (triangular) return std::max({u, v, 1 - u - v}) > 1 - kCornerMargin + 1e-12;
+  return std::min(u, 1 - u) < kCornerMargin - 1e-12 && std::min(v, 1 - v) < kCornerMargin - 1e-12;
+}
 }  // namespace
 
 // |x_u ∧ x_v| on a 40 x 40 grid away from the corners (margin 0.05), relative to the mean A/|domain|.
 Regularity regularity(const TriangularNet& net, double A) {
   const int Ns = 40;
-  const double lim = 1 - 0.05 + 1e-12, mean = A / 0.5;
+  const double mean = A / 0.5;
   Regularity r;
   r.min_ratio = std::numeric_limits<double>::infinity();
   std::vector<Eigen::Vector3d> N(static_cast<size_t>((Ns + 1) * (Ns + 1)));
@@ -292,8 +301,8 @@ Regularity regularity(const TriangularNet& net, double A) {
   auto id = [&](int a, int b) { return static_cast<size_t>(a * (Ns + 1) + b); };
   for (int a = 0; a <= Ns; ++a)
     for (int b = 0; b <= Ns - a; ++b) {
-      const double u = double(a) / Ns, v = double(b) / Ns, w = 1 - u - v;
-      if (u > lim || v > lim || w > lim) continue;
+      const double u = double(a) / Ns, v = double(b) / Ns;
+      if (near_corner(true, u, v)) continue;
       N[id(a, b)] = normal_at(net, u, v);
       use[id(a, b)] = 1;
       r.min_ratio = std::min(r.min_ratio, N[id(a, b)].norm() / mean);
@@ -310,7 +319,7 @@ Regularity regularity(const TriangularNet& net, double A) {
 
 Regularity regularity(const TensorNet& net, double A) {
   const int Ns = 40;
-  const double lim = 0.05 - 1e-12, mean = A;
+  const double mean = A;
   Regularity r;
   r.min_ratio = std::numeric_limits<double>::infinity();
   std::vector<Eigen::Vector3d> N(static_cast<size_t>((Ns + 1) * (Ns + 1)));
@@ -319,7 +328,7 @@ Regularity regularity(const TensorNet& net, double A) {
   for (int a = 0; a <= Ns; ++a)
     for (int b = 0; b <= Ns; ++b) {
       const double u = double(a) / Ns, v = double(b) / Ns;
-      if (std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim) continue;
+      if (near_corner(false, u, v)) continue;
       N[id(a, b)] = normal_at(net, u, v);
       use[id(a, b)] = 1;
       r.min_ratio = std::min(r.min_ratio, N[id(a, b)].norm() / mean);
@@ -354,17 +363,15 @@ struct AreaOutcome {
 bool is_triangular(const TriangularNet&) { return true; }
 bool is_triangular(const TensorNet&) { return false; }
 
-// The samples of normal_gap: a 10 x 10 grid of the domain without the corners (the regularity
-// test's margin 0.05, where |x_u ∧ x_v| may vanish).
+// The samples of normal_gap: the points (a/10, b/10) of the domain (66 on the triangle, 121 on
+// the square) without the corners (near_corner).
 std::vector<Eigen::Vector2d> gap_samples(bool triangular) {
   const int Ns = 10;
   std::vector<Eigen::Vector2d> uv;
   for (int a = 0; a <= Ns; ++a)
     for (int b = 0; b <= (triangular ? Ns - a : Ns); ++b) {
       const double u = double(a) / Ns, v = double(b) / Ns;
-      const bool corner = triangular ? std::max({u, v, 1 - u - v}) > 0.95
-                                     : std::min(u, 1 - u) < 0.05 && std::min(v, 1 - v) < 0.05;
-      if (!corner) uv.emplace_back(u, v);
+      if (!near_corner(triangular, u, v)) uv.emplace_back(u, v);
     }
   return uv;
 }
@@ -372,7 +379,7 @@ std::vector<Eigen::Vector2d> gap_samples(bool triangular) {
 // max over the samples of |<x_b − x_a, N_a>| (N_a the unit normal of a): how far surface b lies
 // from surface a along a's normals. A motion of the points along the surface (a reparametrisation,
 // the nearly singular directions of A_H) changes it only to second order, where the distance of
-// the points themselves changes to first order.
+// the points themselves changes to first order. Infinite where a's normal vanishes at a sample.
 template <class Net>
 double normal_gap(const Net& a, const Net& b) {
   double gap = 0.0;
@@ -846,7 +853,7 @@ struct AreaSolve {
       return {0.0, false, Status::NoConvergence, "no critical point of the area (H = 0) from the Dirichlet extremal"};
     const double Vmin = p.base.f->volume_form().value(p.P());
     if (*o.V == Vmin) return {0.0, true, Status::Converged, "V0 is the volume of the critical point of the area"};
-    AreaOutcome out = continue_volume(Vmin, 0.0, *o.V, steps, o.tolerance);
+    AreaOutcome out = continue_volume(Vmin, 0.0, *o.V, steps, o.tolerance, false);
     if (out.ok) out.message = "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) + " step(s)";
     return out;
   }
@@ -860,7 +867,7 @@ struct AreaSolve {
   // surface too, in the nearly singular tangential modes, by as much as the step itself (measured
   // on the circle past the hemisphere: the point test of the H continuation, on_branch, then
   // rejected every step from V = 1.81 on).
-  AreaOutcome continue_volume(double Vs, double H, double V0, int& steps, double step_tol) {
+  AreaOutcome continue_volume(double Vs, double H, double V0, int& steps, double step_tol, bool fresh_damping) {
     auto tangent = [&](double h, Eigen::VectorXd& dY, double& dH) {
       const SymFactor fac(p.hessian(h) + 1e-8 * p.C);
       const Eigen::VectorXd gV = p.volume_gradient(), b = fac.solve(gV);
@@ -886,11 +893,11 @@ struct AreaSolve {
       p.set(y + dY * step.s);
       const Net pred = make_net(data, p.P());
       double Hn = H + dH * step.s;
-      theta = 1e-3;
+      if (fresh_damping) theta = 1e-3;
       const CorrectorStats st = bordered_correct(Vs + step.hn, Hn, step_tol);
       const Net now = make_net(data, p.P());
-      if (st.ok && normal_gap(pred, now) <= 0.5 * normal_gap(last, now) + 1e-12 * std::max(1.0, y.norm()) &&
-          tangent(Hn, dY, dH)) {
+      const double dev = normal_gap(pred, now), move = normal_gap(last, now);
+      if (st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm()) && tangent(Hn, dY, dH)) {
         y = p.get();
         last = now;
         H = Hn;
@@ -907,26 +914,39 @@ struct AreaSolve {
     return {H, true, Status::Converged, "V continued from V = " + num(Vs) + " in " + std::to_string(steps) + " step(s)"};
   }
 
-  // V mode, route 2 (docs/cmc.md, V mode step 3): where route 1 fails at V0 (measured: the larger caps over the circle, whose D
-  // minimiser keeps the regulariser above ε = 0.018 at H = −0.7), route 1 at V1 = V0/16, V0/64,
-  // V0/256 (the first that meets 1e-8), then the continuation in V from there to V0, each step
-  // corrected to 1e-8 (relative; the crawl below it is left to the end), and the V form's end
-  // (finish_volume) at V0. (V0/4 first cost 7 s more on the circle at n = 10, H = −0.7, where
-  // route 1 fails at V0/4 = 2.88, and at n = 12 it ends there at 9e-7, too far for a start.)
-  AreaOutcome volume_continuation_from_smaller(double V0, int& steps) {
+  // V mode, route 2 (docs/cmc.md, V mode step 3): route 1 at V1 = Vref + (V0 − Vref)/k for
+  // k = 16, 64, 256 (Vref the volume of the Dirichlet extremal, so V1 lies between the nearly
+  // minimal surface and V0 wherever the origin is: V changes by a constant with the origin, the
+  // same for every surface with this boundary), the first whose start meets 1e-8, then the
+  // continuation in V from there to V0, each step corrected to 1e-8 (relative; the crawl below it
+  // is left to the end), the bordered corrector at V0 and the V form's end (finish_volume).
+  // Measured on the circle past the hemisphere (docs/cmc.md, "Past the hemisphere: continuation
+  // in V"): the larger caps, whose D minimiser keeps the regulariser above ε = 0.018 (H = −0.7).
+  // k = 4 first cost 7 s more at n = 10, H = −0.7, where route 1 fails at V1 = 2.88, and at n = 12
+  // it ends there at 9.2e-7, too far for a start.
+  AreaOutcome volume_continuation_from_smaller(double V0, double Vref, int& steps) {
     std::string tried;
-    for (double V1 = V0 / 16; std::abs(V1) >= std::abs(V0) / 256; V1 /= 4) {
+    for (const double k : {16.0, 64.0, 256.0}) {
+      const double V1 = Vref + (V0 - Vref) / k;
+      if (!(V1 != V0)) break;
       const double step_tol = std::max(o.tolerance, 1e-8);
-      AreaOutcome start = from_dirichlet_volume(V1);
-      // Route 1 may end "ok" above the tolerance (a numerical limit at V0); a start for the
+      const AreaOutcome start = from_dirichlet_volume(V1);
+      // Route 1 may end "ok" above the tolerance (a numerical limit); a start for the
       // continuation must meet the steps' tolerance.
-      if (!start.ok || !(vresidual(V1, start.H) <= step_tol)) {
-        tried += (tried.empty() ? "" : ", ") + num(V1);
+      const double r1 = start.ok ? vresidual(V1, start.H) : std::numeric_limits<double>::infinity();
+      if (!(r1 <= step_tol)) {
+        tried += (tried.empty() ? "" : "; ") + num(V1) + ": " +
+                 (start.ok ? "route 1 ended at " + num(r1) : start.message);
         continue;
       }
-      AreaOutcome out = continue_volume(V1, start.H, V0, steps, step_tol);
-      if (!out.ok) return out;
+      steps = 0;
+      const AreaOutcome out = continue_volume(V1, start.H, V0, steps, step_tol, true);
+      if (!out.ok) {
+        tried += (tried.empty() ? "" : "; ") + num(V1) + ": " + out.message;
+        continue;
+      }
       double H = out.H;
+      choose_rule();
       theta = 1e-3;
       bordered_correct(V0, H);
       const std::string note = finish_volume(V0, H);
@@ -934,7 +954,9 @@ struct AreaSolve {
               "the volume-constrained critical point of A continued in V from V1 = " + num(V1) + " (H = " +
                   num(start.H) + ", from the minimiser of D there) in " + std::to_string(steps) + " step(s)" + note};
     }
-    return {0.0, false, Status::NoConvergence, "no volume-constrained critical point of A from the minimiser of D at V1 = " + tried};
+    steps = 0;
+    return {0.0, false, Status::NoConvergence,
+            "no continuation in V from smaller volumes (V1 = " + (tried.empty() ? std::string("none") : tried) + ")"};
   }
 };
 
@@ -965,19 +987,35 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     if constexpr (std::is_same_v<Net, TriangularNet>) s.m = data.n();
     AreaOutcome out;
     if (o.V) {
+      const double Vref = base.f->volume_form().value(extremal);
       out = s.from_dirichlet_volume(*o.V);
-      if (!out.ok) {
+      if (out.ok && s.vresidual(*o.V, out.H) > o.tolerance) {
+        // Route 1 ended above the tolerance (a numerical limit): route 2 too, and the lower
+        // residual is kept (measured: docs/cmc.md, "Past the hemisphere: continuation in V").
+        const Eigen::VectorXd y1 = s.p.get();
+        const std::shared_ptr<const AreaForm> a1 = s.p.a;
+        const double r1 = s.vresidual(*o.V, out.H);
         const AreaOutcome route1 = out;
-        out = s.volume_continuation_from_smaller(*o.V, res.continuation_steps);
+        int steps = 0;
+        out = s.volume_continuation_from_smaller(*o.V, Vref, steps);
+        if (out.ok && s.vresidual(*o.V, out.H) < r1) {
+          res.continuation_steps = steps;
+        } else {
+          s.p.set(y1);
+          s.p.a = a1;
+          out = route1;
+        }
+      } else if (!out.ok) {
+        const AreaOutcome route1 = out;
+        out = s.volume_continuation_from_smaller(*o.V, Vref, res.continuation_steps);
         if (!out.ok) {
           const AreaOutcome route2 = out;
-          s.theta = 1.0;  // route 3 as it was, not with route 1's damping or regulariser
+          s.theta = 1.0;  // route 3 as it was, not with the other routes' damping or regulariser
           s.p.eps = 0.0;
           res.continuation_steps = 0;
           out = s.volume_continuation(extremal, res.continuation_steps);
           if (!out.ok)
-            out.message += " (and from the minimiser of D at V0: " + route1.message +
-                           "; from smaller volumes: " + route2.message + ")";
+            out.message += " (and from the minimiser of D at V0: " + route1.message + "; " + route2.message + ")";
         }
       }
     } else if (o.H == 0.0) {
