@@ -917,9 +917,10 @@ struct AreaSolve {
   // V mode, route 2 (docs/cmc.md, V mode step 3): route 1 at V1 = Vref + (V0 − Vref)/k for
   // k = 16, 64, 256 (Vref the volume of the Dirichlet extremal, so V1 lies between the nearly
   // minimal surface and V0 wherever the origin is: V changes by a constant with the origin, the
-  // same for every surface with this boundary), the first whose start meets 1e-8, then the
-  // continuation in V from there to V0, each step corrected to 1e-8 (relative; the crawl below it
-  // is left to the end), the bordered corrector at V0 and the V form's end (finish_volume).
+  // same for every surface with this boundary), the first whose start meets 1e-8 (relative; the
+  // tolerance if looser) and from which the continuation reaches V0, each step corrected to the
+  // same (the crawl below it is left to the end), then the bordered corrector at V0 and the V
+  // form's end (finish_volume).
   // Measured on the circle past the hemisphere (docs/cmc.md, "Past the hemisphere: continuation
   // in V"): the larger caps, whose D minimiser keeps the regulariser above ε = 0.018 (H = −0.7).
   // k = 4 first cost 7 s more at n = 10, H = −0.7, where route 1 fails at V1 = 2.88, and at n = 12
@@ -988,22 +989,41 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     AreaOutcome out;
     if (o.V) {
       const double Vref = base.f->volume_form().value(extremal);
+      // Each candidate's residual with a rule that meets its tolerance at its own net (refined
+      // from the rule in use, never coarser, as the final rule check below), so that the two are
+      // compared to within 0.1 × the tolerance. The rule in use is put back: the final rule check
+      // refines it and corrects again as before.
+      auto checked_residual = [&](double H) {
+        const std::shared_ptr<const AreaForm> a = s.p.a;
+        const double change = s.rule_change;
+        s.choose_rule(a->points_per_direction(), a->grading());
+        const double r = s.vresidual(*o.V, H);
+        s.p.a = a;
+        s.rule_change = change;
+        return r;
+      };
       out = s.from_dirichlet_volume(*o.V);
-      if (out.ok && s.vresidual(*o.V, out.H) > o.tolerance) {
+      const double r1 = out.ok ? checked_residual(out.H) : 0.0;
+      if (out.ok && r1 > o.tolerance) {
         // Route 1 ended above the tolerance (a numerical limit): route 2 too, and the lower
         // residual is kept (measured: docs/cmc.md, "Past the hemisphere: continuation in V").
         const Eigen::VectorXd y1 = s.p.get();
         const std::shared_ptr<const AreaForm> a1 = s.p.a;
-        const double r1 = s.vresidual(*o.V, out.H);
+        const double theta1 = s.theta, change1 = s.rule_change;
         const AreaOutcome route1 = out;
         int steps = 0;
         out = s.volume_continuation_from_smaller(*o.V, Vref, steps);
-        if (out.ok && s.vresidual(*o.V, out.H) < r1) {
+        const double r2 = out.ok ? checked_residual(out.H) : std::numeric_limits<double>::infinity();
+        if (r2 < r1) {
           res.continuation_steps = steps;
         } else {
+          const std::string why = out.ok ? "ended at " + num(r2) : "failed: " + out.message;
           s.p.set(y1);
           s.p.a = a1;
+          s.theta = theta1;
+          s.rule_change = change1;
           out = route1;
+          out.message += "; kept, as the continuation in V from smaller volumes " + why;
         }
       } else if (!out.ok) {
         const AreaOutcome route1 = out;

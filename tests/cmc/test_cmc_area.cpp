@@ -307,7 +307,8 @@ TEST(CmcArea, VolumeFormReachesTheLargerCapOffTheOrigin) {
       << r.summary.message;
   const size_t at = r.summary.message.find("continued in V from V1 = ");
   ASSERT_NE(at, std::string::npos) << r.summary.message;
-  EXPECT_NEAR(std::stod(r.summary.message.substr(at + 25)), Vflat + (V0 - Vflat) / 16, 1e-5);
+  // (num() prints 6 significant digits; V0/16 would be 0.85)
+  EXPECT_NEAR(std::stod(r.summary.message.substr(at + 25)), Vflat + (V0 - Vflat) / 16, 1e-4);
   EXPECT_LE(r.summary.residual, 1e-10);
   EXPECT_NEAR(r.H, H, 1e-8);
   EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, std::sqrt(R * R - 1)) + t, R), 3e-5);
