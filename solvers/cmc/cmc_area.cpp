@@ -5,7 +5,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -344,7 +343,6 @@ Regularity regularity(const TensorNet& net, double A) {
 }
 
 namespace {
-
 
 // ---------------------------------------------------------------- the solve
 
@@ -788,7 +786,7 @@ struct AreaSolve {
   // a critical point of F_1 = D + 2HV at V0 with its multiplier H), then the vanishing Dirichlet
   // regulariser at fixed V0: F_ε for ε = 1, 1/10, 1/100, … (ratio adapted as in homotopy()), each
   // stage by the bordered corrector from the bordered Euler predictor, until the first variation
-  // of A_H itself meets the tolerance, then ε = 0. Route 2 (volume_continuation, from the critical
+  // of A_H itself meets the tolerance, then ε = 0. Route 3 (volume_continuation, from the critical
   // point of A at H = 0) fails on non-conformal data: that start is planar on planar boundaries,
   // where A's Hessian is singular in every in-plane direction.
   AreaOutcome from_dirichlet_volume(double V0) {
@@ -904,8 +902,7 @@ struct AreaSolve {
         ++steps;
         control.accept(step, st.iterations);
       } else {
-        p.set(y);
-        tangent(H, dY, dH);
+        p.set(y);  // dY, dH are still the tangent at y (tangent() writes only when it succeeds)
         if (!control.reject(step))
           return {H, false, Status::NoConvergence,
                   "no volume-constrained critical point of the area beyond V ≈ " + num(Vs + control.h())};
