@@ -12,7 +12,7 @@
 //     conformal: the conformal one is ρ = cosh z with z linear); checked the same way.
 //
 // Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
-//                                     --gauge-probe | --solve-circle N TOLERANCE]
+//                                     --gauge-probe | --larger-caps [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
@@ -25,6 +25,8 @@
 //   rules on the solved nets (docs/cmc.md, "The rule near nearly degenerate corners"; seconds).
 //   --gauge-probe: Newton steps restricted to normal motion of the free points on the solved
 //   circle (docs/cmc.md, "Not done yet"; seconds).
+//   --larger-caps [N H]: the V form on the circle with v0 the larger cap's volume (docs/cmc.md,
+//   "Past the hemisphere: continuation in V"; about 10 minutes, or the one case N, H).
 // Columns: "dist" is the max over a 40-sample grid (every sample, corners included) of the distance
 // measure above; the H range is taken on the 40-grid with corner margin 0.1; "residual" is the
 // relative first variation of the functional solved (eq. (11) for D_H, A_H for area) or, for
@@ -38,6 +40,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <numbers>
 #include <utility>
 #include <vector>
 
@@ -186,6 +189,30 @@ void tolerance_probe() {
                   worst(r.net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; }),
                   std::max(std::abs(s.min - H), std::abs(s.max - H)));
     }
+  }
+}
+
+// The V form past the hemisphere (docs/cmc.md, "Past the hemisphere: continuation in V"): v0 the
+// volume of the larger cap of H over the unit circle (radius 1/|H|, centre √(R² − 1) above the
+// plane, height R + √(R² − 1)), solver newton or ceres; one row per (n, H) of `cases`.
+void larger_caps(const std::vector<std::pair<int, double>>& cases, bpde::CmcSolver solver) {
+  std::printf("| n | H of the larger cap | v0 | status | first variation | H found | dist | H range | "
+              "continuation steps | seconds | message |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (const auto& [n, H] : cases) {
+    const double R = 1 / std::abs(H), hb = R + std::sqrt(R * R - 1);
+    const Eigen::Vector3d c(0, 0, std::sqrt(R * R - 1));
+    bpde::CmcOptions o;
+    o.functional = bpde::CmcFunctionalKind::Area;
+    o.V = std::numbers::pi * hb * hb * (3 * R - hb) / 3;
+    o.solver = solver;
+    const auto r = bpde::solve_cmc(bpde::circle_three_arcs(n), o);
+    const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(r.net, 40, 0.1);
+    std::printf("| %d | %g | %.4g | %s | %.2e | %.10f | %.1e | %.5f … %.5f | %d | %.1f | %s |\n", n, H, *o.V,
+                status_cell(r.summary).c_str(), r.summary.residual, r.H,
+                worst(r.net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; }), s.min, s.max,
+                r.continuation_steps, r.summary.seconds, r.summary.message.c_str());
+    std::fflush(stdout);
   }
 }
 
@@ -431,6 +458,18 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string(argv[1]) == "--margin-probe") {
     margin_probe();
+    return 0;
+  }
+  if (argc > 1 && std::string(argv[1]) == "--larger-caps") {
+    // About 10 minutes in all; "--larger-caps N H" runs one case.
+    if (argc == 4) {
+      larger_caps({{std::stoi(argv[2]), std::stod(argv[3])}}, bpde::CmcSolver::Newton);
+      return 0;
+    }
+    larger_caps({{8, -0.7}, {10, -0.7}, {12, -0.7}, {8, -0.9}, {10, -0.9}, {12, -0.9}, {10, -0.99}, {10, -0.5},
+                 {12, -0.5}},
+                bpde::CmcSolver::Newton);
+    larger_caps({{10, -0.7}}, bpde::CmcSolver::Ceres);
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--tolerance-probe") {

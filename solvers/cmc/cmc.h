@@ -47,12 +47,13 @@
 //    fails (e.g. some larger caps past the hemisphere, whose D minimiser keeps the regulariser
 //    above ε = 1e-4) or ends above the tolerance: the same route at V1 = Vref + (V0 − Vref)/k,
 //    k = 16, 64, 256 (Vref the Dirichlet extremal's volume), then continued in V from V1 to V0
-//    (each step to max(tolerance, 1e-8), a step on the branch when the corrected surface lies nearer the
-//    prediction than half its distance to the last point, both along the surface normals), the
-//    bordered corrector and the final phases at V0; after a route that ended above the tolerance
-//    the lower residual is kept (each measured with a rule checked at its own net). Last, continued in V from the critical point of A at H = 0
-//    (which fails on planar data: the flat start's area Hessian is singular in every in-plane
-//    direction). The multiplier H (∇A + 2H∇V = 0 on the free points) is reported.
+//    (each step to max(tolerance, 1e-8); a step is on the branch when the corrected surface lies
+//    nearer the prediction than half its distance to the last point, both along the surface
+//    normals), the bordered corrector and the final phases at V0; after a route that ended above
+//    the tolerance the lower residual is kept (each measured with a rule checked at its own net).
+//    Last, continued in V from the critical point of A at H = 0 (which fails on planar data: the
+//    flat start's area Hessian is singular in every in-plane direction). The multiplier H
+//    (∇A + 2H∇V = 0 on the free points) is reported.
 //  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
 //    over the free points and μ = θ · (relative residual); a step is accepted when F falls as
 //    predicted (ratio > 0.1) or ‖∇F‖₂ falls, with up to three chord corrections by the same factor;
@@ -240,7 +241,7 @@ struct CmcResult {
   double energy = 0.0;         ///< the value of the functional solved: D_H, A_H = A + 2HV, or Φ (mean-curvature)
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
   int quadrature_points = 0;   ///< area, mean-curvature: Gauss points per direction of the rule minimised
-  int continuation_steps = 0;  ///< accepted continuation steps (H mode)
+  int continuation_steps = 0;  ///< accepted continuation steps (H mode; the V form: its steps in V)
   /// converged, iterations (corrector iterations in all), residual (mean-curvature: √Φ by the check
   /// rule), message; status Fold past the
   /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),

@@ -852,7 +852,9 @@ struct AreaSolve {
     const double Vmin = p.base.f->volume_form().value(p.P());
     if (*o.V == Vmin) return {0.0, true, Status::Converged, "V0 is the volume of the critical point of the area"};
     AreaOutcome out = continue_volume(Vmin, 0.0, *o.V, steps, o.tolerance, false);
-    if (out.ok) out.message = "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) + " step(s)";
+    if (out.ok)
+      out.message = "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) +
+                    " step(s)";
     return out;
   }
 
@@ -908,7 +910,8 @@ struct AreaSolve {
                   "no volume-constrained critical point of the area beyond V ≈ " + num(Vs + control.h())};
       }
     }
-    return {H, true, Status::Converged, "V continued from V = " + num(Vs) + " in " + std::to_string(steps) + " step(s)"};
+    return {H, true, Status::Converged,
+            "V continued from V = " + num(Vs) + " in " + std::to_string(steps) + " step(s)"};
   }
 
   // V mode, route 2 (docs/cmc.md, V mode step 3): route 1 at V1 = Vref + (V0 − Vref)/k for

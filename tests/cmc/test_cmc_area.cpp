@@ -257,9 +257,9 @@ TEST(CmcArea, VolumeFormByCeres) {
 
 // Past the hemisphere, where route 1 fails: the larger cap of H = -0.7 over the unit circle (the
 // sphere of radius 1/0.7 with its centre 1.02 above the plane; V0 = 11.54, 5.5 times the
-// hemisphere's). The minimiser of D at V0 keeps the regulariser above ε = 0.018, so route 2 (docs/cmc.md, V mode step 3) solves
-// the V form at V0/16 (H = -0.728, a cap below the hemisphere) and continues in V through the
-// hemisphere, where H turns back from -1, to V0. Before it: no-convergence after 8 s ("the
+// hemisphere's). The minimiser of D at V0 keeps the regulariser above ε = 0.018, so route 2
+// (docs/cmc.md, V mode step 3) solves the V form at V0/16 (H = -0.728, a cap below the
+// hemisphere) and continues in V through the hemisphere, where H turns back from -1, to V0. Before it: no-convergence after 8 s ("the
 // Dirichlet regulariser could not be removed below ε = 0.0178"). Measured at n = 10, 14-16 s:
 // where the final phases stop moves with the rounding, as on the tensor catenoid (docs/cmc.md,
 // "Not done yet"): a probe linked to the same library converged (9.1e-12, 111 steps, H within
