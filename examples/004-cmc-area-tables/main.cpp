@@ -12,7 +12,8 @@
 //     conformal: the conformal one is ρ = cosh z with z linear); checked the same way.
 //
 // Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
-//                                     --gauge-probe | --larger-caps [N H] | --solve-circle N TOLERANCE]
+//                                     --gauge-probe | --larger-caps [N H] |
+//                                     --larger-caps-mean-curvature [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
@@ -27,6 +28,8 @@
 //   circle (docs/cmc.md, "Not done yet"; seconds).
 //   --larger-caps [N H]: the V form on the circle with v0 the larger cap's volume (docs/cmc.md,
 //   "Past the hemisphere: continuation in V"; about 10 minutes, or the one case N, H).
+//   --larger-caps-mean-curvature [N H]: the same with the mean-curvature functional (docs/cmc.md,
+//   "The V form" of "Least squares of the mean curvature"; about 20 s, or the one case N, H).
 // Columns: "dist" is the max over a 40-sample grid (every sample, corners included) of the distance
 // measure above; the H range is taken on the 40-grid with corner margin 0.1; "residual" is the
 // relative first variation of the functional solved (eq. (11) for D_H, A_H for area) or, for
@@ -194,8 +197,10 @@ void tolerance_probe() {
 
 // The V form past the hemisphere (docs/cmc.md, "Past the hemisphere: continuation in V"): v0 the
 // volume of the larger cap of H over the unit circle (radius 1/|H|, centre √(R² − 1) above the
-// plane, height R + √(R² − 1)), solver newton or ceres; one row per (n, H) of `cases`.
-void larger_caps(const std::vector<std::pair<int, double>>& cases, bpde::CmcSolver solver) {
+// plane, height R + √(R² − 1)), the area or the mean-curvature functional, solver newton or ceres;
+// one row per (n, H) of `cases`.
+void larger_caps(const std::vector<std::pair<int, double>>& cases, bpde::CmcSolver solver,
+                 bpde::CmcFunctionalKind functional = bpde::CmcFunctionalKind::Area) {
   std::printf("| n | H of the larger cap | v0 | status | first variation | H found | dist | H range | "
               "continuation steps | seconds | message |\n");
   std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
@@ -203,7 +208,7 @@ void larger_caps(const std::vector<std::pair<int, double>>& cases, bpde::CmcSolv
     const double R = 1 / std::abs(H), hb = R + std::sqrt(R * R - 1);
     const Eigen::Vector3d c(0, 0, std::sqrt(R * R - 1));
     bpde::CmcOptions o;
-    o.functional = bpde::CmcFunctionalKind::Area;
+    o.functional = functional;
     o.V = std::numbers::pi * hb * hb * (3 * R - hb) / 3;
     o.solver = solver;
     const auto r = bpde::solve_cmc(bpde::circle_three_arcs(n), o);
@@ -458,6 +463,19 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string(argv[1]) == "--margin-probe") {
     margin_probe();
+    return 0;
+  }
+  if (argc > 1 && std::string(argv[1]) == "--larger-caps-mean-curvature") {
+    // "--larger-caps-mean-curvature N H" runs one case.
+    const auto mc = bpde::CmcFunctionalKind::MeanCurvature;
+    if (argc == 4) {
+      larger_caps({{std::stoi(argv[2]), std::stod(argv[3])}}, bpde::CmcSolver::Newton, mc);
+      return 0;
+    }
+    larger_caps({{8, -0.99}, {10, -0.99}, {12, -0.99}, {8, -0.9}, {10, -0.9}, {12, -0.9}, {8, -0.7}, {10, -0.7},
+                 {12, -0.7}, {10, -0.5}, {12, -0.5}, {10, -0.3}, {12, -0.3}},
+                bpde::CmcSolver::Newton, mc);
+    larger_caps({{10, -0.7}}, bpde::CmcSolver::Ceres, mc);
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--larger-caps") {

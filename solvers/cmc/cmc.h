@@ -90,6 +90,14 @@
 //    V = V0 (steps in ∇V⊥, trial points put back the same way; mean_curvature_ceres.cpp). Its start is the minimiser of D
 //    at V = V0 (the nlopt route) with that route's multiplier as H. converged also needs
 //    |V − V0| <= options.tolerance × max(value_scale, |V0|, area^(3/2)) (of the start).
+//    When that does not converge (past the hemisphere of a circle the start folds), the V form
+//    continues in V: Φ minimised at V1 = V_ref + (V0 − V_ref)/k, k = 4, 16, 64, 256 (V_ref the
+//    volume of the Dirichlet extremal), then V stepped to V0 with the H continuation's step control
+//    (secant predictor; each step minimised by the same solver, accepted when regular with
+//    √Φ <= 1e-2; at most options.max_continuation_steps steps; the last step has what is left of
+//    max_least_squares_iterations, the others at most 200 iterations each). Its end is kept when it
+//    is better (converged, or regular where the first one was not, or a lower √Φ); the message says
+//    which route gave the result (docs/cmc.md, "The V form", "Past the hemisphere").
 //  - The start is the D_H critical point at H (the newton continuation above, whatever the
 //    solver; if the branch folds first, its last point). Levenberg–Marquardt on the residuals of Φ with the exact Jacobian:
 //    (JᵀJ + λ diag JᵀJ) δ = −Jᵀr, λ by the gain ratio (÷5 above 0.75, ×3 below 0.25, ×10 on a

@@ -168,6 +168,182 @@ LsOutcome minimise_newton(const MeanCurvatureLeastSquares& f, const MeanCurvatur
 
 namespace {
 
+// One minimisation of Φ from P (and H) by the minimiser o.solver picks, to √Φ <= 0.7 × tolerance (so
+// that the check rule, finer, does not miss it by its own small error), with the rule check. When
+// the check rule stops agreeing with the rule minimised during the minimisation (the iterate is
+// exploiting the gaps between the nodes, folding the parametrisation where Φ cannot see it), the
+// minimisation goes on from the last agreed point with the next finer pair of rules; when the rule
+// minimised reaches the target but the check rule reads above the tolerance (they disagree by less
+// than the 2× of the fold test, e.g. 1.0e-6 … 1.4e-6 against 7e-7 on the circle at n = 12, 14:
+// docs/cmc.md, "The V form"), it goes on from the point reached with the next finer pair. At most
+// kMaxRuleRefinements times and max_iterations iterations in all.
+struct LsRun {
+  LsOutcome ls;
+  int extra = 0, folds = 0, misses = 0;
+  std::optional<MeanCurvatureLeastSquares> f, check;
+};
+
+template <class Net>
+LsRun minimise_checked(const Net& data, const CmcOptions& o, Eigen::MatrixX3d& P, const std::vector<int>& free,
+                       double& H, const VolumeTarget* v, double tolerance, int max_iterations) {
+  LsRun run;
+  const double target = 0.7 * tolerance;
+  int iterations = 0;
+  while (true) {
+    run.f.emplace(form_for(data, run.extra));
+    run.check.emplace(form_for(data, run.extra + 1));
+    const int left = max_iterations - iterations;
+    if (o.solver == CmcSolver::Ceres)
+      run.ls = minimise_ceres(*run.f, &*run.check, P, free, H, v, target, left, o.progress);
+    else if (v)
+      run.ls = lm_loop(*run.f, &*run.check, P, free, H, v, target, left, o.geodesic_acceleration, o.progress);
+    else
+      run.ls = minimise_newton(*run.f, &*run.check, P, free, H, target, left, o.geodesic_acceleration, o.progress);
+    iterations += run.ls.iterations;
+    const bool check_misses = run.ls.stop == LsStop::Reached && !(std::sqrt(run.check->value(P, H)) <= tolerance);
+    if (!(run.ls.stop == LsStop::Interrupted || check_misses) || run.extra >= kMaxRuleRefinements ||
+        iterations >= max_iterations)
+      break;
+    ++(check_misses ? run.misses : run.folds);
+    ++run.extra;
+  }
+  run.ls.iterations = iterations;
+  if (run.ls.stop == LsStop::Interrupted && iterations >= max_iterations) run.ls.stop = LsStop::MaxIterations;
+  return run;
+}
+
+// Φ is quadratic in H (r = r₀ + H ∂r/∂H): the V form reports the best H for the surface reached,
+// H* = −⟨∂r/∂H, r₀⟩/‖∂r/∂H‖², the ρ-weighted mean of its H_x (never raises Φ, leaves V as it is).
+// The loops stop at √Φ <= target, not at ∂Φ/∂H = 0; on the circle their last H was up to 9.6e-8 off
+// the cap's, H* is within 4.2e-8 (docs/cmc.md, "The V form").
+double best_h(const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, double H) {
+  Eigen::VectorXd r0, dH;
+  f.residuals(P, 0.0, &r0, nullptr, nullptr, &dH);
+  const double hh = dH.squaredNorm(), Hs = hh > 0 ? -dH.dot(r0) / hh : H;
+  return std::isfinite(Hs) && f.value(P, Hs) <= f.value(P, H) ? Hs : H;
+}
+
+// One route's end: the net, its H, the minimisation that reached it and where it started.
+struct LsEnd {
+  Eigen::MatrixX3d P;
+  double H = 0.0;
+  LsRun run;
+  std::string start_note;
+};
+
+// What a route's end is: 0 converged, 1 regular and on V = V0 but above the tolerance, 2 otherwise
+// (a degenerate parametrisation, or V off V0); with √Φ by the check rule.
+struct LsGrade {
+  int rank = 2;
+  double residual = 0.0;
+  Regularity reg;
+  double v_off = 0.0;
+};
+
+template <class Net>
+LsGrade grade(const Net& data, const CmcOptions& o, const LsEnd& e, const VolumeTarget* vt) {
+  LsGrade g;
+  const Net net = make_net(data, e.P);
+  g.reg = regularity(net, area(net));
+  g.v_off = vt ? std::abs(vt->form.value(e.P) - vt->V0) / vt->scale : 0.0;
+  g.residual = std::sqrt(e.run.check->value(e.P, e.H));
+  if (g.reg.ok && g.v_off <= o.tolerance) g.rank = g.residual <= o.mean_curvature_tolerance ? 0 : 1;
+  return g;
+}
+
+// The V form's second route (docs/cmc.md, "The V form", "Past the hemisphere"): Φ minimised at
+// V1 = Vref + (V0 − Vref)/k for k = 4, 16, 64, 256 (Vref the volume of the Dirichlet extremal, so V1 lies
+// between the nearly minimal surface and V0 wherever the origin is) from the minimiser of D there,
+// then V stepped from V1 to V0 by the step control of the H continuation over V − V1 (first step
+// (V0 − V1)/8; a step doubles the next after at most kEasyLsStep iterations, halves on a failure,
+// down to min_step). The predictor is the secant through the last two points accepted (P and H;
+// from V1 the point itself), put back on the new V by the loop's own restoration.
+// A point (the start at V1 too) is accepted when its minimisation ends with the rules agreeing, at a
+// regular parametrisation on its V, with √Φ <= kLsStepResidual by the check rule: the minimiser of
+// Φ is continued whether it meets the tolerance or not (where the degree is too low for the
+// tolerance it stalls above it: 4.3e-6 at the small cap of H = −0.9 on the circle at n = 8).
+// A step before V0 has at most kLsStepIterations iterations, the last one what is left of the
+// route's max_least_squares_iterations; at most max_continuation_steps steps. Returns the end at V0,
+// or nothing with `why` saying where each V1 stopped.
+constexpr int kEasyLsStep = 20;
+constexpr int kLsStepIterations = 200;
+constexpr double kLsStepResidual = 1e-2;
+
+template <class Net>
+std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, const VolumeTarget& vt, double Vref,
+                                        const std::vector<int>& free, int& iterations, int& steps, std::string& why) {
+  const double V0 = vt.V0;
+  std::string tried;
+  for (const double k : {4.0, 16.0, 64.0, 256.0}) {
+    const double V1 = Vref + (V0 - Vref) / k;
+    if (!(V1 != V0)) break;
+    CmcOptions od = o;
+    od.functional = CmcFunctionalKind::Dirichlet;
+    od.solver = CmcSolver::NLopt;
+    od.V = V1;
+    const CmcResult<Net> start = solve_cmc(data, od);
+    iterations += start.summary.iterations;
+    LsEnd cur{start.net.points(), start.H, {}, {}};
+    int budget = o.max_least_squares_iterations;
+    auto minimise_at = [&](LsEnd& e, double V) {
+      const VolumeTarget v{vt.form, V, vt.scale};
+      e.run = minimise_checked(data, o, e.P, free, e.H, &v, o.mean_curvature_tolerance,
+                               V == V0 ? budget : std::min(budget, kLsStepIterations));
+      budget -= e.run.ls.iterations;
+      iterations += e.run.ls.iterations;
+      const LsStop stop = e.run.ls.stop;
+      if (stop == LsStop::Interrupted || stop == LsStop::NonFinite || stop == LsStop::ConstraintUnmet) return false;
+      const LsGrade g = grade(data, o, e, &v);
+      return g.rank <= 1 && g.residual <= std::max(kLsStepResidual, o.mean_curvature_tolerance);
+    };
+    if (!minimise_at(cur, V1)) {
+      tried += (tried.empty() ? "" : "; ") + num(V1) + ": no regular start there with √Φ <= " + num(kLsStepResidual);
+      continue;
+    }
+    const double span = V0 - V1;
+    StepController control(span, span / 8, o);
+    LsEnd prev = cur;
+    double v_prev = V1, v_cur = V1;
+    int taken = 0;
+    bool failed = false;
+    while (!control.reached_target()) {
+      if (!control.attempt() || budget <= 0) {
+        failed = true;
+        tried += (tried.empty() ? "" : "; ") + num(V1) + ": stopped at V = " + num(v_cur) + " (" +
+                 (budget <= 0 ? "max_least_squares_iterations" : "max_continuation_steps") + ")";
+        break;
+      }
+      const StepController::Step step = control.propose();
+      const double vn = step.hn == span ? V0 : V1 + step.hn;
+      LsEnd next = cur;
+      if (v_cur != v_prev) {
+        const double t = (vn - v_cur) / (v_cur - v_prev);
+        next.P += t * (cur.P - prev.P);
+        next.H += t * (cur.H - prev.H);
+      }
+      if (minimise_at(next, vn)) {
+        prev = std::move(cur);
+        cur = std::move(next);
+        v_prev = v_cur;
+        v_cur = vn;
+        ++taken;
+        control.accept(step, cur.run.ls.iterations, kEasyLsStep);
+      } else if (!control.reject(step)) {
+        failed = true;
+        tried += (tried.empty() ? "" : "; ") + num(V1) + ": the step fell below min_step at V = " + num(v_cur);
+        break;
+      }
+    }
+    if (failed) continue;
+    steps += taken;
+    cur.start_note = "continued in V from V1 = " + num(V1) + " (from the minimiser of D there, H = " +
+                     num(start.H, 3) + ") in " + std::to_string(taken) + " step(s)";
+    return cur;
+  }
+  why = "no continuation in V from smaller volumes (V1 = " + (tried.empty() ? std::string("none") : tried) + ")";
+  return std::nullopt;
+}
+
 template <class Net>
 CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
   CmcResult<Net> res;
@@ -184,63 +360,53 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     const CmcResult<Net> start = solve_cmc(data, od);
     res.continuation_steps = start.continuation_steps;
     res.summary.iterations = start.summary.iterations;
-    Eigen::MatrixX3d P = start.net.points();
-    double H = o.V ? start.H : o.H;
     const std::vector<int> free = data.free_indices(o.fixed);
     const auto cf = functional_for(data);
-    // Minimised to 0.7 × the tolerance, so that the check rule (finer) does not miss it by its own small error.
-    const double target = 0.7 * o.mean_curvature_tolerance;
-    const bool ceres = o.solver == CmcSolver::Ceres;
-    LsOutcome ls;
     std::optional<VolumeTarget> vt;
     if (o.V) {
       // The volume's scale: the size of its terms, |V0|, or the start's area^(3/2), whichever is
       // largest (a planar start through the origin has value_scale 0; so has V0 = 0).
-      const double vscale = std::max({cf->volume_form().value_scale(P), std::abs(*o.V), std::pow(area(start.net), 1.5)});
+      const double vscale = std::max(
+          {cf->volume_form().value_scale(start.net.points()), std::abs(*o.V), std::pow(area(start.net), 1.5)});
       vt.emplace(VolumeTarget{cf->volume_form(), *o.V, vscale > 0 ? vscale : 1.0});
     }
-    // The rule minimised and its check rule; when the check rule stops agreeing with it during the
-    // minimisation (the iterate is exploiting the gaps between the nodes, folding the
-    // parametrisation where Φ cannot see it), the minimisation goes on from the last agreed point
-    // with the next finer pair of rules; when the rule minimised reaches the target but the check
-    // rule reads above the tolerance (they disagree by less than the 2× of the fold test, e.g.
-    // 1.0e-6 … 1.4e-6 against 7e-7 on the circle at n = 12, 14: docs/cmc.md, "The V form"), it goes
-    // on from the point reached with the next finer pair. At most kMaxRuleRefinements times in all.
-    int extra = 0, ls_iterations = 0, folds = 0, misses = 0;
-    std::optional<MeanCurvatureLeastSquares> f, check;
-    while (true) {
-      f.emplace(form_for(data, extra));
-      check.emplace(form_for(data, extra + 1));
-      const int left = o.max_least_squares_iterations - ls_iterations;
-      const VolumeTarget* v = vt ? &*vt : nullptr;
-      if (ceres)
-        ls = minimise_ceres(*f, &*check, P, free, H, v, target, left, o.progress);
-      else if (v)
-        ls = lm_loop(*f, &*check, P, free, H, v, target, left, o.geodesic_acceleration, o.progress);
-      else
-        ls = minimise_newton(*f, &*check, P, free, H, target, left, o.geodesic_acceleration, o.progress);
-      ls_iterations += ls.iterations;
-      const bool check_misses =
-          ls.stop == LsStop::Reached && !(std::sqrt(check->value(P, H)) <= o.mean_curvature_tolerance);
-      if (!(ls.stop == LsStop::Interrupted || check_misses) || extra >= kMaxRuleRefinements ||
-          ls_iterations >= o.max_least_squares_iterations)
-        break;
-      ++(check_misses ? misses : folds);
-      ++extra;
+    const VolumeTarget* v = vt ? &*vt : nullptr;
+    LsEnd end{start.net.points(), o.V ? start.H : o.H, {}, {}};
+    end.run = minimise_checked(data, o, end.P, free, end.H, v, o.mean_curvature_tolerance,
+                               o.max_least_squares_iterations);
+    res.summary.iterations += end.run.ls.iterations;
+    end.start_note = o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
+                     : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
+                                               : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
+    if (vt && end.run.ls.stop != LsStop::ConstraintUnmet) end.H = best_h(*end.run.f, end.P, end.H);
+    LsGrade g = grade(data, o, end, v);
+    std::string route_note;
+    if (vt && g.rank > 0) {
+      // The V form's start did not converge (past the hemisphere it folds: docs/cmc.md, "The V
+      // form"): the continuation in V from smaller volumes, kept when it ends better.
+      const DirichletStart ds = dirichlet_start(data, o);
+      const double Vref = cf->volume(ds.p.P);
+      int iterations = 0, steps = 0;
+      std::string why;
+      std::optional<LsEnd> cont = continue_in_volume(data, o, *vt, Vref, free, iterations, steps, why);
+      res.summary.iterations += iterations;
+      if (cont) cont->H = best_h(*cont->run.f, cont->P, cont->H);
+      const LsGrade g2 = cont ? grade(data, o, *cont, v) : LsGrade{};
+      if (cont && (g2.rank < g.rank || (g2.rank == g.rank && g2.residual < g.residual))) {
+        route_note = std::string(" (from the minimiser of D at V0 it ended ") +
+                     (g.rank == 1 ? "above the tolerance" : !g.reg.ok ? "degenerate" : "off V0") + ")";
+        end = std::move(*cont);
+        g = g2;
+        res.continuation_steps += steps;
+      } else {
+        route_note = cont ? "; the continuation in V from smaller volumes ended no better (√Φ = " +
+                                num(g2.residual, 3) + (g2.reg.ok ? ")" : ", degenerate)")
+                          : "; " + why;
+      }
     }
-    ls.iterations = ls_iterations;
-    if (ls.stop == LsStop::Interrupted && ls_iterations >= o.max_least_squares_iterations) ls.stop = LsStop::MaxIterations;
-    res.summary.iterations += ls.iterations;
-    if (vt && ls.stop != LsStop::ConstraintUnmet) {
-      // Φ is quadratic in H (r = r₀ + H ∂r/∂H): the V form reports the best H for the surface
-      // reached, H* = −⟨∂r/∂H, r₀⟩/‖∂r/∂H‖², the ρ-weighted mean of its H_x (never raises Φ, leaves
-      // V as it is). The loops stop at √Φ <= target, not at ∂Φ/∂H = 0; on the circle their last H
-      // was up to 9.6e-8 off the cap's, H* is within 4.2e-8 (docs/cmc.md, "The V form").
-      Eigen::VectorXd r0, dH;
-      f->residuals(P, 0.0, &r0, nullptr, nullptr, &dH);
-      const double hh = dH.squaredNorm(), Hs = hh > 0 ? -dH.dot(r0) / hh : H;
-      if (std::isfinite(Hs) && f->value(P, Hs) <= f->value(P, H)) H = Hs;
-    }
+    const LsRun& run = end.run;
+    const double H = end.H;
+    const Eigen::MatrixX3d& P = end.P;
     const Net net = make_net(data, P);
     res.net = net;
     res.H = H == 0.0 ? 0.0 : H;  // no "-0" in the report
@@ -248,41 +414,38 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     res.V = cf->volume(P);
     res.DH = res.D + 2.0 * H * res.V;
     res.A = area(net);
-    const double phi = check->value(P, H);
-    res.energy = phi;
-    res.quadrature_points = f->points_per_direction();
-    res.summary.residual = std::sqrt(phi);
-    const std::string start_note =
-        o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
-        : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
-                                  : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
+    res.energy = g.residual * g.residual;
+    res.quadrature_points = run.f->points_per_direction();
+    res.summary.residual = g.residual;
     const std::string refined =
-        extra > 0 ? " (rule refined to q = " + std::to_string(f->points_per_direction()) + ": " +
-                        (folds > 0 ? "the check rule stopped agreeing with the coarser one" : "") +
-                        (folds > 0 && misses > 0 ? "; " : "") +
-                        (misses > 0 ? "the check rule read above the tolerance where the coarser one met it" : "") + ")"
-                  : std::string();
-    const std::string what = "least squares of the mean curvature " + start_note + refined + ": √Φ = " +
+        run.extra > 0 ? " (rule refined to q = " + std::to_string(run.f->points_per_direction()) + ": " +
+                            (run.folds > 0 ? "the check rule stopped agreeing with the coarser one" : "") +
+                            (run.folds > 0 && run.misses > 0 ? "; " : "") +
+                            (run.misses > 0 ? "the check rule read above the tolerance where the coarser one met it"
+                                            : "") +
+                            ")"
+                      : std::string();
+    const bool ceres = o.solver == CmcSolver::Ceres;
+    const std::string what = "least squares of the mean curvature " + end.start_note + refined + ": √Φ = " +
                              num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
-                             " after " + std::to_string(ls.iterations) +
-                             (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
-    const double v_off = o.V ? std::abs(res.V - *o.V) / vt->scale : 0.0;
-    const Regularity reg = regularity(net, res.A);
-    if (!reg.ok) {
+                             " after " + std::to_string(run.ls.iterations) +
+                             (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)") +
+                             route_note;
+    if (!g.reg.ok) {
       res.summary.set_failed(Status::NoConvergence,
-                             "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(reg.min_ratio, 3) +
-                                 " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
+                             "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(g.reg.min_ratio, 3) +
+                                 " of its mean inside the patch" + (g.reg.flipped ? " and the normal flips" : "") +
                                  " (not a CMC surface); " + what);
-    } else if (!(v_off <= o.tolerance)) {
+    } else if (!(g.v_off <= o.tolerance)) {
       res.summary.set_failed(Status::NoConvergence,
-                             what + ", but V misses V0 by " + num(v_off, 3) + " (relative): " +
-                                 (ls.stop == LsStop::ConstraintUnmet ? kVolumeUnmet : "above the tolerance"));
+                             what + ", but V misses V0 by " + num(g.v_off, 3) + " (relative): " +
+                                 (run.ls.stop == LsStop::ConstraintUnmet ? kVolumeUnmet : "above the tolerance"));
     } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
       std::string why;
-      switch (ls.stop) {
+      switch (run.ls.stop) {
         case LsStop::Reached:
-          why = " by the check rule (q = " + std::to_string(check->points_per_direction()) +
-                "), although the rule minimised (q = " + std::to_string(f->points_per_direction()) +
+          why = " by the check rule (q = " + std::to_string(run.check->points_per_direction()) +
+                "), although the rule minimised (q = " + std::to_string(run.f->points_per_direction()) +
                 ") reached " + num(0.7 * o.mean_curvature_tolerance, 3) + ": the rule does not resolve Φ at this net";
           break;
         case LsStop::Stalled:
@@ -303,7 +466,8 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
           break;
         case LsStop::Interrupted:
           why = ": the rules refined " + std::to_string(kMaxRuleRefinements) + " times (now q = " +
-                std::to_string(f->points_per_direction()) + " and " + std::to_string(check->points_per_direction()) +
+                std::to_string(run.f->points_per_direction()) + " and " +
+                std::to_string(run.check->points_per_direction()) +
                 " points per direction) still stop agreeing, so the parametrisation is folding where Φ's rule does not "
                 "see it; the net is the last point where they agreed";
           break;

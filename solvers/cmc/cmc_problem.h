@@ -133,8 +133,8 @@ double first_step(double Ht, const Eigen::MatrixX3d& P, const std::vector<int>& 
 bool on_branch(const Eigen::VectorXd& y, const Eigen::VectorXd& pred, const Eigen::VectorXd& yn);
 
 // The step control of the continuation in H (cmc.h): proposes the next H on the way from 0 to the
-// target; an accepted step doubles the next one after an easy corrector run (<= 4 iterations) and
-// keeps it otherwise; a rejected step halves it, until it falls below min_step relative to
+// target; an accepted step doubles the next one after an easy corrector run (<= 4 iterations unless
+// told otherwise) and keeps it otherwise; a rejected step halves it, until it falls below min_step relative to
 // max(1, |H reached|) (the fold). At most max_continuation_steps attempts.
 class StepController {
  public:
@@ -155,9 +155,10 @@ class StepController {
     if (std::abs(target_ - h_) <= std::abs(s) * (1 + 1e-12)) s = target_ - h_;
     return {s, (target_ - h_ == s) ? target_ : h_ + s};
   }
-  void accept(const Step& st, int corrector_iterations) {
+  /// An easy step (a corrector run of at most `easy` iterations) doubles the next one.
+  void accept(const Step& st, int corrector_iterations, int easy = 4) {
     h_ = st.hn;
-    step_ = corrector_iterations <= 4 ? 2 * st.s : st.s;
+    step_ = corrector_iterations <= easy ? 2 * st.s : st.s;
   }
   /// Halves the step; false when it collapsed (a fold at h()).
   bool reject(const Step& st) {
