@@ -91,13 +91,15 @@
 //    at V = V0 (the nlopt route) with that route's multiplier as H. converged also needs
 //    |V − V0| <= options.tolerance × max(value_scale, |V0|, area^(3/2)) (of the start).
 //    When that does not converge (past the hemisphere of a circle the start folds), the V form
-//    continues in V: Φ minimised at V1 = V_ref + (V0 − V_ref)/k, k = 4, 16, 64, 256 (V_ref the
-//    volume of the Dirichlet extremal), then V stepped to V0 with the H continuation's step control
-//    (secant predictor; each step minimised by the same solver, accepted when regular with
-//    √Φ <= 1e-2; at most options.max_continuation_steps steps; the last step has what is left of
-//    max_least_squares_iterations, the others at most 200 iterations each). Its end is kept when it
-//    is better (converged, or regular where the first one was not, or a lower √Φ); the message says
-//    which route gave the result (docs/cmc.md, "The V form", "Past the hemisphere").
+//    continues in V: Φ minimised at V1 = V_ref + (V0 − V_ref)/k, k = 4, 16, 64, 256 in turn (V_ref
+//    the volume of the Dirichlet extremal), then V stepped to V0 with the H continuation's step
+//    control (secant predictor; each step minimised by the same solver and accepted when the rules
+//    agree, the parametrisation is regular, V is on its target and √Φ <= max(1e-2, tolerance)).
+//    This second route has its own max_least_squares_iterations (a step before V0 at most 200 of
+//    them, the step at V0 what is left) and max_continuation_steps step attempts, over all V1. Its
+//    end is kept when it is better (converged, or regular and on V0 where the first one was not,
+//    or a lower √Φ by the same rule); the message says which route gave the result and how the
+//    other ended (docs/cmc.md, "The V form", "Past the hemisphere").
 //  - The start is the D_H critical point at H (the newton continuation above, whatever the
 //    solver; if the branch folds first, its last point). Levenberg–Marquardt on the residuals of Φ with the exact Jacobian:
 //    (JᵀJ + λ diag JᵀJ) δ = −Jᵀr, λ by the gain ratio (÷5 above 0.75, ×3 below 0.25, ×10 on a
@@ -124,7 +126,8 @@
 //    Cholesky) with the same stopping tests (solvers/cmc/mean_curvature_minimise.h); both are
 //    measured side by side by CmcMeanCurvature/{newton,ceres}/circle/<n> (docs/performance.md).
 //    summary.iterations counts accepted steps (newton) or steps tried, accepted and rejected
-//    (ceres); options.max_least_squares_iterations bounds the same counts.
+//    (ceres); options.max_least_squares_iterations bounds the same counts, per route (the V
+//    form's continuation in V is a second route).
 //
 // Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
 // V with a solver other than nlopt (UnsupportedProblem; the functionals' own rules: validate()),

@@ -179,6 +179,7 @@ namespace {
 // kMaxRuleRefinements times and max_iterations iterations in all.
 struct LsRun {
   LsOutcome ls;
+  bool folded = false;  ///< the rules stopped agreeing at the end (ls.stop Interrupted, or MaxIterations after it)
   int extra = 0, folds = 0, misses = 0;
   std::optional<MeanCurvatureLeastSquares> f, check;
 };
@@ -208,7 +209,8 @@ LsRun minimise_checked(const Net& data, const CmcOptions& o, Eigen::MatrixX3d& P
     ++run.extra;
   }
   run.ls.iterations = iterations;
-  if (run.ls.stop == LsStop::Interrupted && iterations >= max_iterations) run.ls.stop = LsStop::MaxIterations;
+  run.folded = run.ls.stop == LsStop::Interrupted;
+  if (run.folded && iterations >= max_iterations) run.ls.stop = LsStop::MaxIterations;
   return run;
 }
 
@@ -223,19 +225,21 @@ double best_h(const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, dou
   return std::isfinite(Hs) && f.value(P, Hs) <= f.value(P, H) ? Hs : H;
 }
 
-// One route's end: the net, its H, the minimisation that reached it and where it started.
+// One route's end: the net, its H, the minimisation that reached it, where it started, and the
+// Levenberg–Marquardt iterations of the whole route.
 struct LsEnd {
   Eigen::MatrixX3d P;
   double H = 0.0;
   LsRun run;
   std::string start_note;
+  int iterations = 0;
 };
 
 // What a route's end is: 0 converged, 1 regular and on V = V0 but above the tolerance, 2 otherwise
-// (a degenerate parametrisation, or V off V0); with √Φ by the check rule.
+// (a degenerate parametrisation, or V off V0); with Φ and √Φ by the check rule.
 struct LsGrade {
   int rank = 2;
-  double residual = 0.0;
+  double phi = 0.0, residual = 0.0;
   Regularity reg;
   double v_off = 0.0;
 };
@@ -246,25 +250,29 @@ LsGrade grade(const Net& data, const CmcOptions& o, const LsEnd& e, const Volume
   const Net net = make_net(data, e.P);
   g.reg = regularity(net, area(net));
   g.v_off = vt ? std::abs(vt->form.value(e.P) - vt->V0) / vt->scale : 0.0;
-  g.residual = std::sqrt(e.run.check->value(e.P, e.H));
+  g.phi = e.run.check->value(e.P, e.H);
+  g.residual = std::sqrt(g.phi);
   if (g.reg.ok && g.v_off <= o.tolerance) g.rank = g.residual <= o.mean_curvature_tolerance ? 0 : 1;
   return g;
 }
 
 // The V form's second route (docs/cmc.md, "The V form", "Past the hemisphere"): Φ minimised at
-// V1 = Vref + (V0 − Vref)/k for k = 4, 16, 64, 256 (Vref the volume of the Dirichlet extremal, so V1 lies
-// between the nearly minimal surface and V0 wherever the origin is) from the minimiser of D there,
-// then V stepped from V1 to V0 by the step control of the H continuation over V − V1 (first step
-// (V0 − V1)/8; a step doubles the next after at most kEasyLsStep iterations, halves on a failure,
-// down to min_step). The predictor is the secant through the last two points accepted (P and H;
-// from V1 the point itself), put back on the new V by the loop's own restoration.
-// A point (the start at V1 too) is accepted when its minimisation ends with the rules agreeing, at a
-// regular parametrisation on its V, with √Φ <= kLsStepResidual by the check rule: the minimiser of
-// Φ is continued whether it meets the tolerance or not (where the degree is too low for the
-// tolerance it stalls above it: 4.3e-6 at the small cap of H = −0.9 on the circle at n = 8).
-// A step before V0 has at most kLsStepIterations iterations, the last one what is left of the
-// route's max_least_squares_iterations; at most max_continuation_steps steps. Returns the end at V0,
-// or nothing with `why` saying where each V1 stopped.
+// V1 = Vref + (V0 − Vref)/k for k = 4, 16, 64, 256 in turn (Vref the volume of the Dirichlet
+// extremal, so V1 lies between the nearly minimal surface and V0 wherever the origin is) from the
+// minimiser of D there, then V stepped from V1 to V0 by the step control of the H continuation over
+// V − V1 (first step (V0 − V1)/8; a step doubles the next after at most kEasyLsStep iterations,
+// halves on a failure, down to min_step × max(1, |V − V1|)). The predictor is the secant through
+// the last two points accepted (P and H; from V1 the point itself), put back on the new V by the
+// loop's own restoration. A point (the start at V1 too) is accepted when its minimisation ends with
+// the rules agreeing, at a regular parametrisation on its V, with √Φ <= max(kLsStepResidual, the
+// tolerance) by the check rule: the minimiser of Φ is continued whether it meets the tolerance or
+// not (where the degree is too low for the tolerance it stalls above it: 4.3e-6 at the small cap of
+// H = −0.9 on the circle at n = 8). A V1 whose start or continuation fails gives way to the next.
+// Limits over the whole route (all V1): max_least_squares_iterations Levenberg–Marquardt iterations
+// (a step before V0 at most kLsStepIterations of them, the step at V0 what is left) and
+// max_continuation_steps step attempts. Returns the end at V0 (its `iterations` the route's), or
+// nothing with `why` saying where each V1 stopped; `iterations` gets the route's solver iterations
+// (the D starts' too).
 constexpr int kEasyLsStep = 20;
 constexpr int kLsStepIterations = 200;
 constexpr double kLsStepResidual = 1e-2;
@@ -274,45 +282,58 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
                                         const std::vector<int>& free, int& iterations, int& steps, std::string& why) {
   const double V0 = vt.V0;
   std::string tried;
+  auto fail = [&](double V1, const std::string& what) { tried += (tried.empty() ? "" : "; ") + num(V1) + ": " + what; };
+  int budget = o.max_least_squares_iterations, attempts = o.max_continuation_steps, ls_iterations = 0;
   for (const double k : {4.0, 16.0, 64.0, 256.0}) {
     const double V1 = Vref + (V0 - Vref) / k;
     if (!(V1 != V0)) break;
+    if (budget <= 0 || attempts <= 0) {
+      fail(V1, budget <= 0 ? "max_least_squares_iterations used up" : "max_continuation_steps used up");
+      break;
+    }
     CmcOptions od = o;
     od.functional = CmcFunctionalKind::Dirichlet;
     od.solver = CmcSolver::NLopt;
     od.V = V1;
     const CmcResult<Net> start = solve_cmc(data, od);
     iterations += start.summary.iterations;
-    LsEnd cur{start.net.points(), start.H, {}, {}};
-    int budget = o.max_least_squares_iterations;
+    if (!start.summary.converged) {
+      fail(V1, "the minimiser of D there did not converge");
+      continue;
+    }
+    LsEnd cur{start.net.points(), start.H, {}, {}, 0};
     auto minimise_at = [&](LsEnd& e, double V) {
       const VolumeTarget v{vt.form, V, vt.scale};
       e.run = minimise_checked(data, o, e.P, free, e.H, &v, o.mean_curvature_tolerance,
                                V == V0 ? budget : std::min(budget, kLsStepIterations));
       budget -= e.run.ls.iterations;
+      ls_iterations += e.run.ls.iterations;
       iterations += e.run.ls.iterations;
       const LsStop stop = e.run.ls.stop;
-      if (stop == LsStop::Interrupted || stop == LsStop::NonFinite || stop == LsStop::ConstraintUnmet) return false;
+      if (e.run.folded || stop == LsStop::NonFinite || stop == LsStop::ConstraintUnmet) return false;
       const LsGrade g = grade(data, o, e, &v);
       return g.rank <= 1 && g.residual <= std::max(kLsStepResidual, o.mean_curvature_tolerance);
     };
     if (!minimise_at(cur, V1)) {
-      tried += (tried.empty() ? "" : "; ") + num(V1) + ": no regular start there with √Φ <= " + num(kLsStepResidual);
+      fail(V1, "no regular start there with √Φ <= " + num(kLsStepResidual));
       continue;
     }
     const double span = V0 - V1;
-    StepController control(span, span / 8, o);
+    CmcOptions oc = o;
+    oc.max_continuation_steps = attempts;
+    StepController control(span, span / 8, oc);
     LsEnd prev = cur;
     double v_prev = V1, v_cur = V1;
     int taken = 0;
     bool failed = false;
     while (!control.reached_target()) {
-      if (!control.attempt() || budget <= 0) {
+      if (budget <= 0 || !control.attempt()) {
         failed = true;
-        tried += (tried.empty() ? "" : "; ") + num(V1) + ": stopped at V = " + num(v_cur) + " (" +
-                 (budget <= 0 ? "max_least_squares_iterations" : "max_continuation_steps") + ")";
+        fail(V1, "stopped at V = " + num(v_cur) + " (" +
+                     (budget <= 0 ? "max_least_squares_iterations" : "max_continuation_steps") + ")");
         break;
       }
+      --attempts;
       const StepController::Step step = control.propose();
       const double vn = step.hn == span ? V0 : V1 + step.hn;
       LsEnd next = cur;
@@ -330,7 +351,7 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
         control.accept(step, cur.run.ls.iterations, kEasyLsStep);
       } else if (!control.reject(step)) {
         failed = true;
-        tried += (tried.empty() ? "" : "; ") + num(V1) + ": the step fell below min_step at V = " + num(v_cur);
+        fail(V1, "the step fell below min_step at V = " + num(v_cur));
         break;
       }
     }
@@ -338,9 +359,10 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
     steps += taken;
     cur.start_note = "continued in V from V1 = " + num(V1) + " (from the minimiser of D there, H = " +
                      num(start.H, 3) + ") in " + std::to_string(taken) + " step(s)";
+    cur.iterations = ls_iterations;
     return cur;
   }
-  why = "no continuation in V from smaller volumes (V1 = " + (tried.empty() ? std::string("none") : tried) + ")";
+  why = "no continuation in V from V1 towards v0 (V1 = " + (tried.empty() ? std::string("none") : tried) + ")";
   return std::nullopt;
 }
 
@@ -371,9 +393,10 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       vt.emplace(VolumeTarget{cf->volume_form(), *o.V, vscale > 0 ? vscale : 1.0});
     }
     const VolumeTarget* v = vt ? &*vt : nullptr;
-    LsEnd end{start.net.points(), o.V ? start.H : o.H, {}, {}};
+    LsEnd end{start.net.points(), o.V ? start.H : o.H, {}, {}, 0};
     end.run = minimise_checked(data, o, end.P, free, end.H, v, o.mean_curvature_tolerance,
                                o.max_least_squares_iterations);
+    end.iterations = end.run.ls.iterations;
     res.summary.iterations += end.run.ls.iterations;
     end.start_note = o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
                      : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
@@ -383,7 +406,9 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     std::string route_note;
     if (vt && g.rank > 0) {
       // The V form's start did not converge (past the hemisphere it folds: docs/cmc.md, "The V
-      // form"): the continuation in V from smaller volumes, kept when it ends better.
+      // form"): the continuation in V from V1 towards v0, kept when it ends better (converged, or
+      // regular and on V0 where the first end is not, or a lower √Φ, both read by the finer of the
+      // two check rules).
       const DirichletStart ds = dirichlet_start(data, o);
       const double Vref = cf->volume(ds.p.P);
       int iterations = 0, steps = 0;
@@ -392,15 +417,25 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       res.summary.iterations += iterations;
       if (cont) cont->H = best_h(*cont->run.f, cont->P, cont->H);
       const LsGrade g2 = cont ? grade(data, o, *cont, v) : LsGrade{};
-      if (cont && (g2.rank < g.rank || (g2.rank == g.rank && g2.residual < g.residual))) {
-        route_note = std::string(" (from the minimiser of D at V0 it ended ") +
-                     (g.rank == 1 ? "above the tolerance" : !g.reg.ok ? "degenerate" : "off V0") + ")";
+      bool better = cont && g2.rank < g.rank;
+      double r1 = g.residual, r2 = g2.residual;
+      if (cont && g2.rank == 1 && g.rank == 1) {
+        const int extra = std::max(end.run.extra, cont->run.extra) + 1;
+        const MeanCurvatureLeastSquares fine = form_for(data, extra);
+        r1 = std::sqrt(fine.value(end.P, end.H));
+        r2 = std::sqrt(fine.value(cont->P, cont->H));
+        better = r2 < r1;
+      }
+      const std::string first = g.rank == 1 ? "above the tolerance (√Φ = " + num(r1, 3) + ")"
+                                : !g.reg.ok  ? std::string("at a degenerate parametrisation")
+                                             : std::string("off V0");
+      if (better) {
+        route_note = "; from the minimiser of D at V0 it ended " + first;
         end = std::move(*cont);
         g = g2;
         res.continuation_steps += steps;
       } else {
-        route_note = cont ? "; the continuation in V from smaller volumes ended no better (√Φ = " +
-                                num(g2.residual, 3) + (g2.reg.ok ? ")" : ", degenerate)")
+        route_note = cont ? "; the continuation in V from V1 towards v0 ended no better (√Φ = " + num(r2, 3) + ")"
                           : "; " + why;
       }
     }
@@ -414,7 +449,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     res.V = cf->volume(P);
     res.DH = res.D + 2.0 * H * res.V;
     res.A = area(net);
-    res.energy = g.residual * g.residual;
+    res.energy = g.phi;
     res.quadrature_points = run.f->points_per_direction();
     res.summary.residual = g.residual;
     const std::string refined =
@@ -428,9 +463,8 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
     const bool ceres = o.solver == CmcSolver::Ceres;
     const std::string what = "least squares of the mean curvature " + end.start_note + refined + ": √Φ = " +
                              num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
-                             " after " + std::to_string(run.ls.iterations) +
-                             (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)") +
-                             route_note;
+                             " after " + std::to_string(end.iterations) +
+                             (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
     if (!g.reg.ok) {
       res.summary.set_failed(Status::NoConvergence,
                              "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(g.reg.min_ratio, 3) +
@@ -478,6 +512,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       res.summary.message = what;
       res.summary.set_converged();
     }
+    res.summary.message += route_note;
   }
   return res;
 }

@@ -239,8 +239,9 @@ TEST(CmcMeanCurvature, VolumeFormReturnsTheCapAndItsH) {
 // cap, and the D_H branch folds first), the V form does: the larger cap of radius 1/|H|. n = 10,
 // H = -0.99: converged from the minimiser of D at V0, H to 1e-9, 2e-8 from the sphere (measured).
 // A larger cap (H = -0.7, V = 11.5): from the minimiser of D at V0 the degree-10 parametrisation
-// folds; with max_continuation_steps = 1 nothing else is tried to the end, and the folded surface is
-// reported as degenerate, never as a CMC surface. V0 = 0 gives the flat disk (H = 0, Φ = 0 at the
+// folds; with max_continuation_steps = 1 the continuation in V starts at V1 (which converges
+// there) but stops after its one step attempt, and the folded surface is reported as degenerate,
+// never as a CMC surface. V0 = 0 gives the flat disk (H = 0, Φ = 0 at the
 // start). The default continuation in V reaching H = -0.7 is the next test.
 TEST(CmcMeanCurvature, VolumeFormPastTheHemisphere) {
   const TriangularNet data = testing::circle_three_arcs(10);
@@ -277,9 +278,9 @@ TEST(CmcMeanCurvature, VolumeFormPastTheHemisphere) {
 // (cmc_mean_curvature.cpp, continue_in_volume): the minimiser of Φ at V1 = Vref + (V0 − Vref)/4,
 // Vref the volume of the Dirichlet extremal, then steps in V to V0. The circle is moved off the
 // origin by (0.3, -0.2, 2), which shifts every V by the same constant: V1 follows Vref (V0/4 would
-// start below the disk). Measured: converged by both solvers in 6 and 7 steps, about 1 s and 2 s,
-// 2.7e-8 and 3.2e-8 from the sphere on the centred circle (before the continuation: a degenerate
-// parametrisation).
+// start below the disk). Measured on the centred circle: converged by both solvers in 6 and 7
+// steps, 1.0–1.2 s and 2.2–3.6 s, 2.7e-8 and 3.0e-8 from the sphere (before the continuation: a
+// degenerate parametrisation).
 TEST(CmcMeanCurvature, VolumeFormReachesTheLargerCapByContinuationInV) {
   const double H = -0.7, R = 1 / std::abs(H), hb = R + std::sqrt(R * R - 1);
   const Eigen::Vector3d t(0.3, -0.2, 2.0);
