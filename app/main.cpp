@@ -21,6 +21,7 @@
 #include "app/sweep_command.h"
 #include "bezierpde/jobs/exit_status.h"
 #include "bezierpde/jobs/job_progress.h"
+#include "bezierpde/solvers/cmc/ceres_log.h"
 
 namespace {
 
@@ -45,6 +46,7 @@ void keep_freed_memory() {
 
 int main(int argc, char** argv) {
   keep_freed_memory();
+  bpde::quiet_ceres_log();  // stderr carries bpde's own lines only (ceres_log.h)
   CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)", "bpde"};
   app.require_subcommand(0, 1);  // bare `bpde` prints the usage (below)
   app.set_version_flag("-V,--version", "bpde " BPDE_VERSION, "Print the version and exit");

@@ -41,6 +41,7 @@
 #include "bezierpde/solvers/c1/tetraharmonic.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/extremal.h"
+#include "bezierpde/solvers/cmc/ceres_log.h"
 #include "bezierpde/solvers/pde/pde_explicit.h"
 #include "bezierpde/solvers/pde/pde_lu.h"
 #include "bezierpde/solvers/summary.h"
@@ -237,6 +238,7 @@ PyObject* new_exception(py::module_& m, const char* name, py::handle bases, cons
 PYBIND11_MODULE(_core, m) {
   m.doc() = "bezierpde: Bézier surfaces from boundary data by energies and PDEs (C++ core).";
   m.attr("__version__") = BPDE_VERSION;
+  bpde::quiet_ceres_log();  // no glog lines from Ceres on the interpreter's stderr (ceres_log.h)
 
   // Exceptions (one hierarchy, mirroring core/errors.h).
   static PyObject* Error = new_exception(m, "Error", PyExc_Exception, "Every error of bezierpde.");

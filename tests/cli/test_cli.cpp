@@ -467,6 +467,19 @@ TEST(Cli, CmcMeanCurvatureJob) {
     EXPECT_TRUE(repc["converged"].get<bool>());
     EXPECT_NEAR(repc["H"].get<double>(), -0.9, 1e-5);
     EXPECT_NEAR(repc["volume"].get<double>(), V0, 1e-12);
+    // Past the hemisphere, by Ceres: the larger cap of H = -0.7 (V = 11.5). From the minimiser of D
+    // at v0 the parametrisation folds and Ceres stops on a failed Plus of its gradient-norm test,
+    // which it logs to stderr through glog ("E… Terminating: projected_gradient_step = …"); the
+    // continuation in V reaches the cap. stderr holds nothing: the CLI turns Ceres's log off
+    // (solvers/cmc/ceres_log.h).
+    const double R3 = 1 / 0.7, h3 = R3 + std::sqrt(R3 * R3 - 1), V3 = std::numbers::pi * h3 * h3 * (3 * R3 - h3) / 3;
+    std::snprintf(problem, sizeof problem,
+                  R"({"kind": "cmc", "V": %.17g, "functional": "mean-curvature", "solver": "ceres"})", V3);
+    const auto [rl, repl] = solve("mcvl", job(10, problem));
+    ASSERT_EQ(rl.status, 0) << rl.err;
+    EXPECT_EQ(rl.err, "");
+    EXPECT_NE(repl["message"].get<std::string>().find("continued in V"), std::string::npos);
+    EXPECT_NEAR(repl["H"].get<double>(), -0.7, 1e-6);
   }
   const auto [r, rep] = solve("mc", job(10, R"({"kind": "cmc", "H": -0.9, "functional": "mean-curvature"})"));
   ASSERT_EQ(r.status, 0) << r.err;
