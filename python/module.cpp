@@ -532,6 +532,9 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("mean_curvature_tolerance", &bpde::CmcOptions::mean_curvature_tolerance)
       .def_readwrite("max_least_squares_iterations", &bpde::CmcOptions::max_least_squares_iterations)
       .def_readwrite("geodesic_acceleration", &bpde::CmcOptions::geodesic_acceleration)
+      .def_readwrite("area_mean_curvature_start", &bpde::CmcOptions::area_mean_curvature_start,
+                     "area functional: start from the least-squares mean-curvature surface first (route 0; "
+                     "default True; docs/cmc.md, \"The mean-curvature start\").")
       .def_readwrite("max_corrector_iterations", &bpde::CmcOptions::max_corrector_iterations)
       .def_readwrite("max_continuation_steps", &bpde::CmcOptions::max_continuation_steps)
       .def_readwrite("min_step", &bpde::CmcOptions::min_step);

@@ -395,8 +395,8 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     """CmcOptions.functional from Python (dirichlet, area, mean-curvature): the C++ defaults, the
     result fields, and the same net and numbers as the job route on the Fig. 1 circle."""
     o = bezierpde.CmcOptions()
-    assert (o.functional, o.mean_curvature_tolerance, o.max_least_squares_iterations, o.geodesic_acceleration) == (
-        "dirichlet", 1e-6, 2000, True)
+    assert (o.functional, o.mean_curvature_tolerance, o.max_least_squares_iterations, o.geodesic_acceleration,
+            o.area_mean_curvature_start) == ("dirichlet", 1e-6, 2000, True, True)
     with pytest.raises(bezierpde.ParameterError, match="mean-curvature"):
         o.functional = "curvature"
     job = {"boundary": {"type": "triangular", "degree": 8, "builder": "circle-three-arcs"},
