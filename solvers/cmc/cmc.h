@@ -178,9 +178,11 @@ struct CmcOptions {
   int max_corrector_iterations = 30;         ///< per continuation step; default 30, >= 1
   int max_continuation_steps = 400;          ///< default 400, >= 1
   double min_step = 1e-5;                    ///< smallest H step, relative to max(1, |H reached|); default 1e-5
-  /// mean-curvature functional: converged when √Φ = ‖H_x − H‖ in L²(ρ dA) is at most this; default 1e-6, in (0, 1)
+  /// mean-curvature functional: converged when √Φ = ‖H_x − H‖ in L²(ρ dA) is at most this; default 1e-6, in (0, 1).
+  /// The area functional's route 0 uses it too: it starts from the least squares only when they meet it
   double mean_curvature_tolerance = 1e-6;
-  /// mean-curvature functional: Levenberg–Marquardt iterations at most; default 2000, >= 1
+  /// mean-curvature functional: Levenberg–Marquardt iterations at most; default 2000, >= 1 (the area
+  /// functional's route 0: at most 300 of them in the H form, all in the V form)
   int max_least_squares_iterations = 2000;
   /// mean-curvature functional, solver newton: geodesic acceleration of the Levenberg–Marquardt
   /// steps (above); default true. false is plain LM, kept to measure the two side by side
@@ -192,7 +194,8 @@ struct CmcOptions {
   /// side by side.
   bool area_mean_curvature_start = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
-  /// reached|, total = |H requested| (core/progress.h); default none.
+  /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area
+  /// functional's route 0) report "cmc least squares", the area functional "cmc area"; default none.
   ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
   /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with
@@ -265,7 +268,8 @@ struct CmcResult {
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
   int quadrature_points = 0;   ///< area, mean-curvature: Gauss points per direction of the rule minimised
   int continuation_steps = 0;  ///< accepted continuation steps (H mode; the V form: its steps in V)
-  /// converged, iterations (corrector iterations in all), residual (mean-curvature: √Φ by the check
+  /// converged, iterations (corrector iterations in all; the area functional's also those of its
+  /// route 0, least squares and their D_H start included), residual (mean-curvature: √Φ by the check
   /// rule), message; status Fold past the
   /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),
   /// NoConvergence when max_continuation_steps run out or the V-mode solve fails.

@@ -840,7 +840,7 @@ struct AreaSolve {
   // with first variations below 1e-11: A_H is nearly flat along its tangential valley, and Φ pins
   // the geometry). On the catenoid pieces the least squares converge slowly (2000 iterations at
   // tensor n = 12), hence the limits.
-  bool from_mean_curvature(const double* V0, double& H, std::string& note) {
+  bool from_mean_curvature(const double* V0, double& H, std::string& note, int& steps) {
     CmcOptions om = o;
     om.functional = CmcFunctionalKind::MeanCurvature;
     if (!V0) om.max_least_squares_iterations = std::min(o.max_least_squares_iterations, kMeanCurvatureStartIterations);
@@ -860,7 +860,7 @@ struct AreaSolve {
     p.base.P = m.net.points();
     p.eps = 0.0;
     if (V0) H = m.H;
-    choose_rule();
+    const bool rule_ok = choose_rule();
     theta = 1e-3;
     CorrectorStats st;
     if (V0) {
@@ -875,11 +875,18 @@ struct AreaSolve {
       }
       summary.iterations += st.iterations;
     }
-    if (st.ok) {
+    // Kept only where the routes below would not do better by the common end's tests: the rule
+    // meets its tolerance at the net and the parametrisation is regular.
+    const Net net = make_net(data, p.P());
+    const bool regular = st.ok && regularity(net, area(net)).ok;
+    if (st.ok && rule_ok && regular) {
       note = start + " corrected on A_H in " + std::to_string(st.iterations) + " iteration(s)";
+      if (V0) steps = m.continuation_steps;
       return true;
     }
-    note = start + " was corrected on A_H to " + num(st.residual, 3) + " only";
+    note = start + (!st.ok ? " was corrected on A_H to " + num(st.residual, 3) + " only"
+                    : !rule_ok ? " was corrected on A_H, but the area rule misses its tolerance there"
+                               : " was corrected on A_H to a degenerate parametrisation");
     p.base.P = P0;
     p.a = a0;
     theta = theta0;
@@ -1059,7 +1066,8 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     std::string start_note;
     double h0 = o.H;
     const bool tried_mc = o.area_mean_curvature_start;
-    const bool from_mc = tried_mc && s.from_mean_curvature(o.V ? &*o.V : nullptr, h0, start_note);
+    const bool from_mc =
+        tried_mc && s.from_mean_curvature(o.V ? &*o.V : nullptr, h0, start_note, res.continuation_steps);
     if (from_mc) {
       out = {h0, true, Status::Converged,
              (o.V ? "the volume-constrained critical point of A from " : "the critical point of A_H from ") +

@@ -282,27 +282,22 @@ TEST(CmcMeanCurvature, VolumeFormPastTheHemisphere) {
 // steps, 1.0–1.2 s and 2.2–3.6 s, 2.7e-8 and 3.0e-8 from the sphere (before the continuation: a
 // degenerate parametrisation).
 TEST(CmcMeanCurvature, VolumeFormReachesTheLargerCapByContinuationInV) {
-  const double H = -0.7, R = 1 / std::abs(H), hb = R + std::sqrt(R * R - 1);
-  const Eigen::Vector3d t(0.3, -0.2, 2.0);
-  TriangularNet data = testing::circle_three_arcs(10);
-  for (Eigen::Index i = 0; i < data.points().rows(); ++i) data.points().row(i) += t.transpose();
-  const double Vflat = solve_cmc(data, testing::cmc_options(CmcFunctionalKind::Dirichlet, 0.0)).V;
-  EXPECT_NEAR(std::abs(Vflat), std::numbers::pi * t.z() / 3, 1e-8);
-  const double V0 = Vflat + std::numbers::pi * hb * hb * (3 * R - hb) / 3;
+  const double H = -0.7;
+  const testing::LargerCapOffTheOrigin cap = testing::larger_cap_off_the_origin(10, H, Eigen::Vector3d(0.3, -0.2, 2.0));
   for (const CmcSolver solver : kSolvers) {
     SCOPED_TRACE(to_string(solver));
     CmcOptions o = mc_options(0.0, solver);
-    o.V = V0;
-    const CmcResult<TriangularNet> r = solve_cmc(data, o);
+    o.V = cap.V0;
+    const CmcResult<TriangularNet> r = solve_cmc(cap.data, o);
     EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
     const size_t at = r.summary.message.find("continued in V from V1 = ");
     ASSERT_NE(at, std::string::npos) << r.summary.message;
-    EXPECT_NEAR(std::stod(r.summary.message.substr(at + 25)), Vflat + (V0 - Vflat) / 4, 1e-4);
+    EXPECT_NEAR(std::stod(r.summary.message.substr(at + 25)), cap.Vflat + (cap.V0 - cap.Vflat) / 4, 1e-4);
     EXPECT_GT(r.continuation_steps, 0);
     EXPECT_LE(r.summary.residual, 1e-6);
-    EXPECT_NEAR(r.V, V0, 1e-11);
+    EXPECT_NEAR(r.V, cap.V0, 1e-11);
     EXPECT_NEAR(r.H, H, 1e-6);
-    EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, std::sqrt(R * R - 1)) + t, R), 1e-6);
+    EXPECT_LE(testing::sphere_distance(r.net, cap.centre, cap.R), 1e-6);
     const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
     EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-4);
   }
