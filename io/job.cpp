@@ -136,7 +136,7 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     check_keys(j, path, {"kind"});
     p.kind = ProblemKind::BiharmonicLoad;
   } else if (kind == "cmc") {
-    check_keys(j, path, {"kind", "H", "V", "solver", "functional", "mean_curvature_tolerance"});
+    check_keys(j, path, {"kind", "H", "V", "solver", "functional", "mean_curvature_tolerance", "start"});
     const bool hasH = j.contains("H"), hasV = j.contains("V");
     if (hasH == hasV) throw ParseError(path + ": a cmc problem gives exactly one of \"H\" and \"V\"");
     if (j.contains("functional")) {
@@ -157,6 +157,13 @@ Problem problem_from_json(const Json& j, const std::string& path) {
         std::snprintf(got, sizeof got, "%g", p.mean_curvature_tolerance);
         throw ParseError(path + ".mean_curvature_tolerance: must be in (0, 1), got " + got);
       }
+    }
+    if (j.contains("start")) {
+      if (!area) throw ParseError(path + ".start: only with \"functional\": \"area\"");
+      const std::string st = string(j["start"], path + ".start");
+      if (st != "mean-curvature" && st != "dirichlet")
+        throw ParseError(path + ".start: unknown start \"" + st + "\" (expected mean-curvature or dirichlet)");
+      p.area_mean_curvature_start = st == "mean-curvature";
     }
 
     if (j.contains("solver")) {

@@ -191,7 +191,7 @@ struct CmcOptions {
   /// area functional: try route 0 first, the least-squares mean-curvature surface corrected on
   /// A_H by a few Newton iterations (docs/cmc.md, "The mean-curvature start"); default true. false
   /// starts from the D_H critical point only (the routes before route 0), kept to measure the two
-  /// side by side.
+  /// side by side (a job's "start": "dirichlet", docs/FORMATS.md).
   bool area_mean_curvature_start = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area

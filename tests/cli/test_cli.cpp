@@ -461,6 +461,14 @@ TEST(Cli, CmcMeanCurvatureJob) {
         << repa["message"];
     EXPECT_NEAR(repa["H"].get<double>(), -0.5, 1e-8);
     EXPECT_NEAR(repa["volume"].get<double>(), V2, 1e-11);
+    // "start": "dirichlet": the routes from the minimiser of D alone, the same cap.
+    std::snprintf(problem, sizeof problem, R"({"kind": "cmc", "V": %.17g, "functional": "area", "start": "dirichlet"})",
+                  V2);
+    const auto [rd, repd] = solve("avd", job(10, problem));
+    ASSERT_EQ(rd.status, 0) << rd.err;
+    EXPECT_NE(repd["message"].get<std::string>().find("from the minimiser of D"), std::string::npos) << repd["message"];
+    EXPECT_EQ(repd["message"].get<std::string>().find("mean-curvature"), std::string::npos) << repd["message"];
+    EXPECT_NEAR(repd["H"].get<double>(), -0.5, 1e-8);
     // The same by Ceres (the free points on the manifold V = v0).
     std::snprintf(problem, sizeof problem,
                   R"({"kind": "cmc", "V": %.17g, "functional": "mean-curvature", "solver": "ceres"})", V0);
@@ -511,6 +519,9 @@ TEST(Cli, CmcMeanCurvatureJob) {
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "solver": "nlopt"})"), "newton or the ceres solver");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "mean_curvature_tolerance": 1e-3})"),
       "mean_curvature_tolerance");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "start": "dirichlet"})"),
+      "start: only with \"functional\": \"area\"");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "start": "plane"})"), "unknown start \"plane\"");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": 0})"),
       "mean_curvature_tolerance");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": "1e-3"})"),
