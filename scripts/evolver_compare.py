@@ -138,13 +138,15 @@ class Case:
         self.area_exact = area_exact
         self.functionals = functionals
 
-    def job(self, degree, functional, mc_tolerance=None):
+    def job(self, degree, functional, mc_tolerance=None, start=None):
         boundary = {"type": "triangular", "degree": degree, "builder": self.builder}
         problem = {"kind": "cmc", "H": self.H, "solver": "newton"}
         if functional != "dirichlet":
             problem["functional"] = functional
         if mc_tolerance is not None:
             problem["mean_curvature_tolerance"] = mc_tolerance
+        if start is not None:
+            problem["start"] = start
         return {"boundary": boundary, "fixed": "boundary", "problem": problem, "samples": 40}
 
 
@@ -307,18 +309,21 @@ def timed(cmd, **kw):
     return p, child_cpu() - t0
 
 
-def run_bpde(bpde, case, degree, functional, work, grid, mc_tolerance=None):
+def run_bpde(bpde, case, degree, functional, work, grid, mc_tolerance=None, start=None):
     """One `bpde solve` of the case's job (with mc_tolerance: the mean-curvature functional to that
-    tolerance, the job's "mean_curvature_tolerance")."""
-    tag = "" if mc_tolerance is None else "-t%g" % mc_tolerance
+    tolerance, the job's "mean_curvature_tolerance"; with start: the area functional's job field
+    "start")."""
+    tag = ("" if mc_tolerance is None else "-t%g" % mc_tolerance) + ("" if start is None else "-" + start)
     d = os.path.join(work, "bpde-%s-%s-n%d%s" % (case.name, functional, degree, tag))
     os.makedirs(d, exist_ok=True)
     job = os.path.join(d, "job.json")
     with open(job, "w") as f:
-        json.dump(case.job(degree, functional, mc_tolerance), f, indent=1)
+        json.dump(case.job(degree, functional, mc_tolerance, start), f, indent=1)
     p, cpu = timed([bpde, "solve", job, "--out", os.path.join(d, "out")])
     res_file = os.path.join(d, "out", "result.json")
     extra = {} if mc_tolerance is None else {"mc_tolerance": mc_tolerance}
+    if start is not None:
+        extra["start"] = start
     if p.returncode not in (0, 1) or not os.path.exists(res_file):
         return dict({"degree": degree, "functional": functional, "cpu": cpu, "failed": (p.stderr or p.stdout).strip()},
                     **extra)
@@ -405,8 +410,9 @@ def area_err(case, a):
 
 
 def label(r):
-    """The functional of a bpde row, with its mean-curvature tolerance when the job set one."""
-    return r["functional"] + ("" if "mc_tolerance" not in r else " (√Φ ≤ %.0e)" % r["mc_tolerance"])
+    """The functional of a bpde row, with its mean-curvature tolerance or its start when the job set one."""
+    return r["functional"] + ("" if "mc_tolerance" not in r else " (√Φ ≤ %.0e)" % r["mc_tolerance"]) + \
+        ("" if "start" not in r else " (start: %s)" % r["start"])
 
 
 def bpde_table(case, rows):
@@ -443,8 +449,10 @@ def time_to_accuracy(case, brows, erows, targets, lrows=()):
         hits = [r for r in rows if "failed" not in r and r.get("converged", True) and r["error"] <= key]
         return min(hits, key=lambda r: r["cpu"]) if hits else None
 
-    routes = [("bezierpde " + f, [r for r in brows if r["functional"] == f and "mc_tolerance" not in r])
-              for f in case.functionals]
+    routes = [("bezierpde " + f, [r for r in brows if r["functional"] == f and "mc_tolerance" not in r
+                                  and "start" not in r]) for f in case.functionals]
+    starts = sorted({r["start"] for r in brows if "start" in r})
+    routes += [("bezierpde area (start: %s)" % s, [r for r in brows if r.get("start") == s]) for s in starts]
     mc_rows = [r for r in brows if r["functional"] == "mean-curvature"]
     if any("mc_tolerance" in r for r in mc_rows):
         routes.append(("bezierpde mean-curvature (degree and tolerance)", mc_rows))
@@ -495,6 +503,9 @@ def main(argv=None):
     ap.add_argument("--mc-tolerances", default="",
                     help="comma-separated mean_curvature_tolerance values in (0, 1): extra `bpde solve` rows of the "
                          "mean-curvature functional (both cases)")
+    ap.add_argument("--area-dirichlet-start", action="store_true",
+                    help="also the area functional with the job field \"start\": \"dirichlet\" (the D_H routes "
+                         "without the mean-curvature start), in the same run")
     ap.add_argument("--library", default="build/example_004_cmc_area_tables",
                     help="the example program of the library route")
     args = ap.parse_args(argv)
@@ -539,6 +550,8 @@ def main(argv=None):
         if "mean-curvature" in case.functionals:
             brows += [run_bpde(bpde, case, n, "mean-curvature", work, args.grid, t) for t in mc_tolerances
                       for n in degrees]
+        if args.area_dirichlet_start and "area" in case.functionals:
+            brows += [run_bpde(bpde, case, n, "area", work, args.grid, start="dirichlet") for n in degrees]
         lrows = [run_library(os.path.abspath(args.library), case, n, t, args.grid) for n in degrees for t in tolerances] \
             if case.name == "circle" else []
         erows = [run_evolver(evolver, case, k, False, work) for k in parse_list(args.linear_levels)]

@@ -178,6 +178,21 @@ def test_mean_curvature_rows_by_tolerance():
     assert "(√Φ ≤ 1e-05)" in ec.bpde_table(case, rows)
 
 
+def test_area_rows_with_the_dirichlet_start_are_a_route_of_their_own():
+    # --area-dirichlet-start adds area jobs with "start": "dirichlet"; they must not mix with the default area rows
+    case = ec.circle_case()
+    assert case.job(8, "area", start="dirichlet")["problem"]["start"] == "dirichlet"
+    assert "start" not in case.job(8, "area")["problem"]
+    base = {"degree": 8, "functional": "area", "converged": True, "error": 1e-8, "residual": 1e-12,
+            "area": 1.0, "H_min": -0.5, "H_max": -0.5, "seconds": 0.1}
+    rows = [dict(base, cpu=0.5), dict(base, cpu=0.2, error=1e-7, start="dirichlet")]
+    table = ec.time_to_accuracy(case, rows, [], [1e-7, 1e-8])
+    assert "| bezierpde area | bezierpde area (start: dirichlet) |" in table.splitlines()[0]
+    assert "| 1e-07 | 0.50 s (n = 8) | 0.20 s (n = 8) |" in table
+    assert "| 1e-08 | 0.50 s (n = 8) | not reached |" in table
+    assert "| area (start: dirichlet) | 8 |" in ec.bpde_table(case, rows)
+
+
 def test_refuses_malformed_mc_tolerances(capsys):
     for bad in ("abc", "1e-7,x", "0", "1"):
         assert ec.main(["--mc-tolerances", bad]) == 2
