@@ -30,7 +30,10 @@
 //    most 8 Newton iterations on A_H (the bordered corrector in the V mode). Kept when they meet
 //    the tolerance: on the Fig. 1 circle that critical point lies 4–80× nearer the sphere than the
 //    one the routes below reach, in a fraction of their time. Otherwise the routes below run and
-//    the message ends with "(route 0: …)".
+//    the message ends with "(route 0: …)". Not tried where the first variation of A_H at the D_H
+//    critical point (V mode: at the minimiser of D at V0) is at most mean_curvature_tolerance, as
+//    on conformal data, whose D_H point is a critical point of A_H to within the degree; the
+//    message then ends with "(route 0 not tried: …)".
 //  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (solvers/cmc/area_functional.h),
 //    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
 //    surface). The start is the D_H critical point at the requested H (the continuation above),
