@@ -68,6 +68,13 @@ Regularity regularity(const TensorNet& net, double A);
 /// The least-squares mean-curvature functional (cmc.h; cmc_mean_curvature.cpp). options are validated.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options);
+/// The same, in the H form from the net `start` (the control points, in data's layout) instead of
+/// the D_H critical point when start is given, to go on from where a run with fewer iterations
+/// stopped (the area functional's route 0); used_up: it stopped at max_least_squares_iterations.
+CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
+                                              const Eigen::MatrixX3d* start, bool& used_up);
+CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
+                                          const Eigen::MatrixX3d* start, bool& used_up);
 
 /// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);

@@ -367,19 +367,23 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
 }
 
 template <class Net>
-CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
+CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, const Eigen::MatrixX3d* warm = nullptr,
+                                         bool* used_up = nullptr) {
   CmcResult<Net> res;
   res.functional = CmcFunctionalKind::MeanCurvature;
   {
     ScopedTimer timer(res.summary.seconds);
     o.validate();
+    if (warm && (o.V || warm->rows() != data.points().rows()))
+      throw ParameterError("cmc: a warm start of the least squares is for the H form, one row per control point");
     // The start: the paper's D_H critical point at H (or the last point of its branch), by the
     // newton continuation whatever o.solver (which picks the least-squares minimiser); in the V
-    // form the minimiser of D at V = V0 (nlopt) and its multiplier H.
+    // form the minimiser of D at V = V0 (nlopt) and its multiplier H. A warm start (H form) is
+    // taken as it is.
     CmcOptions od = o;
     od.functional = CmcFunctionalKind::Dirichlet;
     od.solver = o.V ? CmcSolver::NLopt : CmcSolver::Newton;
-    const CmcResult<Net> start = solve_cmc(data, od);
+    const CmcResult<Net> start = warm ? CmcResult<Net>{} : solve_cmc(data, od);
     res.continuation_steps = start.continuation_steps;
     res.summary.iterations = start.summary.iterations;
     const std::vector<int> free = data.free_indices(o.fixed);
@@ -393,12 +397,13 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       vt.emplace(VolumeTarget{cf->volume_form(), *o.V, vscale > 0 ? vscale : 1.0});
     }
     const VolumeTarget* v = vt ? &*vt : nullptr;
-    LsEnd end{start.net.points(), o.V ? start.H : o.H, {}, {}, 0};
+    LsEnd end{warm ? *warm : start.net.points(), o.V ? start.H : o.H, {}, {}, 0};
     end.run = minimise_checked(data, o, end.P, free, end.H, v, o.mean_curvature_tolerance,
                                o.max_least_squares_iterations);
     end.iterations = end.run.ls.iterations;
     res.summary.iterations += end.run.ls.iterations;
-    end.start_note = o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
+    end.start_note = warm ? std::string("from the net given")
+                     : o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
                      : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
                                                : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
     if (vt && end.run.ls.stop != LsStop::ConstraintUnmet) end.H = best_h(*end.run.f, end.P, end.H);
@@ -440,6 +445,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o) {
       }
     }
     const LsRun& run = end.run;
+    if (used_up) *used_up = run.ls.stop == LsStop::MaxIterations;
     const double H = end.H;
     const Eigen::MatrixX3d& P = end.P;
     const Net net = make_net(data, P);
@@ -524,6 +530,14 @@ CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const C
 }
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options) {
   return solve_mean_curvature_impl(data, options);
+}
+CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
+                                              const Eigen::MatrixX3d* start, bool& used_up) {
+  return solve_mean_curvature_impl(data, options, start, &used_up);
+}
+CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
+                                          const Eigen::MatrixX3d* start, bool& used_up) {
+  return solve_mean_curvature_impl(data, options, start, &used_up);
 }
 
 }  // namespace bpde::cmc_detail

@@ -105,6 +105,24 @@ inline double helicoid_off(const TensorNet& net) {
   return e;
 }
 
+/// The catenoid piece (θ, ρ) = (1.2u, 1.1 + 0.8v) ↦ (ρ cos θ, ρ sin θ, acosh ρ) on the square: a
+/// minimal surface in a radial, not conformal, parametrisation.
+inline Eigen::Vector3d catenoid_square(double u, double v) {
+  const double th = 1.2 * u, rho = 1.1 + 0.8 * v;
+  return Eigen::Vector3d(rho * std::cos(th), rho * std::sin(th), std::acosh(rho));
+}
+
+/// max |√(x² + y²) − cosh z| over a 31 × 31 grid: the distance-like defect from the catenoid.
+inline double catenoid_off(const TensorNet& net) {
+  double e = 0;
+  for (int a = 0; a <= 30; ++a)
+    for (int b = 0; b <= 30; ++b) {
+      const Eigen::Vector3d x = net.evaluate(a / 30.0, b / 30.0);
+      e = std::max(e, std::abs(std::hypot(x(0), x(1)) - std::cosh(x(2))));
+    }
+  return e;
+}
+
 /// Options of a cmc solve in H mode with the given functional (the other options at their defaults).
 inline CmcOptions cmc_options(CmcFunctionalKind functional, double H) {
   CmcOptions o;

@@ -18,6 +18,7 @@
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/cmc_area_problem.h"
 
 namespace bpde {
 namespace {
@@ -428,25 +429,12 @@ TEST(CmcArea, MinimalSurfaceIsTheCatenoidPieceOnATriangle) {
 // 1.1 + 0.8v), not conformal. The exact minimal surface is not polynomial: at n = 4 the A critical
 // point is 2.7e-3 off the catenoid (8.9e-2 for the Dirichlet extremal; docs/cmc.md, "Degree tables").
 TEST(CmcArea, MinimalSurfaceIsTheCatenoidPieceOnASquare) {
-  auto catenoid = [](double u, double v) {
-    const double th = 1.2 * u, rho = 1.1 + 0.8 * v;
-    return Eigen::Vector3d(rho * std::cos(th), rho * std::sin(th), std::acosh(rho));
-  };
-  auto off = [](const TensorNet& net) {
-    double e = 0;
-    for (int a = 0; a <= 30; ++a)
-      for (int b = 0; b <= 30; ++b) {
-        const Eigen::Vector3d x = net.evaluate(a / 30.0, b / 30.0);
-        e = std::max(e, std::abs(std::hypot(x(0), x(1)) - std::cosh(x(2))));
-      }
-    return e;
-  };
-  const TensorNet data = tensor_boundary(4, catenoid);
+  const TensorNet data = tensor_boundary(4, testing::catenoid_square);
   const CmcResult<TensorNet> r = solve_cmc(data, area_options(0.0));
   const CmcResult<TensorNet> d = solve_cmc(data, CmcOptions{});
   EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
-  EXPECT_LE(off(r.net), 4e-3);  // measured 2.7e-3 (the degree)
-  EXPECT_GT(off(d.net), 5e-2);  // the Dirichlet extremal: 8.9e-2
+  EXPECT_LE(testing::catenoid_off(r.net), 4e-3);  // measured 2.7e-3 (the degree)
+  EXPECT_GT(testing::catenoid_off(d.net), 5e-2);  // the Dirichlet extremal: 8.9e-2
 }
 
 // H = 0 where the corrector on A stalls in the soft tangential modes above the tolerance (the
@@ -636,6 +624,39 @@ TEST(CmcArea, MeanCurvatureStartIsNotTriedOnConformalData) {
   EXPECT_EQ(tight.summary.message.find("route 0 not tried"), std::string::npos) << tight.summary.message;
   const CmcResult<TriangularNet> circle = solve_cmc(testing::circle_three_arcs(10), area_options(-0.5));
   EXPECT_EQ(circle.summary.message.find("route 0 not tried"), std::string::npos) << circle.summary.message;
+}
+
+// Route 0's least squares go on in runs of 300 iterations while √Φ falls fast enough to reach its
+// tolerance within max_least_squares_iterations (AreaSolve::chunked_least_squares). The tensor
+// catenoid at n = 12 falls slowly (2.3e-6, 1.5e-6, 1.1e-6 after 300, 600, 1000; measured) and
+// converges in 5 runs; Newton on A_H then converges from it (5 iterations; measured 18 s in all).
+// The routes from the D_H critical point stop at 1.9e-11 (numerical-limit, 34 s).
+TEST(CmcArea, MeanCurvatureStartGoesOnWhileTheLeastSquaresFall) {
+  const CmcResult<TensorNet> r = solve_cmc(tensor_boundary(12, testing::catenoid_square), area_options(0.0));
+  EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("runs of at most 300 iterations) corrected on A_H"), std::string::npos)
+      << r.summary.message;
+  EXPECT_LE(testing::catenoid_off(r.net), 4e-6);  // measured 2.3e-6 (the degree)
+}
+
+// ... and stop when the fall over the last run, continued, would not reach the tolerance: the
+// tensor catenoid at n = 10 ends its first run at 6.8e-6 (within 10× the tolerance), its second at
+// 5.7e-6 (×0.84: about 3000 more iterations), and route 0 gives way after 2 runs. A warm start is
+// for the H form and the net's shape only.
+TEST(CmcArea, MeanCurvatureStartStopsWhereTheLeastSquaresFallTooSlowly) {
+  const TensorNet data = tensor_boundary(10, testing::catenoid_square);
+  const CmcResult<TensorNet> r = solve_cmc(data, area_options(0.0));
+  EXPECT_NE(r.summary.message.find("(route 0: the least-squares mean-curvature surface (√Φ = "), std::string::npos)
+      << r.summary.message;
+  EXPECT_NE(r.summary.message.find(", in 2 runs of at most 300 iterations) did not converge)"), std::string::npos)
+      << r.summary.message;
+  CmcOptions o = testing::cmc_options(CmcFunctionalKind::MeanCurvature, 0.0);
+  bool used_up = false;
+  const Eigen::MatrixX3d wrong = Eigen::MatrixX3d::Zero(3, 3);
+  EXPECT_THROW(cmc_detail::solve_mean_curvature(data, o, &wrong, used_up), ParameterError);
+  o.H = 0.0;
+  o.V = 1.0;
+  EXPECT_THROW(cmc_detail::solve_mean_curvature(data, o, &data.points(), used_up), ParameterError);
 }
 
 }  // namespace
