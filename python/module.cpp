@@ -534,7 +534,8 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("geodesic_acceleration", &bpde::CmcOptions::geodesic_acceleration)
       .def_readwrite("area_mean_curvature_start", &bpde::CmcOptions::area_mean_curvature_start,
                      "area functional: start from the least-squares mean-curvature surface first (route 0; "
-                     "default True; docs/cmc.md, \"The mean-curvature start\").")
+                     "default True; not tried where the D_H solution is already within 1e-6 of a critical point "
+                     "of A_H, as on conformal data; docs/cmc.md, \"The mean-curvature start\").")
       .def_readwrite("max_corrector_iterations", &bpde::CmcOptions::max_corrector_iterations)
       .def_readwrite("max_continuation_steps", &bpde::CmcOptions::max_continuation_steps)
       .def_readwrite("min_step", &bpde::CmcOptions::min_step);

@@ -27,15 +27,14 @@
 //  - Route 0, both modes (options.area_mean_curvature_start, default true; docs/cmc.md, "The
 //    mean-curvature start"): the least-squares mean-curvature surface below (at H in runs of at
 //    most 300 Levenberg–Marquardt iterations, another while √Φ falls fast enough to reach its
-//    tolerance within max_least_squares_iterations; in the V mode at V0, with its H), when it
-//    converged, then at most 8 Newton iterations on A_H (the bordered corrector in the V mode).
-//    Kept when they meet
-//    the tolerance: on the Fig. 1 circle that critical point lies 4–80× nearer the sphere than the
-//    one the routes below reach, in a fraction of their time. Otherwise the routes below run and
-//    the message ends with "(route 0: …)". Not tried where the first variation of A_H at the D_H
-//    critical point (V mode: at the minimiser of D at V0) is at most mean_curvature_tolerance, as
-//    on conformal data, whose D_H point is a critical point of A_H to within the degree; the
-//    message then ends with "(route 0 not tried: …)".
+//    tolerance within min(max_least_squares_iterations, 2000); in the V mode at V0, with its H),
+//    when it converged, then at most 8 Newton iterations on A_H (the bordered corrector in the V
+//    mode). Kept when they meet the tolerance: on the Fig. 1 circle that critical point lies 4–80×
+//    nearer the sphere than the one the routes below reach, in a fraction of their time. Otherwise
+//    the routes below run and the message ends with "(route 0: …)". Not tried where the relative
+//    first variation of A_H at the D_H critical point (V mode: at the minimiser of D at V0) is at
+//    most 1e-6, as on conformal data, whose D_H point is a critical point of A_H to within the
+//    degree; the message then ends with "(route 0 not tried: …)".
 //  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (solvers/cmc/area_functional.h),
 //    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
 //    surface). The start is the D_H critical point at the requested H (the continuation above),
@@ -187,8 +186,8 @@ struct CmcOptions {
   /// The area functional's route 0 uses it too: it starts from the least squares only when they meet it
   double mean_curvature_tolerance = 1e-6;
   /// mean-curvature functional: Levenberg–Marquardt iterations at most; default 2000, >= 1 (the area
-  /// functional's route 0: runs of at most 300 of them in the H form, within this in all; all in
-  /// the V form)
+  /// functional's route 0: runs of at most 300 of them in the H form, within min(this, 2000) in
+  /// all, in whole runs; all in the V form)
   int max_least_squares_iterations = 2000;
   /// mean-curvature functional, solver newton: geodesic acceleration of the Levenberg–Marquardt
   /// steps (above); default true. false is plain LM, kept to measure the two side by side

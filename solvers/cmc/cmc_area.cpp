@@ -391,14 +391,30 @@ double normal_gap(const Net& a, const Net& b) {
 }
 
 // Route 0's limits (AreaSolve::from_mean_curvature): the iterations of one run of the H form's
-// least squares (the V form's has max_least_squares_iterations: past the hemisphere its
-// continuation in V takes 800–1100); a second run only when the first ended within
-// kMeanCurvatureStartReach × its tolerance (no rate measured yet: the tensor catenoid at n = 10 and
-// 12 end the first at 6.8e-6 and 2.3e-6; AreaSolve::chunked_least_squares); the Newton iterations
-// on A_H from it.
+// least squares, and of all its runs (or max_least_squares_iterations when lower; the V form's has
+// max_least_squares_iterations: past the hemisphere its continuation in V takes 800–1100); a
+// second run only when the first ended within kMeanCurvatureStartReach × its tolerance (no rate
+// measured yet: the tensor catenoid at n = 10 and 12 end the first at 6.8e-6 and 2.3e-6;
+// least_squares_goes_on); the Newton iterations on A_H from it.
 constexpr int kMeanCurvatureStartIterations = 300;
+constexpr int kMeanCurvatureStartBudget = 2000;
 constexpr double kMeanCurvatureStartReach = 10.0;
 constexpr int kMeanCurvatureStartCorrector = 8;
+// Route 0 is not tried where the relative first variation of A_H at the D_H critical point is at
+// most this (AreaSolve::dirichlet_first_variation): on the conformal sphere triangle 8.2e-7 at
+// n = 10 and below from there on, on the Fig. 1 circle 7e-2.
+constexpr double kConformalFirstVariation = 1e-6;
+
+}  // namespace
+
+bool least_squares_goes_on(double r, double last, int runs_left, double tolerance) {
+  if (!(std::isfinite(r) && r > 0.0 && runs_left > 0)) return false;
+  if (!std::isfinite(last)) return r <= kMeanCurvatureStartReach * tolerance;
+  const double rate = r / last;
+  return rate < 1.0 && r * std::pow(rate, runs_left) <= tolerance;
+}
+
+namespace {
 
 template <class Net>
 struct AreaSolve {
@@ -833,12 +849,13 @@ struct AreaSolve {
 
   // The test before route 0 (docs/cmc.md, "The mean-curvature start"): the relative first
   // variation of A_H at the paper's D_H critical point at H (in the V form at the minimiser of D
-  // at V0, with its multiplier H), by a rule chosen for 0.1 × mean_curvature_tolerance; +inf when
-  // that point does not exist. On conformal data that point is already a critical point of A_H to
-  // within the degree (the conformal sphere triangle: 8.2e-7, 3.6e-8, 1.6e-9, 6.5e-11 at n = 10,
-  // 12, 14, 16), and the routes below converge from it in one iteration, where route 0's least
-  // squares cost up to 0.3 s; on the Fig. 1 circle it is 7e-2. Leaves the net and the rule as they
-  // were.
+  // at V0, with its multiplier H, which can only overstate it), by a rule chosen for
+  // 0.1 × kConformalFirstVariation; +inf when that point does not exist. On conformal data that
+  // point is already a critical point of A_H to within the degree (the conformal sphere triangle:
+  // 8.2e-7, 3.6e-8, 1.6e-9, 6.5e-11 at n = 10, 12, 14, 16); from n = 12 on the routes below
+  // converge from it in one iteration, where route 0's least squares cost up to 0.3 s (at n = 10
+  // both end at the same numerical limit). On the Fig. 1 circle it is 7e-2. Leaves the net and the
+  // rule as they were.
   double dirichlet_first_variation(const double* V0) {
     CmcOptions od = o;
     od.functional = CmcFunctionalKind::Dirichlet;
@@ -850,7 +867,7 @@ struct AreaSolve {
     const std::shared_ptr<const AreaForm> a0 = p.a;
     const double change0 = rule_change;
     p.base.P = d.net.points();
-    choose_rule_for(o.mean_curvature_tolerance);
+    choose_rule_for(kConformalFirstVariation);
     const double r = p.residual_at(V0 ? d.H : o.H, 0.0);
     p.base.P = P0;
     p.a = a0;
@@ -860,7 +877,8 @@ struct AreaSolve {
 
   // Route 0 of both forms (docs/cmc.md, "The mean-curvature start"): the least-squares
   // mean-curvature surface (the functional "mean-curvature" by the same solver; at H by
-  // chunked_least_squares, or in the V form at V0 with its H), when it converged (√Φ <= mean_curvature_tolerance on a regular net), then at most
+  // chunked_least_squares, or in the V form at V0 with its H), when it converged (√Φ <=
+  // mean_curvature_tolerance on a regular net), then at most
   // kMeanCurvatureStartCorrector Newton iterations on A_H itself (the bordered corrector at V0 in
   // the V form), no regulariser, no final phases. Kept when they meet the tolerance; otherwise the
   // net, rule, damping, ε and H go back to what they were, `note` says how it ended, and the caller
@@ -871,27 +889,24 @@ struct AreaSolve {
   // the geometry). On the catenoid pieces the least squares converge slowly (1500 iterations at
   // tensor n = 12) or not at all, hence the runs.
   // Route 0's least squares in the H form: runs of kMeanCurvatureStartIterations iterations, each
-  // from where the one before stopped, while the last stopped at its cap (still falling) and the
-  // fall of √Φ over it, continued geometrically, reaches mean_curvature_tolerance within
-  // max_least_squares_iterations in all; after the first run, only when √Φ is within
-  // kMeanCurvatureStartReach × the tolerance. Measured on the tensor catenoid: n = 12 falls by
-  // 0.62 over its second run and converges after 1500 iterations; n = 10 by 0.84, which needs
-  // about 3000 more, so it stops after 600 (docs/cmc.md, "The mean-curvature start").
+  // from where the one before stopped (a new rule and LM damping each time), while the last
+  // stopped at its cap (still falling) and least_squares_goes_on, within
+  // kMeanCurvatureStartBudget iterations in all (or max_least_squares_iterations when lower; in
+  // whole runs). Measured on the tensor catenoid: n = 12 falls by 0.62 over its second run and
+  // converges in 5 runs (1500 iterations); n = 10 by 0.84, which needs about 3000 more, so it stops
+  // after 2 (docs/cmc.md, "The mean-curvature start").
   CmcResult<Net> chunked_least_squares(CmcOptions om, int& runs) {
-    const int budget = om.max_least_squares_iterations, chunk = std::min(budget, kMeanCurvatureStartIterations);
+    const int budget = std::min(om.max_least_squares_iterations, kMeanCurvatureStartBudget);
+    const int chunk = std::min(budget, kMeanCurvatureStartIterations);
     om.max_least_squares_iterations = chunk;
     bool used_up = false;
     CmcResult<Net> m = solve_mean_curvature(data, om, nullptr, used_up);
     summary.iterations += m.summary.iterations;
     runs = 1;
-    const double tol = o.mean_curvature_tolerance;
     double last = std::numeric_limits<double>::infinity();
     for (int used = chunk; !m.summary.converged && used_up && used + chunk <= budget; used += chunk) {
-      const double r = m.summary.residual, rate = r / last;
-      const int left = (budget - used) / chunk;
-      const bool go = std::isfinite(last) ? rate < 1.0 && r * std::pow(rate, left) <= tol
-                                          : r <= kMeanCurvatureStartReach * tol;
-      if (!(std::isfinite(r) && go)) break;
+      const double r = m.summary.residual;
+      if (!least_squares_goes_on(r, last, (budget - used) / chunk, o.mean_curvature_tolerance)) break;
       last = r;
       const Eigen::MatrixX3d P = m.net.points();
       m = solve_mean_curvature(data, om, &P, used_up);
@@ -1131,10 +1146,10 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     std::string start_note;
     double h0 = o.H;
     // Not on data where the D_H critical point already nearly is a critical point of A_H
-    // (conformal data): its first variation at most mean_curvature_tolerance.
+    // (conformal data): its first variation at most kConformalFirstVariation.
     const double r_dirichlet =
         o.area_mean_curvature_start ? s.dirichlet_first_variation(o.V ? &*o.V : nullptr) : 0.0;
-    const bool tried_mc = o.area_mean_curvature_start && r_dirichlet > o.mean_curvature_tolerance;
+    const bool tried_mc = o.area_mean_curvature_start && r_dirichlet > kConformalFirstVariation;
     const bool from_mc =
         tried_mc && s.from_mean_curvature(o.V ? &*o.V : nullptr, h0, start_note, res.continuation_steps);
     if (from_mc) {
@@ -1223,7 +1238,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     if (o.area_mean_curvature_start && !tried_mc)
       out.message += " (route 0 not tried: the first variation of A_H at the " +
                      std::string(o.V ? "minimiser of D at V0" : "D_H critical point") + " is " + num(r_dirichlet, 3) +
-                     ", within mean_curvature_tolerance: conformal data)";
+                     ", at most " + num(kConformalFirstVariation, 1) + ", as on conformal data)";
     if (!o.V) out.H = out.ok ? o.H : out.H;
     // The final rule check: refine while the rule's measured error (against a finer rule, also at
     // the cap) is above its tolerance at the final net, and correct again with the finer rule. A
@@ -1239,7 +1254,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
                    "the area quadrature does not reach its error tolerance " + num(0.1 * o.tolerance) +
                        ": measured error " + num(s.rule_change) + " with " + std::to_string(q) +
                        " points per direction" + (gr > 1 ? " (graded)" : "") +
-                       " (a folded or nearly singular parametrisation at a corner)"};
+                       " (a folded or nearly singular parametrisation at a corner); reached after: " + out.message};
           break;
         }
         const CorrectorStats st = o.V ? s.bordered_correct(*o.V, out.H) : s.correct(out.H);
@@ -1248,7 +1263,9 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
                  "the correction with the refined quadrature rule (q = " +
                      std::to_string(s.p.a->points_per_direction()) + ") stopped at a relative first variation of " +
                      num(st.residual) +
-                     (s.at_stationary_point(st.residual) ? ", where no step over the soft (tangential) modes lowers it" : "")};
+                     (s.at_stationary_point(st.residual) ? ", where no step over the soft (tangential) modes lowers it"
+                                                         : "") +
+                     "; reached after: " + out.message};
           break;
         }
       }

@@ -68,13 +68,21 @@ Regularity regularity(const TensorNet& net, double A);
 /// The least-squares mean-curvature functional (cmc.h; cmc_mean_curvature.cpp). options are validated.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options);
-/// The same, in the H form from the net `start` (the control points, in data's layout) instead of
-/// the D_H critical point when start is given, to go on from where a run with fewer iterations
-/// stopped (the area functional's route 0); used_up: it stopped at max_least_squares_iterations.
+/// The same, in the H form from the net `start` (#points by 3, in data's layout; its fixed rows
+/// are taken as they are, so pass a net of a solve of `data`) instead of the D_H critical point
+/// when start is given, to go on from where a run with fewer iterations stopped (the area
+/// functional's route 0; the rule and the LM damping start afresh); used_up: it stopped at
+/// max_least_squares_iterations. Throws ParameterError for a start in the V form or of another size.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
                                               const Eigen::MatrixX3d* start, bool& used_up);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
                                           const Eigen::MatrixX3d* start, bool& used_up);
+/// Route 0's rule for another run of the least squares (cmc_area.cpp, chunked_least_squares): the
+/// run just ended at √Φ = r (the one before at `last`, +inf after the first run) with runs_left
+/// runs of the budget left. After the first run: r within 10 × tolerance. Then: √Φ fell (r < last)
+/// and its fall continued geometrically, r (r / last)^runs_left, reaches the tolerance. False for
+/// a non-finite or non-positive r and when no run is left.
+bool least_squares_goes_on(double r, double last, int runs_left, double tolerance);
 
 /// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);
