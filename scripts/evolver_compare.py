@@ -6,7 +6,7 @@
                                        [--quadratic-levels 1..7] [--out DIR]
                                        [--tolerances 1e-7,1e-9,1e-11]
                                        [--library build/example_004_cmc_area_tables]
-                                       [--mc-tolerances 1e-5,1e-7]
+                                       [--mc-tolerances 1e-5,1e-7] [--area-dirichlet-start]
 
 Both programs solve the same problem, a surface of constant mean curvature H with a fixed
 boundary, and the error is the distance to the exact sphere:
