@@ -897,18 +897,19 @@ struct AreaSolve {
   // the geometry). On the catenoid pieces the least squares converge slowly (1500 iterations at
   // tensor n = 12) or not at all, hence the runs.
   // Route 0's least squares in the H form: runs of kMeanCurvatureStartIterations iterations, each
-  // from where the one before stopped (a new rule and LM damping each time), while the last
+  // from where the one before stopped, with its rule (fresh LM damping), while the last
   // stopped at its cap (still falling) and least_squares_goes_on, within
   // kMeanCurvatureStartBudget iterations in all (or max_least_squares_iterations when lower; in
   // whole runs). Measured on the tensor catenoid: n = 12 falls by 0.62 over its second run and
-  // converges in 5 runs (1500 iterations); n = 10 by 0.84, which needs about 3000 more, so it stops
+  // converges in 4 runs (1200 iterations); n = 10 by 0.84, which needs about 3000 more, so it stops
   // after 2 (docs/cmc.md, "The mean-curvature start").
   CmcResult<Net> chunked_least_squares(CmcOptions om, int& runs) {
     const int budget = std::min(om.max_least_squares_iterations, kMeanCurvatureStartBudget);
     const int chunk = std::min(budget, kMeanCurvatureStartIterations);
     om.max_least_squares_iterations = chunk;
     bool used_up = false;
-    CmcResult<Net> m = solve_mean_curvature(data, om, nullptr, used_up);
+    int extra = 0;  // the rule refinements of the run before: the next run goes on with its rule
+    CmcResult<Net> m = solve_mean_curvature(data, om, nullptr, used_up, extra);
     summary.iterations += m.summary.iterations;
     runs = 1;
     double last = std::numeric_limits<double>::infinity();
@@ -917,7 +918,7 @@ struct AreaSolve {
       if (!least_squares_goes_on(r, last, (budget - used) / chunk, o.mean_curvature_tolerance)) break;
       last = r;
       const Eigen::MatrixX3d P = m.net.points();
-      m = solve_mean_curvature(data, om, &P, used_up);
+      m = solve_mean_curvature(data, om, &P, used_up, extra);
       summary.iterations += m.summary.iterations;
       ++runs;
     }

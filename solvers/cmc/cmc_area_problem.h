@@ -71,12 +71,14 @@ CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOption
 /// The same, in the H form from the net `start` (#points by 3, in data's layout; its fixed rows
 /// are taken as they are, so pass a net of a solve of `data`) instead of the D_H critical point
 /// when start is given, to go on from where a run with fewer iterations stopped (the area
-/// functional's route 0; the rule and the LM damping start afresh); used_up: it stopped at
-/// max_least_squares_iterations. Throws ParameterError for a start in the V form or of another size.
+/// functional's route 0; the LM damping starts afresh). used_up: it stopped at
+/// max_least_squares_iterations. extra: in, the rule refinements to start with when start is
+/// given (the run before's; 0 from the D_H point); out, those it ended with. Throws ParameterError
+/// for a start in the V form or of another size.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
-                                              const Eigen::MatrixX3d* start, bool& used_up);
+                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
-                                          const Eigen::MatrixX3d* start, bool& used_up);
+                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra);
 /// Route 0's rule for another run of the least squares (cmc_area.cpp, chunked_least_squares): the
 /// run just ended at √Φ = r (the one before at `last`, +inf after the first run) with runs_left
 /// runs of the budget left. After the first run: r within 10 × tolerance. Then: √Φ fell (r < last)

@@ -186,8 +186,9 @@ struct LsRun {
 
 template <class Net>
 LsRun minimise_checked(const Net& data, const CmcOptions& o, Eigen::MatrixX3d& P, const std::vector<int>& free,
-                       double& H, const VolumeTarget* v, double tolerance, int max_iterations) {
+                       double& H, const VolumeTarget* v, double tolerance, int max_iterations, int start_extra = 0) {
   LsRun run;
+  run.extra = start_extra;
   const double target = 0.7 * tolerance;
   int iterations = 0;
   while (true) {
@@ -368,7 +369,7 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
 
 template <class Net>
 CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, const Eigen::MatrixX3d* warm = nullptr,
-                                         bool* used_up = nullptr) {
+                                         bool* used_up = nullptr, int* extra = nullptr) {
   CmcResult<Net> res;
   res.functional = CmcFunctionalKind::MeanCurvature;
   {
@@ -399,7 +400,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, c
     const VolumeTarget* v = vt ? &*vt : nullptr;
     LsEnd end{warm ? *warm : start.net.points(), o.V ? start.H : o.H, {}, {}, 0};
     end.run = minimise_checked(data, o, end.P, free, end.H, v, o.mean_curvature_tolerance,
-                               o.max_least_squares_iterations);
+                               o.max_least_squares_iterations, warm && extra ? *extra : 0);
     end.iterations = end.run.ls.iterations;
     res.summary.iterations += end.run.ls.iterations;
     end.start_note = warm ? std::string("from the net given")
@@ -446,6 +447,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, c
     }
     const LsRun& run = end.run;
     if (used_up) *used_up = run.ls.stop == LsStop::MaxIterations;
+    if (extra) *extra = run.extra;
     const double H = end.H;
     const Eigen::MatrixX3d& P = end.P;
     const Net net = make_net(data, P);
@@ -532,12 +534,12 @@ CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOption
   return solve_mean_curvature_impl(data, options);
 }
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
-                                              const Eigen::MatrixX3d* start, bool& used_up) {
-  return solve_mean_curvature_impl(data, options, start, &used_up);
+                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra) {
+  return solve_mean_curvature_impl(data, options, start, &used_up, &extra);
 }
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
-                                          const Eigen::MatrixX3d* start, bool& used_up) {
-  return solve_mean_curvature_impl(data, options, start, &used_up);
+                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra) {
+  return solve_mean_curvature_impl(data, options, start, &used_up, &extra);
 }
 
 }  // namespace bpde::cmc_detail
