@@ -883,19 +883,6 @@ struct AreaSolve {
     return std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
   }
 
-  // Route 0 of both forms (docs/cmc.md, "The mean-curvature start"): the least-squares
-  // mean-curvature surface (the functional "mean-curvature" by the same solver; at H by
-  // chunked_least_squares, or in the V form at V0 with its H), when it converged (√Φ <=
-  // mean_curvature_tolerance on a regular net), then at most
-  // kMeanCurvatureStartCorrector Newton iterations on A_H itself (the bordered corrector at V0 in
-  // the V form), no regulariser, no final phases. Kept when they meet the tolerance; otherwise the
-  // net, rule, damping, ε and H go back to what they were, `note` says how it ended, and the caller
-  // goes on with its routes from the D_H critical point. Measured on the circle (H = −0.5, −0.9,
-  // n = 8 … 16 where the least squares converge): 2–5 iterations, and the critical point reached
-  // lies 4–80× nearer the sphere than the one the routes from the D_H critical point reach (both
-  // with first variations below 1e-11: A_H is nearly flat along its tangential valley, and Φ pins
-  // the geometry). On the catenoid pieces the least squares converge slowly (1500 iterations at
-  // tensor n = 12) or not at all, hence the runs.
   // Route 0's least squares in the H form: runs of kMeanCurvatureStartIterations iterations, each
   // from where the one before stopped, with its rule (fresh LM damping), while the last
   // stopped at its cap (still falling) and least_squares_goes_on, within
@@ -925,6 +912,19 @@ struct AreaSolve {
     return m;
   }
 
+  // Route 0 of both forms (docs/cmc.md, "The mean-curvature start"): the least-squares
+  // mean-curvature surface (the functional "mean-curvature" by the same solver; at H by
+  // chunked_least_squares, or in the V form at V0 with its H), when it converged (√Φ <=
+  // mean_curvature_tolerance on a regular net), then at most
+  // kMeanCurvatureStartCorrector Newton iterations on A_H itself (the bordered corrector at V0 in
+  // the V form), no regulariser, no final phases. Kept when they meet the tolerance; otherwise the
+  // net, rule, damping, ε and H go back to what they were, `note` says how it ended, and the caller
+  // goes on with its routes from the D_H critical point. Measured on the circle (H = −0.5, −0.9,
+  // n = 8 … 16 where the least squares converge): 2–5 iterations, and the critical point reached
+  // lies 4–80× nearer the sphere than the one the routes from the D_H critical point reach (both
+  // with first variations below 1e-11: A_H is nearly flat along its tangential valley, and Φ pins
+  // the geometry). On the catenoid pieces the least squares converge slowly (1500 iterations at
+  // tensor n = 12) or not at all, hence the runs.
   bool from_mean_curvature(const double* V0, double& H, std::string& note, int& steps) {
     CmcOptions om = o;
     om.functional = CmcFunctionalKind::MeanCurvature;
