@@ -28,8 +28,9 @@
 //    mean-curvature start"): the least-squares mean-curvature surface below (at H in runs of at
 //    most 300 Levenberg–Marquardt iterations, another while √Φ falls fast enough to reach its
 //    tolerance within min(max_least_squares_iterations, 2000); in the V mode at V0, with its H),
-//    when it converged, then at most 8 Newton iterations on A_H (the bordered corrector in the V
-//    mode). Kept when they meet the tolerance: on the Fig. 1 circle that critical point lies 4–80×
+//    converged or not, then at most 8 Newton iterations on A_H (the bordered corrector in the V
+//    mode) and, where they stall, the final phases of the routes below (in the V mode at its H,
+//    then back onto V0). Kept when they meet the tolerance: on the Fig. 1 circle that critical point lies 4–80×
 //    nearer the sphere than the one the routes below reach, in a fraction of their time. Otherwise
 //    the routes below run and the message ends with "(route 0: …)". Not tried where the relative
 //    first variation of A_H at the D_H critical point (V mode: at the minimiser of D at V0) is at

@@ -914,17 +914,22 @@ struct AreaSolve {
 
   // Route 0 of both forms (docs/cmc.md, "The mean-curvature start"): the least-squares
   // mean-curvature surface (the functional "mean-curvature" by the same solver; at H by
-  // chunked_least_squares, or in the V form at V0 with its H), when it converged (√Φ <=
-  // mean_curvature_tolerance on a regular net), then at most
-  // kMeanCurvatureStartCorrector Newton iterations on A_H itself (the bordered corrector at V0 in
-  // the V form), no regulariser, no final phases. Kept when they meet the tolerance; otherwise the
-  // net, rule, damping, ε and H go back to what they were, `note` says how it ended, and the caller
-  // goes on with its routes from the D_H critical point. Measured on the circle (H = −0.5, −0.9,
-  // n = 8 … 16 where the least squares converge): 2–5 iterations, and the critical point reached
-  // lies 4–80× nearer the sphere than the one the routes from the D_H critical point reach (both
-  // with first variations below 1e-11: A_H is nearly flat along its tangential valley, and Φ pins
-  // the geometry). On the catenoid pieces the least squares converge slowly (1500 iterations at
-  // tensor n = 12) or not at all, hence the runs.
+  // chunked_least_squares, or in the V form at V0 with its H), converged or not (where √Φ stops
+  // above its tolerance the surface is still far nearer a critical point of A_H than the D_H
+  // critical point is), then at most kMeanCurvatureStartCorrector Newton iterations on A_H itself
+  // (the bordered corrector at V0 in the V form), no regulariser, and where they stall the final
+  // phases (finish; finish_volume in the V form). Kept when they meet the tolerance at a regular
+  // net whose rule meets its own; otherwise the net, rule, damping, ε, H and the soft-mode verdict
+  // go back to what they were, `note` says how it ended, and the caller goes on with its routes
+  // from the D_H critical point. Measured on the circle (H = −0.5, −0.9, n = 8 … 16 where the least
+  // squares converge): 2–5 iterations, and the critical point reached lies 4–80× nearer the sphere
+  // than the one the routes from the D_H critical point reach (both with first variations below
+  // 1e-11: A_H is nearly flat along its tangential valley, and Φ pins the geometry). From least
+  // squares above their tolerance (2026-12-05): the circle at n = 6 and at H = −0.9, n = 8, the
+  // helicoid at n = 4 and the tensor catenoid at n = 6 and 8 converge this way, the last three
+  // where the routes from the D_H point stop at a numerical limit or take twice as long. On the
+  // catenoid pieces the least squares converge slowly (1500 iterations at tensor n = 12) or not
+  // at all, hence the runs.
   bool from_mean_curvature(const double* V0, double& H, std::string& note, int& steps) {
     CmcOptions om = o;
     om.functional = CmcFunctionalKind::MeanCurvature;
@@ -932,20 +937,18 @@ struct AreaSolve {
     const CmcResult<Net> m = V0 ? solve_cmc(data, om) : chunked_least_squares(om, runs);
     if (V0) summary.iterations += m.summary.iterations;
     const std::string start = "the least-squares mean-curvature surface (√Φ = " + num(m.summary.residual, 3) +
+                              (m.summary.converged ? std::string() : ", above its tolerance") +
                               (runs > 1 ? ", in " + std::to_string(runs) + " runs of at most " +
                                               std::to_string(kMeanCurvatureStartIterations) + " iterations"
                                         : std::string()) +
                               ")";
-    if (!m.summary.converged) {
-      // Not converged (the degree too low for its tolerance, or its iterations used up: the catenoid
-      // pieces), it is no reliable start: 8 Newton iterations from it cost 10 s on the tensor
-      // catenoid at n = 8, without converging (measured).
-      note = start + " did not converge";
+    if (!m.net.points().allFinite() || !std::isfinite(m.H)) {
+      note = start + " is not finite";
       return false;
     }
     const Eigen::MatrixX3d P0 = p.base.P;
     const std::shared_ptr<const AreaForm> a0 = p.a;
-    const double theta0 = theta, change0 = rule_change, eps0 = p.eps, H0 = H;
+    const double theta0 = theta, change0 = rule_change, eps0 = p.eps, H0 = H, stationary0 = stationary_at;
     p.base.P = m.net.points();
     p.eps = 0.0;
     if (V0) H = m.H;
@@ -964,12 +967,27 @@ struct AreaSolve {
       }
       summary.iterations += st.iterations;
     }
+    std::string finished;
+    if (!st.ok && std::isfinite(st.residual)) {
+      if (V0) {
+        finished = finish_volume(*V0, H);
+        st.residual = vresidual(*V0, H);
+        st.ok = st.residual <= o.tolerance;
+      } else {
+        const CorrectorStats t = finish(H, o.max_corrector_iterations);
+        summary.iterations += t.iterations;
+        st.ok = t.ok;
+        st.residual = t.residual;
+        const std::string phases = final_phases(t, true);
+        if (!phases.empty()) finished = " and " + phases;
+      }
+    }
     // Kept only where the routes below would not do better by the common end's tests: the rule
     // meets its tolerance at the net and the parametrisation is regular.
     const Net net = make_net(data, p.P());
     const bool regular = st.ok && regularity(net, area(net)).ok;
     if (st.ok && rule_ok && regular) {
-      note = start + " corrected on A_H in " + std::to_string(st.iterations) + " iteration(s)";
+      note = start + " corrected on A_H in " + std::to_string(st.iterations) + " iteration(s)" + finished;
       if (V0) steps = m.continuation_steps;
       return true;
     }
@@ -982,6 +1000,7 @@ struct AreaSolve {
     rule_change = change0;
     p.eps = eps0;
     H = H0;
+    stationary_at = stationary0;
     return false;
   }
 
