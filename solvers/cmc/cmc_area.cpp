@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -890,10 +891,24 @@ struct AreaSolve {
   // whole runs). Measured on the tensor catenoid: n = 12 falls by 0.62 over its second run and
   // converges in 4 runs (1200 iterations); n = 10 by 0.84, which needs about 3000 more, so it stops
   // after 2 (docs/cmc.md, "The mean-curvature start").
+  // Progress: the runs make one stage "cmc least squares". Each run reports the log-scale way from
+  // its own start's √Φ to the target (ls_fraction); with a the fraction where the run before ended,
+  // f = a + (1 − a) f_run is that way from the first run's start (exact when each run starts where
+  // the one before ended), kept from falling (a rule refinement restarts a run's own fraction), and
+  // the stage is finished once, after the last run.
   CmcResult<Net> chunked_least_squares(CmcOptions om, int& runs) {
     const int budget = std::min(om.max_least_squares_iterations, kMeanCurvatureStartBudget);
     const int chunk = std::min(budget, kMeanCurvatureStartIterations);
     om.max_least_squares_iterations = chunk;
+    const std::string_view ls_stage = "cmc least squares";
+    double base = 0.0, reached = 0.0;
+    if (o.progress)
+      om.progress = [&](std::string_view stage, double done, double total) {
+        if (stage != ls_stage) return o.progress(stage, done, total);
+        if (!(total > 0) || done >= total) return;  // a run's (or a refinement's) end
+        reached = std::max(reached, base + (1.0 - base) * (done / total));
+        o.progress(stage, reached, 1.0);
+      };
     bool used_up = false;
     int extra = 0;  // the rule refinements of the run before: the next run goes on with its rule
     CmcResult<Net> m = solve_mean_curvature(data, om, nullptr, used_up, extra);
@@ -904,11 +919,13 @@ struct AreaSolve {
       const double r = m.summary.residual;
       if (!least_squares_goes_on(r, last, (budget - used) / chunk, o.mean_curvature_tolerance)) break;
       last = r;
+      base = reached;
       const Eigen::MatrixX3d P = m.net.points();
       m = solve_mean_curvature(data, om, &P, used_up, extra);
       summary.iterations += m.summary.iterations;
       ++runs;
     }
+    report(o.progress, ls_stage, 1.0, 1.0);
     return m;
   }
 

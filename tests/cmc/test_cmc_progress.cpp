@@ -3,6 +3,7 @@
 // mean-curvature functional, once per least-squares iteration.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -88,6 +89,32 @@ TEST(CmcProgress, AreaReportsTheRegulariserStages) {
     EXPECT_EQ(area.back(), 1.0);
     for (size_t i = 1; i < area.size(); ++i) EXPECT_GE(area[i], area[i - 1]);
   }
+}
+
+// Route 0's least squares in runs (the triangular catenoid at n = 12, H = 0: 2 runs, measured) are
+// one stage "cmc least squares": its fraction starts at 0, never falls, lies in [0, 1] and reaches
+// 1 once, at the end of the last run (each run used to report its own way from 0 to 1).
+TEST(CmcProgress, AreaRouteZeroReportsItsRunsAsOneStage) {
+  auto catenoid = [](double u, double v) {
+    const double th = 1.2 * u + 0.4 * v, rho = 1.1 + 0.8 * v;
+    return Eigen::Vector3d(rho * std::cos(th), rho * std::sin(th), std::acosh(rho));
+  };
+  CmcOptions o = testing::cmc_options(CmcFunctionalKind::Area, 0.0);
+  std::vector<double> ls;
+  o.progress = [&](std::string_view stage, double d, double total) {
+    if (stage != "cmc least squares") return;
+    EXPECT_DOUBLE_EQ(total, 1.0);
+    EXPECT_TRUE(d >= 0 && d <= 1) << d;
+    ls.push_back(d);
+  };
+  const auto r = solve_cmc(testing::triangular_boundary(12, catenoid), o);
+  ASSERT_TRUE(r.summary.converged) << r.summary.message;
+  ASSERT_NE(r.summary.message.find("in 2 runs of at most 300 iterations"), std::string::npos) << r.summary.message;
+  ASSERT_GE(ls.size(), 3u);
+  EXPECT_EQ(ls.front(), 0.0);
+  EXPECT_EQ(ls.back(), 1.0);
+  EXPECT_EQ(std::count(ls.begin(), ls.end(), 1.0), 1);
+  for (size_t i = 1; i < ls.size(); ++i) EXPECT_GE(ls[i], ls[i - 1]);
 }
 
 }  // namespace
