@@ -73,12 +73,17 @@ CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOption
 /// when start is given, to go on from where a run with fewer iterations stopped (the area
 /// functional's route 0; the LM damping starts afresh). used_up: it stopped at
 /// max_least_squares_iterations. extra: in, the rule refinements to start with when start is
-/// given (the run before's; 0 from the D_H point); out, those it ended with. Throws ParameterError
-/// for a start in the V form or of another size.
+/// given (the run before's; 0 from the D_H point); out, those it ended with. dirichlet: when start
+/// is not given, the D start already solved (solve_cmc of data with options' H and V, functional
+/// dirichlet, solver newton in the H form and nlopt in the V form), taken instead of solving it
+/// again (the area functional solves it before route 0). Throws ParameterError for a start in the
+/// V form or of another size.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
-                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra);
+                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra,
+                                              const CmcResult<TriangularNet>* dirichlet = nullptr);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
-                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra);
+                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra,
+                                          const CmcResult<TensorNet>* dirichlet = nullptr);
 /// Route 0's rule for another run of the least squares (cmc_area.cpp, chunked_least_squares): the
 /// run just ended at √Φ = r (the one before at `last`, +inf after the first run) with runs_left
 /// runs of the budget left. After the first run: r within 10 × tolerance. Then: √Φ fell (r < last)

@@ -369,7 +369,8 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
 
 template <class Net>
 CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, const Eigen::MatrixX3d* warm = nullptr,
-                                         bool* used_up = nullptr, int* extra = nullptr) {
+                                         bool* used_up = nullptr, int* extra = nullptr,
+                                         const CmcResult<Net>* dirichlet = nullptr) {
   CmcResult<Net> res;
   res.functional = CmcFunctionalKind::MeanCurvature;
   {
@@ -380,11 +381,11 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, c
     // The start: the paper's D_H critical point at H (or the last point of its branch), by the
     // newton continuation whatever o.solver (which picks the least-squares minimiser); in the V
     // form the minimiser of D at V = V0 (nlopt) and its multiplier H. A warm start (H form) is
-    // taken as it is.
+    // taken as it is; a D start already solved (`dirichlet`) too.
     CmcOptions od = o;
     od.functional = CmcFunctionalKind::Dirichlet;
     od.solver = o.V ? CmcSolver::NLopt : CmcSolver::Newton;
-    const CmcResult<Net> start = warm ? CmcResult<Net>{} : solve_cmc(data, od);
+    const CmcResult<Net> start = warm ? CmcResult<Net>{} : dirichlet ? *dirichlet : solve_cmc(data, od);
     res.continuation_steps = start.continuation_steps;
     res.summary.iterations = start.summary.iterations;
     const std::vector<int> free = data.free_indices(o.fixed);
@@ -534,12 +535,14 @@ CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOption
   return solve_mean_curvature_impl(data, options);
 }
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
-                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra) {
-  return solve_mean_curvature_impl(data, options, start, &used_up, &extra);
+                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra,
+                                              const CmcResult<TriangularNet>* dirichlet) {
+  return solve_mean_curvature_impl(data, options, start, &used_up, &extra, dirichlet);
 }
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
-                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra) {
-  return solve_mean_curvature_impl(data, options, start, &used_up, &extra);
+                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra,
+                                          const CmcResult<TensorNet>* dirichlet) {
+  return solve_mean_curvature_impl(data, options, start, &used_up, &extra, dirichlet);
 }
 
 }  // namespace bpde::cmc_detail
