@@ -201,8 +201,8 @@ struct CmcOptions {
   bool area_mean_curvature_start = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area
-  /// functional's route 0, its runs as one stage) report "cmc least squares", the area functional
-  /// "cmc area"; default none.
+  /// functional's route 0, in the H form its runs as one stage) report "cmc least squares", the
+  /// area functional "cmc area"; default none.
   ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
   /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with

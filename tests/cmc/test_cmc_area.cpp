@@ -609,9 +609,8 @@ TEST(CmcArea, MeanCurvatureStartGoesOnFromLeastSquaresAboveTheirTolerance) {
 // Where route 0 does not end converged it gives way, and everything it changed (net, rule,
 // damping, ε, H, the soft-mode verdict) goes back: the routes from the D_H critical point then
 // give the net, H and residual they give with route 0 off, to the bit, and the message says how
-// route 0 ended. Two ways it ends: the circle at n = 4 (H = -0.5), whose least-squares surface
-// folds at the corners, where no area rule meets its tolerance (the Newton iterations converge,
-// the rule test fails); the triangular catenoid at n = 8 (H = 0), whose least squares stop at
+// route 0 ended. Two ways it ends: the circle at n = 4 (H = -0.5, both forms), whose least-squares
+// surface folds at the corners, where no area rule meets its tolerance; the triangular catenoid at n = 8 (H = 0), whose least squares stop at
 // √Φ 1.6e-4 and whose Newton iterations and final phases end at a stationary point of the first
 // variation's norm (7.2e-11, measured), where the routes from the D_H point converge.
 TEST(CmcArea, MeanCurvatureStartGivesWayAndRestoresWhatItChanged) {
@@ -627,6 +626,18 @@ TEST(CmcArea, MeanCurvatureStartGivesWayAndRestoresWhatItChanged) {
   const CmcResult<TriangularNet> c_off = solve_cmc(testing::circle_three_arcs(4), dirichlet_routes(-0.5));
   EXPECT_EQ(c.net.points(), c_off.net.points());
   EXPECT_EQ(c.summary.residual, c_off.summary.residual);
+  // The same in the V form (V0 the cap's volume; the bordered Newton iterations and finish_volume).
+  const double R = 2.0, hc = R - std::sqrt(R * R - 1);
+  CmcOptions ov = area_options(0.0);
+  ov.V = std::numbers::pi * hc * hc * (3 * R - hc) / 3;
+  const CmcResult<TriangularNet> v = solve_cmc(testing::circle_three_arcs(4), ov);
+  EXPECT_NE(v.summary.message.find("(route 0: the least-squares mean-curvature surface"), std::string::npos)
+      << v.summary.message;
+  ov.area_mean_curvature_start = false;
+  const CmcResult<TriangularNet> v_off = solve_cmc(testing::circle_three_arcs(4), ov);
+  EXPECT_EQ(v.net.points(), v_off.net.points());
+  EXPECT_EQ(v.H, v_off.H);
+  EXPECT_EQ(v.summary.residual, v_off.summary.residual);
 
   const TriangularNet data = testing::triangular_boundary(8, catenoid);
   const CmcResult<TriangularNet> r = solve_cmc(data, area_options(0.0));
