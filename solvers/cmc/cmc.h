@@ -25,10 +25,9 @@
 //
 // The area functional (options.functional = Area; docs/cmc.md, "The area functional"):
 //  - Route 0, both modes (options.area_mean_curvature_start, default true; docs/cmc.md, "The
-//    mean-curvature start"): the least-squares mean-curvature surface below (at H in runs of at
-//    most 300 Levenberg–Marquardt iterations, another while √Φ falls fast enough to reach its
-//    tolerance within min(max_least_squares_iterations, 2000); in the V mode at V0, with its H),
-//    converged or not, then at most 8 Newton iterations on A_H (the bordered corrector in the V
+//    mean-curvature start"): the least-squares mean-curvature surface below (at H after at most
+//    min(max_least_squares_iterations, 300) Levenberg–Marquardt iterations; in the V mode at V0,
+//    with its H), converged or not, then at most 8 Newton iterations on A_H (the bordered corrector in the V
 //    mode) and, where they stall, the final phases of the routes below (in the V mode at its H,
 //    then back onto V0). Kept when they meet the tolerance: on the Fig. 1 circle that critical point lies 4–80×
 //    nearer the sphere than the one the routes below reach, in a fraction of their time. Otherwise
@@ -184,11 +183,10 @@ struct CmcOptions {
   int max_continuation_steps = 400;          ///< default 400, >= 1
   double min_step = 1e-5;                    ///< smallest H step, relative to max(1, |H reached|); default 1e-5
   /// mean-curvature functional: converged when √Φ = ‖H_x − H‖ in L²(ρ dA) is at most this; default 1e-6, in (0, 1).
-  /// The area functional's route 0 uses it too: it starts from the least squares only when they meet it
+  /// The area functional's route 0 uses it too, as the least squares' target
   double mean_curvature_tolerance = 1e-6;
   /// mean-curvature functional: Levenberg–Marquardt iterations at most; default 2000, >= 1 (the area
-  /// functional's route 0: runs of at most 300 of them in the H form, within min(this, 2000) in
-  /// all, in whole runs; all in the V form)
+  /// functional's route 0: at most min(this, 300) in the H form, this in the V form)
   int max_least_squares_iterations = 2000;
   /// mean-curvature functional, solver newton: geodesic acceleration of the Levenberg–Marquardt
   /// steps (above); default true. false is plain LM, kept to measure the two side by side

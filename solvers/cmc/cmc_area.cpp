@@ -393,31 +393,20 @@ double normal_gap(const Net& a, const Net& b) {
   return gap;
 }
 
-// Route 0's limits (AreaSolve::from_mean_curvature): the iterations of one run of the H form's
-// least squares, and of all its runs (or max_least_squares_iterations when lower; the V form's has
-// max_least_squares_iterations: past the hemisphere its continuation in V takes 800–1100); a
-// second run only when the first ended within kMeanCurvatureStartReach × its tolerance (no rate
-// measured yet: the tensor catenoid at n = 10 and 12 end the first at 6.8e-6 and 2.3e-6;
-// least_squares_goes_on); the Newton iterations on A_H from it.
+// Route 0's limits (AreaSolve::from_mean_curvature): the iterations of the H form's least squares
+// (or max_least_squares_iterations when lower; the V form's has max_least_squares_iterations: past
+// the hemisphere its continuation in V takes 800–1100), and the Newton iterations on A_H from it.
+// Measured on the tensor catenoid (docs/cmc.md, "The mean-curvature start"): its least squares
+// converge slowly (n = 12: √Φ 2.3e-6 after 300 iterations, 1e-6 after 1200), but from where they
+// are after 300 the Newton iterations and the final phases converge (n = 12 in 3.2 s, where
+// 1200 took 10.8 s; n = 8 4.9 s, with 150 6.4 s).
 constexpr int kMeanCurvatureStartIterations = 300;
-constexpr int kMeanCurvatureStartBudget = 2000;
-constexpr double kMeanCurvatureStartReach = 10.0;
 constexpr int kMeanCurvatureStartCorrector = 8;
 // Route 0 is not tried where the relative first variation of A_H at the D_H critical point is at
 // most this (AreaSolve::dirichlet_first_variation): on the conformal sphere triangle 8.2e-7 at
 // n = 10 and below from there on, on the Fig. 1 circle 7e-2.
 constexpr double kConformalFirstVariation = 1e-6;
 
-}  // namespace
-
-bool least_squares_goes_on(double r, double last, int runs_left, double tolerance) {
-  if (!(std::isfinite(r) && r > 0.0 && runs_left > 0)) return false;
-  if (!std::isfinite(last)) return r <= kMeanCurvatureStartReach * tolerance;
-  const double rate = r / last;
-  return rate < 1.0 && r * std::pow(rate, runs_left) <= tolerance;
-}
-
-namespace {
 
 template <class Net>
 struct AreaSolve {
@@ -885,54 +874,10 @@ struct AreaSolve {
     return std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
   }
 
-  // Route 0's least squares in the H form: runs of kMeanCurvatureStartIterations iterations, each
-  // from where the one before stopped, with its rule (fresh LM damping), while the last
-  // stopped at its cap (still falling) and least_squares_goes_on, within
-  // kMeanCurvatureStartBudget iterations in all (or max_least_squares_iterations when lower; in
-  // whole runs). Measured on the tensor catenoid: n = 12 falls by 0.62 over its second run and
-  // converges in 4 runs (1200 iterations); n = 10 by 0.84, which needs about 3000 more, so it stops
-  // after 2 (docs/cmc.md, "The mean-curvature start").
-  // Progress: the runs make one stage "cmc least squares". Each run reports the log-scale way from
-  // its own start's √Φ to the target (ls_fraction); with a the fraction where the run before ended,
-  // f = a + (1 − a) f_run is that way from the first run's start (exact when each run starts where
-  // the one before ended), kept from falling (a rule refinement restarts a run's own fraction), and
-  // the stage is finished once, after the last run.
-  CmcResult<Net> chunked_least_squares(CmcOptions om, int& runs) {
-    const int budget = std::min(om.max_least_squares_iterations, kMeanCurvatureStartBudget);
-    const int chunk = std::min(budget, kMeanCurvatureStartIterations);
-    om.max_least_squares_iterations = chunk;
-    const std::string_view ls_stage = "cmc least squares";
-    double base = 0.0, reached = 0.0;
-    if (o.progress)
-      om.progress = [&](std::string_view stage, double done, double total) {
-        if (stage != ls_stage) return o.progress(stage, done, total);
-        if (!(total > 0) || done >= total) return;  // a run's (or a refinement's) end
-        reached = std::max(reached, base + (1.0 - base) * (done / total));
-        o.progress(stage, reached, 1.0);
-      };
-    bool used_up = false;
-    int extra = 0;  // the rule refinements of the run before: the next run goes on with its rule
-    CmcResult<Net> m = solve_mean_curvature(data, om, nullptr, used_up, extra, &dirichlet_solution(o.H, nullptr));
-    summary.iterations += m.summary.iterations;
-    runs = 1;
-    double last = std::numeric_limits<double>::infinity();
-    for (int used = chunk; !m.summary.converged && used_up && used + chunk <= budget; used += chunk) {
-      const double r = m.summary.residual;
-      if (!least_squares_goes_on(r, last, (budget - used) / chunk, o.mean_curvature_tolerance)) break;
-      last = r;
-      base = reached;
-      const Eigen::MatrixX3d P = m.net.points();
-      m = solve_mean_curvature(data, om, &P, used_up, extra);
-      summary.iterations += m.summary.iterations;
-      ++runs;
-    }
-    report(o.progress, ls_stage, 1.0, 1.0);
-    return m;
-  }
-
   // Route 0 of both forms (docs/cmc.md, "The mean-curvature start"): the least-squares
-  // mean-curvature surface (the functional "mean-curvature" by the same solver; at H by
-  // chunked_least_squares, or in the V form at V0 with its H), converged or not (where √Φ stops
+  // mean-curvature surface (the functional "mean-curvature" by the same solver, from the D start
+  // of dirichlet_solution; at H within kMeanCurvatureStartIterations, or in the V form at V0 with
+  // its H), converged or not (where √Φ stops
   // above its tolerance the surface is still far nearer a critical point of A_H than the D_H
   // critical point is), then at most kMeanCurvatureStartCorrector Newton iterations on A_H itself
   // (the bordered corrector at V0 in the V form), no regulariser, and where they stall the final
@@ -945,29 +890,18 @@ struct AreaSolve {
   // 1e-11: A_H is nearly flat along its tangential valley, and Φ pins the geometry). From least
   // squares above their tolerance (2026-12-05): the circle at n = 6 and at H = −0.9, n = 8, the
   // helicoid at n = 4 and the tensor catenoid at n = 6 and 8 converge this way, the last three
-  // where the routes from the D_H point stop at a numerical limit or take twice as long. On the
-  // catenoid pieces the least squares converge slowly (1500 iterations at tensor n = 12) or not
-  // at all, hence the runs.
+  // where the routes from the D_H point stop at a numerical limit or take twice as long; the
+  // tensor catenoid at n = 12 from √Φ 2.3e-6 after the H form's 300 iterations.
   bool from_mean_curvature(const double* V0, double& H, std::string& note, int& steps) {
     CmcOptions om = o;
     om.functional = CmcFunctionalKind::MeanCurvature;
-    int runs = 1;
-    CmcResult<Net> m;
-    if (V0) {
-      bool used_up = false;
-      int extra = 0;
-      m = solve_mean_curvature(data, om, nullptr, used_up, extra, &dirichlet_solution(o.H, V0));
-    } else {
-      m = chunked_least_squares(om, runs);
-    }
-    if (V0) summary.iterations += m.summary.iterations;
+    if (!V0) om.max_least_squares_iterations = std::min(o.max_least_squares_iterations, kMeanCurvatureStartIterations);
+    const CmcResult<Net> m = solve_mean_curvature(data, om, &dirichlet_solution(o.H, V0));
+    summary.iterations += m.summary.iterations;
     const std::string start = "the least-squares mean-curvature surface (√Φ = " + num(m.summary.residual, 3) +
                               (m.summary.converged                                      ? std::string()
                                : m.summary.residual > o.mean_curvature_tolerance ? ", above its tolerance"
                                                                                    : ", not converged") +
-                              (runs > 1 ? ", in " + std::to_string(runs) + " runs of at most " +
-                                              std::to_string(kMeanCurvatureStartIterations) + " iterations"
-                                        : std::string()) +
                               ")";
     if (!m.net.points().allFinite() || !std::isfinite(m.H)) {
       note = start + " is not finite";
@@ -1011,9 +945,15 @@ struct AreaSolve {
         if (!phases.empty()) finished = " and " + phases;
       }
       // The final phases can move the net far along the surface (the tensor catenoid at n = 6:
-      // control points by up to 1.4): the rule is checked again at the net reached, refined where
-      // it misses its tolerance there, and the Newton iterations run again with the finer one.
-      if (st.ok && rule_ok) {
+      // control points by up to 1.4): at a regular net reached the rule is checked again, refined
+      // where it misses its tolerance there, and the Newton iterations run again with the finer
+      // one. (Not at a degenerate net, which route 0 gives up anyway: there the rule would be
+      // refined to its cap in vain, 0.9 s on the sphere patch at n = 8.)
+      const auto is_regular = [&] {
+        const Net reached = make_net(data, p.P());
+        return regularity(reached, area(reached)).ok;
+      };
+      if (st.ok && rule_ok && is_regular()) {
         const int q = p.a->points_per_direction(), gr = p.a->grading();
         rule_ok = choose_rule(q, gr);
         if (rule_ok && (p.a->points_per_direction() != q || p.a->grading() != gr)) {

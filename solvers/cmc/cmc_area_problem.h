@@ -68,28 +68,13 @@ Regularity regularity(const TensorNet& net, double A);
 /// The least-squares mean-curvature functional (cmc.h; cmc_mean_curvature.cpp). options are validated.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options);
-/// The same, in the H form from the net `start` (#points by 3, in data's layout; its fixed rows
-/// are taken as they are, so pass a net of a solve of `data`) instead of the D_H critical point
-/// when start is given, to go on from where a run with fewer iterations stopped (the area
-/// functional's route 0; the LM damping starts afresh). used_up: it stopped at
-/// max_least_squares_iterations. extra: in, the rule refinements to start with when start is
-/// given (the run before's; 0 from the D_H point); out, those it ended with. dirichlet: when start
-/// is not given, the D start already solved (solve_cmc of data with options' H and V, functional
-/// dirichlet, solver newton in the H form and nlopt in the V form), taken instead of solving it
-/// again (the area functional solves it before route 0). Throws ParameterError for a start in the
-/// V form or of another size.
+/// The same from the D start already solved (`dirichlet`: solve_cmc of data with options' H and V,
+/// functional dirichlet, solver newton in the H form and nlopt in the V form), taken instead of
+/// solving it again (the area functional solves it before route 0); null: solved here.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
-                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra,
-                                              const CmcResult<TriangularNet>* dirichlet = nullptr);
+                                              const CmcResult<TriangularNet>* dirichlet);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
-                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra,
-                                          const CmcResult<TensorNet>* dirichlet = nullptr);
-/// Route 0's rule for another run of the least squares (cmc_area.cpp, chunked_least_squares): the
-/// run just ended at √Φ = r (the one before at `last`, +inf after the first run) with runs_left
-/// runs of the budget left. After the first run: r within 10 × tolerance. Then: √Φ fell (r < last)
-/// and its fall continued geometrically, r (r / last)^runs_left, reaches the tolerance. False for
-/// a non-finite or non-positive r and when no run is left.
-bool least_squares_goes_on(double r, double last, int runs_left, double tolerance);
+                                          const CmcResult<TensorNet>* dirichlet);
 
 /// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);

@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 
 #include "bezierpde/core/progress.h"
@@ -186,21 +187,34 @@ struct LsRun {
 
 template <class Net>
 LsRun minimise_checked(const Net& data, const CmcOptions& o, Eigen::MatrixX3d& P, const std::vector<int>& free,
-                       double& H, const VolumeTarget* v, double tolerance, int max_iterations, int start_extra = 0) {
+                       double& H, const VolumeTarget* v, double tolerance, int max_iterations) {
   LsRun run;
-  run.extra = start_extra;
   const double target = 0.7 * tolerance;
   int iterations = 0;
+  // Progress: the minimisations of the refinements are one stage "cmc least squares". Each reports
+  // the log-scale way from its own start's √Φ to the target; with a the fraction where the one
+  // before ended, a + (1 − a) f is the way from the first start (exact when each starts where the
+  // one before ended; the last agreed point can lie before it, so it is kept from falling), and the
+  // stage is finished once, at the end.
+  double base = 0.0, reached = 0.0;
+  ProgressFn progress;
+  if (o.progress)
+    progress = [&](std::string_view stage, double done, double total) {
+      if (!(total > 0) || done >= total) return;  // one minimisation's end
+      reached = std::max(reached, base + (1.0 - base) * (done / total));
+      o.progress(stage, reached, 1.0);
+    };
   while (true) {
+    base = reached;
     run.f.emplace(form_for(data, run.extra));
     run.check.emplace(form_for(data, run.extra + 1));
     const int left = max_iterations - iterations;
     if (o.solver == CmcSolver::Ceres)
-      run.ls = minimise_ceres(*run.f, &*run.check, P, free, H, v, target, left, o.progress);
+      run.ls = minimise_ceres(*run.f, &*run.check, P, free, H, v, target, left, progress);
     else if (v)
-      run.ls = lm_loop(*run.f, &*run.check, P, free, H, v, target, left, o.geodesic_acceleration, o.progress);
+      run.ls = lm_loop(*run.f, &*run.check, P, free, H, v, target, left, o.geodesic_acceleration, progress);
     else
-      run.ls = minimise_newton(*run.f, &*run.check, P, free, H, target, left, o.geodesic_acceleration, o.progress);
+      run.ls = minimise_newton(*run.f, &*run.check, P, free, H, target, left, o.geodesic_acceleration, progress);
     iterations += run.ls.iterations;
     const bool check_misses = run.ls.stop == LsStop::Reached && !(std::sqrt(run.check->value(P, H)) <= tolerance);
     if (!(run.ls.stop == LsStop::Interrupted || check_misses) || run.extra >= kMaxRuleRefinements ||
@@ -209,6 +223,7 @@ LsRun minimise_checked(const Net& data, const CmcOptions& o, Eigen::MatrixX3d& P
     ++(check_misses ? run.misses : run.folds);
     ++run.extra;
   }
+  report(o.progress, "cmc least squares", 1.0, 1.0);
   run.ls.iterations = iterations;
   run.folded = run.ls.stop == LsStop::Interrupted;
   if (run.folded && iterations >= max_iterations) run.ls.stop = LsStop::MaxIterations;
@@ -368,24 +383,21 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
 }
 
 template <class Net>
-CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, const Eigen::MatrixX3d* warm = nullptr,
-                                         bool* used_up = nullptr, int* extra = nullptr,
+CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o,
                                          const CmcResult<Net>* dirichlet = nullptr) {
   CmcResult<Net> res;
   res.functional = CmcFunctionalKind::MeanCurvature;
   {
     ScopedTimer timer(res.summary.seconds);
     o.validate();
-    if (warm && (o.V || warm->rows() != data.points().rows()))
-      throw ParameterError("cmc: a warm start of the least squares is for the H form, one row per control point");
     // The start: the paper's D_H critical point at H (or the last point of its branch), by the
     // newton continuation whatever o.solver (which picks the least-squares minimiser); in the V
-    // form the minimiser of D at V = V0 (nlopt) and its multiplier H. A warm start (H form) is
-    // taken as it is; a D start already solved (`dirichlet`) too.
+    // form the minimiser of D at V = V0 (nlopt) and its multiplier H; a D start already solved
+    // (`dirichlet`) is taken as it is.
     CmcOptions od = o;
     od.functional = CmcFunctionalKind::Dirichlet;
     od.solver = o.V ? CmcSolver::NLopt : CmcSolver::Newton;
-    const CmcResult<Net> start = warm ? CmcResult<Net>{} : dirichlet ? *dirichlet : solve_cmc(data, od);
+    const CmcResult<Net> start = dirichlet ? *dirichlet : solve_cmc(data, od);
     res.continuation_steps = start.continuation_steps;
     res.summary.iterations = start.summary.iterations;
     const std::vector<int> free = data.free_indices(o.fixed);
@@ -399,13 +411,12 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, c
       vt.emplace(VolumeTarget{cf->volume_form(), *o.V, vscale > 0 ? vscale : 1.0});
     }
     const VolumeTarget* v = vt ? &*vt : nullptr;
-    LsEnd end{warm ? *warm : start.net.points(), o.V ? start.H : o.H, {}, {}, 0};
+    LsEnd end{start.net.points(), o.V ? start.H : o.H, {}, {}, 0};
     end.run = minimise_checked(data, o, end.P, free, end.H, v, o.mean_curvature_tolerance,
-                               o.max_least_squares_iterations, warm && extra ? *extra : 0);
+                               o.max_least_squares_iterations);
     end.iterations = end.run.ls.iterations;
     res.summary.iterations += end.run.ls.iterations;
-    end.start_note = warm ? std::string("from the net given")
-                     : o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
+    end.start_note = o.V ? "from the minimiser of D at V = " + num(*o.V, 3) + " (H = " + num(start.H, 3) + ")"
                      : start.summary.converged ? "from the D_H critical point at H = " + num(o.H, 3)
                                                : "from the last D_H branch point (H = " + num(start.H, 3) + ")";
     if (vt && end.run.ls.stop != LsStop::ConstraintUnmet) end.H = best_h(*end.run.f, end.P, end.H);
@@ -447,8 +458,6 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o, c
       }
     }
     const LsRun& run = end.run;
-    if (used_up) *used_up = run.ls.stop == LsStop::MaxIterations;
-    if (extra) *extra = run.extra;
     const double H = end.H;
     const Eigen::MatrixX3d& P = end.P;
     const Net net = make_net(data, P);
@@ -535,14 +544,12 @@ CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOption
   return solve_mean_curvature_impl(data, options);
 }
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
-                                              const Eigen::MatrixX3d* start, bool& used_up, int& extra,
                                               const CmcResult<TriangularNet>* dirichlet) {
-  return solve_mean_curvature_impl(data, options, start, &used_up, &extra, dirichlet);
+  return solve_mean_curvature_impl(data, options, dirichlet);
 }
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
-                                          const Eigen::MatrixX3d* start, bool& used_up, int& extra,
                                           const CmcResult<TensorNet>* dirichlet) {
-  return solve_mean_curvature_impl(data, options, start, &used_up, &extra, dirichlet);
+  return solve_mean_curvature_impl(data, options, dirichlet);
 }
 
 }  // namespace bpde::cmc_detail
