@@ -377,12 +377,9 @@ std::vector<Eigen::Vector2d> gap_samples(bool triangular) {
   return uv;
 }
 
-// max over the samples of |<x_b − x_a, N_a>| (N_a the unit normal of a): how far surface b lies
-// from surface a along a's normals. A motion of the points along the surface (a reparametrisation,
-// the nearly singular directions of A_H) changes it only to second order, where the distance of
-// the points themselves changes to first order. Infinite where a's normal vanishes at a sample.
+// normal_gap (cmc_area_problem.h) for both nets.
 template <class Net>
-double normal_gap(const Net& a, const Net& b) {
+double normal_gap_on(const Net& a, const Net& b) {
   double gap = 0.0;
   for (const Eigen::Vector2d& uv : gap_samples(is_triangular(a))) {
     const Eigen::Vector3d N = normal_at(a, uv[0], uv[1]);
@@ -392,6 +389,13 @@ double normal_gap(const Net& a, const Net& b) {
   }
   return gap;
 }
+
+}  // namespace
+
+double normal_gap(const TriangularNet& a, const TriangularNet& b) { return normal_gap_on(a, b); }
+double normal_gap(const TensorNet& a, const TensorNet& b) { return normal_gap_on(a, b); }
+
+namespace {
 
 // Route 0's limits (AreaSolve::from_mean_curvature): the iterations of the H form's least squares
 // (or max_least_squares_iterations when lower; the V form's has max_least_squares_iterations: past

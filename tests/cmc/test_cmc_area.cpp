@@ -702,6 +702,50 @@ TEST(CmcArea, MeanCurvatureStartGoesOnAfterItsIterations) {
   EXPECT_LE(testing::catenoid_off(r.net), 4e-6);           // measured 2.3e-6 (the degree)
 }
 
+// normal_gap, the area V continuation's branch test: how far one surface lies from another along
+// the first one's normals. Closed-form cases: a plane and the plane moved by 0.3 along its normal
+// (0.3, both nets); the plane reparametrised within itself (0 to rounding, where the points moved
+// by up to 0.025); the unit sphere's octant and its reparametrisation by δ (second order: the gap
+// falls 4x when δ halves, while the points' own distance falls 2x); a net whose normal vanishes
+// (all points equal): +inf.
+TEST(CmcArea, NormalGapMeasuresAlongTheNormals) {
+  const int n = 8;
+  const TensorNet plane = testing::tensor_interpolant(n, [](double u, double v) { return Eigen::Vector3d(u, v, 0); });
+  const TensorNet lifted =
+      testing::tensor_interpolant(n, [](double u, double v) { return Eigen::Vector3d(u, v, 0.3); });
+  const TensorNet slid = testing::tensor_interpolant(
+      n, [](double u, double v) { return Eigen::Vector3d(u + 0.1 * u * (1 - u), v, 0); });
+  EXPECT_NEAR(cmc_detail::normal_gap(plane, lifted), 0.3, 1e-12);
+  EXPECT_LE(cmc_detail::normal_gap(plane, slid), 1e-13);
+  EXPECT_GT((slid.evaluate(0.5, 0.5) - plane.evaluate(0.5, 0.5)).norm(), 0.02);  // the points moved
+
+  TriangularNet tri(n, Eigen::MatrixX3d::Zero((n + 1) * (n + 2) / 2, 3));
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) tri.set_point(i, j, Eigen::Vector3d(double(i) / n, double(j) / n, 0));
+  TriangularNet tri_lifted = tri;
+  tri_lifted.points().col(2).array() += 0.3;
+  EXPECT_NEAR(cmc_detail::normal_gap(tri, tri_lifted), 0.3, 1e-12);
+
+  auto octant = [](double d) {
+    return testing::tensor_interpolant(12, [d](double u, double v) {
+      const double t = 0.5 * std::numbers::pi * (0.1 + 0.8 * (u + d * u * (1 - u)));
+      const double p = 0.5 * std::numbers::pi * (0.1 + 0.8 * v);
+      return Eigen::Vector3d(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+    });
+  };
+  const TensorNet s0 = octant(0.0), s1 = octant(0.1), s2 = octant(0.05);
+  const double g1 = cmc_detail::normal_gap(s0, s1), g2 = cmc_detail::normal_gap(s0, s2);
+  const double m1 = (s1.evaluate(0.5, 0.5) - s0.evaluate(0.5, 0.5)).norm();
+  const double m2 = (s2.evaluate(0.5, 0.5) - s0.evaluate(0.5, 0.5)).norm();
+  EXPECT_NEAR(g1 / g2, 4.0, 0.4);  // second order in δ
+  EXPECT_NEAR(m1 / m2, 2.0, 0.1);  // first order in δ
+  EXPECT_LT(g1, 0.1 * m1);
+
+  TensorNet point = plane;
+  point.points().setConstant(1.0);
+  EXPECT_EQ(cmc_detail::normal_gap(point, plane), std::numeric_limits<double>::infinity());
+}
+
 // Route 0 of the V form takes the minimiser of D at V0 the area solve has already found (the
 // nlopt solve, up to 0.17 s at n = 12) instead of solving it again: given that start, the
 // least squares return what they return on their own, to the bit; given another start (the
