@@ -31,7 +31,9 @@
 //    mode) and, where they stall, the final phases of the routes below (in the V mode at its H,
 //    then back onto V0). Kept when they meet the tolerance: on the Fig. 1 circle that critical point lies 4–80×
 //    nearer the sphere than the one the routes below reach, in a fraction of their time. Otherwise
-//    the routes below run and the message ends with "(route 0: …)". Not tried where the relative
+//    the routes below run and the message ends with "(route 0: …)"; in the H mode, where both end
+//    above the tolerance (route 0 within 1e-6), the lower end is reported (numerical-limit, the
+//    message begins "the end of route 0"). Not tried where the relative
 //    first variation of A_H at the D_H critical point (V mode: at the minimiser of D at V0) is at
 //    most 1e-6, as on conformal data, whose D_H point is a critical point of A_H to within the
 //    degree; the message then ends with "(route 0 not tried: …)".

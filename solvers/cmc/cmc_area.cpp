@@ -464,6 +464,59 @@ struct AreaSolve {
   // reported is still that point (the same residual: it is a function of the net and the rule) and
   // in the H form (the V form's residual includes the volume).
   double stationary_at = -1.0;
+
+  // Where route 0 ended in the H form above the tolerance but within kAreaStallResidual, at a
+  // regular net whose rule met its own at its start (a numerical limit of its own): that end, for
+  // the caller to keep when the routes from the D_H critical point end higher (keep_route0_end).
+  struct RouteEnd {
+    Eigen::VectorXd y;
+    std::shared_ptr<const AreaForm> a;
+    double change = 0.0, stationary = -1.0;
+    std::string note;
+  };
+  std::optional<RouteEnd> route0_end;
+
+  // The relative first variation of A_H at H with a rule that meets its tolerance at the current
+  // net (refined from the rule in use, never coarser, as the final rule check); the rule in use is
+  // put back.
+  double checked_residual(double H) {
+    const std::shared_ptr<const AreaForm> a = p.a;
+    const double change = rule_change;
+    choose_rule(a->points_per_direction(), a->grading());
+    const double r = p.residual_at(H, 0.0);
+    p.a = a;
+    rule_change = change;
+    return std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
+  }
+
+  // After the routes from the D_H critical point (H form), where they end above the tolerance or
+  // fail: route 0's end instead when it has the lower residual, both on checked rules (measured:
+  // the tensor catenoid at n = 10, 2.2e-11 against 5.2e-11; docs/cmc.md, "The mean-curvature
+  // start"). True when it was taken (net, rule, soft-mode verdict); `why` says what the other ended at.
+  bool keep_route0_end(const AreaOutcome& out, std::string& why) {
+    if (!route0_end) return false;
+    const double r_dh = out.ok ? checked_residual(o.H) : std::numeric_limits<double>::infinity();
+    if (!(r_dh > o.tolerance)) return false;
+    const Eigen::VectorXd y = p.get();
+    const std::shared_ptr<const AreaForm> a = p.a;
+    const double change = rule_change, stationary = stationary_at;
+    p.set(route0_end->y);
+    p.a = route0_end->a;
+    rule_change = route0_end->change;
+    stationary_at = route0_end->stationary;
+    const double r0 = checked_residual(o.H);
+    if (r0 < r_dh && r0 <= kAreaStallResidual) {
+      why = out.ok ? "the routes from the D_H critical point ended at " + num(r_dh, 3) + ": " + out.message
+                   : "the routes from the D_H critical point failed: " + out.message;
+      return true;
+    }
+    p.set(y);
+    p.a = a;
+    rule_change = change;
+    stationary_at = stationary;
+    return false;
+  }
+
   bool at_stationary_point(double residual) const {
     return !o.V && stationary_at > 0 && std::abs(residual - stationary_at) <= 1e-12 * stationary_at;
   }
@@ -978,6 +1031,10 @@ struct AreaSolve {
       if (V0) steps = m.continuation_steps;
       return true;
     }
+    if (!V0 && !st.ok && rule_ok && st.residual <= kAreaStallResidual && regularity(net, area(net)).ok)
+      route0_end = RouteEnd{p.get(), p.a, rule_change, stationary_at,
+                            start + " corrected on A_H in " + std::to_string(st.iterations) + " iteration(s)" +
+                                finished + ", to " + num(st.residual, 3)};
     note = start + (!st.ok ? " was corrected on A_H to " + num(st.residual, 3) + " only"
                     : !rule_ok ? " was corrected on A_H, but the area rule misses its tolerance there"
                                : " was corrected on A_H to a degenerate parametrisation");
@@ -1249,7 +1306,13 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
         if (out.ok) out.message += " (" + note + ")";
       }
     }
-    if (tried_mc && !from_mc) out.message += " (route 0: " + start_note + ")";
+    std::string why;
+    if (!o.V && tried_mc && !from_mc && s.keep_route0_end(out, why)) {
+      // Route 0's end is lower than theirs: reported (a numerical limit by the checks below).
+      out = {o.H, true, Status::Converged, "the end of route 0, " + s.route0_end->note + " (kept: " + why + ")"};
+    } else if (tried_mc && !from_mc) {
+      out.message += " (route 0: " + start_note + ")";
+    }
     if (o.area_mean_curvature_start && !tried_mc)
       out.message += " (route 0 not tried: the first variation of A_H at the " +
                      std::string(o.V ? "minimiser of D at V0" : "D_H critical point") + " is " + num(r_dirichlet, 3) +

@@ -702,6 +702,23 @@ TEST(CmcArea, MeanCurvatureStartGoesOnAfterItsIterations) {
   EXPECT_LE(testing::catenoid_off(r.net), 4e-6);           // measured 2.3e-6 (the degree)
 }
 
+// Where both route 0 and the routes from the D_H point end above the tolerance, the lower end is
+// reported: the tensor catenoid at n = 10 (H = 0), where route 0 ends at 2.6e-11 (its least
+// squares stop at √Φ 6.8e-6; 8 Newton iterations and the truncated Newton phase) and the routes
+// from the D_H point at 5.2e-11 (measured; route 0 off, docs/cmc.md degree tables). Still a
+// numerical limit, and the message says which end was kept and what the other reached.
+TEST(CmcArea, MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit) {
+  const CmcResult<TensorNet> r = solve_cmc(tensor_boundary(10, testing::catenoid_square), area_options(0.0));
+  EXPECT_EQ(r.summary.status, Status::NumericalLimit) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("reached after: the end of route 0, the least-squares mean-curvature surface"),
+            std::string::npos)
+      << r.summary.message;
+  EXPECT_NE(r.summary.message.find("(kept: the routes from the D_H critical point ended at "), std::string::npos)
+      << r.summary.message;
+  EXPECT_LE(r.summary.residual, 4e-11);          // measured 2.6e-11 (route 0 off: 5.2e-11)
+  EXPECT_LE(testing::catenoid_off(r.net), 2e-5);  // measured 1.2e-5 (the degree)
+}
+
 // normal_gap, the area V continuation's branch test: how far one surface lies from another along
 // the first one's normals. Closed-form cases: a plane and the plane moved by 0.3 along its normal
 // (0.3, both nets); the plane reparametrised within itself (0 to rounding, where the points moved
