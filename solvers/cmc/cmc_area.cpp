@@ -499,13 +499,15 @@ struct AreaSolve {
     if (!(r_dh > o.tolerance)) return false;
     const Eigen::VectorXd y = p.get();
     const std::shared_ptr<const AreaForm> a = p.a;
-    const double change = rule_change, stationary = stationary_at;
+    const double change = rule_change, stationary = stationary_at, eps = p.eps, theta0 = theta;
     p.set(route0_end->y);
     p.a = route0_end->a;
     rule_change = route0_end->change;
     stationary_at = route0_end->stationary;
     const double r0 = checked_residual(o.H);
     if (r0 < r_dh && r0 <= kAreaStallResidual) {
+      p.eps = 0.0;  // A_H itself, as route 0 ended (the other routes may have stopped at ε > 0)
+      theta = 1e-3;
       why = out.ok ? "the routes from the D_H critical point ended at " + num(r_dh, 3) + ": " + out.message
                    : "the routes from the D_H critical point failed: " + out.message;
       return true;
@@ -514,6 +516,8 @@ struct AreaSolve {
     p.a = a;
     rule_change = change;
     stationary_at = stationary;
+    p.eps = eps;
+    theta = theta0;
     return false;
   }
 
