@@ -476,14 +476,14 @@ struct AreaSolve {
   };
   std::optional<RouteEnd> route0_end;
 
-  // The relative first variation of A_H at H with a rule that meets its tolerance at the current
-  // net (refined from the rule in use, never coarser, as the final rule check); the rule in use is
-  // put back.
+  // The residual at H (the relative first variation of A_H; in the V form vresidual, with the
+  // volume) with a rule that meets its tolerance at the current net (refined from the rule in use,
+  // never coarser, as the final rule check); the rule in use is put back. +inf when not finite.
   double checked_residual(double H) {
     const std::shared_ptr<const AreaForm> a = p.a;
     const double change = rule_change;
     choose_rule(a->points_per_direction(), a->grading());
-    const double r = p.residual_at(H, 0.0);
+    const double r = o.V ? vresidual(*o.V, H) : p.residual_at(H, 0.0);
     p.a = a;
     rule_change = change;
     return std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
@@ -1234,21 +1234,10 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
                  start_note};
     } else if (o.V) {
       const double Vref = base.f->volume_form().value(extremal);
-      // Each candidate's residual with a rule that meets its tolerance at its own net (refined
-      // from the rule in use, never coarser, as the final rule check below), so that the two are
-      // compared to within 0.1 × the tolerance. The rule in use is put back: the final rule check
-      // refines it and corrects again as before.
-      auto checked_residual = [&](double H) {
-        const std::shared_ptr<const AreaForm> a = s.p.a;
-        const double change = s.rule_change;
-        s.choose_rule(a->points_per_direction(), a->grading());
-        const double r = s.vresidual(*o.V, H);
-        s.p.a = a;
-        s.rule_change = change;
-        return r;
-      };
+      // Each candidate's residual on a checked rule (AreaSolve::checked_residual), so that the two
+      // are compared to within 0.1 × the tolerance; the final rule check refines and corrects again.
       out = s.from_dirichlet_volume(*o.V);
-      const double r1 = out.ok ? checked_residual(out.H) : 0.0;
+      const double r1 = out.ok ? s.checked_residual(out.H) : 0.0;
       if (out.ok && r1 > o.tolerance) {
         // Route 1 ended above the tolerance (a numerical limit): route 2 too, and the lower
         // residual is kept (measured: docs/cmc.md, "Past the hemisphere: continuation in V").
@@ -1258,7 +1247,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
         const AreaOutcome route1 = out;
         int steps = 0;
         out = s.volume_continuation_from_smaller(*o.V, Vref, steps);
-        const double r2 = out.ok ? checked_residual(out.H) : std::numeric_limits<double>::infinity();
+        const double r2 = out.ok ? s.checked_residual(out.H) : std::numeric_limits<double>::infinity();
         if (r2 < r1) {
           res.continuation_steps = steps;
         } else {
