@@ -27,16 +27,16 @@
 //  - Route 0, both modes (options.area_mean_curvature_start, default true; docs/cmc.md, "The
 //    mean-curvature start"): the least-squares mean-curvature surface below (at H after at most
 //    min(max_least_squares_iterations, 300) Levenberg–Marquardt iterations; in the V mode at V0,
-//    with its H), converged or not, then at most 8 Newton iterations on A_H (the bordered corrector in the V
-//    mode) and, where they stall, the final phases of the routes below (in the V mode at its H,
-//    then back onto V0). Kept when they meet the tolerance: on the Fig. 1 circle that critical point lies 4–80×
-//    nearer the sphere than the one the routes below reach, in a fraction of their time. Otherwise
-//    the routes below run and the message ends with "(route 0: …)"; in the H mode, where both end
-//    above the tolerance (route 0 within 1e-6), the lower end is reported (numerical-limit, the
-//    message begins "the end of route 0"). Not tried where the relative
-//    first variation of A_H at the D_H critical point (V mode: at the minimiser of D at V0) is at
-//    most 1e-6, as on conformal data, whose D_H point is a critical point of A_H to within the
-//    degree; the message then ends with "(route 0 not tried: …)".
+//    with its H), converged or not, then at most 8 Newton iterations on A_H (the bordered
+//    corrector in the V mode) and, where they stall, the final phases of the routes below (in the
+//    V mode at its H, then back onto V0). Kept when they meet the tolerance: on the Fig. 1 circle
+//    that critical point lies 4–80× nearer the sphere than the one the routes below reach, in a
+//    fraction of their time. Otherwise the routes below run and the message ends with
+//    "(route 0: …)"; in the H mode, where both end above the tolerance (route 0 within 1e-6), the
+//    lower end is reported (numerical-limit, the message begins "the end of route 0"). Not tried
+//    where the relative first variation of A_H at the D_H critical point (V mode: at the
+//    minimiser of D at V0) is at most 1e-6, as on conformal data, whose D_H point is a critical
+//    point of A_H to within the degree; the message then ends with "(route 0 not tried: …)".
 //  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (solvers/cmc/area_functional.h),
 //    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
 //    surface). The start is the D_H critical point at the requested H (the continuation above),
@@ -201,7 +201,7 @@ struct CmcOptions {
   bool area_mean_curvature_start = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area
-  /// functional's route 0, in the H form its runs as one stage) report "cmc least squares", the
+  /// functional's route 0) report "cmc least squares", one stage across its rule refinements, the
   /// area functional "cmc area"; default none.
   ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever

@@ -491,7 +491,7 @@ struct AreaSolve {
 
   // After the routes from the D_H critical point (H form), where they end above the tolerance or
   // fail: route 0's end instead when it has the lower residual, both on checked rules (measured:
-  // the tensor catenoid at n = 10, 2.2e-11 against 5.2e-11; docs/cmc.md, "The mean-curvature
+  // the tensor catenoid at n = 10, 2.6e-11 against 5.2e-11; docs/cmc.md, "The mean-curvature
   // start"). True when it was taken (net, rule, soft-mode verdict); `why` says what the other ended at.
   bool keep_route0_end(const AreaOutcome& out, std::string& why) {
     if (!route0_end) return false;
@@ -938,9 +938,8 @@ struct AreaSolve {
   // Route 0 of both forms (docs/cmc.md, "The mean-curvature start"): the least-squares
   // mean-curvature surface (the functional "mean-curvature" by the same solver, from the D start
   // of dirichlet_solution; at H within kMeanCurvatureStartIterations, or in the V form at V0 with
-  // its H), converged or not (where √Φ stops
-  // above its tolerance the surface is still far nearer a critical point of A_H than the D_H
-  // critical point is), then at most kMeanCurvatureStartCorrector Newton iterations on A_H itself
+  // its H), converged or not (where √Φ stops above its tolerance the surface is still far nearer a
+  // critical point of A_H than the D_H critical point is), then at most kMeanCurvatureStartCorrector Newton iterations on A_H itself
   // (the bordered corrector at V0 in the V form), no regulariser, and where they stall the final
   // phases (finish; finish_volume in the V form). Kept when they meet the tolerance at a regular
   // net whose rule meets its own; otherwise the net, rule, damping, ε, H and the soft-mode verdict

@@ -609,8 +609,10 @@ TEST(CmcArea, MeanCurvatureStartGoesOnFromLeastSquaresAboveTheirTolerance) {
 // Where route 0 does not end converged it gives way, and everything it changed (net, rule,
 // damping, ε, H, the soft-mode verdict) goes back: the routes from the D_H critical point then
 // give the net, H and residual they give with route 0 off, to the bit, and the message says how
-// route 0 ended. Two ways it ends: the circle at n = 4 (H = -0.5, both forms), whose least-squares
-// surface folds at the corners, where no area rule meets its tolerance; the triangular catenoid at n = 8 (H = 0), whose least squares stop at
+// route 0 ended (unless those routes end above the tolerance too and route 0's end is lower:
+// MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit). Two ways it ends: the circle at
+// n = 4 (H = -0.5, both forms), whose least-squares surface folds at the corners, where no area
+// rule meets its tolerance; the triangular catenoid at n = 8 (H = 0), whose least squares stop at
 // √Φ 1.6e-4 and whose Newton iterations and final phases end at a stationary point of the first
 // variation's norm (7.2e-11, measured), where the routes from the D_H point converge.
 TEST(CmcArea, MeanCurvatureStartGivesWayAndRestoresWhatItChanged) {
