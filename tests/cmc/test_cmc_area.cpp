@@ -400,6 +400,55 @@ TEST(CmcArea, C1DataMinimalSurfaceIsTheHelicoidPiece) {
   EXPECT_GT(testing::helicoid_off(d.net), 1e-3);  // the C¹ Dirichlet extremal: 8.4e-3
 }
 
+// C¹ data (boundary+adjacent) on a triangular net with a closed-form answer: Enneper's surface
+// (s − s³/3 + st², t − t³/3 + ts², s² − t²), conformal in (s, t), composed with the quadratic map
+// s = 0.9u − 0.3v + 0.25uv + 0.1v² − 0.4, t = 0.2u + 0.8v − 0.2u² − 0.3, which is not conformal: a
+// minimal surface that is a polynomial of total degree 6, so the degree-6 net is exact (recovered
+// by least squares on a sample grid) and its elevations hold it too. With the two outer rings of
+// that net fixed, the exact net is a critical point of A; at n = 6 (1 free point) and 7 (3) the
+// solve returns it, at n = 8 (6 free points) another critical point along the tangential valley,
+// 1.9e-3 away in the control points, whose mean curvature is within 4.3e-6 of 0. The C¹
+// Dirichlet extremal is 0.11–0.18 away, with mean curvature up to 1.7–3.2.
+TEST(CmcArea, C1DataMinimalSurfaceIsEnnepersSurfaceOnATriangle) {
+  const auto enneper = [](double u, double v) {
+    const double s = 0.9 * u - 0.3 * v + 0.25 * u * v + 0.1 * v * v - 0.4, t = 0.2 * u + 0.8 * v - 0.2 * u * u - 0.3;
+    return Eigen::Vector3d(s - s * s * s / 3 + s * t * t, t - t * t * t / 3 + t * s * s, s * s - t * t);
+  };
+  const Eigen::MatrixX2d uv = triangular_sample_parameters(30);
+  Eigen::MatrixX3d S(uv.rows(), 3);
+  for (Eigen::Index r = 0; r < uv.rows(); ++r) S.row(r) = enneper(uv(r, 0), uv(r, 1)).transpose();
+  const TriangularNet exact6(6, TriangularNet::basis_matrix(6, uv).colPivHouseholderQr().solve(S));
+  ASSERT_LE((TriangularNet::basis_matrix(6, uv) * exact6.points() - S).cwiseAbs().maxCoeff(), 1e-13);
+  const auto max_abs_H = [](const TriangularNet& net) {
+    double e = 0;
+    for (int a = 0; a <= 30; ++a)
+      for (int b = 0; a + b <= 30; ++b) e = std::max(e, std::abs(net.geometry(a / 30.0, b / 30.0).H));
+    return e;
+  };
+  for (const int n : {6, 7, 8}) {
+    SCOPED_TRACE(n);
+    const TriangularNet exact = exact6.elevated(n - 6);
+    TriangularNet data = exact;
+    for (const int i : data.free_indices(FixedSet::BoundaryAdjacent)) data.points().row(i).setZero();
+    CmcOptions o = area_options(0.0);
+    o.fixed = FixedSet::BoundaryAdjacent;
+    const CmcResult<TriangularNet> r = solve_cmc(data, o);
+    CmcOptions od;
+    od.fixed = FixedSet::BoundaryAdjacent;
+    const CmcResult<TriangularNet> d = solve_cmc(data, od);
+    EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
+    const double net_off = (r.net.points() - exact.points()).cwiseAbs().maxCoeff();
+    if (n < 8) {
+      EXPECT_LE(net_off, 1e-9);             // measured 7.2e-16 and 1.5e-11
+      EXPECT_LE(max_abs_H(r.net), 1e-10);  // measured 1.8e-14 and 1.5e-12
+    } else {
+      EXPECT_LE(max_abs_H(r.net), 1e-5);  // measured 4.3e-6
+    }
+    EXPECT_GT((d.net.points() - exact.points()).cwiseAbs().maxCoeff(), 0.05);  // measured 0.14, 0.11, 0.18
+    EXPECT_GT(max_abs_H(d.net), 1.0);                                       // measured 1.7, 1.9, 3.2
+  }
+}
+
 // H = 0 on a triangular net: a piece of the catenoid ρ = cosh z, from its radial parametrisation
 // (θ, ρ) -> (ρ cos θ, ρ sin θ, acosh ρ) (not conformal) over the triangle with corners
 // (θ, ρ) = (0, 1.1), (1.2, 1.1), (0.4, 1.9). Checked by the implicit equation √(x² + y²) - cosh z.
