@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 #include <cmath>
@@ -171,9 +173,56 @@ TEST(Cli, EnergyCheckAndCmc) {
   EXPECT_NE(r.out.find("\"self_intersections\":0"), std::string::npos) << r.out;
 }
 
+// The demo's table, one row per quantity and one column per functional (D + 2HV, A + 2HV, the least
+// squares of the mean curvature), as the README's first section describes it: the paper's
+// surface misses the cap of radius 2 by 5e-2 with a mean curvature up to +1.9, the other two lie
+// on it to about 1e-8 with a mean curvature within about 2e-5 of H = −0.5, and none intersects
+// itself. The printed numbers are read back from the table.
+std::vector<std::string> demo_row(const std::string& out, const std::string& label) {
+  const auto at = out.find("  " + label);
+  if (at == std::string::npos) return {};
+  std::string line = out.substr(at + 2 + label.size(), out.find('\n', at) - at - 2 - label.size());
+  std::vector<std::string> cells;
+  for (size_t i = 0; i < line.size();) {  // cells are separated by two or more spaces
+    while (i < line.size() && line[i] == ' ') ++i;
+    size_t j = i;
+    while (j < line.size() && !(line[j] == ' ' && j + 1 < line.size() && line[j + 1] == ' ')) ++j;
+    if (j > i) cells.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return cells;
+}
+
+TEST(Cli, DemoPrintsTheFunctionalsSideBySide) {
+  const CmdResult demo = run("demo --out " + (tmpdir() / "demo-table").string());
+  ASSERT_EQ(demo.status, 0) << demo.err;
+  const std::vector<std::string> dist = demo_row(demo.out, "distance to the exact cap");
+  ASSERT_EQ(dist.size(), 3u) << demo.out;
+  EXPECT_GT(std::stod(dist[0]), 1e-2) << demo.out;  // printed 0.0495
+  EXPECT_LE(std::stod(dist[1]), 1e-7) << demo.out;  // printed 6.56e-09
+  EXPECT_LE(std::stod(dist[2]), 1e-7) << demo.out;  // printed 8.67e-09
+  const std::vector<std::string> range = demo_row(demo.out, "mean curvature (min .. max)");
+  ASSERT_EQ(range.size(), 3u) << demo.out;
+  const auto lo_hi = [](const std::string& cell) {
+    const auto dots = cell.find(" .. ");
+    return std::pair<double, double>(std::stod(cell.substr(0, dots)), std::stod(cell.substr(dots + 4)));
+  };
+  EXPECT_GT(lo_hi(range[0]).second, 1.0) << demo.out;  // printed -0.505062 .. 1.918494
+  for (int c : {1, 2}) {
+    EXPECT_NEAR(lo_hi(range[static_cast<size_t>(c)]).first, -0.5, 1e-4) << demo.out;
+    EXPECT_NEAR(lo_hi(range[static_cast<size_t>(c)]).second, -0.5, 1e-4) << demo.out;
+  }
+  const std::vector<std::string> area = demo_row(demo.out, "area A");
+  ASSERT_EQ(area.size(), 3u) << demo.out;
+  const double cap_area = 4 * std::numbers::pi * (2 - std::sqrt(3.0));  // 2πR·h, R = 2, h = 2 − √3
+  EXPECT_NEAR(std::stod(area[1]), cap_area, 1e-8) << demo.out;  // printed 3.36714885709 (cap 3.36714885791)
+  EXPECT_LT(std::stod(area[0]), cap_area - 1e-2) << demo.out;   // printed 3.28463090237
+  EXPECT_EQ(demo_row(demo.out, "CGAL self-intersections"), (std::vector<std::string>{"0", "0", "0"})) << demo.out;
+}
+
 TEST(Cli, CmcPastTheFoldExitsOneWithTheDocumentedMessage) {
   const fs::path out = tmpdir() / "fold";
-  // the circle in three arcs at degree 4 folds near |H| = 1.56 (examples/004-cmc-circle)
+  // the demo's circle in three arcs at degree 8; the D_H branch folds near |H| = 1.09
   const CmdResult demo = run("demo --out " + (tmpdir() / "demo").string());
   ASSERT_EQ(demo.status, 0) << demo.err;
   const std::string res = slurp_file(tmpdir() / "demo" / "result.json");
