@@ -72,8 +72,9 @@
 //    predicted (ratio > 0.1) or ‖∇F‖₂ falls, with up to three chord corrections by the same factor;
 //    θ moves by ×4 / ×10 as in a trust region (solvers/cmc/cmc_area.cpp). The Hessian of A_H is
 //    nearly singular in the tangential directions (reparametrisations keep A_H); μ → 0 with the
-//    residual keeps the convergence quadratic (Levenberg–Marquardt in the sense of Yamashita and
-//    Fukushima) while fixing the tangential part of the step. ceres: Ceres Levenberg–Marquardt on
+//    residual (Levenberg–Marquardt in the sense of Yamashita and Fukushima) fixes the tangential
+//    part of the step; the convergence is quadratic where the Hessian is regular, and linear in
+//    its nearly singular tangential modes (docs/cmc.md, "Not done yet"). ceres: Ceres Levenberg–Marquardt on
 //    the residual blocks ∇A_H of each free point with the exact Hessian blocks as Jacobians.
 //  - converged = true means the first variation ∇A_H over the free points holds to
 //    options.tolerance relative to the size of its terms (the rows of AreaForm's gradient scale
