@@ -550,24 +550,36 @@ struct AreaSolve {
     return s;
   }
 
-  CorrectorStats correct(double H) {
-    CorrectorStats st = o.solver == CmcSolver::Ceres ? ceres_correct(p, H, o)
-                                      : area_newton_correct(p, H, o, 2 * o.max_corrector_iterations, theta, 0.0);
+  // The corrector to `tol` (at least the tolerance; the continuation's intermediate steps pass a
+  // looser one).
+  CorrectorStats correct(double H, double tol) {
+    CmcOptions co = o;
+    co.tolerance = std::max(tol, o.tolerance);
+    CorrectorStats st = o.solver == CmcSolver::Ceres ? ceres_correct(p, H, co)
+                                      : area_newton_correct(p, H, co, 2 * o.max_corrector_iterations, theta, 0.0);
     if (!st.ok && p.eps == 0.0 && std::isfinite(st.residual)) {
       // The corrector stalls in the tangential valley: finish with the final phases.
       const CorrectorStats t = finish(H, o.max_corrector_iterations);
       st.iterations += t.iterations;
-      st.ok = t.ok;
+      st.ok = t.ok || t.residual <= co.tolerance;
       st.residual = t.residual;
     }
     summary.iterations += st.iterations;
     return st;
   }
 
-  // Positive definite Hessian (regularised by 1e-8 C against the tangential near-null directions):
-  // a strict local minimum of A_H, before the fold of the branch.
-  bool strict_minimum(double H, Eigen::VectorXd* tangent, double shift = 1e-8) {
-    const Eigen::MatrixXd K = p.hessian(H) + shift * p.C;
+  // A strict local minimum of A_H, before the fold of the branch: K + σC positive definite, with
+  // σ = 1e-6 × max_i K_ii / C_ii (a Rayleigh quotient, so at most the largest eigenvalue of
+  // K v = λ C v) against the nearly singular tangential modes. Those are not all positive: on the
+  // circle at n = 6 the two softest are −1.0e-8 and −0.9e-8 of C (λ_max 1.31) all along the branch
+  // from H = −0.62 on, and the shift 1e-8 C used before stopped the continuation there; at n = 10
+  // about 20 soft modes lie at −6e-9 … −2e-12 λ_max (docs/cmc.md, "Not done yet"). A fold is
+  // where a mode of the surface's normal motion crosses 0; past it the corrector finds no point.
+  bool strict_minimum(double H, Eigen::VectorXd* tangent) {
+    Eigen::MatrixXd K = p.hessian(H);
+    const double scale = K.diagonal().cwiseQuotient(p.C.diagonal()).maxCoeff();
+    if (!(scale > 0)) return false;
+    K += 1e-6 * scale * p.C;
     Eigen::LLT<Eigen::MatrixXd> llt(K);
     if (llt.info() != Eigen::Success) return false;
     if (tangent) *tangent = -2.0 * llt.solve(p.volume_gradient());
@@ -724,7 +736,7 @@ struct AreaSolve {
   // A at H = 0 from the net in p (the Dirichlet extremal).
   bool minimal_surface() {
     choose_rule();
-    return correct(0.0).ok;
+    return correct(0.0, o.tolerance).ok;
   }
 
   // H mode, route 1: the D_H critical point at H, corrected on A_H.
@@ -773,6 +785,7 @@ struct AreaSolve {
     if (!strict_minimum(0.0, &tangent))
       return {0.0, false, Status::NoConvergence, "the critical point of the area at H = 0 is not a strict minimum"};
     Eigen::VectorXd y = p.get();
+    Net at = make_net(data, p.P());
     StepController control(Ht, first_step(Ht, p.P(), fixed_idx), o);
     while (!control.reached_target()) {
       if (!control.attempt())
@@ -783,10 +796,26 @@ struct AreaSolve {
       const bool last = step.hn == Ht;
       const Eigen::VectorXd pred = y + tangent * step.s;
       p.set(pred);
-      const CorrectorStats st = correct(step.hn);
+      const Net predicted = make_net(data, p.P());
+      // Each step is corrected to 1e-8 (relative first variation; the tolerance if looser), the
+      // last one to the tolerance, as in the volume continuation: on the circle at n = 8 the
+      // steps' correctors stalled at 1.0e-11 … 1.04e-11 against 1e-11 from H ≈ −0.9 on, and the
+      // step control took that for the fold.
+      const CorrectorStats st = correct(step.hn, last ? o.tolerance : 1e-8);
+      const Net now = make_net(data, p.P());
+      // On the branch when the corrected point lies nearer the prediction than half its distance
+      // from the last point, both measured along the surface normals (normal_gap), as in the
+      // volume continuation: the corrector also moves the points along the surface, in the nearly
+      // singular tangential modes, by as much as the step itself. The point test of the D_H
+      // continuation (on_branch) rejected every step on the circle at n = 6 down to a step of
+      // 9e-5 from H = 0 (the planar minimal surface, where the tangential modes are exactly
+      // singular), though each corrector converged at a strict minimum of A_H.
+      const double dev = normal_gap(predicted, now), move = normal_gap(at, now);
       Eigen::VectorXd next;
-      if (st.ok && on_branch(y, pred, p.get()) && strict_minimum(step.hn, last ? nullptr : &next)) {
+      if (st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm()) &&
+          strict_minimum(step.hn, last ? nullptr : &next)) {
         y = p.get();
+        at = now;
         if (!last) tangent = next;
         ++steps;
         control.accept(step, st.iterations);
@@ -1327,7 +1356,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
                        " (a folded or nearly singular parametrisation at a corner); reached after: " + out.message};
           break;
         }
-        const CorrectorStats st = o.V ? s.bordered_correct(*o.V, out.H) : s.correct(out.H);
+        const CorrectorStats st = o.V ? s.bordered_correct(*o.V, out.H) : s.correct(out.H, o.tolerance);
         if (!st.ok) {
           out = {out.H, false, Status::NumericalLimit,
                  "the correction with the refined quadrature rule (q = " +

@@ -92,6 +92,29 @@ TEST(CliUsability, SolveWithoutSolutionSaysWhyInTheSummary) {
   EXPECT_NE(r.out.find("not converged       no critical point on the branch"), std::string::npos) << r.out;
 }
 
+// The same job with the area functional: the caps over the unit circle exist for |H| ≤ 1 only
+// (the hemisphere at H = −1 is the fold of their branch), so H = −1.5 has no solution: exit 1,
+// `converged: false`, and the message says where the branch of A_H critical points ends.
+TEST(CliUsability, AreaJobPastTheFoldExitsOneAndNamesTheFold) {
+  std::string job = slurp(kFold);
+  const auto at = job.find("\"solver\": \"newton\"");
+  ASSERT_NE(at, std::string::npos);
+  job.insert(at, "\"functional\": \"area\", ");
+  const fs::path out = tmpdir() / "area_fold";
+  const CmdResult r = run("solve " + write("area_fold.json", job).string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 1) << r.err;
+  const std::string res = slurp((out / "result.json").string());
+  EXPECT_NE(res.find("\"converged\": false"), std::string::npos);
+  EXPECT_NE(res.find("\"functional\": \"area\""), std::string::npos);
+  const std::smatch m = [&] {
+    std::smatch mm;
+    std::regex_search(res, mm, std::regex("no critical point of A_H on the branch from H = 0 beyond H ≈ (-?[0-9.e+-]+)"));
+    return mm;
+  }();
+  ASSERT_EQ(m.size(), 2u) << res.substr(0, 600);
+  EXPECT_NEAR(std::stod(m[1].str()), -1.0, 1e-3) << m[0];  // measured -0.999996
+}
+
 TEST(CliUsability, SolveSamplesOverridesTheJobAndIsValidated) {
   const fs::path out = tmpdir() / "samples";
   ASSERT_EQ(run("solve " + kPdeJob + " --out " + out.string() + " -q --samples 4").status, 0);

@@ -362,6 +362,25 @@ TEST(CmcArea, BadInput) {
   EXPECT_EQ(to_string(CmcFunctionalKind::Dirichlet), "dirichlet");
 }
 
+// Past the fold: the spherical caps over the unit circle exist for |H| ≤ 1, and their branch turns
+// at the hemisphere (H = −1). At H = −1.1 there is no critical point of A_H near the caps (the D_H
+// branch of the paper's functional goes on to about −1.09 at n = 8 and past −1.1 at n = 6, but its
+// points are not CMC). The continuation of A_H from H = 0 must end at the hemisphere: before its
+// branch test measured along the normals, its loosened step tolerance and its scaled minimum test,
+// it ended at H ≈ −9e-5 (n = 6) and −0.90 (n = 8) and called that the fold.
+TEST(CmcArea, PastTheHemisphereTheFoldIsReportedAtHMinus1) {
+  for (const int n : {6, 8}) {
+    SCOPED_TRACE(n);
+    const CmcResult<TriangularNet> r = solve_cmc(circle_three_arcs(n), area_options(-1.1));
+    EXPECT_EQ(r.summary.status, Status::Fold) << r.summary.message;
+    EXPECT_FALSE(r.summary.converged);
+    const std::string key = "no critical point of A_H on the branch from H = 0 beyond H ≈ ";
+    const auto at = r.summary.message.find(key);
+    ASSERT_NE(at, std::string::npos) << r.summary.message;
+    EXPECT_NEAR(std::stod(r.summary.message.substr(at + key.size())), -1.0, 1e-3);  // measured −0.999997
+  }
+}
+
 // H = 0 on a tensor net: a piece of the helicoid (s cos t, s sin t, t), s in [0.3, 1], t in
 // [0, 1.2], whose boundary is given in the helicoid's own (non-conformal) parametrisation. The
 // minimal surface is the helicoid piece: |x sin z - y cos z| (≈ the distance) over the samples.
