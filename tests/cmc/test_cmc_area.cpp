@@ -362,6 +362,29 @@ TEST(CmcArea, BadInput) {
   EXPECT_EQ(to_string(CmcFunctionalKind::Dirichlet), "dirichlet");
 }
 
+// A boundary that retraces itself: the edge v = 0 of x = (u + 0.25 sin(2πu)(1 − v), v, 0.3xv) runs
+// back over part of its length (dx/du < 0 near u = 1/2), so every surface with this boundary
+// parametrisation folds next to that edge, where |x_u ∧ x_v| vanishes and the normal flips. The
+// solve must not call what it reaches a CMC surface: not converged, and the message says why
+// before anything else (measured at n = 3: |x_u ∧ x_v| down to 5e-4 … 7e-4 of its mean, the
+// normal flips; the first variation itself is 8e-13 and 7e-17, and the rule does not converge
+// across the fold).
+TEST(CmcArea, FoldedParametrisationIsReportedAsDegenerate) {
+  const auto retraced = [](double u, double v) {
+    const double x = u + 0.25 * std::sin(2 * std::numbers::pi * u) * (1 - v);
+    return Eigen::Vector3d(x, v, 0.3 * x * v);
+  };
+  const TensorNet data = tensor_boundary(3, retraced);
+  for (const double H : {0.0, 0.3}) {
+    SCOPED_TRACE(H);
+    const CmcResult<TensorNet> r = solve_cmc(data, area_options(H));
+    EXPECT_FALSE(r.summary.converged);
+    EXPECT_EQ(r.summary.status, Status::NoConvergence);
+    EXPECT_EQ(r.summary.message.rfind("degenerate parametrisation: |x_u ∧ x_v| falls to ", 0), 0u) << r.summary.message;
+    EXPECT_NE(r.summary.message.find("the normal flips (not a CMC surface)"), std::string::npos) << r.summary.message;
+  }
+}
+
 // Past the fold: the spherical caps over the unit circle exist for |H| ≤ 1, and their branch turns
 // at the hemisphere (H = −1). At H = −1.1 there is no critical point of A_H near the caps (the D_H
 // branch of the paper's functional goes on to about −1.09 at n = 8 and past −1.1 at n = 6, but its
