@@ -3,15 +3,15 @@
 // Dirichlet extremal (the linear solve, H = 0) as the baseline; CmcArea/{newton,ceres}/<n> for the
 // area functional A + 2HV on the same data; CmcArea/circle/<n> for the area functional on the
 // non-conformal data of the paper's Fig. 1 (the unit circle in three arcs by angle, H = -0.5), the
-// case of docs/cmc_evolver.md; CmcMeanCurvature/{newton,newton-plain,ceres}/circle/<n> for the
+// case of docs/cmc_evolver.md; CmcArea/folded/3 where the answer folds; CmcMeanCurvature/{newton,newton-plain,ceres}/circle/<n> for the
 // least squares of the mean curvature on that circle (newton-plain: without geodesic
 // acceleration), and {newton,ceres}-volume/circle/<n> for its V form. AreaForm/{gradient,rows-and-scale}/
 // {triangle,square}/<n>: one evaluation of the area's first variation on the rule the solves take
 // at that degree (q = 15 on the triangle, 2n + 4 on the square), all rows against the free rows
 // with their scale (what every residual of the area route costs; the baseline is the full gradient);
 // AreaForm/hessian/{triangle,square}/<n> the free block of the Hessian on the same rules, and
-// AreaForm/hessian/triangle-graded/<n> on the graded q = 64 rule of the nearly degenerate corners
-// (docs/performance.md, section 9). The per-degree setup (Gram and volume quadrature tables) is cached by
+// AreaForm/{hessian,rows-and-scale}/triangle-graded/<n> on the graded q = 64 rule of the nearly
+// degenerate corners (docs/performance.md, section 9). The per-degree setup (Gram and volume quadrature tables) is cached by
 // CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after the
 // first iteration.
 #include <benchmark/benchmark.h>
@@ -103,6 +103,26 @@ void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolve
   state.counters["residual"] = residual;
 }
 void AreaCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::Area); }
+// The area functional where its answer folds (tests/cmc/test_cmc_area.cpp,
+// FoldedParametrisationIsReportedAsDegenerate: a tensor boundary whose edge v = 0 retraces itself,
+// H = 0, n = 3). Its rule is refined to q = 64 in vain (the integrand has a kink along the fold),
+// so every residual runs on 32 768 nodes: the case of the per-thread node arrays
+// (docs/performance.md, section 9).
+void AreaFolded(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const TensorNet data = tensor_boundary(n, [](double u, double v) {
+    const double x = u + 0.25 * std::sin(2 * std::numbers::pi * u) * (1 - v);
+    return Eigen::Vector3d(x, v, 0.3 * x * v);
+  });
+  CmcOptions o;
+  o.functional = CmcFunctionalKind::Area;
+  for (auto _ : state) {
+    const CmcResult<TensorNet> r = solve_cmc(data, o);
+    benchmark::DoNotOptimize(r.net.points().data());
+    state.counters["converged"] = r.summary.converged ? 1 : 0;
+    state.counters["quadrature_points"] = r.quadrature_points;
+  }
+}
 // The least squares of the mean curvature on the same circle (its residual is √Φ, tolerance 1e-6;
 // it converges from n = 8 on at H = -0.5, docs/cmc.md).
 // Solver newton is the library's own Levenberg–Marquardt loop, ceres the same residuals as one
@@ -164,6 +184,7 @@ void AreaRowsSquare(benchmark::State& s) { AreaFormRoute(s, false, true); }
 void AreaHessianTriangle(benchmark::State& s) { AreaFormRoute(s, true, false, true); }
 void AreaHessianSquare(benchmark::State& s) { AreaFormRoute(s, false, false, true); }
 void AreaHessianGraded(benchmark::State& s) { AreaFormRoute(s, true, false, true, true); }
+void AreaRowsGraded(benchmark::State& s) { AreaFormRoute(s, true, true, false, true); }
 
 }  // namespace
 
@@ -174,6 +195,7 @@ BENCHMARK(AreaRowsSquare)->Name("AreaForm/rows-and-scale/square")->Arg(6)->Arg(1
 BENCHMARK(AreaHessianTriangle)->Name("AreaForm/hessian/triangle")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(AreaHessianSquare)->Name("AreaForm/hessian/square")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(AreaHessianGraded)->Name("AreaForm/hessian/triangle-graded")->Arg(10)->Unit(benchmark::kMicrosecond);
+BENCHMARK(AreaRowsGraded)->Name("AreaForm/rows-and-scale/triangle-graded")->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Dirichlet)->Name("Cmc/dirichlet")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Newton)->Name("Cmc/newton")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Ceres)->Name("Cmc/ceres")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
@@ -181,6 +203,7 @@ BENCHMARK(NLopt)->Name("Cmc/nlopt")->DenseRange(4, 15)->Unit(benchmark::kMicrose
 BENCHMARK(AreaNewton)->Name("CmcArea/newton")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCeres)->Name("CmcArea/ceres")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCircle)->Name("CmcArea/circle")->DenseRange(6, 12, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(AreaFolded)->Name("CmcArea/folded")->Arg(3)->Unit(benchmark::kMillisecond);
 BENCHMARK(MeanCurvatureCircle)
     ->Name("CmcMeanCurvature/newton/circle")
     ->DenseRange(10, 14, 2)
