@@ -424,18 +424,23 @@ TEST(CmcArea, MinimalSurfaceIsTheHelicoidPiece) {
 namespace bpde {
 namespace {
 
+// With C¹ data (boundary+adjacent): the critical point of the area (H = 0) and the Dirichlet
+// extremal.
+template <class Net>
+std::pair<CmcResult<Net>, CmcResult<Net>> minimal_and_dirichlet_c1(const Net& data) {
+  CmcOptions o = area_options(0.0);
+  o.fixed = FixedSet::BoundaryAdjacent;
+  CmcOptions od;
+  od.fixed = FixedSet::BoundaryAdjacent;
+  return {solve_cmc(data, o), solve_cmc(data, od)};
+}
+
 // C¹ data (boundary+adjacent) with a closed-form answer: the helicoid piece of
 // MinimalSurfaceIsTheHelicoidPiece, its boundary and next ring taken from the interpolating net of
 // the helicoid's own non-conformal parametrisation. The minimal surface with these boundary curves
 // and tangent planes is the helicoid itself.
 TEST(CmcArea, C1DataMinimalSurfaceIsTheHelicoidPiece) {
-  const TensorNet data = testing::tensor_interpolant(6, testing::helicoid);
-  CmcOptions o = area_options(0.0);
-  o.fixed = FixedSet::BoundaryAdjacent;
-  const CmcResult<TensorNet> r = solve_cmc(data, o);
-  CmcOptions od;
-  od.fixed = FixedSet::BoundaryAdjacent;
-  const CmcResult<TensorNet> d = solve_cmc(data, od);
+  const auto [r, d] = minimal_and_dirichlet_c1(testing::tensor_interpolant(6, testing::helicoid));
   EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
   EXPECT_LE(r.summary.residual, kConvergenceTolerance);
   EXPECT_LE(testing::helicoid_off(r.net), 3e-7);  // measured 1.6e-7 at n = 6 (the degree: 1.1e-7 at n = 8)
@@ -472,12 +477,7 @@ TEST(CmcArea, C1DataMinimalSurfaceIsEnnepersSurfaceOnATriangle) {
     const TriangularNet exact = exact6.elevated(n - 6);
     TriangularNet data = exact;
     for (const int i : data.free_indices(FixedSet::BoundaryAdjacent)) data.points().row(i).setZero();
-    CmcOptions o = area_options(0.0);
-    o.fixed = FixedSet::BoundaryAdjacent;
-    const CmcResult<TriangularNet> r = solve_cmc(data, o);
-    CmcOptions od;
-    od.fixed = FixedSet::BoundaryAdjacent;
-    const CmcResult<TriangularNet> d = solve_cmc(data, od);
+    const auto [r, d] = minimal_and_dirichlet_c1(data);
     EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.message;
     const double net_off = (r.net.points() - exact.points()).cwiseAbs().maxCoeff();
     if (n < 8) {
