@@ -410,6 +410,9 @@ constexpr int kMeanCurvatureStartCorrector = 8;
 // most this (AreaSolve::dirichlet_first_variation): on the conformal sphere triangle 8.2e-7 at
 // n = 10 and below from there on, on the Fig. 1 circle 7e-2.
 constexpr double kConformalFirstVariation = 1e-6;
+// The relative first variation each step of the H and V continuations is corrected to (the
+// tolerance when that is looser); the end point is then corrected to the tolerance.
+constexpr double kContinuationStepTolerance = 1e-8;
 
 
 template <class Net>
@@ -550,8 +553,12 @@ struct AreaSolve {
     return s;
   }
 
-  // The corrector to `tol` (at least the tolerance; the continuation's intermediate steps pass a
-  // looser one).
+  // The corrector to `tol` (at least the tolerance; the continuation's steps pass a looser one),
+  // then where it stalls the final phases, which aim at the tolerance itself: on the circle past
+  // H = −0.8 (n = 6 and 8) the steps whose final phases stopped at 1e-8 left points from which
+  // the next steps' Hessians were not positive definite or whose corrections moved along the
+  // surface by as much as the step, and the continuation ended at H ≈ −0.85 and −0.96 instead of
+  // the hemisphere.
   CorrectorStats correct(double H, double tol) {
     CmcOptions co = o;
     co.tolerance = std::max(tol, o.tolerance);
@@ -577,8 +584,9 @@ struct AreaSolve {
   // where a mode of the surface's normal motion crosses 0; past it the corrector finds no point.
   bool strict_minimum(double H, Eigen::VectorXd* tangent) {
     Eigen::MatrixXd K = p.hessian(H);
-    const double scale = K.diagonal().cwiseQuotient(p.C.diagonal()).maxCoeff();
-    if (!(scale > 0)) return false;
+    if (!K.allFinite()) return false;
+    const double scale = K.diagonal().cwiseQuotient(p.C.diagonal()).maxCoeff();  // C's diagonal > 0 (a Gram)
+    if (!(scale > 0) || !std::isfinite(scale)) return false;
     K += 1e-6 * scale * p.C;
     Eigen::LLT<Eigen::MatrixXd> llt(K);
     if (llt.info() != Eigen::Success) return false;
@@ -797,11 +805,13 @@ struct AreaSolve {
       const Eigen::VectorXd pred = y + tangent * step.s;
       p.set(pred);
       const Net predicted = make_net(data, p.P());
-      // Each step is corrected to 1e-8 (relative first variation; the tolerance if looser), the
-      // last one to the tolerance, as in the volume continuation: on the circle at n = 8 the
-      // steps' correctors stalled at 1.0e-11 … 1.04e-11 against 1e-11 from H ≈ −0.9 on, and the
-      // step control took that for the fold.
-      const CorrectorStats st = correct(step.hn, last ? o.tolerance : 1e-8);
+      // Every step, the last one too, is corrected to 1e-8 (relative first variation; the
+      // tolerance if looser), as in the volume continuation, and the end point once more to the
+      // tolerance after the loop: on the circle at n = 8 the steps' correctors stalled at
+      // 1.0e-11 … 1.04e-11 against 1e-11 from H ≈ −0.9 on, and the step control took that for
+      // the fold. A stall of the final correction is a numerical limit, which the solve's end
+      // check reports as such.
+      const CorrectorStats st = correct(step.hn, kContinuationStepTolerance);
       const Net now = make_net(data, p.P());
       // On the branch when the corrected point lies nearer the prediction than half its distance
       // from the last point, both measured along the surface normals (normal_gap), as in the
@@ -826,6 +836,7 @@ struct AreaSolve {
                   "no critical point of A_H on the branch from H = 0 beyond H ≈ " + num(control.h())};
       }
     }
+    correct(Ht, o.tolerance);
     return {Ht, true, Status::Converged,
             "A_H continued from H = 0 to H = " + num(Ht) + " in " + std::to_string(steps) + " step(s)"};
   }
@@ -1189,7 +1200,7 @@ struct AreaSolve {
     for (const double k : {16.0, 64.0, 256.0}) {
       const double V1 = Vref + (V0 - Vref) / k;
       if (!(V1 != V0)) break;
-      const double step_tol = std::max(o.tolerance, 1e-8);
+      const double step_tol = std::max(o.tolerance, kContinuationStepTolerance);
       const AreaOutcome start = from_dirichlet_volume(V1);
       // Route 1 may end "ok" above the tolerance (a numerical limit); a start for the
       // continuation must meet the steps' tolerance.
