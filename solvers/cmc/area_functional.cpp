@@ -59,12 +59,12 @@ void frame_into(const Eigen::MatrixXd& Bu, const Eigen::MatrixXd& Bv, const Eige
 // AreaForm::release_scratch(), as the Hessian's blocks are (below): fresh arrays per call cost
 // their page faults on every call where the allocator has returned them to the system in
 // between. Measured on a folded tensor patch at n = 3 whose rule is refined to q = 64 (32 768
-// nodes, 0.8 MB per array, 11 arrays per gradient), in a plain program linking the library:
+// nodes, 0.8 MB per array), in a plain program linking the library:
 // 9.2 s with 812 000 minor page faults and 4.3 s of system time, 1.9 s with the scratch
 // (docs/performance.md, section 9; the bpde command sets the allocator's thresholds itself).
 struct FrameScratch {
   NodeFrame f;
-  Eigen::MatrixX3d nh, a, b, wa, wb, aa, bb;
+  Eigen::MatrixX3d wa, wb, aa, bb;
 };
 FrameScratch& frame_scratch() {
   thread_local FrameScratch scratch;
@@ -176,21 +176,21 @@ void AreaForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vec
   FrameScratch& sc = frame_scratch();
   NodeFrame& f = sc.f;
   frame_into(Bu_, Bv_, P, f);
-  Eigen::MatrixX3d &nh = sc.nh, &a = sc.a, &b = sc.b, &wa = sc.wa, &wb = sc.wb, &aa = sc.aa, &bb = sc.bb;
-  nh.resize(f.N.rows(), 3);
-  nh = f.len.cwiseInverse().asDiagonal() * f.N;
-  cross_rows_into(f.Xv, nh, a);
-  cross_rows_into(nh, f.Xu, b);
-  wa.resize(a.rows(), 3);
-  wb.resize(b.rows(), 3);
-  wa = w_.asDiagonal() * a;
-  wb = w_.asDiagonal() * b;
+  // n̂ over N's storage, and the cross products a = x_v ∧ n̂, b = n̂ ∧ x_u straight into their
+  // weighted forms w a, w b (|a|, |b| weighted first where the scale is asked for): the same
+  // operations in the same order as separate arrays would take, in four arrays instead of seven.
+  Eigen::MatrixX3d &nh = f.N, &wa = sc.wa, &wb = sc.wb, &aa = sc.aa, &bb = sc.bb;
+  nh = f.len.cwiseInverse().asDiagonal() * nh;  // coefficient-wise: in place is safe
+  cross_rows_into(f.Xv, nh, wa);
+  cross_rows_into(nh, f.Xu, wb);
   if (S) {
-    aa.resize(a.rows(), 3);
-    bb.resize(b.rows(), 3);
-    aa = w_.asDiagonal() * a.cwiseAbs();
-    bb = w_.asDiagonal() * b.cwiseAbs();
+    aa.resize(wa.rows(), 3);
+    bb.resize(wb.rows(), 3);
+    aa = w_.asDiagonal() * wa.cwiseAbs();
+    bb = w_.asDiagonal() * wb.cwiseAbs();
   }
+  wa = w_.asDiagonal() * wa;
+  wb = w_.asDiagonal() * wb;
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   if (G) G->resize(k, 3);
   if (S) S->resize(k, 3);

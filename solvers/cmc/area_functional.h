@@ -90,7 +90,7 @@ class AreaForm {
   /// between calls until release_scratch().
   Eigen::MatrixXd hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const;
   /// Frees this thread's scratch: the Hessian's blocks and the per-node arrays (x_u, x_v, N, |N|
-  /// and the gradient's products: 11 × #nodes × 3 doubles at most) that value, min_normal,
+  /// and the gradient's products: 7 arrays of #nodes × 3 doubles and one of #nodes) that value, min_normal,
   /// gradient and hessian keep between calls (the area solve calls it when it ends).
   static void release_scratch();
 
