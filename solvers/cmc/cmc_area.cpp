@@ -576,18 +576,21 @@ struct AreaSolve {
   }
 
   // A strict local minimum of A_H, before the fold of the branch: K + σC positive definite, with
-  // σ = 1e-6 × max_i K_ii / C_ii (a Rayleigh quotient, so at most the largest eigenvalue of
-  // K v = λ C v) against the nearly singular tangential modes. Those are not all positive: on the
-  // circle at n = 6 the two softest are −1.0e-8 and −0.9e-8 of C (λ_max 1.31) all along the branch
-  // from H = −0.62 on, and the shift 1e-8 C used before stopped the continuation there; at n = 10
-  // about 20 soft modes lie at −6e-9 … −2e-12 λ_max (docs/cmc.md, "Not done yet"). A fold is
-  // where a mode of the surface's normal motion crosses 0; past it the corrector finds no point.
+  // σ = 1e-4 × max_i K_ii / C_ii (a Rayleigh quotient, so at most the largest eigenvalue of
+  // K v = λ C v; 1e-4 is the soft-mode phase's split of soft and hard modes) against the nearly
+  // singular tangential modes. Those are not all positive: on the circle at n = 6 the two softest
+  // are −1.0e-8 and −0.9e-8 of C (λ_max 1.31) all along the branch from H = −0.62 on, and the
+  // shift 1e-8 C used before stopped the continuation there; on the helicoid piece at n = 6 a
+  // cluster of them lies at −5e-7 … −2e-8 λ_max from H ≈ −0.06 on, where σ = 1e-6 × max K_ii/C_ii
+  // stopped it; at n = 10 on the circle about 20 soft modes lie at −6e-9 … −2e-12 λ_max
+  // (docs/cmc.md, "Not done yet"). A fold is where a mode of the surface's normal motion
+  // crosses 0; past it the corrector finds no point.
   bool strict_minimum(double H, Eigen::VectorXd* tangent) {
     Eigen::MatrixXd K = p.hessian(H);
     if (!K.allFinite()) return false;
     const double scale = K.diagonal().cwiseQuotient(p.C.diagonal()).maxCoeff();  // C's diagonal > 0 (a Gram)
     if (!(scale > 0) || !std::isfinite(scale)) return false;
-    K += 1e-6 * scale * p.C;
+    K += 1e-4 * scale * p.C;
     Eigen::LLT<Eigen::MatrixXd> llt(K);
     if (llt.info() != Eigen::Success) return false;
     if (tangent) *tangent = -2.0 * llt.solve(p.volume_gradient());
@@ -741,10 +744,11 @@ struct AreaSolve {
     return so;
   }
 
-  // A at H = 0 from the net in p (the Dirichlet extremal).
-  bool minimal_surface() {
+  // A at H = 0 from the net in p (the Dirichlet extremal), to `tol` (the tolerance; the start of
+  // the H continuation needs only its steps' tolerance).
+  bool minimal_surface(double tol) {
     choose_rule();
-    return correct(0.0, o.tolerance).ok;
+    return correct(0.0, tol).ok;
   }
 
   // H mode, route 1: the D_H critical point at H, corrected on A_H.
@@ -787,7 +791,10 @@ struct AreaSolve {
   AreaOutcome continuation(const Eigen::MatrixX3d& start, const std::vector<int>& fixed_idx, int& steps) {
     const double Ht = o.H;
     p.base.P = start;
-    if (!minimal_surface())
+    // The start needs only the steps' tolerance: on the tensor catenoid at n = 6 the critical
+    // point of A stops at 1.2e-10 (a stationary point in the soft modes), and the continuation
+    // was refused as "no critical point of the area (H = 0)".
+    if (!minimal_surface(kContinuationStepTolerance))
       return {0.0, false, Status::NoConvergence, "no critical point of the area (H = 0) from the Dirichlet extremal"};
     Eigen::VectorXd tangent;
     if (!strict_minimum(0.0, &tangent))
@@ -795,6 +802,7 @@ struct AreaSolve {
     Eigen::VectorXd y = p.get();
     Net at = make_net(data, p.P());
     StepController control(Ht, first_step(Ht, p.P(), fixed_idx), o);
+    std::string rejected;  // why the last step was rejected, for the fold message
     while (!control.reached_target()) {
       if (!control.attempt())
         return {control.h(), false, Status::NoConvergence,
@@ -822,8 +830,12 @@ struct AreaSolve {
       // singular), though each corrector converged at a strict minimum of A_H.
       const double dev = normal_gap(predicted, now), move = normal_gap(at, now);
       Eigen::VectorXd next;
-      if (st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm()) &&
-          strict_minimum(step.hn, last ? nullptr : &next)) {
+      const bool on_branch = st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
+      const bool minimum = on_branch && strict_minimum(step.hn, last ? nullptr : &next);
+      rejected = !st.ok     ? "its corrector stopped at a relative first variation of " + num(st.residual, 3)
+                 : !on_branch ? "the corrected surface left the branch"
+                              : "the Hessian there is not positive definite beyond the soft modes";
+      if (minimum) {
         y = p.get();
         at = now;
         if (!last) tangent = next;
@@ -833,7 +845,8 @@ struct AreaSolve {
         p.set(y);
         if (!control.reject(step))
           return {control.h(), false, Status::Fold,
-                  "no critical point of A_H on the branch from H = 0 beyond H ≈ " + num(control.h())};
+                  "no critical point of A_H on the branch from H = 0 beyond H ≈ " + num(control.h()) +
+                      " (at the last step tried, " + rejected + ")"};
       }
     }
     correct(Ht, o.tolerance);
@@ -1117,7 +1130,7 @@ struct AreaSolve {
   // point of A at H = 0 (V = V_min) to V0.
   AreaOutcome volume_continuation(const Eigen::MatrixX3d& start, int& steps) {
     p.base.P = start;
-    if (!minimal_surface())
+    if (!minimal_surface(o.tolerance))
       return {0.0, false, Status::NoConvergence, "no critical point of the area (H = 0) from the Dirichlet extremal"};
     const double Vmin = p.base.f->volume_form().value(p.P());
     if (*o.V == Vmin) return {0.0, true, Status::Converged, "V0 is the volume of the critical point of the area"};
@@ -1313,7 +1326,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       }
     } else if (o.H == 0.0) {
       s.p.base.P = extremal;
-      out.ok = s.minimal_surface();
+      out.ok = s.minimal_surface(o.tolerance);
       out.message = "critical point of the area (H = 0) from the Dirichlet extremal";
       if (!out.ok) {
         // The corrector stopped above the tolerance. Where it got within kAreaStallResidual of a
