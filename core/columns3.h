@@ -8,11 +8,15 @@
 namespace bpde {
 
 /// Row-wise cross products of two #nodes x 3 matrices: row r is a.row(r) x b.row(r).
-inline Eigen::MatrixX3d cross_rows(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b) {
-  Eigen::MatrixX3d c(a.rows(), 3);
+inline void cross_rows_into(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b, Eigen::MatrixX3d& c) {
+  c.resize(a.rows(), 3);  // no allocation when c already has a's size (c must not be a or b)
   c.col(0) = a.col(1).cwiseProduct(b.col(2)) - a.col(2).cwiseProduct(b.col(1));
   c.col(1) = a.col(2).cwiseProduct(b.col(0)) - a.col(0).cwiseProduct(b.col(2));
   c.col(2) = a.col(0).cwiseProduct(b.col(1)) - a.col(1).cwiseProduct(b.col(0));
+}
+inline Eigen::MatrixX3d cross_rows(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b) {
+  Eigen::MatrixX3d c;
+  cross_rows_into(a, b, c);
   return c;
 }
 

@@ -34,14 +34,6 @@ struct NodeFrame {
   Eigen::VectorXd len;
 };
 
-// c = a ∧ b row by row, into c's storage (no allocation when c already has a's size).
-void cross_rows_into(const Eigen::MatrixX3d& a, const Eigen::MatrixX3d& b, Eigen::MatrixX3d& c) {
-  c.resize(a.rows(), 3);
-  c.col(0) = a.col(1).cwiseProduct(b.col(2)) - a.col(2).cwiseProduct(b.col(1));
-  c.col(1) = a.col(2).cwiseProduct(b.col(0)) - a.col(0).cwiseProduct(b.col(2));
-  c.col(2) = a.col(0).cwiseProduct(b.col(1)) - a.col(1).cwiseProduct(b.col(0));
-}
-
 // The frame at P into f's storage.
 void frame_into(const Eigen::MatrixXd& Bu, const Eigen::MatrixXd& Bv, const Eigen::MatrixX3d& P, NodeFrame& f) {
   f.Xu.resize(Bu.rows(), 3);
@@ -60,7 +52,7 @@ void frame_into(const Eigen::MatrixXd& Bu, const Eigen::MatrixXd& Bv, const Eige
 // their page faults on every call where the allocator has returned them to the system in
 // between. Measured on a folded tensor patch at n = 3 whose rule is refined to q = 64 (32 768
 // nodes, 0.8 MB per array), in a plain program linking the library:
-// 9.2 s with 812 000 minor page faults and 4.3 s of system time, 1.9 s with the scratch
+// 9.2 s with 812 000 minor page faults and 4.3 s of system time, 2.1 s with the scratch
 // (docs/performance.md, section 9; the bpde command sets the allocator's thresholds itself).
 struct FrameScratch {
   NodeFrame f;

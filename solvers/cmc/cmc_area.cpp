@@ -830,10 +830,10 @@ struct AreaSolve {
       // singular), though each corrector converged at a strict minimum of A_H.
       const double dev = normal_gap(predicted, now), move = normal_gap(at, now);
       Eigen::VectorXd next;
-      const bool on_branch = st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
-      const bool minimum = on_branch && strict_minimum(step.hn, last ? nullptr : &next);
-      rejected = !st.ok     ? "its corrector stopped at a relative first variation of " + num(st.residual, 3)
-                 : !on_branch ? "the corrected surface left the branch"
+      const bool near_prediction = st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
+      const bool minimum = near_prediction && strict_minimum(step.hn, last ? nullptr : &next);
+      rejected = !st.ok           ? "its corrector stopped at a relative first variation of " + num(st.residual, 3)
+                 : !near_prediction ? "the corrected surface left the branch"
                               : "the Hessian there is not positive definite beyond the soft modes";
       if (minimum) {
         y = p.get();

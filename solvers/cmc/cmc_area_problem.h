@@ -66,7 +66,7 @@ Regularity regularity(const TriangularNet& net, double A);
 Regularity regularity(const TensorNet& net, double A);
 /// max over the samples (a/10, b/10) of the domain, without the corners (the regularity test's
 /// margin 0.05), of |<x_b − x_a, N_a>|, N_a the unit normal of a: how far surface b lies from
-/// surface a along a's normals (the area V continuation's branch test, cmc_area.cpp). A motion of
+/// surface a along a's normals (the branch test of the area's H and V continuations, cmc_area.cpp). A motion of
 /// the points along the surface (a reparametrisation, the nearly singular directions of A_H)
 /// changes it only to second order, where the distance of the points themselves changes to first
 /// order. +inf where a's normal vanishes at a sample. a and b of the same degree.
