@@ -161,9 +161,10 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     if (j.contains("start")) {
       if (!area) throw ParseError(path + ".start: only with \"functional\": \"area\"");
       const std::string st = string(j["start"], path + ".start");
-      if (st != "mean-curvature" && st != "dirichlet")
-        throw ParseError(path + ".start: unknown start \"" + st + "\" (expected mean-curvature or dirichlet)");
-      p.area_mean_curvature_start = st == "mean-curvature";
+      if (st != "mean-curvature" && st != "dirichlet" && st != "minimal-surface")
+        throw ParseError(path + ".start: unknown start \"" + st +
+                         "\" (expected mean-curvature, dirichlet or minimal-surface)");
+      p.area_start = parse_area_start(st);
     }
 
     if (j.contains("solver")) {

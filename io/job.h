@@ -31,9 +31,10 @@ struct Problem {
   /// cmc: "dirichlet" (D_H, default), "area" (A_H) or "mean-curvature" (least squares of H_x − H)
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
   double mean_curvature_tolerance = 1e-6;  ///< cmc, functional mean-curvature: converged when √Φ ≤ this
-  /// cmc, functional area: "start": "mean-curvature" (true, the default: route 0 first) or "dirichlet"
-  /// (false: the routes from the D_H critical point alone); CmcOptions::area_mean_curvature_start
-  bool area_mean_curvature_start = true;
+  /// cmc, functional area: "start": "mean-curvature" (the default: route 0 first), "dirichlet" (the
+  /// routes from the D_H critical point) or "minimal-surface" (the branch from H = 0 alone);
+  /// CmcOptions::area_start
+  AreaStart area_start = AreaStart::MeanCurvature;
 };
 
 struct Job {

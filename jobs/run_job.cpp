@@ -121,7 +121,7 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   o.progress = job_progress();
   o.functional = job.problem.functional;
   o.mean_curvature_tolerance = job.problem.mean_curvature_tolerance;
-  o.area_mean_curvature_start = job.problem.area_mean_curvature_start;
+  o.area_start = job.problem.area_start;
   if (job.problem.kind == ProblemKind::CmcV)
     o.V = job.problem.V;
   else

@@ -532,10 +532,13 @@ PYBIND11_MODULE(_core, m) {
       .def_readwrite("mean_curvature_tolerance", &bpde::CmcOptions::mean_curvature_tolerance)
       .def_readwrite("max_least_squares_iterations", &bpde::CmcOptions::max_least_squares_iterations)
       .def_readwrite("geodesic_acceleration", &bpde::CmcOptions::geodesic_acceleration)
-      .def_readwrite("area_mean_curvature_start", &bpde::CmcOptions::area_mean_curvature_start,
-                     "area functional: start from the least-squares mean-curvature surface first (route 0; "
-                     "default True; not tried where the D_H solution is already within 1e-6 of a critical point "
-                     "of A_H, as on conformal data; docs/cmc.md, \"The mean-curvature start\").")
+      .def_property(
+          "area_start", [](const bpde::CmcOptions& o) { return bpde::to_string(o.area_start); },
+          [](bpde::CmcOptions& o, const std::string& s) { o.area_start = bpde::parse_area_start(s); },
+          "area functional: \"mean-curvature\" (default: the least-squares mean-curvature surface first, "
+          "route 0, not tried where the D_H solution is already within 1e-6 of a critical point of A_H, as "
+          "on conformal data), \"dirichlet\" (from the D_H solution) or \"minimal-surface\" (the branch "
+          "from the minimal surface, H = 0, alone); docs/cmc.md, \"The area functional\".")
       .def_readwrite("max_corrector_iterations", &bpde::CmcOptions::max_corrector_iterations)
       .def_readwrite("max_continuation_steps", &bpde::CmcOptions::max_continuation_steps)
       .def_readwrite("min_step", &bpde::CmcOptions::min_step);

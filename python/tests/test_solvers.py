@@ -396,9 +396,14 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     result fields, and the same net and numbers as the job route on the Fig. 1 circle."""
     o = bezierpde.CmcOptions()
     assert (o.functional, o.mean_curvature_tolerance, o.max_least_squares_iterations, o.geodesic_acceleration,
-            o.area_mean_curvature_start) == ("dirichlet", 1e-6, 2000, True, True)
+            o.area_start) == ("dirichlet", 1e-6, 2000, True, "mean-curvature")
     with pytest.raises(bezierpde.ParameterError, match="mean-curvature"):
         o.functional = "curvature"
+    with pytest.raises(bezierpde.ParameterError, match="expected mean-curvature, dirichlet or minimal-surface"):
+        o.area_start = "plane"
+    o.area_start = "minimal-surface"
+    assert o.area_start == "minimal-surface"
+    o.area_start = "mean-curvature"
     job = {"boundary": {"type": "triangular", "degree": 8, "builder": "circle-three-arcs"},
            "problem": {"kind": "cmc", "H": -0.9, "functional": "mean-curvature"}}
     net_cli, report = bezierpde.solve(job)

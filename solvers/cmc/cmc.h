@@ -24,7 +24,7 @@
 // (1/3 ∫ |<x_u ∧ x_v, x>|).
 //
 // The area functional (options.functional = Area; docs/cmc.md, "The area functional"):
-//  - Route 0, both modes (options.area_mean_curvature_start, default true; docs/cmc.md, "The
+//  - Route 0, both modes (options.area_start = MeanCurvature, the default; docs/cmc.md, "The
 //    mean-curvature start"): the least-squares mean-curvature surface below (at H after at most
 //    min(max_least_squares_iterations, 300) Levenberg–Marquardt iterations; in the V mode at V0,
 //    with its H), converged or not, then at most 8 Newton iterations on A_H (the bordered
@@ -64,8 +64,9 @@
 //    nearer the prediction than half its distance to the last point, both along the surface
 //    normals), the bordered corrector and the final phases at V0; after a route that ended above
 //    the tolerance the lower residual is kept (each measured with a rule checked at its own net).
-//    Last, continued in V from the critical point of A at H = 0 (which fails on planar data: the
-//    flat start's area Hessian is singular in every in-plane direction). The multiplier H
+//    Last, continued in V from the critical point of A at H = 0 (each step to max(tolerance, 1e-8),
+//    then the bordered corrector and the final phases at V0; alone with AreaStart::MinimalSurface;
+//    docs/cmc.md, "The minimal-surface start"). The multiplier H
 //    (∇A + 2H∇V = 0 on the free points) is reported.
 //  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
 //    over the free points and μ = θ · (relative residual); a step is accepted when F falls as
@@ -171,6 +172,20 @@ enum class CmcFunctionalKind { Dirichlet, Area, MeanCurvature };
 CmcFunctionalKind parse_cmc_functional(const std::string& name);
 std::string to_string(CmcFunctionalKind f);
 
+/// Where the area functional starts (CmcOptions::area_start; docs/cmc.md, "The area functional"):
+///  - MeanCurvature (default): route 0, the least-squares mean-curvature surface, then the routes
+///    from the D_H critical point (Dirichlet) and, where they fail, the minimal-surface route;
+///  - Dirichlet: the routes from the D_H critical point, then the minimal-surface route;
+///  - MinimalSurface: only the branch through the critical point of A at H = 0 (the minimal
+///    surface spanning the boundary, from the Dirichlet extremal), continued in H (H form) or in V
+///    (V form) to the target. It selects the branch connected to the minimal surface and reports
+///    where that branch turns (status Fold in the H form).
+enum class AreaStart { MeanCurvature, Dirichlet, MinimalSurface };
+
+/// "mean-curvature" | "dirichlet" | "minimal-surface" (ParameterError otherwise).
+AreaStart parse_area_start(const std::string& name);
+std::string to_string(AreaStart s);
+
 /// "newton" | "ceres" | "nlopt" (ParameterError otherwise).
 CmcSolver parse_cmc_solver(const std::string& name);
 std::string to_string(CmcSolver s);
@@ -195,11 +210,12 @@ struct CmcOptions {
   /// steps (above); default true. false is plain LM, kept to measure the two side by side
   /// (CmcMeanCurvature/{newton,newton-plain}/circle/<n>). Solver ceres has no such step.
   bool geodesic_acceleration = true;
-  /// area functional: try route 0 first, the least-squares mean-curvature surface corrected on
-  /// A_H by a few Newton iterations (docs/cmc.md, "The mean-curvature start"); default true. false
-  /// starts from the D_H critical point only (the routes before route 0), kept to measure the two
-  /// side by side (a job's "start": "dirichlet", docs/FORMATS.md).
-  bool area_mean_curvature_start = true;
+  /// area functional: where it starts (AreaStart above; a job's "start", docs/FORMATS.md); default
+  /// MeanCurvature: route 0 first, the least-squares mean-curvature surface corrected on A_H by a
+  /// few Newton iterations (docs/cmc.md, "The mean-curvature start"). Dirichlet starts from the
+  /// D_H critical point (the routes before route 0), kept to measure the two side by side;
+  /// MinimalSurface follows the branch from the minimal surface alone. Other functionals ignore it.
+  AreaStart area_start = AreaStart::MeanCurvature;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area
   /// functional's route 0) report "cmc least squares", one stage across its rule refinements, the

@@ -1126,19 +1126,29 @@ struct AreaSolve {
            (phases.empty() ? std::string("the bordered corrector") : phases + " at H and the bordered corrector");
   }
 
-  // V mode, route 3 (the last; docs/cmc.md, V mode step 4): continuation in V from the critical
-  // point of A at H = 0 (V = V_min) to V0.
+  // V mode, route 3 (the last; docs/cmc.md, V mode step 4; alone with "start": "minimal-surface"):
+  // continuation in V from the critical point of A at H = 0 (V = V_min) to V0, as route 2 continues
+  // from V1: the start and every step to max(tolerance, 1e-8) with fresh damping, then the bordered
+  // corrector and the final phases at V0. Measured on the circle (H = −0.5 cap's V0): n = 6, 8, 10
+  // converge in 10, 2 and 13 steps. With every step to the tolerance itself and the damping carried
+  // over from the start (the first version) the first step stalled at 5e-10 above 1e-11 and the
+  // steps below it found no point: "beyond V ≈ 1e-4" at n = 6 and 8.
   AreaOutcome volume_continuation(const Eigen::MatrixX3d& start, int& steps) {
     p.base.P = start;
-    if (!minimal_surface(o.tolerance))
+    const double step_tol = std::max(o.tolerance, kContinuationStepTolerance);
+    if (!minimal_surface(step_tol))
       return {0.0, false, Status::NoConvergence, "no critical point of the area (H = 0) from the Dirichlet extremal"};
     const double Vmin = p.base.f->volume_form().value(p.P());
-    if (*o.V == Vmin) return {0.0, true, Status::Converged, "V0 is the volume of the critical point of the area"};
-    AreaOutcome out = continue_volume(Vmin, 0.0, *o.V, steps, o.tolerance, false);
-    if (out.ok)
-      out.message = "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) +
-                    " step(s)";
-    return out;
+    AreaOutcome out = continue_volume(Vmin, 0.0, *o.V, steps, step_tol, true);
+    if (!out.ok) return out;
+    double H = out.H;
+    choose_rule();
+    theta = 1e-3;
+    bordered_correct(*o.V, H);
+    const std::string note = finish_volume(*o.V, H);
+    return {H, true, Status::Converged,
+            "V continued from the minimal surface (V = " + num(Vmin) + ") in " + std::to_string(steps) + " step(s)" +
+                note};
   }
 
   // Continuation in V along the volume-constrained critical points of A, from the one in p (volume
@@ -1168,6 +1178,7 @@ struct AreaSolve {
     Net last = make_net(data, p.P());
     const double target = V0 - Vs;
     StepController control(target, target, o);
+    std::string rejected;  // why the last step was rejected, for the message
     while (!control.reached_target()) {
       if (!control.attempt())
         return {H, false, Status::NoConvergence,
@@ -1180,7 +1191,11 @@ struct AreaSolve {
       const CorrectorStats st = bordered_correct(Vs + step.hn, Hn, step_tol);
       const Net now = make_net(data, p.P());
       const double dev = normal_gap(pred, now), move = normal_gap(last, now);
-      if (st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm()) && tangent(Hn, dY, dH)) {
+      const bool near_prediction = st.ok && std::isfinite(move) && dev <= 0.5 * move + 1e-12 * std::max(1.0, y.norm());
+      rejected = !st.ok ? "its corrector stopped at a relative residual of " + num(st.residual, 3)
+                 : !near_prediction ? "the corrected surface left the branch"
+                                    : "the volume has no gradient there";
+      if (near_prediction && tangent(Hn, dY, dH)) {
         y = p.get();
         last = now;
         H = Hn;
@@ -1190,7 +1205,8 @@ struct AreaSolve {
         p.set(y);  // dY, dH are still the tangent at y (tangent() writes only when it succeeds)
         if (!control.reject(step))
           return {H, false, Status::NoConvergence,
-                  "no volume-constrained critical point of the area beyond V ≈ " + num(Vs + control.h())};
+                  "no volume-constrained critical point of the area beyond V ≈ " + num(Vs + control.h()) +
+                      " (at the last step tried, " + rejected + ")"};
       }
     }
     return {H, true, Status::Converged,
@@ -1275,15 +1291,21 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     double h0 = o.H;
     // Not on data where the D_H critical point already nearly is a critical point of A_H
     // (conformal data): its first variation at most kConformalFirstVariation.
-    const double r_dirichlet =
-        o.area_mean_curvature_start ? s.dirichlet_first_variation(o.V ? &*o.V : nullptr) : 0.0;
-    const bool tried_mc = o.area_mean_curvature_start && r_dirichlet > kConformalFirstVariation;
+    const bool mc_start = o.area_start == AreaStart::MeanCurvature;
+    const bool minimal_start = o.area_start == AreaStart::MinimalSurface;
+    const double r_dirichlet = mc_start ? s.dirichlet_first_variation(o.V ? &*o.V : nullptr) : 0.0;
+    const bool tried_mc = mc_start && r_dirichlet > kConformalFirstVariation;
     const bool from_mc =
         tried_mc && s.from_mean_curvature(o.V ? &*o.V : nullptr, h0, start_note, res.continuation_steps);
     if (from_mc) {
       out = {h0, true, Status::Converged,
              (o.V ? "the volume-constrained critical point of A from " : "the critical point of A_H from ") +
                  start_note};
+    } else if (minimal_start && o.V) {
+      // "start": "minimal-surface": the branch from the critical point of A at H = 0 alone.
+      out = s.volume_continuation(extremal, res.continuation_steps);
+    } else if (minimal_start && o.H != 0.0) {
+      out = s.continuation(extremal, fixed_idx, res.continuation_steps);
     } else if (o.V) {
       const double Vref = base.f->volume_form().value(extremal);
       // Each candidate's residual on a checked rule (AreaSolve::checked_residual), so that the two
@@ -1358,7 +1380,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     } else if (tried_mc && !from_mc) {
       out.message += " (route 0: " + start_note + ")";
     }
-    if (o.area_mean_curvature_start && !tried_mc)
+    if (mc_start && !tried_mc)
       out.message += " (route 0 not tried: the first variation of A_H at the " +
                      std::string(o.V ? "minimiser of D at V0" : "D_H critical point") + " is " + num(r_dirichlet, 3) +
                      ", at most " + num(kConformalFirstVariation, 1) + ", as on conformal data)";

@@ -1,4 +1,4 @@
-// The names of the cmc solvers and functionals (solvers/cmc/cmc.h), apart from the solvers themselves: the job
+// The names of the cmc solvers, functionals and area starts (solvers/cmc/cmc.h), apart from the solvers themselves: the job
 // reader (io/job.cpp) needs them, and the fuzz targets (fuzz/) link the readers without Ceres.
 #include <string>
 
@@ -31,6 +31,25 @@ CmcFunctionalKind parse_cmc_functional(const std::string& name) {
   if (name == "area") return CmcFunctionalKind::Area;
   if (name == "mean-curvature") return CmcFunctionalKind::MeanCurvature;
   throw ParameterError("unknown cmc functional \"" + name + "\" (expected dirichlet, area or mean-curvature)");
+}
+
+AreaStart parse_area_start(const std::string& name) {
+  if (name == "mean-curvature") return AreaStart::MeanCurvature;
+  if (name == "dirichlet") return AreaStart::Dirichlet;
+  if (name == "minimal-surface") return AreaStart::MinimalSurface;
+  throw ParameterError("unknown start \"" + name + "\" (expected mean-curvature, dirichlet or minimal-surface)");
+}
+
+std::string to_string(AreaStart s) {
+  switch (s) {
+    case AreaStart::Dirichlet:
+      return "dirichlet";
+    case AreaStart::MinimalSurface:
+      return "minimal-surface";
+    case AreaStart::MeanCurvature:
+      break;
+  }
+  return "mean-curvature";
 }
 
 std::string to_string(CmcFunctionalKind f) {

@@ -570,7 +570,8 @@ TEST(Cli, CmcMeanCurvatureJob) {
       "mean_curvature_tolerance");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "start": "dirichlet"})"),
       "start: only with \"functional\": \"area\"");
-  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "start": "plane"})"), "unknown start \"plane\"");
+  bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "area", "start": "plane"})"),
+      "unknown start \"plane\" (expected mean-curvature, dirichlet or minimal-surface)");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": 0})"),
       "mean_curvature_tolerance");
   bad(job(6, R"({"kind": "cmc", "H": -0.5, "functional": "mean-curvature", "mean_curvature_tolerance": "1e-3"})"),

@@ -29,7 +29,7 @@ CmcOptions area_options(double H) { return testing::cmc_options(CmcFunctionalKin
 // tests of their own stops and messages, which must not depend on route 0 giving way.
 CmcOptions dirichlet_routes(double H) {
   CmcOptions o = area_options(H);
-  o.area_mean_curvature_start = false;
+  o.area_start = AreaStart::Dirichlet;
   return o;
 }
 
@@ -237,7 +237,7 @@ void expect_volume_form_cap(int n, double H, CmcSolver solver, Status status, do
   const double R = 1 / std::abs(H), hc = R - std::sqrt(R * R - 1);
   const double V0 = std::numbers::pi * hc * hc * (3 * R - hc) / 3;
   CmcOptions o = area_options(0.0);
-  o.area_mean_curvature_start = false;
+  o.area_start = AreaStart::Dirichlet;
   o.V = V0;
   o.solver = solver;
   const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(n), o);
@@ -283,7 +283,7 @@ TEST(CmcArea, VolumeFormReachesTheLargerCapByContinuationInV) {
   const double H = -0.7, R = 1 / std::abs(H), hb = R + std::sqrt(R * R - 1);
   const double V0 = std::numbers::pi * hb * hb * (3 * R - hb) / 3;
   CmcOptions o = area_options(0.0);
-  o.area_mean_curvature_start = false;  // route 2 itself (route 0 reaches this cap: MeanCurvatureStart…)
+  o.area_start = AreaStart::Dirichlet;  // route 2 itself (route 0 reaches this cap: MeanCurvatureStart…)
   o.V = V0;
   const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(10), o);
   EXPECT_TRUE(r.summary.status == Status::Converged || r.summary.status == Status::NumericalLimit)
@@ -310,7 +310,7 @@ TEST(CmcArea, VolumeFormReachesTheLargerCapOffTheOrigin) {
   const double H = -0.7;
   const testing::LargerCapOffTheOrigin cap = testing::larger_cap_off_the_origin(8, H, Eigen::Vector3d(0.3, -0.2, 2.0));
   CmcOptions o = area_options(0.0);
-  o.area_mean_curvature_start = false;  // route 2 itself (route 0 reaches this cap: MeanCurvatureStart…)
+  o.area_start = AreaStart::Dirichlet;  // route 2 itself (route 0 reaches this cap: MeanCurvatureStart…)
   o.V = cap.V0;
   const CmcResult<TriangularNet> r = solve_cmc(cap.data, o);
   EXPECT_TRUE(r.summary.status == Status::Converged || r.summary.status == Status::NumericalLimit)
@@ -337,7 +337,7 @@ TEST(CmcArea, CeresRouteEndsInTheSoftModePhase) {
   for (const auto& [n, dist] : {std::pair{6, 4e-6}, std::pair{10, 1e-7}}) {
     CmcOptions o = area_options(H);
     o.solver = CmcSolver::Ceres;
-    o.area_mean_curvature_start = false;  // the route from the D_H critical point
+    o.area_start = AreaStart::Dirichlet;  // the route from the D_H critical point
     const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(n), o);
     EXPECT_TRUE(r.summary.converged) << "n = " << n << ": " << r.summary.message;
     EXPECT_NE(r.summary.message.find("soft-mode phase"), std::string::npos) << r.summary.message;
@@ -401,6 +401,65 @@ TEST(CmcArea, PastTheHemisphereTheFoldIsReportedAtHMinus1) {
     const auto at = r.summary.message.find(key);
     ASSERT_NE(at, std::string::npos) << r.summary.message;
     EXPECT_NEAR(std::stod(r.summary.message.substr(at + key.size())), -1.0, 1e-3);  // measured −0.999997
+  }
+}
+
+// "start": "minimal-surface" (AreaStart::MinimalSurface): the branch through the minimal surface
+// alone, the flat disk over the circle, continued in H to the cap (route 2 of the H form, which the
+// other starts reach only where their routes fail). The cap is the one the default start finds,
+// on the exact sphere. Measured (one probe run): n = 6, 10 at H = −0.5 and n = 10 at H = −0.9 all
+// converge in one step (5.4e-12 … 9.8e-12), 1.8e-6, 4.2e-8 and 1.0e-7 from the sphere, H within
+// 3.6e-4, 1.4e-4 and 1.7e-4 at corner margin 0.1, 0.04–0.3 s. Past the hemisphere (H = −1.2,
+// n = 6) the branch ends at H ≈ −0.999994 (fold).
+TEST(CmcArea, MinimalSurfaceStartFollowsTheBranchFromHZeroToTheCap) {
+  for (const auto& [n, H, dist, dH] : {std::tuple{6, -0.5, 4e-6, 8e-4}, {10, -0.5, 1e-7, 3e-4}, {10, -0.9, 2e-7, 4e-4}}) {
+    SCOPED_TRACE("n = " + std::to_string(n) + ", H = " + std::to_string(H));
+    const double R = 1 / std::abs(H);
+    const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
+    CmcOptions o = area_options(H);
+    o.area_start = AreaStart::MinimalSurface;
+    const CmcResult<TriangularNet> r = solve_cmc(circle_three_arcs(n), o);
+    EXPECT_TRUE(r.summary.converged) << r.summary.message;
+    EXPECT_EQ(r.summary.message.rfind("A_H continued from H = 0 to H = ", 0), 0u) << r.summary.message;
+    EXPECT_GE(r.continuation_steps, 1);
+    EXPECT_LE(r.summary.residual, 1e-11);
+    EXPECT_LE(testing::sphere_distance(r.net, c, R), dist);
+    const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
+    EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), dH);
+    // The default start's cap: the same area, to the degree's accuracy (the exact cap's is 2πR h).
+    const CmcResult<TriangularNet> d = solve_cmc(circle_three_arcs(n), area_options(H));
+    EXPECT_NEAR(r.A, d.A, 1e-6);
+    EXPECT_NEAR(r.A, 2 * std::numbers::pi * R * (R - std::sqrt(R * R - 1)), 1e-5);
+  }
+  CmcOptions o = area_options(-1.2);
+  o.area_start = AreaStart::MinimalSurface;
+  const CmcResult<TriangularNet> r = solve_cmc(circle_three_arcs(6), o);
+  EXPECT_EQ(r.summary.status, Status::Fold) << r.summary.message;
+  const std::string key = "no critical point of A_H on the branch from H = 0 beyond H ≈ ";
+  ASSERT_EQ(r.summary.message.rfind(key, 0), 0u) << r.summary.message;
+  EXPECT_NEAR(std::stod(r.summary.message.substr(key.size())), -1.0, 1e-3);
+}
+
+// The V form from the minimal surface (route 3 of the V form, alone): continued in V from the flat
+// disk (V = 0) to the cap's volume, the multiplier is the cap's H. Measured: n = 6 and 8 at the
+// cap of H = −0.5 converge (9.3e-12, 8.9e-12) in 10 and 2 steps, H = −0.4999999 and −0.500000002
+// (the degree's: V0 is the exact cap's), 1.8e-6 and 2.0e-6 from the sphere, 0.1 s and 2 s. Before
+// (each step to the tolerance itself, the damping carried over) it ended at V ≈ 1e-4, "no
+// volume-constrained critical point of the area", on this planar boundary.
+TEST(CmcArea, MinimalSurfaceStartOfTheVolumeForm) {
+  const double H = -0.5, R = 2.0, hc = R - std::sqrt(R * R - 1);
+  const double V0 = std::numbers::pi * hc * hc * (3 * R - hc) / 3;
+  for (const int n : {6, 8}) {
+    SCOPED_TRACE(n);
+    CmcOptions o = area_options(0.0);
+    o.V = V0;
+    o.area_start = AreaStart::MinimalSurface;
+    const CmcResult<TriangularNet> r = solve_cmc(circle_three_arcs(n), o);
+    EXPECT_TRUE(r.summary.converged) << r.summary.message;
+    EXPECT_EQ(r.summary.message.rfind("V continued from the minimal surface", 0), 0u) << r.summary.message;
+    EXPECT_NEAR(r.V, V0, 1e-11);
+    EXPECT_NEAR(r.H, H, 1e-6);
+    EXPECT_LE(testing::sphere_distance(r.net, Eigen::Vector3d(0, 0, -std::sqrt(R * R - 1)), R), 4e-6);
   }
 }
 
@@ -555,7 +614,7 @@ TEST(CmcArea, CircleInThreeArcsAtHMinus09) {
   const double H = -0.9, R = 1 / std::abs(H);
   const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
   CmcOptions o = area_options(H);
-  o.area_mean_curvature_start = false;
+  o.area_start = AreaStart::Dirichlet;
   for (const auto& [n, dist, dev] : {std::tuple{8, 4e-7, 5e-4}, std::tuple{10, 3e-7, 2.5e-3}}) {
     const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(n), o);
     const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
@@ -630,7 +689,7 @@ TEST(CmcArea, MeanCurvatureStartLandsNearerTheSphere) {
   EXPECT_LE(d, 2e-8);
   const MeanCurvatureStats s = mean_curvature_stats(r.net, 40, 0.1);
   EXPECT_LE(std::max(std::abs(s.min - H), std::abs(s.max - H)), 5e-4);
-  o.area_mean_curvature_start = false;
+  o.area_start = AreaStart::Dirichlet;
   const CmcResult<TriangularNet> old = solve_cmc(testing::circle_three_arcs(10), o);
   EXPECT_EQ(old.summary.status, Status::Converged) << old.summary.message;
   EXPECT_EQ(old.summary.message.find("mean-curvature"), std::string::npos) << old.summary.message;
@@ -726,7 +785,7 @@ TEST(CmcArea, MeanCurvatureStartGivesWayAndRestoresWhatItChanged) {
   const CmcResult<TriangularNet> v = solve_cmc(testing::circle_three_arcs(4), ov);
   EXPECT_NE(v.summary.message.find("(route 0: the least-squares mean-curvature surface"), std::string::npos)
       << v.summary.message;
-  ov.area_mean_curvature_start = false;
+  ov.area_start = AreaStart::Dirichlet;
   const CmcResult<TriangularNet> v_off = solve_cmc(testing::circle_three_arcs(4), ov);
   EXPECT_EQ(v.net.points(), v_off.net.points());
   EXPECT_EQ(v.H, v_off.H);

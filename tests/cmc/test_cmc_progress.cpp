@@ -69,7 +69,7 @@ TEST(CmcProgress, AreaReportsTheRegulariserStages) {
   for (bool volume : {false, true}) {
     SCOPED_TRACE(volume ? "V form" : "H form");
     CmcOptions o = testing::cmc_options(CmcFunctionalKind::Area, -0.5);
-    o.area_mean_curvature_start = false;
+    o.area_start = AreaStart::Dirichlet;
     if (volume) {
       const double R = 2.0, h = R - std::sqrt(R * R - 1);
       o.V = std::acos(-1.0) * h * h * (3 * R - h) / 3;

@@ -161,6 +161,8 @@ cases = [
      mutate(mutate(builder, ["problem", "functional"], "mean-curvature"), ["problem", "solver"], "foo"), False),
     ("area cmc job with start dirichlet", "solve", JOB,
      mutate(mutate(builder, ["problem", "functional"], "area"), ["problem", "start"], "dirichlet"), True),
+    ("area cmc job with start minimal-surface", "solve", JOB,
+     mutate(mutate(builder, ["problem", "functional"], "area"), ["problem", "start"], "minimal-surface"), True),
     ("area cmc job with an unknown start", "solve", JOB,
      mutate(mutate(builder, ["problem", "functional"], "area"), ["problem", "start"], "plane"), False),
     ("start with the mean-curvature functional", "solve", JOB,
