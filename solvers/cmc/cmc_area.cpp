@@ -468,13 +468,29 @@ struct AreaSolve {
   // in the H form (the V form's residual includes the volume).
   double stationary_at = -1.0;
 
+  // What a route changes in the solve: the net, the rule and its measured error, the damping, the
+  // regulariser and the soft-mode verdict. A route that is tried and not kept puts them back
+  // (save() before it, restore() after), and the end of one route kept for later is one of these.
+  struct State {
+    Eigen::MatrixX3d P;
+    std::shared_ptr<const AreaForm> a;
+    double theta = 1.0, rule_change = 0.0, eps = 0.0, stationary_at = -1.0;
+  };
+  State save() const { return {p.base.P, p.a, theta, rule_change, p.eps, stationary_at}; }
+  void restore(const State& s) {
+    p.base.P = s.P;
+    p.a = s.a;
+    theta = s.theta;
+    rule_change = s.rule_change;
+    p.eps = s.eps;
+    stationary_at = s.stationary_at;
+  }
+
   // Where route 0 ended in the H form above the tolerance but within kAreaStallResidual, at a
   // regular net whose rule met its own at its start (a numerical limit of its own): that end, for
   // the caller to keep when the routes from the D_H critical point end higher (keep_route0_end).
   struct RouteEnd {
-    Eigen::VectorXd y;
-    std::shared_ptr<const AreaForm> a;
-    double change = 0.0, stationary = -1.0;
+    State state;
     std::string note;
   };
   std::optional<RouteEnd> route0_end;
@@ -500,13 +516,8 @@ struct AreaSolve {
     if (!route0_end) return false;
     const double r_dh = out.ok ? checked_residual(o.H) : std::numeric_limits<double>::infinity();
     if (!(r_dh > o.tolerance)) return false;
-    const Eigen::VectorXd y = p.get();
-    const std::shared_ptr<const AreaForm> a = p.a;
-    const double change = rule_change, stationary = stationary_at, eps = p.eps, theta0 = theta;
-    p.set(route0_end->y);
-    p.a = route0_end->a;
-    rule_change = route0_end->change;
-    stationary_at = route0_end->stationary;
+    const State theirs = save();
+    restore(route0_end->state);
     const double r0 = checked_residual(o.H);
     if (r0 < r_dh && r0 <= kAreaStallResidual) {
       p.eps = 0.0;  // A_H itself, as route 0 ended (the other routes may have stopped at ε > 0)
@@ -515,12 +526,7 @@ struct AreaSolve {
                    : "the routes from the D_H critical point failed: " + out.message;
       return true;
     }
-    p.set(y);
-    p.a = a;
-    rule_change = change;
-    stationary_at = stationary;
-    p.eps = eps;
-    theta = theta0;
+    restore(theirs);
     return false;
   }
 
@@ -1020,9 +1026,8 @@ struct AreaSolve {
       note = start + " is not finite";
       return false;
     }
-    const Eigen::MatrixX3d P0 = p.base.P;
-    const std::shared_ptr<const AreaForm> a0 = p.a;
-    const double theta0 = theta, change0 = rule_change, eps0 = p.eps, H0 = H, stationary0 = stationary_at;
+    const State before = save();
+    const double H0 = H;
     p.base.P = m.net.points();
     p.eps = 0.0;
     if (V0) H = m.H;
@@ -1088,19 +1093,13 @@ struct AreaSolve {
       return true;
     }
     if (!V0 && !st.ok && rule_ok && st.residual <= kAreaStallResidual && regularity(net, area(net)).ok)
-      route0_end = RouteEnd{p.get(), p.a, rule_change, stationary_at,
-                            start + " corrected on A_H in " + std::to_string(st.iterations) + " iteration(s)" +
-                                finished + ", to " + num(st.residual, 3)};
+      route0_end = RouteEnd{save(), start + " corrected on A_H in " + std::to_string(st.iterations) +
+                                        " iteration(s)" + finished + ", to " + num(st.residual, 3)};
     note = start + (!st.ok ? " was corrected on A_H to " + num(st.residual, 3) + " only"
                     : !rule_ok ? " was corrected on A_H, but the area rule misses its tolerance there"
                                : " was corrected on A_H to a degenerate parametrisation");
-    p.base.P = P0;
-    p.a = a0;
-    theta = theta0;
-    rule_change = change0;
-    p.eps = eps0;
+    restore(before);
     H = H0;
-    stationary_at = stationary0;
     return false;
   }
 
@@ -1315,9 +1314,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       if (out.ok && r1 > o.tolerance) {
         // Route 1 ended above the tolerance (a numerical limit): route 2 too, and the lower
         // residual is kept (measured: docs/cmc.md, "Past the hemisphere: continuation in V").
-        const Eigen::VectorXd y1 = s.p.get();
-        const std::shared_ptr<const AreaForm> a1 = s.p.a;
-        const double theta1 = s.theta, change1 = s.rule_change;
+        const auto route1_end = s.save();
         const AreaOutcome route1 = out;
         int steps = 0;
         out = s.volume_continuation_from_smaller(*o.V, Vref, steps);
@@ -1326,10 +1323,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
           res.continuation_steps = steps;
         } else {
           const std::string why = out.ok ? "ended at " + num(r2) : "failed: " + out.message;
-          s.p.set(y1);
-          s.p.a = a1;
-          s.theta = theta1;
-          s.rule_change = change1;
+          s.restore(route1_end);
           out = route1;
           out.message += "; kept, as the continuation in V from smaller volumes " + why;
         }
