@@ -46,7 +46,8 @@
 //    predictor to ε = 0 and at most 8 corrector iterations on A_H, kept when they converge).
 //    When that fails (no D_H branch point, or the regulariser cannot be taken below 1e-4), the
 //    A_H branch is continued in H itself from the critical point of A at H = 0, started at the
-//    Dirichlet extremal, with a positive-definiteness test per step (before the fold).
+//    Dirichlet extremal, with a positive-definiteness test per step (before the fold). Where the
+//    D_H route ends above the tolerance, that continuation runs too and is kept when it converges.
 //    Where the truncated Newton phase (the last stage) stops above the tolerance, the soft-mode
 //    phase follows: the hard modes eliminated, Levenberg–Marquardt on the first variation over the
 //    soft (tangential) modes (solvers/cmc/area_soft_mode_phase.cpp); where no step lowers it the
