@@ -160,11 +160,11 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     }
     if (j.contains("start")) {
       if (!area) throw ParseError(path + ".start: only with \"functional\": \"area\"");
-      const std::string st = string(j["start"], path + ".start");
-      if (st != "mean-curvature" && st != "dirichlet" && st != "minimal-surface")
-        throw ParseError(path + ".start: unknown start \"" + st +
-                         "\" (expected mean-curvature, dirichlet or minimal-surface)");
-      p.area_start = parse_area_start(st);
+      try {
+        p.area_start = parse_area_start(string(j["start"], path + ".start"));
+      } catch (const ParameterError& e) {  // the names live in one place (cmc_solver_name.cpp)
+        throw ParseError(path + ".start: " + e.what());
+      }
     }
 
     if (j.contains("solver")) {
