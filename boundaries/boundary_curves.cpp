@@ -73,7 +73,7 @@ BoundaryCurve BoundaryCurve::bspline(int degree, std::vector<double> knots, Eige
   return BoundaryCurve(BSpline{degree, std::move(knots), std::move(points)}, "bspline");
 }
 
-BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points) {
+BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points, SampleParameters parameters) {
   if (points.rows() < 2) throw SizeError("samples: at least 2 points, got " + std::to_string(points.rows()));
   require_at_most(points.rows(), "samples");
   require_finite(points, "points");
@@ -85,7 +85,10 @@ BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points) {
                            " coincide (chord-length parameters must increase; give \"parameters\")");
     s[static_cast<size_t>(i)] = s[static_cast<size_t>(i - 1)] + d;
   }
-  return samples(std::move(points), s);
+  BoundaryCurve c = samples(std::move(points), s);
+  std::get<Samples>(c.data_).chord_length = true;
+  std::get<Samples>(c.data_).correct = parameters == SampleParameters::Corrected;
+  return c;
 }
 
 BoundaryCurve BoundaryCurve::samples(Eigen::MatrixX3d points, const std::vector<double>& params) {

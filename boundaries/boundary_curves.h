@@ -9,6 +9,9 @@
 //            [K_p, K_{len-p-1}].
 //   samples  points q_0..q_M with parameters t_0 = 0 < t_1 < ... < t_M = 1: the given parameters
 //            mapped affinely onto [0,1], or, when none are given, the normalised chord length.
+//            Chord-length parameters are by default only the start of the fit: the fit corrects
+//            them to the foot points on the fitted curve (SampleParameters::Corrected,
+//            fit_boundary.h); SampleParameters::ChordLength keeps them.
 //            evaluate() interpolates linearly between samples; the fit uses the samples only.
 //   segment  c(t) = (1-t) a + t b (held as a degree-1 Bézier curve).
 //   arc      c(t) = center + r (cos a e1 + sin a e2), a = a0 + t (a1 - a0) (angles in radians,
@@ -55,6 +58,9 @@ class BoundaryCurve {
   struct Samples {
     Eigen::MatrixX3d points;  ///< (M+1) x 3, M >= 1
     Eigen::VectorXd params;   ///< M+1 strictly increasing, first 0, last 1
+    bool chord_length = false;  ///< params are the normalised chord length (none were given)
+    /// The fit corrects the chord-length `params` to foot points (the default; fit_boundary.h).
+    bool correct = false;
   };
   /// Arc and helix (pitch 0 for an arc).
   struct Arc {
@@ -70,8 +76,12 @@ class BoundaryCurve {
 
   static BoundaryCurve bezier(Eigen::MatrixX3d points);
   static BoundaryCurve bspline(int degree, std::vector<double> knots, Eigen::MatrixX3d points);
-  /// Samples with chord-length parameters (consecutive points must differ).
-  static BoundaryCurve samples(Eigen::MatrixX3d points);
+  /// How samples without parameters are parametrised: the normalised chord length, corrected
+  /// by the fit to the foot points on the fitted curve (the default), or the chord length kept.
+  enum class SampleParameters { Corrected, ChordLength };
+  /// Samples with chord-length parameters (consecutive points must differ), corrected by the fit
+  /// unless `parameters` is ChordLength.
+  static BoundaryCurve samples(Eigen::MatrixX3d points, SampleParameters parameters = SampleParameters::Corrected);
   /// Samples with their parameters (strictly increasing, any range: mapped affinely onto [0,1]).
   static BoundaryCurve samples(Eigen::MatrixX3d points, const std::vector<double>& params);
   static BoundaryCurve segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b);

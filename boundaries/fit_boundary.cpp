@@ -7,6 +7,7 @@
 
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/boundaries/fit_samples.h"
 
 namespace bpde {
 namespace {
@@ -18,29 +19,6 @@ Eigen::Vector3d bezier_at(const Eigen::MatrixX3d& P, double t) {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   for (int i = 0; i <= k; ++i) x += B[static_cast<size_t>(i)] * P.row(i).transpose();
   return x;
-}
-
-// Least squares at degree n over the points Q at parameters t, the end points fixed to Q's first
-// and last rows.
-Eigen::MatrixX3d least_squares(int n, const Eigen::VectorXd& t, const Eigen::MatrixX3d& Q) {
-  const Eigen::Index M = t.size();
-  if (M < n + 1)
-    throw SizeError("a least-squares fit at degree " + std::to_string(n) + " needs at least " + std::to_string(n + 1) +
-                    " samples, got " + std::to_string(M));
-  Eigen::MatrixX3d P(n + 1, 3);
-  P.row(0) = Q.row(0);
-  P.row(n) = Q.row(M - 1);
-  if (n == 1) return P;
-  const Eigen::MatrixXd A = bernstein_table(n, t);
-  const Eigen::MatrixX3d rhs = Q - A.col(0) * P.row(0) - A.col(n) * P.row(n);
-  const Eigen::MatrixXd Ai = A.middleCols(1, n - 1);
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Ai);
-  qr.setThreshold(1e-12);
-  if (qr.rank() < n - 1)
-    throw ParameterError("the samples' parameters do not determine a degree-" + std::to_string(n) +
-                         " fit (too few distinct parameters inside (0,1))");
-  P.middleRows(1, n - 1) = qr.solve(rhs);
-  return P;
 }
 
 struct EdgeMap {
@@ -88,7 +66,8 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
   std::vector<CurveFit> fits;
   for (size_t e = 0; e < E; ++e) {
     const int d = static_cast<int>(maps[e].bnd.size()) - 1;
-    fits.push_back(fit_edge(data.edges[e], d, o.method));
+    // With C¹ data the tangent field is given in the edge's parameter, so it is not corrected.
+    fits.push_back(fit_edge(data.edges[e], d, o.method, data.tangents.empty()));
   }
   for (size_t e = 0; e < E; ++e) {
     const size_t f = (e + 1) % E;
@@ -112,7 +91,11 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
     r.edge = static_cast<int>(e);
     r.curve = data.edges[e].kind();
     r.method = fits[e].method;
-    r.max_error = edge_error(data.edges[e], fits[e].points);
+    r.max_error = edge_error(data.edges[e], fits[e]);
+    if (!fits[e].parameters.empty()) {
+      r.parameters = fits[e].parameters;
+      r.corrections = fits[e].corrections;
+    }
     out.edges.push_back(r);
   }
   if (!data.tangents.empty()) {
@@ -120,7 +103,8 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
     std::vector<int> count(static_cast<size_t>(P.rows()), 0);
     for (size_t e = 0; e < E; ++e) {
       const int d = static_cast<int>(maps[e].adj.size()) - 1;
-      const CurveFit D = fit_edge(data.tangents[e], d, o.method);
+      // A tangent field is read at the edge's parameter: samples of it are never corrected.
+      const CurveFit D = fit_edge(data.tangents[e], d, o.method, false);
       out.edges[e].tangent_curve = data.tangents[e].kind();
       out.edges[e].tangent_method = D.method;
       for (int s = 0; s <= d; ++s) {
@@ -164,14 +148,21 @@ void BoundaryFitOptions::validate() const {
     throw ParameterError("corner_tolerance: must be a finite number > 0");
 }
 
-CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method) {
+CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool correct) {
   check_degree(n, "degree");
   if (const auto* b = curve.as_bezier()) {
     const int k = static_cast<int>(b->points.rows()) - 1;
     if (k == n) return {b->points, "elevation"};
     if (k < n) return {bernstein_elevation_operator(k, n - k) * b->points, "elevation"};
   }
-  if (const auto* s = curve.as_samples()) return {least_squares(n, s->params, s->points), "least-squares"};
+  if (const auto* s = curve.as_samples()) {
+    if (s->chord_length && s->correct && correct) {
+      const SampleFit g = fit_samples_orthogonal(n, s->params, s->points);
+      return {g.points, "least-squares", g.params, g.corrected ? "corrected" : "chord-length", g.iterations};
+    }
+    return {least_squares_at(n, s->params, s->points), "least-squares", s->params,
+            s->chord_length ? "chord-length" : "given", 0};
+  }
   if (method == FitMethod::LeastSquares) {
     const int M = 8 * n + 1;
     Eigen::VectorXd t(M);
@@ -180,7 +171,7 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method) {
       t(k) = k == M - 1 ? 1.0 : static_cast<double>(k) / (M - 1);
       Q.row(k) = curve.evaluate(t(k)).transpose();
     }
-    return {least_squares(n, t, Q), "least-squares"};
+    return {least_squares_at(n, t, Q), "least-squares", {}, "", 0};
   }
   // Chebyshev–Lobatto interpolation (the same computation as fit_curve of reference_boundaries.h).
   Eigen::MatrixXd A(n + 1, n + 1);
@@ -199,10 +190,17 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method) {
 }
 
 double edge_error(const BoundaryCurve& curve, const Eigen::MatrixX3d& points) {
+  if (const auto* s = curve.as_samples()) return edge_error(curve, CurveFit{points, "", s->params, "", 0});
+  return edge_error(curve, CurveFit{points, "", {}, "", 0});
+}
+
+double edge_error(const BoundaryCurve& curve, const CurveFit& fit) {
+  const Eigen::MatrixX3d& points = fit.points;
   double err = 0;
   if (const auto* s = curve.as_samples()) {
-    for (Eigen::Index i = 0; i < s->params.size(); ++i)
-      err = std::max(err, (bezier_at(points, s->params(i)) - s->points.row(i).transpose()).norm());
+    const Eigen::VectorXd& t = fit.params.size() == s->params.size() ? fit.params : s->params;
+    for (Eigen::Index i = 0; i < t.size(); ++i)
+      err = std::max(err, (bezier_at(points, t(i)) - s->points.row(i).transpose()).norm());
     return err;
   }
   constexpr int kSamples = 256;

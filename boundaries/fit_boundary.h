@@ -22,7 +22,12 @@
 //   - a Bézier curve of degree k <= n, or a segment: exact degree elevation (method "elevation");
 //   - samples: least squares over the samples at their parameters with the end points fixed to
 //     the first and last sample ("least-squares"; needs at least n+1 samples that determine the
-//     polynomial: SizeError / ParameterError otherwise);
+//     polynomial: SizeError / ParameterError otherwise). Samples given without parameters start
+//     from the normalised chord length, which is then corrected (unless asked not to, or with C¹
+//     data): the orthogonal least-squares fit of fit_samples.h, each parameter at the foot point
+//     of its sample on the fitted curve. The chord length follows the arc length, a poor
+//     polynomial parameter where the speed varies (docs/boundaries.md, "Samples without
+//     parameters": 1.6e-3 against 1.5e-10 at n = 12 on a wavy curve);
 //   - any other curve: interpolation at the n+1 Chebyshev–Lobatto nodes t_k = (1 - cos(πk/n))/2
 //     ("interpolation", the default; spectral convergence for analytic curves, docs/boundaries.md),
 //     or least squares over 8n+1 uniform parameters with the end points fixed ("least-squares").
@@ -88,17 +93,31 @@ struct EdgeFit {
   /// C¹ data: the tangent field's kind, method and error on the result.
   std::optional<std::string> tangent_curve, tangent_method;
   std::optional<double> tangent_max_error;
+  /// Samples: how their parameters were set ("given", "chord-length", "corrected") and the rounds
+  /// of the correction.
+  std::optional<std::string> parameters;
+  std::optional<int> corrections;
 };
 
 /// One curve at degree n >= 1: its Bernstein coefficients ((n+1) x 3) and the method used.
 struct CurveFit {
   Eigen::MatrixX3d points;
   std::string method;
+  /// Samples: the parameters of the fit (as given, chord length, or corrected); empty otherwise.
+  Eigen::VectorXd params;
+  /// Samples: "given", "chord-length" or "corrected"; empty otherwise.
+  std::string parameters;
+  int corrections = 0;  ///< samples, "corrected": the rounds of the correction taken
 };
-CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method = FitMethod::Interpolation);
+/// `correct` false keeps chord-length parameters of samples uncorrected (C¹ data: the tangent
+/// field is given in the edge's parameter).
+CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method = FitMethod::Interpolation, bool correct = true);
 
-/// The maximum distance between the Bézier curve `points` and the curve (see above).
+/// The maximum distance between the Bézier curve `points` and the curve (see above; samples at
+/// their own parameters).
 double edge_error(const BoundaryCurve& curve, const Eigen::MatrixX3d& points);
+/// The same for a fit, samples at the fit's parameters (the corrected ones where corrected).
+double edge_error(const BoundaryCurve& curve, const CurveFit& fit);
 
 template <class NetT>
 struct BoundaryFit {

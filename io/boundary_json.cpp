@@ -114,6 +114,14 @@ BoundaryCurve curve_from_json(const Json& j, const std::string& path) {
     check_keys(j, path, {"type", "points", "parameters"});
     Eigen::MatrixX3d P = points(field(j, path, "points"), path + ".points");
     if (j.contains("parameters")) {
+      if (j["parameters"].is_string()) {
+        if (j["parameters"].get<std::string>() != "chord-length")
+          throw ParseError(path + ".parameters: unknown parameters \"" + j["parameters"].get<std::string>() +
+                           "\" (expected an array of numbers, or \"chord-length\")");
+        return at(path, [&] {
+          return BoundaryCurve::samples(std::move(P), BoundaryCurve::SampleParameters::ChordLength);
+        });
+      }
       const std::vector<double> t = numbers(j["parameters"], path + ".parameters");
       return at(path, [&] { return BoundaryCurve::samples(std::move(P), t); });
     }
@@ -223,6 +231,10 @@ Json boundary_fit_to_json(const std::vector<EdgeFit>& fits) {
       r["tangent_curve"] = *f.tangent_curve;
       r["tangent_method"] = *f.tangent_method;
       r["tangent_max_error"] = *f.tangent_max_error;
+    }
+    if (f.parameters) {
+      r["parameters"] = *f.parameters;
+      if (*f.parameters == "corrected") r["corrections"] = *f.corrections;
     }
     a.push_back(std::move(r));
   }

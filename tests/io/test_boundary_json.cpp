@@ -38,6 +38,27 @@ TEST(BoundaryJson, EveryCurveFormReadsIntoItsCurve) {
   EXPECT_EQ(h.kind(), "helix");
 }
 
+TEST(BoundaryJson, SampleParametersAreGivenChordLengthOrCorrected) {
+  // Samples of y = x² at x_k = (k/8)², three ways: the parameters given (t = x, exact at degree 2),
+  // "chord-length" (kept: the parabola is missed), and none (the chord length, corrected).
+  std::string pts = "[", par = "[";
+  auto num = [](double v) { return Json(v).dump(); };  // shortest round-trip form
+  for (int k = 0; k <= 8; ++k) {
+    const double x = (k / 8.0) * (k / 8.0);
+    pts += (k ? ", [" : "[") + num(x) + ", " + num(x * x) + ", 0]";
+    par += (k ? ", " : "") + num(x);
+  }
+  pts += "]";
+  par += "]";
+  auto fit = [&](const std::string& extra) {
+    const bpde::BoundaryCurve c = curve(R"({"type": "samples", "points": )" + pts + extra + "}");
+    return bpde::edge_error(c, bpde::fit_edge(c, 2));
+  };
+  EXPECT_LT(fit(R"(, "parameters": )" + par), 1e-12);
+  EXPECT_GT(fit(R"(, "parameters": "chord-length")"), 1e-3);
+  EXPECT_LT(fit(""), 1e-9);
+}
+
 TEST(BoundaryJson, BoundaryObjectBuildsTheNetAndReportsTheFit) {
   const auto b = bpde::boundary_from_json(Json::parse(R"({"type": "tensor", "degree": [3, 2], "fit": "least-squares",
       "edges": [{"type": "segment", "from": [0,0,0], "to": [1,0,0]},
@@ -55,6 +76,9 @@ TEST(BoundaryJson, BoundaryObjectBuildsTheNetAndReportsTheFit) {
   EXPECT_EQ(r[1]["method"], "least-squares");
   EXPECT_EQ(r[1]["curve"], "arc");
   EXPECT_EQ(r[3]["curve"], "samples");
+  EXPECT_EQ(r[3]["parameters"], "corrected");  // samples without parameters (fit_boundary.h)
+  EXPECT_TRUE(r[3].contains("corrections"));
+  EXPECT_FALSE(r[1].contains("parameters"));
   EXPECT_LT(r[0]["max_error"].get<double>(), 1e-15);
   EXPECT_GT(r[1]["max_error"].get<double>(), 1e-6);  // an arc at degree 2 is not exact
   EXPECT_FALSE(r[0].contains("tangent_max_error"));
@@ -102,6 +126,9 @@ TEST(BoundaryJson, BadBoundariesThrowTypedErrorsWithTheirPath) {
                                      "b.edges[2]: samples: parameters must increase");
   expect_error<bpde::SizeError>(tri(R"({"type": "samples", "points": [[0,1,0], [0,0.5,0], [0,0,0]]})"),
                                 "needs at least 4 samples, got 3");
+  expect_error<bpde::ParseError>(
+      tri(R"({"type": "samples", "points": [[0,1,0], [0,0.5,0], [0,0.2,0], [0,0,0]], "parameters": "arc"})"),
+      "b.edges[2].parameters: unknown parameters \"arc\" (expected an array of numbers, or \"chord-length\")");
   expect_error<bpde::ParameterError>(tri(R"({"type": "segment", "from": [0,1,0], "to": [0,0,0.5]})"),
                                      "b: edges 2 and 0 do not meet");
   expect_error<bpde::ParameterError>(tri(s2, R"(, "corner_tolerance": 0)"), "b.corner_tolerance");

@@ -12,6 +12,7 @@ Exit 0 when all hold; the failures are printed.
 """
 import copy
 import json
+import math
 import os
 import pathlib
 import subprocess
@@ -97,6 +98,11 @@ blend = load(SOURCE / "examples" / "003-blend-cylinders" / "fig2a.json")
 curves = load(SOURCE / "examples" / "004-cmc-circle" / "circle_curves.json")
 builder = mutate(load(SOURCE / "examples" / "004-cmc-circle" / "circle_builder.json"), ["boundary", "degree"], 4)
 net = {"type": "triangular", "degree": 1, "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
+# circle_curves.json's edge 2 (the unit circle's arc from 2π/3 to 4π/3) as 21 samples without
+# parameters; the end points as the arcs compute them (cos, sin of the angles).
+_a = curves["boundary"]["edges"][2]["angles"]
+samples = {"type": "samples", "points": [[math.cos(a), math.sin(a), 0.0]
+                                         for a in (_a[0] + (_a[1] - _a[0]) * k / 20 for k in range(21))]}
 
 cases = [
     # (what, command, validator, document, the reader and the schema accept it)
@@ -123,6 +129,11 @@ cases = [
     ("job with both net and boundary", "solve", JOB, mutate(curves, ["net"], net), False),
     ("boundary: unknown curve type", "solve", JOB, mutate(curves, ["boundary", "edges", 2, "type"], "spline"), False),
     ("boundary: unknown builder", "solve", JOB, mutate(builder, ["boundary", "builder"], "circle"), False),
+    ("boundary: samples without parameters", "solve", JOB, mutate(curves, ["boundary", "edges", 2], samples), True),
+    ("boundary: samples at the chord length", "solve", JOB,
+     mutate(curves, ["boundary", "edges", 2], dict(samples, parameters="chord-length")), True),
+    ("boundary: unknown sample parameters", "solve", JOB,
+     mutate(curves, ["boundary", "edges", 2], dict(samples, parameters="arc")), False),
     ("area cmc job as it is", "solve", JOB, mutate(builder, ["problem", "functional"], "area"), True),
     ("cmc job: unknown functional", "solve", JOB, mutate(builder, ["problem", "functional"], "areas"), False),
     ("area cmc job with solver nlopt", "solve", JOB,
