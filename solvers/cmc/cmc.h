@@ -220,7 +220,9 @@ struct CmcOptions {
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area
   /// functional's route 0) report "cmc least squares", one stage across its rule refinements, the
-  /// area functional "cmc area"; default none.
+  /// area functional "cmc area" (the decades of its regulariser removed, out of 12, repeated at
+  /// every evaluation of the first variation, so also through the final phases, whose length is
+  /// not known; 1 at the end); default none.
   ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
   /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with

@@ -52,6 +52,7 @@ Eigen::MatrixXd AreaProblem::hessian(double H) const {
 }
 
 double AreaProblem::residual_at(double H, double e, Eigen::VectorXd* g) const {
+  if (progress) report(*progress, "cmc area", progress_done, 1);
   Eigen::MatrixX3d G, S;
   a->gradient_rows_and_scale(base.P, base.free, &G, &S);
   if (e != 0.0) {
@@ -627,6 +628,7 @@ struct AreaSolve {
       return false;
     }
     // Progress (stage "cmc area"): the decades of ε removed, out of 12; 1 when the solve ends.
+    p.progress_done = 0.0;
     report(o.progress, "cmc area", 0, 1);
     while (true) {
       if (p.residual_at(H, 0.0) <= o.tolerance || eps == 0.0) break;
@@ -640,7 +642,8 @@ struct AreaSolve {
       if (sok) {
         eps = next;
         ratio = std::max(ratio * ratio, 1e-2);
-        report(o.progress, "cmc area", eps > 0.0 ? std::min(0.999, std::log10(1.0 / eps) / 12.0) : 0.999, 1);
+        p.progress_done = std::max(p.progress_done, eps > 0.0 ? std::min(0.999, std::log10(1.0 / eps) / 12.0) : 0.999);
+        report(o.progress, "cmc area", p.progress_done, 1);
         if (eps <= 1e-4 && p.residual_at(H, 0.0) > o.tolerance && jump(H, eps, V0)) {
           eps = 0.0;
           break;
@@ -1282,6 +1285,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
                      is_triangular(data) ? data.n() : static_cast<int>(0),
                      1.0,
                      res.summary};
+    if (o.progress) s.p.progress = &o.progress;
     if constexpr (std::is_same_v<Net, TensorNet>) s.m = data.m();
     if constexpr (std::is_same_v<Net, TriangularNet>) s.m = data.n();
     AreaOutcome out;

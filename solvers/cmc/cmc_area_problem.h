@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "bezierpde/core/progress.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 
@@ -19,6 +20,11 @@ struct AreaProblem {
   /// The weight of the Dirichlet regulariser: the functional is F_ε = A_H + ε(D - A)
   /// = (1-ε)A + εD + 2HV (ε = 1: the paper's D_H; ε = 0: A_H).
   double eps = 0.0;
+  /// Progress (core/progress.h): every residual_at reports the stage "cmc area" again at
+  /// `progress_done`, the fraction last reported, so that a progress line keeps showing the time
+  /// through the final phases (two minutes and more on hard cases, of no known length); null: none.
+  const ProgressFn* progress = nullptr;
+  double progress_done = 0.0;
 
   int k() const { return base.k(); }
   Eigen::VectorXd get() const { return base.get(); }
