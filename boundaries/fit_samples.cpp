@@ -29,7 +29,7 @@ constexpr int kFinalIterations = 20;
 struct Model {
   int n;
   const Eigen::MatrixX3d& q;
-  // x(t) and x'(t) of the curve P at t; the inner Bernstein values B_1..B_{n-1} into b.
+  // x(t) and x'(t) of the curve P at t; the Bernstein values B_0..B_n into b, B^{n-1} into d.
   void eval(const Eigen::MatrixX3d& P, double t, Eigen::Vector3d& x, Eigen::Vector3d& dx, double* b, double* d) const {
     bernstein_values(n, t, b);
     bernstein_values(n - 1, t, d);
@@ -60,8 +60,6 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
   Eigen::MatrixXd A(k, k), S(k, k);
   Eigen::VectorXd g(k), rhs(k);
   Eigen::VectorXd gt(M + 1), ht(M + 1);
-  std::vector<Eigen::Vector3d> a(static_cast<size_t>(M + 1));
-  std::vector<Eigen::VectorXd> Bk(static_cast<size_t>(M + 1));
   while (it < max_iterations && cost > 0) {
     // Normal equations: [A  C; Cᵀ diag(ht)] over (P, t), gradient (g, gt).
     A.setZero();
@@ -71,9 +69,7 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
       Eigen::Vector3d x, dx;
       m.eval(P, t(s), x, dx, b.data(), d.data());
       const Eigen::Vector3d r = x - m.q.row(s).transpose();
-      Eigen::VectorXd& bs = Bk[static_cast<size_t>(s)];
-      bs = Eigen::Map<const Eigen::VectorXd>(b.data() + 1, n - 1);
-      a[static_cast<size_t>(s)] = dx;
+      const Eigen::Map<const Eigen::VectorXd> bs(b.data() + 1, n - 1);  // B_1 .. B_{n-1} at t_s
       gt(s) = dx.dot(r);
       ht(s) = dx.squaredNorm();
       for (int i = 0; i < n - 1; ++i) {
@@ -96,7 +92,7 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
     bool accepted = false;
     while (!accepted && it < max_iterations) {
       ++it;
-      // Damped blocks (Marquardt: + mu·diag, with a floor so that a zero diagonal is damped too).
+      // Damped blocks (Levenberg: + mu·Id on both), then the Schur complement of the parameters.
       S = A;
       S.diagonal().array() += mu;
       rhs = -g;
