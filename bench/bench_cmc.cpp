@@ -10,8 +10,8 @@
 // at that degree (q = 15 on the triangle, 2n + 4 on the square), all rows against the free rows
 // with their scale (what every residual of the area route costs; the baseline is the full gradient);
 // AreaForm/hessian/{triangle,square}/<n> the free block of the Hessian on the same rules, and
-// AreaForm/{hessian,rows-and-scale}/triangle-graded/<n> on the graded q = 64 rule of the nearly
-// degenerate corners (docs/performance.md, section 9). The per-degree setup (Gram and volume quadrature tables) is cached by
+// AreaForm/{hessian,rows-and-scale}/triangle-graded/<n> and AreaForm/rows-and-scale/square-graded/<n> on
+// the graded q = 64 rule of the nearly degenerate corners (docs/performance.md, section 9). The per-degree setup (Gram and volume quadrature tables) is cached by
 // CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after the
 // first iteration.
 #include <benchmark/benchmark.h>
@@ -149,18 +149,20 @@ void MeanCurvatureCircleVolumeCeres(benchmark::State& s) {
 // The area's first variation on a catenoid piece's net (regular, non-conformal): the full N x 3
 // gradient (the baseline) and the free rows with their scale (AreaProblem::residual_at).
 void AreaFormRoute(benchmark::State& state, bool triangle, bool rows, bool hessian = false, bool graded = false) {
+  // graded: the graded q = 64 rule (on the triangle, or on the square where !triangle).
   const int n = static_cast<int>(state.range(0));
   auto surface = [](double u, double v) {
     const double th = 1.2 * u, rho = 1.1 + 0.8 * v;
     return Eigen::Vector3d(rho * std::cos(th), rho * std::sin(th), std::acosh(rho));
   };
   const std::shared_ptr<const AreaForm> f =
-      graded     ? AreaForm::cached_triangular(n, 64, 3)
-      : triangle ? AreaForm::cached_triangular(n, 15)
-                 : AreaForm::cached_tensor(n, n, 2 * n + 4);
+      graded && triangle ? AreaForm::cached_triangular(n, 64, 3)
+      : graded           ? AreaForm::cached_tensor(n, n, 64, 3)
+      : triangle         ? AreaForm::cached_triangular(n, 15)
+                         : AreaForm::cached_tensor(n, n, 2 * n + 4);
   // The boundary of the catenoid piece, the interior from the Dirichlet extremal (a regular net).
   const Eigen::MatrixX3d P =
-      triangle || graded ? dirichlet_extremal(triangular_boundary(n, surface), FixedSet::Boundary).points()
+      triangle ? dirichlet_extremal(triangular_boundary(n, surface), FixedSet::Boundary).points()
                          : dirichlet_extremal(tensor_boundary(n, surface), FixedSet::Boundary).points();
   std::vector<int> idx;
   for (int i = 0; i < f->size(); ++i)
@@ -185,6 +187,7 @@ void AreaHessianTriangle(benchmark::State& s) { AreaFormRoute(s, true, false, tr
 void AreaHessianSquare(benchmark::State& s) { AreaFormRoute(s, false, false, true); }
 void AreaHessianGraded(benchmark::State& s) { AreaFormRoute(s, true, false, true, true); }
 void AreaRowsGraded(benchmark::State& s) { AreaFormRoute(s, true, true, false, true); }
+void AreaRowsSquareGraded(benchmark::State& s) { AreaFormRoute(s, false, true, false, true); }
 
 }  // namespace
 
@@ -196,6 +199,7 @@ BENCHMARK(AreaHessianTriangle)->Name("AreaForm/hessian/triangle")->Arg(6)->Arg(1
 BENCHMARK(AreaHessianSquare)->Name("AreaForm/hessian/square")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(AreaHessianGraded)->Name("AreaForm/hessian/triangle-graded")->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(AreaRowsGraded)->Name("AreaForm/rows-and-scale/triangle-graded")->Arg(10)->Unit(benchmark::kMicrosecond);
+BENCHMARK(AreaRowsSquareGraded)->Name("AreaForm/rows-and-scale/square-graded")->Arg(8)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Dirichlet)->Name("Cmc/dirichlet")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Newton)->Name("Cmc/newton")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Ceres)->Name("Cmc/ceres")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);

@@ -16,8 +16,10 @@
 // leaves `ok` false (a folded or nearly singular corner, e.g. the circle's arcs fitted at degree 4,
 // whose corners fold) and returns the sequence's rule with the smaller change, with that change.
 // Callers re-check at the end of a solve (the change is measured on the final net), refine again
-// when the surface moved far from where the rule was chosen, and report a rule that misses its
-// tolerance as not converged (solvers/cmc/cmc_area.cpp).
+// when the surface moved far from where the rule was chosen, choose it again during the final
+// phases where it missed its tolerance at the net where it was chosen (a start that nearly folds
+// at a corner), and report a rule that misses its tolerance as not converged
+// (solvers/cmc/cmc_area.cpp).
 #include <Eigen/Core>
 #include <memory>
 #include <vector>

@@ -180,6 +180,9 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
 // iterations; the circle at n = 10, H = -0.9 takes 21, docs/cmc.md "The soft-mode phase").
 constexpr int kSoftModeIterationsPerCorrector = 10;
 
+// How often the truncated Newton phase asks for the rule to be chosen again (AreaProblem::refresh_rule).
+constexpr int kRuleRefreshEvery = 4;
+
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations) {
   // Newton on A_H (ε = 0) restricted to the well-conditioned part of the Hessian. K v = λ C v (C the
   // Dirichlet Gram, so the cut does not depend on how the free points are scaled), v_iᵀ C v_j = δ_ij;
@@ -195,7 +198,15 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
   p.eps = 0.0;
   Eigen::VectorXd g;
   st.residual = p.residual(H, &g);
+  // A rule chosen anew changes the discrete A_H: its first variation is measured again.
+  auto refresh = [&] {
+    if (p.refresh_rule && p.refresh_rule()) st.residual = p.residual(H, &g);
+  };
   for (int it = 0; it < max_iterations && std::isfinite(st.residual) && st.residual > o.tolerance; ++it) {
+    if (it > 0 && it % kRuleRefreshEvery == 0) {
+      refresh();
+      if (!(std::isfinite(st.residual) && st.residual > o.tolerance)) break;
+    }
     const Eigen::MatrixXd K = p.hessian(H);
     if (!K.allFinite()) break;
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, p.C);
@@ -259,6 +270,7 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
     g = best_g;
     st.residual = best_r;
   }
+  if (std::isfinite(st.residual) && st.residual > o.tolerance) refresh();
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
   if (!st.ok && std::isfinite(st.residual)) {
     // What the truncated phase leaves is in the soft modes: the soft-mode phase
@@ -538,12 +550,27 @@ struct AreaSolve {
   // phase; ceres, the soft-mode phase (by Ceres) alone.
   CorrectorStats finish(double H, int max_iterations) {
     CorrectorStats t;
+    // The rule chosen again where it missed its tolerance at the net where it was chosen: a start
+    // that nearly folds at a corner (on a wavy boundary curve the Dirichlet extremal takes the
+    // graded q = 64 rule, 32 768 nodes on a tensor net, and still misses by 1.7e-4) would otherwise
+    // keep that rule through the final phases, the longest part of a hard solve, where the surface
+    // reached needs far fewer nodes (there the plain q = 26 rule, 5408: docs/performance.md,
+    // section 13).
+    if (!(rule_change <= 0.1 * o.tolerance)) choose_rule();
+    // The same during the truncated Newton phase, where the net moves on from there.
+    p.refresh_rule = [this] {
+      if (rule_change <= 0.1 * o.tolerance) return false;
+      const std::shared_ptr<const AreaForm> a0 = p.a;
+      choose_rule();
+      return p.a != a0;
+    };
     if (o.solver == CmcSolver::Ceres) {
       t = area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
       t.soft_iterations = t.iterations;
     } else {
       t = area_truncated_newton(p, H, o, max_iterations);
     }
+    p.refresh_rule = nullptr;
     stationary_at = t.soft_stationary ? t.residual : -1.0;
     return t;
   }

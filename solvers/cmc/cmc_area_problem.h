@@ -25,6 +25,10 @@ struct AreaProblem {
   /// through the final phases (two minutes and more on hard cases, of no known length); null: none.
   const ProgressFn* progress = nullptr;
   double progress_done = 0.0;
+  /// The rule chosen again at the current net where the rule in use missed its tolerance at the
+  /// net where it was chosen (AreaSolve in cmc_area.cpp); true when `a` changed. Called by
+  /// area_truncated_newton every kRuleRefreshEvery iterations and before the soft-mode phase. Null: never.
+  std::function<bool()> refresh_rule;
 
   int k() const { return base.k(); }
   Eigen::VectorXd get() const { return base.get(); }

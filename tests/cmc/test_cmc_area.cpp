@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "cmc_test_util.h"
+#include "bezierpde/boundaries/boundary_curves.h"
+#include "bezierpde/boundaries/fit_boundary.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/area_functional.h"
@@ -616,6 +618,34 @@ TEST(CmcArea, StalledMinimalSurfaceIsReportedAsANumericalLimit) {
   EXPECT_NE(r.summary.message.find("misses the first variation of A_H"), std::string::npos) << r.summary.message;
   EXPECT_LE(r.summary.residual, 1e-9);
   EXPECT_LE(testing::helicoid_off(r.net), 2e-4);  // measured 7.3e-5 (the degree)
+}
+
+// A wavy closed space curve (curve A of docs/boundaries.md, "Samples without parameters": r = 1 +
+// 0.25 cos 2θ + 0.2 sin 3θ, z = 0.3 cos 2θ + 0.2 sin 2θ − 0.25 cos 3θ, corners at θ = 0, 1.45, 3.3,
+// 4.75) given as 61 samples per edge without parameters, tensor n = 8, H = 0. The Dirichlet
+// extremal nearly folds at a corner: its rule is the graded q = 64 and misses its tolerance there
+// (1.7e-4). The rule is chosen again where the final phases start and on their way
+// (cmc_area.cpp, AreaSolve::finish), so they run on the rule of the surface they reach, the plain
+// q = 26 (measured; 5408 nodes against 32 768, about 6x faster: docs/performance.md, section 13).
+// Before, the whole solve kept q = 64. The end is the known numerical limit (9.1e-11).
+TEST(CmcArea, RuleIsChosenAgainWhereTheStartNearlyFolds) {
+  const double cuts[5] = {0.0, 1.45, 3.3, 4.75, 2 * std::numbers::pi};
+  auto curve = [](double th) {
+    const double r = 1 + 0.25 * std::cos(2 * th) + 0.2 * std::sin(3 * th);
+    return Eigen::Vector3d(r * std::cos(th), r * std::sin(th),
+                           0.3 * std::cos(2 * th) + 0.2 * std::sin(2 * th) - 0.25 * std::cos(3 * th));
+  };
+  BoundaryData data;
+  for (int e = 0; e < 4; ++e) {
+    Eigen::MatrixX3d q(61, 3);
+    for (int k = 0; k <= 60; ++k) q.row(k) = curve(cuts[e] + (cuts[e + 1] - cuts[e]) * k / 60.0).transpose();
+    if (e == 3) q.row(60) = curve(0.0).transpose();  // the first corner, bit for bit
+    data.edges.push_back(BoundaryCurve::samples(q));
+  }
+  const TensorNet net = fit_tensor_boundary(8, 8, data).net;
+  const CmcResult<TensorNet> r = solve_cmc(net, area_options(0.0));
+  EXPECT_LT(r.quadrature_points, 64) << r.summary.message;  // measured 26 (plain); before: 64 (graded)
+  EXPECT_LE(r.summary.residual, 1e-9) << r.summary.message;  // measured 9.1e-11
 }
 
 // H = -0.9 on the circle in three arcs at degrees 8 and 10. Both converge (first variation
