@@ -546,8 +546,11 @@ struct AreaSolve {
   bool at_stationary_point(double residual) const {
     return !o.V && stationary_at > 0 && std::abs(residual - stationary_at) <= 1e-12 * stationary_at;
   }
+  // Whether finish() may choose the rule again (off in the final rule check, which only refines).
+  bool choose_rules_again = true;
   // The final phases at ε = 0: newton, the truncated Newton phase, which ends in the soft-mode
-  // phase; ceres, the soft-mode phase (by Ceres) alone.
+  // phase; ceres, the soft-mode phase (by Ceres) alone. A caller that gives up their end puts
+  // back the rule too (finish may have chosen another).
   CorrectorStats finish(double H, int max_iterations) {
     CorrectorStats t;
     // The rule chosen again where it missed its tolerance at the net where it was chosen: a start
@@ -556,10 +559,10 @@ struct AreaSolve {
     // keep that rule through the final phases, the longest part of a hard solve, where the surface
     // reached needs far fewer nodes (there the plain q = 26 rule, 5408: docs/performance.md,
     // section 13).
-    if (!(rule_change <= 0.1 * o.tolerance)) choose_rule();
+    if (choose_rules_again && !(rule_change <= 0.1 * o.tolerance)) choose_rule();
     // The same during the truncated Newton phase, where the net moves on from there.
     p.refresh_rule = [this] {
-      if (rule_change <= 0.1 * o.tolerance) return false;
+      if (!choose_rules_again || rule_change <= 0.1 * o.tolerance) return false;
       const std::shared_ptr<const AreaForm> a0 = p.a;
       choose_rule();
       return p.a != a0;
@@ -837,6 +840,10 @@ struct AreaSolve {
       return {0.0, false, Status::NoConvergence, "the critical point of the area at H = 0 is not a strict minimum"};
     Eigen::VectorXd y = p.get();
     Net at = make_net(data, p.P());
+    // The rule at y: a rejected step puts it back with the net (its final phases may have chosen
+    // another at the rejected net).
+    std::shared_ptr<const AreaForm> rule_at_y = p.a;
+    double change_at_y = rule_change;
     StepController control(Ht, first_step(Ht, p.P(), fixed_idx), o);
     std::string rejected;  // why the last step was rejected, for the fold message
     while (!control.reached_target()) {
@@ -874,11 +881,15 @@ struct AreaSolve {
       if (minimum) {
         y = p.get();
         at = now;
+        rule_at_y = p.a;
+        change_at_y = rule_change;
         if (!last) tangent = next;
         ++steps;
         control.accept(step, st.iterations);
       } else {
         p.set(y);
+        p.a = rule_at_y;
+        rule_change = change_at_y;
         if (!control.reject(step))
           return {control.h(), false, Status::Fold,
                   "no critical point of A_H on the branch from H = 0 beyond H ≈ " + num(control.h()) +
@@ -1092,6 +1103,8 @@ struct AreaSolve {
         const std::string phases = final_phases(t, true);
         if (!phases.empty()) finished = " and " + phases;
       }
+      // The rule in use now (the final phases choose it again where it missed its tolerance).
+      rule_ok = rule_change <= 0.1 * o.tolerance;
       // The final phases can move the net far along the surface (the tensor catenoid at n = 6:
       // control points by up to 1.4): at a regular net reached the rule is checked again, refined
       // where it misses its tolerance there, and the Newton iterations run again with the finer
@@ -1140,13 +1153,24 @@ struct AreaSolve {
   std::string finish_volume(double V0, double& H) {
     if (vresidual(V0, H) <= o.tolerance) return "";
     const Eigen::VectorXd y = p.get();
-    const double Hs = H, r0 = vresidual(V0, H);
+    const std::shared_ptr<const AreaForm> a0 = p.a;
+    const double Hs = H, change0 = rule_change;
+    double r0 = vresidual(V0, H);
     const CorrectorStats t = finish(H, 2 * o.max_corrector_iterations);
     summary.iterations += t.iterations;
     theta = 1e-8;
     bordered_correct(V0, H, o.tolerance, 8);
+    if (p.a != a0) {
+      // finish chose another rule: the start's residual on it, so that the two compare.
+      const Eigen::VectorXd y1 = p.get();
+      p.set(y);
+      r0 = vresidual(V0, Hs);
+      p.set(y1);
+    }
     if (!(vresidual(V0, H) < r0)) {
       p.set(y);
+      p.a = a0;
+      rule_change = change0;
       H = Hs;
       return "";
     }
@@ -1437,6 +1461,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     // rule that still misses its tolerance is reported (NumericalLimit): the first variation is
     // then only known to within that error.
     if (out.ok) {
+      s.choose_rules_again = false;  // refined only, never chosen from the start again
       for (int round = 0; round < 4; ++round) {
         const int q = s.p.a->points_per_direction(), gr = s.p.a->grading();
         const bool rule_ok = s.choose_rule(q, gr);
