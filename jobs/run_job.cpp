@@ -138,6 +138,12 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   out.report["continuation_steps"] = r.continuation_steps;
   out.report["iterations"] = r.summary.iterations;
   out.report["residual"] = finite_or_null(r.summary.residual);
+  // The quadrature rule of the area and mean-curvature functionals (their results depend on it;
+  // the Dirichlet functional's matrices are exact).
+  if (o.functional != CmcFunctionalKind::Dirichlet)
+    out.report["quadrature"] = {{"points_per_direction", r.quadrature_points},
+                                {"grading", r.quadrature_grading},
+                                {"nodes", r.quadrature_nodes}};
   return out;
 }
 

@@ -294,6 +294,8 @@ struct CmcResult {
   double energy = 0.0;         ///< the value of the functional solved: D_H, A_H = A + 2HV, or Φ (mean-curvature)
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
   int quadrature_points = 0;   ///< area, mean-curvature: Gauss points per direction of the rule minimised
+  int quadrature_grading = 0;  ///< area, mean-curvature: its radial grading (1 plain, 3 graded; area_functional.h)
+  int quadrature_nodes = 0;    ///< area, mean-curvature: its number of nodes (6q² triangular, 8q² tensor)
   int continuation_steps = 0;  ///< accepted continuation steps (H mode; the V form: its steps in V)
   /// converged, iterations (corrector iterations in all; the area functional's also those of its
   /// route 0, least squares and their D_H start included), residual (mean-curvature: √Φ by the check

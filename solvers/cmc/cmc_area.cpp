@@ -1496,6 +1496,8 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     res.A = s.p.area();
     res.energy = res.A + 2.0 * out.H * res.V;
     res.quadrature_points = s.p.a->points_per_direction();
+    res.quadrature_grading = s.p.a->grading();
+    res.quadrature_nodes = s.p.a->nodes();
     res.summary.residual = s.p.residual(out.H);
     if (o.V) {
       const VolumeForm& vf = base.f->volume_form();

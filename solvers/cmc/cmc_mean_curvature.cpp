@@ -469,6 +469,8 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o,
     res.A = area(net);
     res.energy = g.phi;
     res.quadrature_points = run.f->points_per_direction();
+    res.quadrature_grading = 1;  // the plain corner-collapsed rules (mean_curvature_least_squares.h)
+    res.quadrature_nodes = run.f->nodes();
     res.summary.residual = g.residual;
     const std::string refined =
         run.extra > 0 ? " (rule refined to q = " + std::to_string(run.f->points_per_direction()) + ": " +

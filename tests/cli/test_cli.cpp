@@ -453,11 +453,20 @@ TEST(Cli, CmcAreaJobReportsTheAreaFunctional) {
   EXPECT_NEAR(rep["energy"].get<double>(), rep["area"].get<double>(), 1e-14);  // H = 0: A_H = A
   EXPECT_GT(rep["D"].get<double>(), rep["area"].get<double>());                  // D >= A, not conformal
   EXPECT_TRUE(rep.contains("volume") && rep.contains("mean_curvature") && rep.contains("residual"));
-  // The Dirichlet default is unchanged: no "area" functional in its report.
+  // The rule of the result: 8q² nodes on the tensor net.
+  ASSERT_TRUE(rep.contains("quadrature")) << rep.dump();
+  const int q = rep["quadrature"]["points_per_direction"].get<int>(), g = rep["quadrature"]["grading"].get<int>();
+  EXPECT_TRUE(q >= 1 && q <= 64) << q;
+  EXPECT_TRUE(g == 1 || g == 3) << g;
+  EXPECT_EQ(rep["quadrature"]["nodes"].get<int>(), 8 * q * q);
+  // The Dirichlet default is unchanged: no "area" functional in its report, and no quadrature
+  // (its matrices are exact).
   const CmdResult d = run("solve " + write("dir.json", job(R"({"kind": "cmc", "H": 0})")).string() + " --out " +
                           (tmpdir() / "dir").string());
   ASSERT_EQ(d.status, 0) << d.err;
-  EXPECT_EQ(bpde::read_json_file((tmpdir() / "dir" / "result.json").string())["report"]["functional"], "dirichlet");
+  const bpde::Json drep = bpde::read_json_file((tmpdir() / "dir" / "result.json").string())["report"];
+  EXPECT_EQ(drep["functional"], "dirichlet");
+  EXPECT_FALSE(drep.contains("quadrature"));
   const fs::path none = tmpdir() / "never";
   auto bad = [&](const std::string& j, const std::string& needle) {
     expect_bad_input("solve " + write("bad.json", j).string() + " --out " + none.string(), needle);
@@ -546,6 +555,9 @@ TEST(Cli, CmcMeanCurvatureJob) {
   EXPECT_EQ(rep["functional"], "mean-curvature");
   EXPECT_TRUE(rep["converged"].get<bool>());
   EXPECT_LE(rep["residual"].get<double>(), 1e-6);
+  EXPECT_EQ(rep["quadrature"]["grading"], 1);  // the plain rules, 6q² nodes on the triangle
+  EXPECT_EQ(rep["quadrature"]["nodes"].get<int>(),
+            6 * rep["quadrature"]["points_per_direction"].get<int>() * rep["quadrature"]["points_per_direction"].get<int>());
   EXPECT_LE(std::abs(rep["mean_curvature"]["max"].get<double>() + 0.9), 5e-5);
   EXPECT_LE(std::abs(rep["mean_curvature"]["min"].get<double>() + 0.9), 5e-5);
   // Degree 6 misses the default tolerance 1e-6: exit 1, a result with converged false; its own
