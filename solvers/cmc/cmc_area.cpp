@@ -558,15 +558,14 @@ struct AreaSolve {
     // graded q = 64 rule, 32 768 nodes on a tensor net, and still misses by 1.7e-4) would otherwise
     // keep that rule through the final phases, the longest part of a hard solve, where the surface
     // reached needs far fewer nodes (there the plain q = 26 rule, 5408: docs/performance.md,
-    // section 13).
-    if (choose_rules_again && !(rule_change <= 0.1 * o.tolerance)) choose_rule();
-    // The same during the truncated Newton phase, where the net moves on from there.
+    // section 13). Here, and during the truncated Newton phase, where the net moves on from here.
     p.refresh_rule = [this] {
       if (!choose_rules_again || rule_change <= 0.1 * o.tolerance) return false;
       const std::shared_ptr<const AreaForm> a0 = p.a;
       choose_rule();
       return p.a != a0;
     };
+    p.refresh_rule();
     if (o.solver == CmcSolver::Ceres) {
       t = area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
       t.soft_iterations = t.iterations;
