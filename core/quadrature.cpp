@@ -1,6 +1,7 @@
 #include "bezierpde/core/quadrature.h"
 
 #include <array>
+#include <cstddef>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -77,14 +78,38 @@ namespace {
 using Tri = std::array<Eigen::Vector2d, 3>;  // {collapsed corner C, P1, P2}
 
 // Nodes and weights of the Duffy rules on the triangles (u, v) = C + s(P1 - C) + s t(P2 - P1),
-// Jacobian s |det(P1 - C, P2 - C)|, with q x q Gauss–Legendre points in (σ, t), s = σ^p (p = the
-// grading; p = 1 is the plain Duffy rule, ds = p σ^(p-1) dσ).
-QuadratureRuleTriangle duffy_rule(const std::vector<Tri>& tris, int q, int grading) {
+// Jacobian s |det(P1 - C, P2 - C)|, with q Gauss–Legendre points in t and, radially, either q
+// points in σ with s = σ^p (levels = 0; p = the grading, p = 1 the plain Duffy rule,
+// ds = p σ^(p-1) dσ) or q points on each of the levels + 1 pieces [0, ρ^L], [ρ^(k+1), ρ^k] of s
+// (levels = L > 0, grading 1, ρ = kGeometricRatio).
+QuadratureRuleTriangle duffy_rule(const std::vector<Tri>& tris, int q, int grading, int levels) {
   if (q < 1 || q > 200) throw ParameterError("corner-collapsed rule: q must be in 1..200, got " + std::to_string(q));
   if (grading < 1 || grading > 4)
     throw ParameterError("corner-collapsed rule: grading must be in 1..4, got " + std::to_string(grading));
+  if (levels < 0 || levels > kMaxGeometricLevels)
+    throw ParameterError("corner-collapsed rule: levels must be in 0.." + std::to_string(kMaxGeometricLevels) +
+                         ", got " + std::to_string(levels));
+  if (levels > 0 && grading != 1)
+    throw ParameterError("corner-collapsed rule: geometric levels take grading 1, got " + std::to_string(grading));
   const QuadratureRule1D g = gauss_legendre01(q);
-  const Eigen::Index per = static_cast<Eigen::Index>(q) * q;
+  // The radial nodes s and their weights (with the ds/dσ of the grading).
+  std::vector<double> rs, rw;
+  if (levels == 0) {
+    for (int a = 0; a < q; ++a) {
+      const double sg = g.x(a);
+      rs.push_back(std::pow(sg, grading));
+      rw.push_back(g.w(a) * grading * std::pow(sg, grading - 1));
+    }
+  } else {
+    for (int k = levels; k >= 0; --k) {
+      const double hi = std::pow(kGeometricRatio, k), lo = k == levels ? 0.0 : hi * kGeometricRatio;
+      for (int a = 0; a < q; ++a) {
+        rs.push_back(lo + (hi - lo) * g.x(a));
+        rw.push_back((hi - lo) * g.w(a));
+      }
+    }
+  }
+  const Eigen::Index per = static_cast<Eigen::Index>(rs.size()) * q;
   QuadratureRuleTriangle rule;
   rule.uv.resize(per * static_cast<Eigen::Index>(tris.size()), 2);
   rule.w.resize(rule.uv.rows());
@@ -92,12 +117,11 @@ QuadratureRuleTriangle duffy_rule(const std::vector<Tri>& tris, int q, int gradi
   for (const Tri& T : tris) {
     const Eigen::Vector2d e1 = T[1] - T[0], e2 = T[2] - T[1];
     const double det = std::abs(e1(0) * (T[2] - T[0])(1) - e1(1) * (T[2] - T[0])(0));
-    for (int a = 0; a < q; ++a)
+    for (std::size_t a = 0; a < rs.size(); ++a)
       for (int b = 0; b < q; ++b, ++r) {
-        const double sg = g.x(a), t = g.x(b);
-        const double s = std::pow(sg, grading), ds = grading * std::pow(sg, grading - 1);
+        const double s = rs[a], t = g.x(b);
         rule.uv.row(r) = (T[0] + s * e1 + s * t * e2).transpose();
-        rule.w(r) = g.w(a) * g.w(b) * s * ds * det;
+        rule.w(r) = rw[a] * g.w(b) * s * det;
       }
   }
   return rule;
@@ -105,13 +129,13 @@ QuadratureRuleTriangle duffy_rule(const std::vector<Tri>& tris, int q, int gradi
 
 }  // namespace
 
-QuadratureRuleTriangle corner_collapsed_triangle_rule(int q, int grading) {
+QuadratureRuleTriangle corner_collapsed_triangle_rule(int q, int grading, int levels) {
   const Eigen::Vector2d A(1, 0), B(0, 1), C(0, 0), G(1.0 / 3, 1.0 / 3);
   const Eigen::Vector2d mAB = (A + B) / 2, mAC = (A + C) / 2, mBC = (B + C) / 2;
-  return duffy_rule({{A, mAB, G}, {A, mAC, G}, {B, mAB, G}, {B, mBC, G}, {C, mAC, G}, {C, mBC, G}}, q, grading);
+  return duffy_rule({{A, mAB, G}, {A, mAC, G}, {B, mAB, G}, {B, mBC, G}, {C, mAC, G}, {C, mBC, G}}, q, grading, levels);
 }
 
-QuadratureRuleTriangle corner_collapsed_square_rule(int q, int grading) {
+QuadratureRuleTriangle corner_collapsed_square_rule(int q, int grading, int levels) {
   const Eigen::Vector2d M(0.5, 0.5);
   std::vector<Tri> tris;
   for (int cu = 0; cu <= 1; ++cu)
@@ -120,7 +144,7 @@ QuadratureRuleTriangle corner_collapsed_square_rule(int q, int grading) {
       tris.push_back({corner, Eigen::Vector2d(0.5, cv), M});
       tris.push_back({corner, Eigen::Vector2d(cu, 0.5), M});
     }
-  return duffy_rule(tris, q, grading);
+  return duffy_rule(tris, q, grading, levels);
 }
 
 }  // namespace bpde

@@ -143,6 +143,7 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
   if (o.functional != CmcFunctionalKind::Dirichlet)
     out.report["quadrature"] = {{"points_per_direction", r.quadrature_points},
                                 {"grading", r.quadrature_grading},
+                                {"levels", r.quadrature_levels},
                                 {"nodes", r.quadrature_nodes}};
   return out;
 }

@@ -555,6 +555,7 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("functional", [](const R& r) { return bpde::to_string(r.functional); })
         .def_readonly("quadrature_points", &R::quadrature_points)
         .def_readonly("quadrature_grading", &R::quadrature_grading)
+        .def_readonly("quadrature_levels", &R::quadrature_levels)
         .def_readonly("quadrature_nodes", &R::quadrature_nodes)
         .def_readonly("continuation_steps", &R::continuation_steps)
         .def_readonly("summary", &R::summary);

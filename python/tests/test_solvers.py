@@ -420,8 +420,9 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     assert bits(np.asarray(r.net.points).tolist()) == bits(bezierpde.points(net_cli).tolist())
     assert r.A == report["area"] and r.energy == report["energy"]
     q = report["quadrature"]
-    assert (r.quadrature_points, r.quadrature_grading, r.quadrature_nodes) == (
-        q["points_per_direction"], q["grading"], q["nodes"]) and q["nodes"] == 6 * q["points_per_direction"] ** 2
+    assert (r.quadrature_points, r.quadrature_grading, r.quadrature_levels, r.quadrature_nodes) == (
+        q["points_per_direction"], q["grading"], q["levels"], q["nodes"])
+    assert q["nodes"] == 6 * (q["levels"] + 1) * q["points_per_direction"] ** 2
     # solver "ceres" (one Ceres residual block per quadrature node): the same from both routes
     job["problem"]["solver"] = "ceres"
     net_ceres, report_ceres = bezierpde.solve(job)

@@ -21,11 +21,16 @@
 namespace bpde {
 namespace {
 
-void check_q(int q, int grading) {
+void check_q(int q, int grading, int levels) {
   if (q < 1 || q > 200)
     throw ParameterError("AreaForm: points per direction must be in 1..200, got " + std::to_string(q));
   if (grading < 1 || grading > 4)
     throw ParameterError("AreaForm: grading must be in 1..4, got " + std::to_string(grading));
+  if (levels < 0 || levels > kMaxGeometricLevels)
+    throw ParameterError("AreaForm: levels must be in 0.." + std::to_string(kMaxGeometricLevels) + ", got " +
+                         std::to_string(levels));
+  if (levels > 0 && grading != 1)
+    throw ParameterError("AreaForm: geometric levels take grading 1, got " + std::to_string(grading));
 }
 
 // x_u, x_v, N = x_u ∧ x_v and |N| at the nodes.
@@ -67,39 +72,41 @@ constexpr std::size_t kAreaCacheSize = 32;
 
 }  // namespace
 
-AreaForm AreaForm::triangular(int n, int q, int grading) {
+AreaForm AreaForm::triangular(int n, int q, int grading, int levels) {
   if (n < 1 || n > kMaxDegree)
     throw DegreeError("AreaForm: triangular degree " + std::to_string(n) + " is outside 1.." +
                       std::to_string(kMaxDegree));
-  check_q(q, grading);
+  check_q(q, grading, levels);
   Eigen::MatrixX2d uv;
   AreaForm f;
   {
-    const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(q, grading);
+    const QuadratureRuleTriangle rule = corner_collapsed_triangle_rule(q, grading, levels);
     uv = rule.uv;
     f.w_ = rule.w;
   }
   f.q_ = q;
   f.grading_ = grading;
+  f.levels_ = levels;
   f.Bu_ = triangular_basis_table(n, uv, 1, 0);
   f.Bv_ = triangular_basis_table(n, uv, 0, 1);
   return f;
 }
 
-AreaForm AreaForm::tensor(int n, int m, int q, int grading) {
+AreaForm AreaForm::tensor(int n, int m, int q, int grading, int levels) {
   if (n < 1 || n > kMaxDegree || m < 1 || m > kMaxDegree)
     throw DegreeError("AreaForm: tensor degree (" + std::to_string(n) + ", " + std::to_string(m) + ") is outside 1.." +
                       std::to_string(kMaxDegree));
-  check_q(q, grading);
+  check_q(q, grading, levels);
   Eigen::MatrixX2d uv;
   AreaForm f;
   {
-    const QuadratureRuleTriangle rule = corner_collapsed_square_rule(q, grading);
+    const QuadratureRuleTriangle rule = corner_collapsed_square_rule(q, grading, levels);
     uv = rule.uv;
     f.w_ = rule.w;
   }
   f.q_ = q;
   f.grading_ = grading;
+  f.levels_ = levels;
   const Eigen::VectorXd us = uv.col(0), vs = uv.col(1);
   const Eigen::MatrixXd Tu0 = bernstein_table(n, us, 0), Tu1 = bernstein_table(n, us, 1);
   const Eigen::MatrixXd Tv0 = bernstein_table(m, vs, 0), Tv1 = bernstein_table(m, vs, 1);
@@ -115,14 +122,16 @@ AreaForm AreaForm::tensor(int n, int m, int q, int grading) {
   return f;
 }
 
-std::shared_ptr<const AreaForm> AreaForm::cached_triangular(int n, int q, int grading) {
-  static KeyedCache<std::array<int, 3>, AreaForm> cache(kAreaCacheSize);
-  return cache.get({n, q, grading}, [](const std::array<int, 3>& k) { return triangular(k[0], k[1], k[2]); });
+std::shared_ptr<const AreaForm> AreaForm::cached_triangular(int n, int q, int grading, int levels) {
+  static KeyedCache<std::array<int, 4>, AreaForm> cache(kAreaCacheSize);
+  return cache.get({n, q, grading, levels},
+                   [](const std::array<int, 4>& k) { return triangular(k[0], k[1], k[2], k[3]); });
 }
 
-std::shared_ptr<const AreaForm> AreaForm::cached_tensor(int n, int m, int q, int grading) {
-  static KeyedCache<std::array<int, 4>, AreaForm> cache(kAreaCacheSize);
-  return cache.get({n, m, q, grading}, [](const std::array<int, 4>& k) { return tensor(k[0], k[1], k[2], k[3]); });
+std::shared_ptr<const AreaForm> AreaForm::cached_tensor(int n, int m, int q, int grading, int levels) {
+  static KeyedCache<std::array<int, 5>, AreaForm> cache(kAreaCacheSize);
+  return cache.get({n, m, q, grading, levels},
+                   [](const std::array<int, 5>& k) { return tensor(k[0], k[1], k[2], k[3], k[4]); });
 }
 
 std::size_t AreaForm::memory_bytes() const {

@@ -37,6 +37,12 @@
 //     n = 5), and the error is 3.6e-12 at q = 15, 9.5e-14 at q = 20 (docs/cmc.md, "The rule near nearly degenerate
 //     corners"). An integrand analytic in s stays analytic in σ, so the graded rule also converges
 //     exponentially where the plain one does, with about twice the points.
+//   - geometric (levels L > 0, used by area_rule.h where the graded rule misses too): the radial
+//     coordinate cut at s = ρ^k (ρ = 0.3, k = 1 … L), q Gauss points on each piece. A branch point
+//     at distance c from the corner is at a fixed ratio of the length of every piece above it, so
+//     the error falls exponentially in q for any c ≥ ρ^L; the graded rule needs q ~ c^(-1/3) there.
+//     Measured on the triangular nets of smooth closed curves that the graded q = 64 rule misses
+//     (docs/cmc.md, "The rule near nearly degenerate corners").
 // The node tables (Bernstein derivatives at the nodes, #nodes x N) are built once per
 // (degree, q, grading).
 //
@@ -52,15 +58,17 @@ namespace bpde {
 class AreaForm {
  public:
   /// Degree-n triangular nets, q Gauss points per direction on each of the six sub-triangles,
-  /// radial coordinate s = σ^grading ("The rules" above). DegreeError unless 1 <= n <= kMaxDegree;
-  /// ParameterError unless 1 <= q <= 200 and 1 <= grading <= 4.
-  static AreaForm triangular(int n, int q, int grading = 1);
+  /// radial coordinate s = σ^grading, or (levels L > 0, grading 1) q points on each of the L + 1
+  /// geometric pieces of s ("The rules" above; core/quadrature.h). DegreeError unless
+  /// 1 <= n <= kMaxDegree; ParameterError unless 1 <= q <= 200, 1 <= grading <= 4,
+  /// 0 <= levels <= kMaxGeometricLevels, and grading 1 where levels > 0.
+  static AreaForm triangular(int n, int q, int grading = 1, int levels = 0);
   /// Degree-(n,m) tensor nets, q points per direction on each of the eight sub-triangles.
-  static AreaForm tensor(int n, int m, int q, int grading = 1);
-  /// Shared, cached instances (thread-safe; the most recently used 32 (kind, degree, q, grading)
-  /// are kept).
-  static std::shared_ptr<const AreaForm> cached_triangular(int n, int q, int grading = 1);
-  static std::shared_ptr<const AreaForm> cached_tensor(int n, int m, int q, int grading = 1);
+  static AreaForm tensor(int n, int m, int q, int grading = 1, int levels = 0);
+  /// Shared, cached instances (thread-safe; the most recently used 32 (kind, degree, q, grading,
+  /// levels) are kept).
+  static std::shared_ptr<const AreaForm> cached_triangular(int n, int q, int grading = 1, int levels = 0);
+  static std::shared_ptr<const AreaForm> cached_tensor(int n, int m, int q, int grading = 1, int levels = 0);
 
   /// Number of control points N.
   int size() const { return static_cast<int>(Bu_.cols()); }
@@ -70,6 +78,10 @@ class AreaForm {
   int points_per_direction() const { return q_; }
   /// The grading p of the radial coordinate (1: the plain collapsed rule).
   int grading() const { return grading_; }
+  /// The geometric pieces of the radial coordinate beyond the first (0: the plain or graded rule).
+  int levels() const { return levels_; }
+  /// Whether two forms use the same rule (q, grading, levels).
+  bool same_rule(const AreaForm& o) const { return q_ == o.q_ && grading_ == o.grading_ && levels_ == o.levels_; }
   std::size_t memory_bytes() const;
 
   /// A for the N x 3 points P (SizeError when P has the wrong number of rows).
@@ -98,6 +110,7 @@ class AreaForm {
   void check(const Eigen::MatrixX3d& P) const;
   int q_ = 1;
   int grading_ = 1;
+  int levels_ = 0;
   Eigen::VectorXd w_;
   Eigen::MatrixXd Bu_, Bv_;  // #nodes x N: (B_I)_u, (B_I)_v at the nodes
 };

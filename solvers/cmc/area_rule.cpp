@@ -15,11 +15,24 @@ constexpr int kMaxAreaPoints = 64;
 constexpr int kStallFrom = 15;
 constexpr double kStallRatio = 0.25;
 constexpr int kGrading = 3;
+// The geometric rules (area_functional.h): kGeometricLevels + 1 radial pieces (the innermost
+// [0, 0.3^10 = 5.9e-6]), q from kGeometricQ0 to the cap kMaxGeometricPoints (26 400 nodes on a
+// triangular net, 35 200 on a tensor net: about the graded q = 64's 24 576 and 32 768), that cap
+// compared with q = 27.
+constexpr int kGeometricLevels = 10;
+constexpr int kGeometricQ0 = 11;
+constexpr int kMaxGeometricPoints = 20;
+// They are tried only where the graded rule missed by less than this factor of the tolerance: they
+// gained 3 orders or less on the nets measured (docs/cmc.md, "Geometric rules, and folds at
+// corners"), and a start that folds at a corner misses by far more (1.7e-4 on a wavy curve), where
+// building them (66 000 nodes for the q = 27 that measures the cap on a tensor net) only costs.
+constexpr double kGeometricGate = 1e3;
 
 int next_q(int q) { return q + (q + 2) / 3; }
 
-std::shared_ptr<const AreaForm> form_for(bool triangular, int n, int m, int q, int grading) {
-  return triangular ? AreaForm::cached_triangular(n, q, grading) : AreaForm::cached_tensor(n, m, q, grading);
+std::shared_ptr<const AreaForm> form_for(bool triangular, int n, int m, int q, int grading, int levels) {
+  return triangular ? AreaForm::cached_triangular(n, q, grading, levels)
+                    : AreaForm::cached_tensor(n, m, q, grading, levels);
 }
 
 double change_between(const AreaForm& a, const AreaForm& b, const Eigen::MatrixX3d& P, const std::vector<int>& idx) {
@@ -38,41 +51,56 @@ double change_between(const AreaForm& a, const AreaForm& b, const Eigen::MatrixX
   return c;
 }
 
-// One sequence of rules of one grading from q: the first whose change to the next is below the
-// tolerance, or (ok false) the cap q = 64 with its change to q = 86 (never a rule compared with
-// itself). `stall` (the plain sequence) stops early, ok false, when the change stops falling.
+// One sequence of rules of one family (grading, levels) from q: the first whose change to the next
+// is below the tolerance, or (ok false) the cap (q = 64, compared with q = 86; geometric: q = 20,
+// compared with 27; never a rule compared with itself). `stall` (the plain sequence) stops early,
+// ok false, when the change stops falling.
 AreaRule sequence(bool triangular, int n, int m, const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                  double tolerance, int q, int grading, bool stall) {
-  q = std::min(q, kMaxAreaPoints);
-  std::shared_ptr<const AreaForm> cur = form_for(triangular, n, m, q, grading);
+                  double tolerance, int q, int grading, int levels, bool stall) {
+  const int cap = levels > 0 ? kMaxGeometricPoints : kMaxAreaPoints;
+  q = std::min(q, cap);
+  std::shared_ptr<const AreaForm> cur = form_for(triangular, n, m, q, grading, levels);
   AreaRule r;
   double prev = std::numeric_limits<double>::infinity();
   while (true) {
     const int qn = next_q(q);  // may pass the cap: it only measures the error of q
-    std::shared_ptr<const AreaForm> next = form_for(triangular, n, m, qn, grading);
+    std::shared_ptr<const AreaForm> next = form_for(triangular, n, m, qn, grading, levels);
     r.form = cur;
     r.change = change_between(*cur, *next, P, idx);
     r.ok = r.change <= tolerance;
-    if (r.ok || q >= kMaxAreaPoints) return r;
+    if (r.ok || q >= cap) return r;
     if (stall && q >= kStallFrom && r.change > kStallRatio * prev) return r;
     prev = r.change;
-    q = std::min(qn, kMaxAreaPoints);
-    cur = form_for(triangular, n, m, q, grading);
+    q = std::min(qn, cap);
+    cur = form_for(triangular, n, m, q, grading, levels);
   }
 }
 
 }  // namespace
 
 AreaRule choose_area_rule(bool triangular, int n, int m, const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                          double tolerance, int start_q, int start_grading) {
+                          double tolerance, int start_q, int start_grading, int start_levels) {
   const int deg = std::max(n, m);
   const int q0 = (deg + 1) / 2 + 3;
-  const int g0 = start_q > 0 ? start_grading : 1;
-  const AreaRule first = sequence(triangular, n, m, P, idx, tolerance, start_q > 0 ? start_q : q0, g0, g0 == 1);
-  if (first.ok || g0 != 1) return first;
-  // The plain rule stalls (a nearly degenerate corner) or misses at the cap: the graded sequence.
-  const AreaRule graded = sequence(triangular, n, m, P, idx, tolerance, q0, kGrading, false);
-  return graded.ok || !(first.change < graded.change) ? graded : first;
+  // The families in order: plain (0), graded (1), geometric (2); a start refines within its own
+  // family and goes on to the later ones only where it misses.
+  const int f0 = start_q <= 0 ? 0 : start_levels > 0 ? 2 : start_grading > 1 ? 1 : 0;
+  AreaRule best;
+  best.change = std::numeric_limits<double>::infinity();
+  for (int f = f0; f <= 2; ++f) {
+    if (f == 2 && f0 < 2 && !(best.change <= kGeometricGate * tolerance)) break;
+    const int q = f == f0 && start_q > 0 ? start_q : f == 2 ? kGeometricQ0 : q0;
+    // The plain rule stalls (a nearly degenerate corner) or misses at the cap: the graded
+    // sequence; where that misses too, the geometric one.
+    const AreaRule r = f == 0   ? sequence(triangular, n, m, P, idx, tolerance, q, 1, 0, true)
+                       : f == 1 ? sequence(triangular, n, m, P, idx, tolerance, q, kGrading, 0, false)
+                                : sequence(triangular, n, m, P, idx, tolerance, q, 1, kGeometricLevels, false);
+    if (r.ok) return r;
+    // Not met: the later family unless an earlier one measured a smaller change (as before the
+    // geometric rules: the graded rule kept unless the plain one was better).
+    if (!best.form || !(best.change < r.change)) best = r;
+  }
+  return best;
 }
 
 }  // namespace bpde

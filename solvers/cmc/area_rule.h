@@ -12,9 +12,12 @@
 // step from q = 15 on: a nearly degenerate corner, area_functional.h "graded") or misses at the
 // cap, the graded rules (grading 3) are run from q_0; the one that meets the tolerance is taken.
 // The last rule of a sequence, q = 64, is compared with q = 86 (a finer rule, used only to measure
-// the error): a rule is never compared with itself. A change still above the tolerance there
-// leaves `ok` false (a folded or nearly singular corner, e.g. the circle's arcs fitted at degree 4,
-// whose corners fold) and returns the sequence's rule with the smaller change, with that change.
+// the error): a rule is never compared with itself. Where the graded rule misses too, but by less
+// than ×1000, the geometric rules (10 levels, area_functional.h) run from q = 11 to their cap
+// q = 20 (compared with 27). A
+// change still above the tolerance there leaves `ok` false (a folded or nearly singular corner,
+// e.g. the circle's arcs fitted at degree 4, whose corners fold) and returns the rule with the
+// smallest change, the later family on ties, with that change.
 // Callers re-check at the end of a solve (the change is measured on the final net), refine again
 // when the surface moved far from where the rule was chosen, choose it again during the final
 // phases where it missed its tolerance at the net where it was chosen (a start that nearly folds
@@ -35,9 +38,9 @@ struct AreaRule {
 };
 
 /// kind: true for triangular (degree n), false for tensor (n, m). `start_q` > 0 starts the
-/// sequence there, with the grading `start_grading`, instead of q_0 (to check, and refine, a rule
-/// already in use).
+/// sequence there, in the family of `start_grading` and `start_levels`, instead of q_0 (to check,
+/// and refine, a rule already in use).
 AreaRule choose_area_rule(bool triangular, int n, int m, const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                          double tolerance, int start_q = 0, int start_grading = 1);
+                          double tolerance, int start_q = 0, int start_grading = 1, int start_levels = 0);
 
 }  // namespace bpde

@@ -295,6 +295,7 @@ struct CmcResult {
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
   int quadrature_points = 0;   ///< area, mean-curvature: Gauss points per direction of the rule minimised
   int quadrature_grading = 0;  ///< area, mean-curvature: its radial grading (1 plain, 3 graded; area_functional.h)
+  int quadrature_levels = 0;   ///< area: its geometric radial pieces beyond the first (0: plain or graded; area_functional.h)
   int quadrature_nodes = 0;    ///< area, mean-curvature: its number of nodes (6q² triangular, 8q² tensor)
   int continuation_steps = 0;  ///< accepted continuation steps (H mode; the V form: its steps in V)
   /// converged, iterations (corrector iterations in all; the area functional's also those of its

@@ -4,8 +4,10 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -305,6 +307,47 @@ bool near_corner(bool triangular, double u, double v) {
 }
 }  // namespace
 
+// Folds inside the corner margins, which the grid leaves out. On rays from each corner into the
+// domain, (1 − a) d1 + a d2 (d1, d2 its edges, a = 0, 1/4, …, 1), at distances 0.05 · 4^-k
+// (k = 0 … 7, down to 3e-6 of the edge), the normal must keep its direction: N · N' < 0 between
+// a sample and the one at 0.05 on its ray, or between neighbouring rays at one distance, is a fold.
+// A corner where the edges meet at 180° has N → 0 there but N ≈ r (a cos φ + b sin φ) along each
+// ray, whose direction does not turn; a fold (the circle's arcs fitted at degree 4, which meet at
+// 180.84°: docs/cmc.md, "The rule near nearly degenerate corners") turns it over.
+template <class Net>
+void corner_folds(const Net& net, double mean, const std::vector<std::array<double, 6>>& corners, Regularity& r) {
+  constexpr int kRays = 4, kDepth = 7;
+  for (const auto& c : corners) {
+    std::vector<Eigen::Vector3d> prev(kRays + 1), outer(kRays + 1);
+    bool fold = false;
+    double mn = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= kDepth; ++k) {
+      const double d = kCornerMargin * std::ldexp(1.0, -2 * k);
+      std::vector<Eigen::Vector3d> N(kRays + 1);
+      for (int j = 0; j <= kRays; ++j) {
+        const double a = double(j) / kRays;
+        const double u = c[0] + d * ((1 - a) * c[2] + a * c[4]), v = c[1] + d * ((1 - a) * c[3] + a * c[5]);
+        N[j] = normal_at(net, u, v);
+        mn = std::min(mn, N[j].norm() / mean);
+        if (k == 0) outer[j] = N[j];
+        if (N[j].dot(outer[j]) < 0 || (j > 0 && N[j].dot(N[j - 1]) < 0)) fold = true;
+      }
+    }
+    if (fold && r.fold_u < 0) {
+      r.fold_u = c[0];
+      r.fold_v = c[1];
+      r.fold_min_ratio = mn;
+      // The boundary's angle at the corner, on the side of the surface (its normal at 0.05 on the
+      // middle ray): above 180° (reflex) the edges' tangents give a corner normal against it.
+      const Eigen::Vector3d xu = net.derivative(c[0], c[1], 1, 0), xv = net.derivative(c[0], c[1], 0, 1);
+      const Eigen::Vector3d t1 = c[2] * xu + c[3] * xv, t2 = c[4] * xu + c[5] * xv;
+      const double det = c[2] * c[5] - c[3] * c[4];
+      const double theta = std::atan2(t1.cross(t2).norm(), t1.dot(t2)) * 180 / std::numbers::pi;
+      r.fold_corner_angle = t1.cross(t2).dot(outer[kRays / 2]) * det >= 0 ? theta : 360 - theta;
+    }
+  }
+}
+
 // |x_u ∧ x_v| on a 40 x 40 grid away from the corners (margin 0.05), relative to the mean A/|domain|.
 Regularity regularity(const TriangularNet& net, double A) {
   const int Ns = 40;
@@ -356,6 +399,38 @@ Regularity regularity(const TensorNet& net, double A) {
     }
   r.ok = std::isfinite(r.min_ratio) && r.min_ratio >= 1e-3 && !r.flipped;
   return r;
+}
+
+// The corners (u, v) with their edges' directions (barycentric order: P_n00 at (1, 0), P_0n0 at
+// (0, 1), P_00n at (0, 0); tensor: P_00, P_n0, P_nn, P_0n).
+Regularity final_regularity(const TriangularNet& net, double A) {
+  Regularity r = regularity(net, A);
+  if (r.ok) {
+    corner_folds(net, A / 0.5, {{1, 0, -1, 1, -1, 0}, {0, 1, 0, -1, 1, -1}, {0, 0, 1, 0, 0, 1}}, r);
+    r.ok = r.fold_u < 0;
+  }
+  return r;
+}
+
+Regularity final_regularity(const TensorNet& net, double A) {
+  Regularity r = regularity(net, A);
+  if (r.ok) {
+    corner_folds(net, A, {{0, 0, 1, 0, 0, 1}, {1, 0, -1, 0, 0, 1}, {1, 1, -1, 0, 0, -1}, {0, 1, 1, 0, 0, -1}}, r);
+    r.ok = r.fold_u < 0;
+  }
+  return r;
+}
+
+std::string Regularity::describe() const {
+  if (!(std::isfinite(min_ratio) && min_ratio >= 1e-3) || flipped || fold_u < 0)
+    return "|x_u ∧ x_v| falls to " + num(min_ratio) + " of its mean inside the patch" +
+           (flipped ? " and the normal flips" : "");
+  return "the normal flips near the corner (u, v) = (" + num(fold_u, 1) + ", " + num(fold_v, 1) +
+         ") (a fold inside the corner margin 0.05; |x_u ∧ x_v| down to " + num(fold_min_ratio, 3) +
+         " of its mean there; the boundary's edges meet at " + num(fold_corner_angle, 6) + "°" +
+         (fold_corner_angle > 180 ? " (reflex: the normal at the corner, which the edges fix, points against the surface's)"
+                                  : "") +
+         ")";
 }
 
 namespace {
@@ -458,8 +533,13 @@ struct AreaSolve {
   }
 
   // Rule chosen at the current net with the rule tolerance (0.1 x the residual tolerance).
-  bool choose_rule(int start_q = 0, int start_grading = 1) {
-    return choose_rule_for(o.tolerance, start_q, start_grading);
+  bool choose_rule(int start_q = 0, int start_grading = 1, int start_levels = 0) {
+    return choose_rule_for(o.tolerance, start_q, start_grading, start_levels);
+  }
+  // The rule checked at the current net and refined from the rule in use (never coarser).
+  bool refine_rule() {
+    const std::shared_ptr<const AreaForm> a = p.a;
+    return choose_rule(a->points_per_direction(), a->grading(), a->levels());
   }
   double rule_change = 0.0;  ///< the measured error of the rule last chosen
 
@@ -468,8 +548,9 @@ struct AreaSolve {
   // ε = 0 the full one: the early stages need far fewer nodes, and the Hessian's cost is linear
   // in the nodes. (Circle n = 16: the D_H start needs q = 27 for 1e-12, the final net q = 20.)
   // The final rule check in solve_area_impl refines on the final net when needed.
-  bool choose_rule_for(double tol, int start_q = 0, int start_grading = 1) {
-    const AreaRule r = choose_area_rule(tri, n, m, p.P(), p.base.free, 0.1 * tol, start_q, start_grading);
+  bool choose_rule_for(double tol, int start_q = 0, int start_grading = 1, int start_levels = 0) {
+    const AreaRule r =
+        choose_area_rule(tri, n, m, p.P(), p.base.free, 0.1 * tol, start_q, start_grading, start_levels);
     p.a = r.form;
     rule_change = r.change;
     return r.ok;
@@ -514,7 +595,7 @@ struct AreaSolve {
   double checked_residual(double H) {
     const std::shared_ptr<const AreaForm> a = p.a;
     const double change = rule_change;
-    choose_rule(a->points_per_direction(), a->grading());
+    refine_rule();
     const double r = o.V ? vresidual(*o.V, H) : p.residual_at(H, 0.0);
     p.a = a;
     rule_change = change;
@@ -1114,9 +1195,9 @@ struct AreaSolve {
         return regularity(reached, area(reached)).ok;
       };
       if (st.ok && rule_ok && is_regular()) {
-        const int q = p.a->points_per_direction(), gr = p.a->grading();
-        rule_ok = choose_rule(q, gr);
-        if (rule_ok && (p.a->points_per_direction() != q || p.a->grading() != gr)) {
+        const std::shared_ptr<const AreaForm> a0 = p.a;
+        rule_ok = refine_rule();
+        if (rule_ok && !p.a->same_rule(*a0)) {
           const CorrectorStats again = newton();
           st.ok = again.ok;
           st.residual = again.residual;
@@ -1462,14 +1543,17 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     if (out.ok) {
       s.choose_rules_again = false;  // refined only, never chosen from the start again
       for (int round = 0; round < 4; ++round) {
-        const int q = s.p.a->points_per_direction(), gr = s.p.a->grading();
-        const bool rule_ok = s.choose_rule(q, gr);
-        if (s.p.a->points_per_direction() == q && s.p.a->grading() == gr) {
+        const std::shared_ptr<const AreaForm> a0 = s.p.a;
+        const bool rule_ok = s.refine_rule();
+        if (s.p.a->same_rule(*a0)) {
           if (!rule_ok)
             out = {out.H, false, Status::NumericalLimit,
                    "the area quadrature does not reach its error tolerance " + num(0.1 * o.tolerance) +
-                       ": measured error " + num(s.rule_change) + " with " + std::to_string(q) +
-                       " points per direction" + (gr > 1 ? " (graded)" : "") +
+                       ": measured error " + num(s.rule_change) + " with " +
+                       std::to_string(a0->points_per_direction()) + " points per direction" +
+                       (a0->levels() > 0   ? " on " + std::to_string(a0->levels() + 1) + " geometric pieces"
+                        : a0->grading() > 1 ? " (graded)"
+                                            : "") +
                        " (a folded or nearly singular parametrisation at a corner); reached after: " + out.message};
           break;
         }
@@ -1496,6 +1580,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     res.energy = res.A + 2.0 * out.H * res.V;
     res.quadrature_points = s.p.a->points_per_direction();
     res.quadrature_grading = s.p.a->grading();
+    res.quadrature_levels = s.p.a->levels();
     res.quadrature_nodes = s.p.a->nodes();
     res.summary.residual = s.p.residual(out.H);
     if (o.V) {
@@ -1503,7 +1588,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
       const double vs = vf.value_scale(s.p.P());
       res.summary.residual = std::max(res.summary.residual, std::abs(res.V - *o.V) / (vs > 0 ? vs : 1.0));
     }
-    const Regularity reg = regularity(net, res.A);
+    const Regularity reg = final_regularity(net, res.A);
     if (out.ok && !(res.summary.residual <= o.tolerance)) {
       out = {out.H, false, Status::NumericalLimit,
              "the final net misses the first variation of A_H by " + num(res.summary.residual) + " (relative)" +
@@ -1515,9 +1600,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     if (!reg.ok) {
       out.ok = false;
       out.why = Status::NoConvergence;
-      out.message = "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(reg.min_ratio) +
-                    " of its mean inside the patch" + (reg.flipped ? " and the normal flips" : "") +
-                    " (not a CMC surface); " + out.message;
+      out.message = "degenerate parametrisation: " + reg.describe() + " (not a CMC surface); " + out.message;
     }
     if (out.ok) {
       res.summary.message = out.message;

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "bezierpde/core/progress.h"
@@ -71,9 +72,24 @@ struct Regularity {
   bool ok = true;
   double min_ratio = 0;  ///< min |N| / mean |N| on the grid
   bool flipped = false;  ///< two neighbouring samples with opposite normals
+  /// The corner near which the normal flips (a fold inside the corner margin, which the grid
+  /// leaves out), in the domain's (u, v), and the smallest |N| / mean |N| met there; none: -1.
+  double fold_u = -1, fold_v = -1, fold_min_ratio = -1;
+  /// The boundary's angle at that corner in degrees, on the side of the surface (above 180:
+  /// reflex, the edges' tangents give a corner normal against the surface's).
+  double fold_corner_angle = 0;
+  /// The words of a verdict that is not ok: "|x_u ∧ x_v| falls to … of its mean inside the patch
+  /// [and the normal flips]" or "the normal flips near the corner (u, v) = (…) …".
+  std::string describe() const;
 };
 Regularity regularity(const TriangularNet& net, double A);
 Regularity regularity(const TensorNet& net, double A);
+/// The verdict on a result: regularity() and, where that is ok, folds inside the corner margins
+/// (rays from each corner down to 3e-6 of the edge; the normal must not turn over). Not used
+/// between the routes of a solve: a fold at a corner whose boundary angle is reflex is in every
+/// net with those edges, so it cannot choose between them.
+Regularity final_regularity(const TriangularNet& net, double A);
+Regularity final_regularity(const TensorNet& net, double A);
 /// max over the samples (a/10, b/10) of the domain, without the corners (the regularity test's
 /// margin 0.05), of |<x_b − x_a, N_a>|, N_a the unit normal of a: how far surface b lies from
 /// surface a along a's normals (the branch test of the area's H and V continuations, cmc_area.cpp). A motion of

@@ -485,11 +485,10 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o,
                              num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
                              " after " + std::to_string(end.iterations) +
                              (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
-    if (!g.reg.ok) {
+    const Regularity reg = g.reg.ok ? final_regularity(net, res.A) : g.reg;
+    if (!reg.ok) {
       res.summary.set_failed(Status::NoConvergence,
-                             "degenerate parametrisation: |x_u ∧ x_v| falls to " + num(g.reg.min_ratio, 3) +
-                                 " of its mean inside the patch" + (g.reg.flipped ? " and the normal flips" : "") +
-                                 " (not a CMC surface); " + what);
+                             "degenerate parametrisation: " + reg.describe() + " (not a CMC surface); " + what);
     } else if (!(g.v_off <= o.tolerance)) {
       res.summary.set_failed(Status::NoConvergence,
                              what + ", but V misses V0 by " + num(g.v_off, 3) + " (relative): " +

@@ -453,12 +453,14 @@ TEST(Cli, CmcAreaJobReportsTheAreaFunctional) {
   EXPECT_NEAR(rep["energy"].get<double>(), rep["area"].get<double>(), 1e-14);  // H = 0: A_H = A
   EXPECT_GT(rep["D"].get<double>(), rep["area"].get<double>());                  // D >= A, not conformal
   EXPECT_TRUE(rep.contains("volume") && rep.contains("mean_curvature") && rep.contains("residual"));
-  // The rule of the result: 8q² nodes on the tensor net.
+  // The rule of the result: 8(L + 1)q² nodes on the tensor net.
   ASSERT_TRUE(rep.contains("quadrature")) << rep.dump();
   const int q = rep["quadrature"]["points_per_direction"].get<int>(), g = rep["quadrature"]["grading"].get<int>();
+  const int L = rep["quadrature"]["levels"].get<int>();
   EXPECT_TRUE(q >= 1 && q <= 64) << q;
   EXPECT_TRUE(g == 1 || g == 3) << g;
-  EXPECT_EQ(rep["quadrature"]["nodes"].get<int>(), 8 * q * q);
+  EXPECT_TRUE(L == 0 || (L == 10 && g == 1)) << L;
+  EXPECT_EQ(rep["quadrature"]["nodes"].get<int>(), 8 * (L + 1) * q * q);
   // The Dirichlet default is unchanged: no "area" functional in its report, and no quadrature
   // (its matrices are exact).
   const CmdResult d = run("solve " + write("dir.json", job(R"({"kind": "cmc", "H": 0})")).string() + " --out " +
@@ -556,6 +558,7 @@ TEST(Cli, CmcMeanCurvatureJob) {
   EXPECT_TRUE(rep["converged"].get<bool>());
   EXPECT_LE(rep["residual"].get<double>(), 1e-6);
   EXPECT_EQ(rep["quadrature"]["grading"], 1);  // the plain rules, 6q² nodes on the triangle
+  EXPECT_EQ(rep["quadrature"]["levels"], 0);
   EXPECT_EQ(rep["quadrature"]["nodes"].get<int>(),
             6 * rep["quadrature"]["points_per_direction"].get<int>() * rep["quadrature"]["points_per_direction"].get<int>());
   EXPECT_LE(std::abs(rep["mean_curvature"]["max"].get<double>() + 0.9), 5e-5);
