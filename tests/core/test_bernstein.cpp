@@ -126,24 +126,26 @@ TEST(Quadrature, GaussExactness) {
 
 // The corner-collapsed rules (core/quadrature.h) against exact monomial integrals:
 // ∫_T u^a v^b = a! b! / (a + b + 2)! on the triangle and 1 / ((a + 1)(b + 1)) on the square, for the
-// plain and the graded (s = σ³) radial coordinate. A polynomial of total degree d pulls back to
-// degree ≤ d + 1 in s (the Jacobian) and ≤ d in t, so q = 6 (exact to 11) covers d ≤ 9 when plain.
+// plain, the graded (s = σ³) and the geometric (10 levels) radial coordinate. A polynomial of total
+// degree d pulls back to degree ≤ d + 1 in s (the Jacobian) and ≤ d in t, so q = 6 (exact to 11)
+// covers d ≤ 9 when plain, and on each geometric piece; 6(L + 1)q² and 8(L + 1)q² nodes.
 TEST(Quadrature, CornerCollapsedRulesIntegrateMonomialsExactly) {
   auto fact = [](int k) { return std::tgamma(k + 1.0); };
-  for (int grading : {1, 3}) {
+  for (const auto& [grading, L] : {std::pair{1, 0}, std::pair{3, 0}, std::pair{1, 10}}) {
     const int q = grading == 1 ? 6 : 16;  // s = σ³ triples the degree in σ
-    const QuadratureRuleTriangle t = corner_collapsed_triangle_rule(q, grading);
-    const QuadratureRuleTriangle sq = corner_collapsed_square_rule(q, grading);
-    EXPECT_EQ(t.w.size(), 6 * q * q);
-    EXPECT_EQ(sq.w.size(), 8 * q * q);
+    const QuadratureRuleTriangle t = corner_collapsed_triangle_rule(q, grading, L);
+    const QuadratureRuleTriangle sq = corner_collapsed_square_rule(q, grading, L);
+    EXPECT_EQ(t.w.size(), 6 * (L + 1) * q * q);
+    EXPECT_EQ(sq.w.size(), 8 * (L + 1) * q * q);
     for (int a = 0; a <= 5; ++a)
       for (int b = 0; a + b <= 8; ++b) {
         double it = 0, is = 0;
         for (Eigen::Index i = 0; i < t.w.size(); ++i) it += t.w(i) * std::pow(t.uv(i, 0), a) * std::pow(t.uv(i, 1), b);
         for (Eigen::Index i = 0; i < sq.w.size(); ++i)
           is += sq.w(i) * std::pow(sq.uv(i, 0), a) * std::pow(sq.uv(i, 1), b);
-        EXPECT_NEAR(it, fact(a) * fact(b) / fact(a + b + 2), 1e-15) << a << " " << b << " grading " << grading;
-        EXPECT_NEAR(is, 1.0 / ((a + 1) * (b + 1)), 1e-14) << a << " " << b << " grading " << grading;
+        EXPECT_NEAR(it, fact(a) * fact(b) / fact(a + b + 2), 1e-15)
+            << a << " " << b << " grading " << grading << " L " << L;
+        EXPECT_NEAR(is, 1.0 / ((a + 1) * (b + 1)), 1e-14) << a << " " << b << " grading " << grading << " L " << L;
       }
     for (Eigen::Index i = 0; i < t.w.size(); ++i) {
       EXPECT_GT(t.w(i), 0.0);
@@ -155,27 +157,6 @@ TEST(Quadrature, CornerCollapsedRulesIntegrateMonomialsExactly) {
   EXPECT_THROW(corner_collapsed_triangle_rule(0), ParameterError);
   EXPECT_THROW(corner_collapsed_square_rule(201), ParameterError);
   EXPECT_THROW(corner_collapsed_triangle_rule(5, 5), ParameterError);
-}
-
-// The geometric rules (levels L > 0): the same monomials exactly (each radial piece carries the
-// plain Gauss rule, so q = 6 again covers d ≤ 9), 6(L + 1)q² and 8(L + 1)q² nodes.
-TEST(Quadrature, GeometricCornerRulesIntegrateMonomialsExactly) {
-  auto fact = [](int k) { return std::tgamma(k + 1.0); };
-  const int q = 6, L = 10;
-  const QuadratureRuleTriangle t = corner_collapsed_triangle_rule(q, 1, L);
-  const QuadratureRuleTriangle sq = corner_collapsed_square_rule(q, 1, L);
-  EXPECT_EQ(t.w.size(), 6 * (L + 1) * q * q);
-  EXPECT_EQ(sq.w.size(), 8 * (L + 1) * q * q);
-  for (int a = 0; a <= 5; ++a)
-    for (int b = 0; a + b <= 8; ++b) {
-      double it = 0, is = 0;
-      for (Eigen::Index i = 0; i < t.w.size(); ++i) it += t.w(i) * std::pow(t.uv(i, 0), a) * std::pow(t.uv(i, 1), b);
-      for (Eigen::Index i = 0; i < sq.w.size(); ++i)
-        is += sq.w(i) * std::pow(sq.uv(i, 0), a) * std::pow(sq.uv(i, 1), b);
-      EXPECT_NEAR(it, fact(a) * fact(b) / fact(a + b + 2), 1e-15) << a << " " << b;
-      EXPECT_NEAR(is, 1.0 / ((a + 1) * (b + 1)), 1e-14) << a << " " << b;
-    }
-  for (Eigen::Index i = 0; i < t.w.size(); ++i) EXPECT_GT(t.w(i), 0.0);
   EXPECT_THROW(corner_collapsed_triangle_rule(6, 3, 2), ParameterError);  // levels take grading 1
   EXPECT_THROW(corner_collapsed_square_rule(6, 1, -1), ParameterError);
   EXPECT_THROW(corner_collapsed_square_rule(6, 1, kMaxGeometricLevels + 1), ParameterError);
