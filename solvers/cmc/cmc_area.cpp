@@ -318,7 +318,7 @@ template <class Net>
 void corner_folds(const Net& net, double mean, const std::vector<std::array<double, 6>>& corners, Regularity& r) {
   constexpr int kRays = 4, kDepth = 7;
   for (const auto& c : corners) {
-    std::vector<Eigen::Vector3d> prev(kRays + 1), outer(kRays + 1);
+    std::vector<Eigen::Vector3d> outer(kRays + 1);
     bool fold = false;
     double mn = std::numeric_limits<double>::infinity();
     for (int k = 0; k <= kDepth; ++k) {
