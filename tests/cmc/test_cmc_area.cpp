@@ -917,6 +917,65 @@ TEST(CmcArea, MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit) {
   EXPECT_LE(testing::catenoid_off(r.net), 2e-5);  // measured 1.2e-5 (the degree)
 }
 
+// The corner check of the verdict (final_regularity) against nets with a known corner angle: planar
+// cubic nets (the identity map, so |x_u ∧ x_v| > 0 inside) whose second edge leaves one corner at
+// angle φ from the first (ccw), bent back to its far corner. The interior angle of the boundary at
+// that corner is φ exactly: below 180° (convex) the verdict is ok, above (reflex) it names the
+// corner and φ, at each corner of the triangle (barycentric roles rotated) and of the square
+// (mirrored). The grid check alone (regularity) passes them all: the fold lies within the margin.
+TEST(CmcArea, FinalVerdictFindsAFoldAtAReflexCornerAndItsAngle) {
+  auto check = [](const auto& net, double phi, double cu, double cv) {
+    const double A = area(net);
+    EXPECT_TRUE(cmc_detail::regularity(net, A).ok) << phi;
+    const cmc_detail::Regularity r = cmc_detail::final_regularity(net, A);
+    if (phi < 180) {
+      EXPECT_TRUE(r.ok) << phi << " at " << cu << ", " << cv;
+      return;
+    }
+    EXPECT_FALSE(r.ok) << phi;
+    EXPECT_EQ(r.fold_u, cu);
+    EXPECT_EQ(r.fold_v, cv);
+    EXPECT_NEAR(r.fold_corner_angle, phi, 1e-9);
+    EXPECT_NE(r.describe().find("the normal flips near the corner (u, v) = (" + cmc_detail::num(cu, 1) + ", " +
+                                cmc_detail::num(cv, 1) + ")"),
+              std::string::npos)
+        << r.describe();
+  };
+  for (const double phi : {179.0, 182.0}) {
+    const double a = phi * std::numbers::pi / 180;
+    // Corner and the plane's axes: (x, y) are the coordinates of the roles (p, q) below.
+    auto point = [&](int p, int q) {
+      if (p == 0 && q == 1) return Eigen::Vector3d(std::cos(a) / 3, std::sin(a) / 3, 0);
+      if (p == 0 && q == 2) return Eigen::Vector3d(-0.25, 0.6, 0);
+      return Eigen::Vector3d(p / 3.0, q / 3.0, 0);
+    };
+    // Triangle: the corner where the third role is 3: (0, 0), (1, 0), (0, 1) for rot = 0, 1, 2.
+    const double tri_corner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    for (int rot = 0; rot < 3; ++rot) {
+      TriangularNet t(3);
+      for (int r = 0; r < t.size(); ++r) {
+        const auto I = TriangularNet::multi_index(3, r);
+        const int ijk[3] = {I[0], I[1], I[2]};
+        t.points().row(r) = point(ijk[rot % 3], ijk[(rot + 1) % 3]).transpose();
+      }
+      check(t, phi, tri_corner[rot][0], tri_corner[rot][1]);
+    }
+    // Square: the net with the corner at (0, 0), mirrored in u and/or v (x → 1 − x, y → 1 − y).
+    for (int cu = 0; cu <= 1; ++cu)
+      for (int cv = 0; cv <= 1; ++cv) {
+        TensorNet t(3, 3);
+        for (int i = 0; i <= 3; ++i)
+          for (int j = 0; j <= 3; ++j) {
+            Eigen::Vector3d x = point(cu ? 3 - i : i, cv ? 3 - j : j);
+            if (cu) x(0) = 1 - x(0);
+            if (cv) x(1) = 1 - x(1);
+            t.set_point(i, j, x);
+          }
+        check(t, phi, cu, cv);
+      }
+  }
+}
+
 // normal_gap, the area V continuation's branch test: how far one surface lies from another along
 // the first one's normals. Closed-form cases: a plane and the plane moved by 0.3 along its normal
 // (0.3, both nets); the plane reparametrised within itself (0 to rounding, where the points moved
