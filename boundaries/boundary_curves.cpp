@@ -230,4 +230,31 @@ Eigen::Vector3d BoundaryCurve::evaluate(double t) const {
   return std::get<Function>(data_).f(t);
 }
 
+std::optional<Eigen::Vector3d> BoundaryCurve::exact_tangent(bool at_end) const {
+  std::optional<Eigen::Vector3d> d;
+  if (const auto* b = std::get_if<Bezier>(&data_)) {
+    // c'(0) = k (P_1 - P_0); where it vanishes the direction is that of the first non-zero
+    // difference P_j - P_0 (c(t) - c(0) = C(k,j) t^j (P_j - P_0) + O(t^{j+1})).
+    const Eigen::Index k = b->points.rows() - 1;
+    const Eigen::Index end = at_end ? k : 0, step = at_end ? -1 : 1;
+    for (Eigen::Index j = 1; j <= k && !d; ++j) {
+      const Eigen::Vector3d diff = (b->points.row(end + step * j) - b->points.row(end)).transpose();
+      if (diff.squaredNorm() > 0) d = at_end ? Eigen::Vector3d(-diff) : diff;
+    }
+  } else if (const auto* s = std::get_if<BSpline>(&data_)) {
+    const size_t count = s->knots.size() - static_cast<size_t>(s->degree) - 1;
+    Eigen::VectorXd u(1);
+    u(0) = at_end ? s->knots[count] : s->knots[static_cast<size_t>(s->degree)];
+    const Eigen::MatrixXd N = BSplineNet::basis_table(s->degree, s->knots, u, 1);
+    d = (N.row(0) * s->points).transpose();
+  } else if (const auto* a = std::get_if<Arc>(&data_)) {
+    const double ang = at_end ? a->angle1 : a->angle0, da = a->angle1 - a->angle0;
+    Eigen::Vector3d x = a->radius * da * (-std::sin(ang) * a->e1 + std::cos(ang) * a->e2);
+    if (a->helix) x += (a->pitch * da / (2 * std::numbers::pi)) * a->normal;
+    d = x;
+  }
+  if (d && !(d->allFinite() && d->squaredNorm() > 0)) d.reset();
+  return d;
+}
+
 }  // namespace bpde

@@ -99,6 +99,11 @@ class BoundaryCurve {
   Eigen::Vector3d evaluate(double t) const;
   Eigen::Vector3d start() const { return evaluate(0.0); }
   Eigen::Vector3d end() const { return evaluate(1.0); }
+  /// The direction of the curve's tangent at t = 0 (at_end false) or t = 1, where the form gives it
+  /// exactly: c'(t) of a Bézier curve (the first non-zero difference of its end points when c' = 0
+  /// there), segment, B-spline, arc or helix; nullopt for samples and functions, whose tangent a fit
+  /// only estimates. Not normalised; nullopt also when it vanishes (a curve that is one point).
+  std::optional<Eigen::Vector3d> exact_tangent(bool at_end) const;
 
   /// The form, for the fit (nullptr when it is another one; a segment is a Bézier curve).
   const Bezier* as_bezier() const { return std::get_if<Bezier>(&data_); }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/errors.h"
@@ -19,6 +20,177 @@ Eigen::Vector3d bezier_at(const Eigen::MatrixX3d& P, double t) {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   for (int i = 0; i <= k; ++i) x += B[static_cast<size_t>(i)] * P.row(i).transpose();
   return x;
+}
+
+// The first non-zero leg of a Bézier polygon at one end, pointing along the curve (P_1 - P_0 at
+// the start, P_k - P_{k-1} at the end); zero for a polygon that is one point.
+Eigen::Vector3d end_leg(const Eigen::MatrixX3d& P, bool at_end) {
+  const Eigen::Index k = P.rows() - 1;
+  for (Eigen::Index j = 1; j <= k; ++j) {
+    const Eigen::Vector3d d = at_end ? Eigen::Vector3d((P.row(k) - P.row(k - j)).transpose())
+                                     : Eigen::Vector3d((P.row(j) - P.row(0)).transpose());
+    if (d.squaredNorm() > 0) return d;
+  }
+  return Eigen::Vector3d::Zero();
+}
+
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+// The derivative at x[0] of the polynomial through (x[j], y[j]), j = 0..k-1 (Lagrange).
+Eigen::Vector3d lagrange_derivative(const std::vector<double>& x, const std::vector<Eigen::Vector3d>& y) {
+  const size_t k = x.size();
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  for (size_t j = 0; j < k; ++j) {
+    double w = 1;
+    if (j == 0) {
+      w = 0;
+      for (size_t i = 1; i < k; ++i) w += 1 / (x[0] - x[i]);
+    } else {
+      for (size_t i = 1; i < k; ++i)
+        if (i != j) w *= x[0] - x[i];
+      for (size_t i = 0; i < k; ++i)
+        if (i != j) w /= x[j] - x[i];
+    }
+    d += w * y[j];
+  }
+  return d;
+}
+
+// The curve's tangent at one end as the data give it (fit_boundary.h): exact where the form gives
+// it, else the derivative of the cubic through the four samples nearest the end (at their
+// parameters), or through c at t = 0, h, 2h, 3h (h = 1e-3; from the other end likewise) for a
+// function. It is dc/dt: it points along the curve at both ends.
+Eigen::Vector3d data_tangent(const BoundaryCurve& c, bool at_end) {
+  if (const auto x = c.exact_tangent(at_end)) return *x;
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> y;
+  if (const auto* s = c.as_samples()) {
+    const Eigen::Index M = s->params.size() - 1, k = std::min<Eigen::Index>(4, M + 1);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      const Eigen::Index i = at_end ? M - j : j;
+      t.push_back(s->params(i));
+      y.push_back(s->points.row(i).transpose());
+    }
+  } else {
+    constexpr double h = 1e-3;
+    for (int j = 0; j < 4; ++j) {
+      t.push_back(at_end ? 1 - j * h : j * h);
+      y.push_back(c.evaluate(t.back()));
+    }
+  }
+  return lagrange_derivative(t, y);
+}
+
+// The rows of an edge's least squares (fit_boundary.h, "Corners where the curve is smooth"): the
+// samples at the fit's parameters, 8k+1 uniform parameters ("least-squares") or the 4k+1
+// Chebyshev–Lobatto nodes ("interpolation").
+void fit_rows(const BoundaryCurve& c, const CurveFit& fit, int k, Eigen::VectorXd& t, Eigen::MatrixX3d& Q) {
+  if (const auto* s = c.as_samples()) {
+    t = fit.params.size() == s->params.size() ? fit.params : s->params;
+    Q = s->points;
+    return;
+  }
+  const bool uniform = fit.method == "least-squares";
+  const int M = uniform ? 8 * k + 1 : 4 * k + 1;
+  t.resize(M);
+  Q.resize(M, 3);
+  for (int r = 0; r < M; ++r) {
+    const double x = static_cast<double>(r) / (M - 1);
+    t(r) = r == M - 1 ? 1.0 : (uniform ? x : 0.5 * (1 - std::cos(std::numbers::pi * x)));
+    Q.row(r) = c.evaluate(t(r)).transpose();
+  }
+}
+
+// The least squares of one edge (its rows from fit_rows) reduced to its triangle: with
+// B = Q_B [T; 0] (Householder QR), |B P - Q|² = |T P - Y|² + const, so that the constrained fits
+// below cost O(k³) each, whatever the number of samples.
+struct EdgeLeastSquares {
+  int k = 0;
+  Eigen::VectorXd t;
+  Eigen::MatrixX3d Q;
+  Eigen::MatrixXd T;
+  Eigen::MatrixX3d Y;
+
+  EdgeLeastSquares(const BoundaryCurve& c, const CurveFit& fit, int degree) : k(degree) {
+    fit_rows(c, fit, k, t, Q);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(bernstein_table(k, t));
+    T = qr.matrixQR().topRows(k + 1).triangularView<Eigen::Upper>();
+    Y = (qr.householderQ().adjoint() * Q).topRows(k + 1);
+  }
+
+  // The fit with P's end points and, where given, P_1 = P_0 + a d0 and P_{k-1} = P_k - b d1 (a, b
+  // free), the other inner points free; and |T R - Y|². G (if not null) receives the directions
+  // in which the inner points may move (3(k-1) x #unknowns, for fit_samples_orthogonal_constrained).
+  // nullopt when the problem is rank deficient.
+  std::optional<std::pair<Eigen::MatrixX3d, double>> solve(const Eigen::MatrixX3d& P, const Eigen::Vector3d* d0,
+                                                           const Eigen::Vector3d* d1,
+                                                           Eigen::MatrixXd* G = nullptr) const {
+    Eigen::MatrixX3d base = Eigen::MatrixX3d::Zero(k + 1, 3);
+    base.row(0) = P.row(0);
+    base.row(k) = P.row(k);
+    std::vector<std::pair<int, Eigen::Vector3d>> cols;  // (point, its motion per unit of the unknown)
+    if (d0) {
+      base.row(1) = P.row(0);
+      cols.emplace_back(1, *d0);
+    }
+    if (d1) {
+      base.row(k - 1) = P.row(k);
+      cols.emplace_back(k - 1, -*d1);
+    }
+    for (int i = 1; i < k; ++i)
+      if (!((d0 && i == 1) || (d1 && i == k - 1)))
+        for (int q = 0; q < 3; ++q) cols.emplace_back(i, Eigen::Vector3d::Unit(q));
+    const Eigen::Index N = static_cast<Eigen::Index>(cols.size());
+    Eigen::MatrixXd A(3 * (k + 1), N);
+    Eigen::VectorXd r(3 * (k + 1));
+    const Eigen::MatrixX3d rhs = Y - T * base;
+    for (int row = 0; row <= k; ++row)
+      for (int q = 0; q < 3; ++q) {
+        r(3 * row + q) = rhs(row, q);
+        for (Eigen::Index j = 0; j < N; ++j)
+          A(3 * row + q, j) = T(row, cols[static_cast<size_t>(j)].first) * cols[static_cast<size_t>(j)].second(q);
+      }
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+    if (qr.rank() < N) return std::nullopt;
+    const Eigen::VectorXd z = qr.solve(r);
+    Eigen::MatrixX3d R = base;
+    for (Eigen::Index j = 0; j < N; ++j)
+      R.row(cols[static_cast<size_t>(j)].first) += z(j) * cols[static_cast<size_t>(j)].second.transpose();
+    if (G) {
+      G->setZero(3 * (k - 1), N);
+      for (Eigen::Index j = 0; j < N; ++j)
+        G->block<3, 1>(3 * (cols[static_cast<size_t>(j)].first - 1), j) = cols[static_cast<size_t>(j)].second;
+    }
+    return std::make_pair(R, (T * R - Y).squaredNorm());
+  }
+};
+
+// An exactly elevated Bézier curve at a joined corner: its legs projected onto the directions.
+// nullopt when a leg points against its direction.
+std::optional<Eigen::MatrixX3d> project_legs(const Eigen::MatrixX3d& P, const Eigen::Vector3d* d0,
+                                             const Eigen::Vector3d* d1) {
+  const Eigen::Index k = P.rows() - 1;
+  Eigen::MatrixX3d R = P;
+  if (d0) {
+    const double a = (P.row(1) - P.row(0)).dot(d0->transpose());
+    if (!(a > 0)) return std::nullopt;
+    R.row(1) = P.row(0) + a * d0->transpose();
+  }
+  if (d1) {
+    const double b = (P.row(k) - P.row(k - 1)).dot(d1->transpose());
+    if (!(b > 0)) return std::nullopt;
+    R.row(k - 1) = P.row(k) - b * d1->transpose();
+  }
+  return R;
+}
+
+// Whether the legs of R point along their directions (a, b > 0).
+bool legs_forward(const Eigen::MatrixX3d& R, const Eigen::Vector3d* d0, const Eigen::Vector3d* d1) {
+  const Eigen::Index k = R.rows() - 1;
+  return R.allFinite() && (!d0 || (R.row(1) - R.row(0)).dot(d0->transpose()) > 0) &&
+         (!d1 || (R.row(k) - R.row(k - 1)).dot(d1->transpose()) > 0);
 }
 
 struct EdgeMap {
@@ -77,6 +249,138 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
     a.row(a.rows() - 1) = corner;
     b.row(0) = corner;
   }
+  // Corners where the curve is smooth: joined G¹ (fit_boundary.h).
+  std::vector<char> joined(E, 0), search(E, 0);
+  std::vector<Eigen::Vector3d> dir(E, Eigen::Vector3d::Zero()), leg_u(E), leg_w(E);
+  std::vector<double> turn(E, 0.0);
+  for (size_t e = 0; e < E; ++e) {
+    const size_t f = (e + 1) % E;
+    const Eigen::Vector3d lin = end_leg(fits[e].points, true), lout = end_leg(fits[f].points, false);
+    turn[e] = angle_between(lin, lout) * 180 / std::numbers::pi;
+    if (!data.tangents.empty() || !(o.smooth_corner_angle > 0)) continue;
+    if (fits[e].points.rows() < 4 || fits[f].points.rows() < 4 || lin.squaredNorm() == 0 || lout.squaredNorm() == 0)
+      continue;
+    const bool xin = data.edges[e].exact_tangent(true).has_value(),
+               xout = data.edges[f].exact_tangent(false).has_value();
+    const Eigen::Vector3d tin = data_tangent(data.edges[e], true), tout = data_tangent(data.edges[f], false);
+    if (!(tin.allFinite() && tout.allFinite() && tin.squaredNorm() > 0 && tout.squaredNorm() > 0)) continue;
+    const Eigen::Vector3d rin = tin.normalized(), rout = tout.normalized();
+    const double angle = angle_between(rin, rout);
+    joined[e] = xin && xout ? angle <= kExactSmoothRadians : angle <= o.smooth_corner_angle * std::numbers::pi / 180;
+    if (xin != xout) {
+      dir[e] = xin ? rin : rout;
+    } else if (xin) {
+      dir[e] = (rin + rout).normalized();
+    } else {
+      // Estimated on both sides: the direction in the plane of the fitted legs that fits both
+      // edges best (searched below), from the mean of the legs.
+      leg_u[e] = lin.normalized();
+      const Eigen::Vector3d w = lout.normalized() - leg_u[e].dot(lout.normalized()) * leg_u[e];
+      leg_w[e] = w.squaredNorm() > 0 ? Eigen::Vector3d(w.normalized()) : Eigen::Vector3d::Zero();
+      dir[e] = (lin.normalized() + lout.normalized()).normalized();
+      search[e] = joined[e] && w.squaredNorm() > 0;
+    }
+  }
+  // Each edge at a joined corner (not elevated) gets its least squares.
+  std::vector<std::optional<EdgeLeastSquares>> ls(E);
+  auto prepare = [&](size_t g) {
+    if (!ls[g] && fits[g].method != "elevation")
+      ls[g].emplace(data.edges[g], fits[g], static_cast<int>(fits[g].points.rows()) - 1);
+  };
+  for (size_t e = 0; e < E; ++e)
+    if (joined[e]) {
+      prepare(e);
+      prepare((e + 1) % E);
+    }
+  auto dirs_of = [&](size_t g) {
+    const size_t start = (g + E - 1) % E;
+    return std::make_pair(joined[start] ? &dir[start] : nullptr, joined[g] ? &dir[g] : nullptr);
+  };
+  auto edge_cost = [&](size_t g) {
+    if (!ls[g]) return 0.0;  // an elevated edge (exact tangents: never at a searched corner)
+    const auto [d0, d1] = dirs_of(g);
+    const auto r = ls[g]->solve(fits[g].points, d0, d1);
+    return r && legs_forward(r->first, d0, d1) ? r->second : INFINITY;
+  };
+  // The search: per corner, golden section on the angle phi of d = cos(phi) u + sin(phi) w (u the
+  // incoming leg, w towards the outgoing one, which is at phi = turn) over [-turn, 2 turn]; two
+  // sweeps over the corners (an edge between two joined corners couples them).
+  for (int sweep = 0; sweep < 2; ++sweep)
+    for (size_t e = 0; e < E; ++e) {
+      if (!search[e] || !joined[e]) continue;
+      const size_t f = (e + 1) % E;
+      const double th = turn[e] * std::numbers::pi / 180;
+      auto cost = [&](double phi) {
+        dir[e] = std::cos(phi) * leg_u[e] + std::sin(phi) * leg_w[e];
+        return edge_cost(e) + edge_cost(f);
+      };
+      const double gr = 0.5 * (std::sqrt(5.0) - 1);
+      double a = -th, b = 2 * th, x1 = b - gr * (b - a), x2 = a + gr * (b - a);
+      double f1 = cost(x1), f2 = cost(x2);
+      for (int it = 0; it < 60 && b - a > 1e-13 * std::max(1.0, th); ++it) {
+        if (f1 <= f2) {
+          b = x2;
+          x2 = x1;
+          f2 = f1;
+          x1 = b - gr * (b - a);
+          f1 = cost(x1);
+        } else {
+          a = x1;
+          x1 = x2;
+          f1 = f2;
+          x2 = a + gr * (b - a);
+          f2 = cost(x2);
+        }
+      }
+      const double best = f1 <= f2 ? x1 : x2;
+      if (std::isfinite(std::min(f1, f2))) {
+        dir[e] = std::cos(best) * leg_u[e] + std::sin(best) * leg_w[e];
+      } else {
+        dir[e] = (leg_u[e] + std::cos(th) * leg_u[e] + std::sin(th) * leg_w[e]).normalized();
+      }
+    }
+  // Fit the edges at joined corners again (corrected samples: their parameters too); a corner
+  // whose edge cannot take it is kept, and the edges are fitted again without it (each pass keeps
+  // at least one more corner).
+  std::vector<Eigen::MatrixX3d> refit(E);
+  std::vector<Eigen::VectorXd> params(E);
+  for (size_t pass = 0; pass <= E; ++pass) {
+    bool changed = false;
+    for (size_t g = 0; g < E; ++g) {
+      const size_t start = (g + E - 1) % E;
+      const auto [d0, d1] = dirs_of(g);
+      refit[g] = fits[g].points;
+      params[g] = fits[g].params;
+      if (!d0 && !d1) continue;
+      std::optional<Eigen::MatrixX3d> r;
+      if (!ls[g]) {
+        r = project_legs(fits[g].points, d0, d1);
+      } else {
+        Eigen::MatrixXd G;
+        if (auto s = ls[g]->solve(fits[g].points, d0, d1, &G)) {
+          r = s->first;
+          if (fits[g].parameters == "corrected") {
+            const SampleFit c = fit_samples_orthogonal_constrained(*r, ls[g]->t, ls[g]->Q, G);
+            r = c.points;
+            params[g] = c.params;
+          }
+          if (!legs_forward(*r, d0, d1)) r.reset();
+        }
+      }
+      if (r) {
+        refit[g] = *r;
+      } else {
+        joined[start] = joined[g] = 0;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  for (size_t g = 0; g < E; ++g) {
+    fits[g].points = refit[g];
+    fits[g].params = params[g];
+  }
+
   Eigen::MatrixX3d& P = net.points();
   P.setZero();
   std::vector<char> on_boundary(static_cast<size_t>(P.rows()), 0);
@@ -92,6 +396,8 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
     r.curve = data.edges[e].kind();
     r.method = fits[e].method;
     r.max_error = edge_error(data.edges[e], fits[e]);
+    r.end_corner = joined[e] ? "g1" : "kept";
+    r.end_corner_turn = turn[e];
     if (!fits[e].parameters.empty()) {
       r.parameters = fits[e].parameters;
       r.corrections = fits[e].corrections;
@@ -146,6 +452,8 @@ std::string to_string(FitMethod m) { return m == FitMethod::Interpolation ? "int
 void BoundaryFitOptions::validate() const {
   if (!std::isfinite(corner_tolerance) || !(corner_tolerance > 0))
     throw ParameterError("corner_tolerance: must be a finite number > 0");
+  if (!(smooth_corner_angle >= 0 && smooth_corner_angle <= 90))
+    throw ParameterError("smooth_corner_angle: must be a number of degrees in [0, 90]");
 }
 
 CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool correct) {

@@ -51,6 +51,39 @@
 // edges define (the corner "twist" points) is the mean of both. The reported tangent error is
 // measured on the result, so that inconsistent corner data show up there.
 //
+// Corners where the curve is smooth (C⁰ data only): cutting a smooth closed curve into edges puts
+// corners where the curve has none, and two separate fits then meet at 180° only up to their
+// errors. Where that angle is slightly reflex on the side the surface spans, every patch with these
+// edges turns over next to the corner (docs/boundaries.md, "Corners where the curve is smooth").
+// So a corner is joined G¹ when it is smooth:
+//   - where both curves give their end tangents exactly (BoundaryCurve::exact_tangent: Bézier,
+//     segment, B-spline, arc, helix): when those agree in direction to kExactSmoothRadians;
+//   - otherwise: when the data's tangents turn by at most smooth_corner_angle degrees (0: never).
+//     The data's tangent is the exact one where the form gives it; for samples the derivative of
+//     the cubic through the four samples nearest the corner (at their parameters), for a function
+//     that of the cubic through c at t = 0, 1e-3, 2e-3, 3e-3 (or from t = 1). Both are independent
+//     of the net's degree: on the wavy curve of FitBoundary.CornersWhereTheCurveIsSmoothAreJoinedG1
+//     (61 samples an edge) the samples' cubics turn by 0.01°–0.03° at the corners, its fits at
+//     n = 5 by 1.5°–3.8°.
+// The common direction d: the exact tangent where one curve gives it (the mean of the two unit
+// tangents where both do); where both are estimated, the direction in the plane of the two fitted
+// end legs that minimises the two edges' summed least squares (golden section on its angle over
+// [-turn, 2 turn] from the incoming leg, two sweeps over the corners). Each edge at a joined corner
+// is then fitted again with its end leg along d, P_1 = P_0 + a d (or P_{k-1} = P_k - b d), a, b
+// free: the same least squares as its fit (samples at the fit's parameters, "least-squares" at its
+// 8k+1 parameters), "interpolation" as least squares at the 4k+1 Chebyshev–Lobatto nodes, all
+// solved by QR (the Bernstein matrix reduced to its triangle, then the constrained problem on it);
+// corrected samples then have their parameters corrected again under the constraint
+// (fit_samples_orthogonal_constrained); an exactly elevated Bézier curve has its leg projected onto d instead (it moves by at most
+// |leg| kExactSmoothRadians). A corner is kept as fitted when an edge at it has degree < 3, the
+// constrained problem is numerically rank deficient (seen at degree 64, where the plain fit's
+// corners are already smooth to rounding) or the constrained fit turns a leg around (a or b <= 0).
+// Cost: the search is O(k³) per trial; corrected samples pay one more constrained correction
+// (measured on four edges of 2001 samples at n = 8: 2.7 s against 1.8 s kept). The report gives each edge's end corner as
+// "g1" or "kept" and its turning angle before the join. The join costs accuracy: on that wavy
+// curve the largest edge error grows by ×1.3 … ×2.5 (samples, n = 5 … 12), and the arcs of the
+// circle stay within 3x their interpolation error (docs/boundaries.md has the table).
+//
 // The other control points are zero: every solver determines them (FORMATS.md "Jobs").
 // Errors (per edge): the maximum over 257 uniform parameters (samples: over the samples) of
 // |x_e(t) - c_e(t)|, with x_e the net's boundary curve: the parametric distance, an upper bound
@@ -67,6 +100,10 @@ namespace bpde {
 
 enum class FitMethod { Interpolation, LeastSquares };
 
+/// Where both curves give their tangents exactly, a corner is smooth when they agree in direction
+/// to this many radians (input typed to 7 digits stays within it).
+inline constexpr double kExactSmoothRadians = 1e-6;
+
 /// "interpolation" or "least-squares".
 std::string to_string(FitMethod m);
 
@@ -80,7 +117,10 @@ struct BoundaryData {
 struct BoundaryFitOptions {
   FitMethod method = FitMethod::Interpolation;  ///< for curves that are neither low-degree Bézier nor samples
   double corner_tolerance = 1e-8;               ///< relative gap allowed at the corners, > 0
-  /// ParameterError unless corner_tolerance is finite and > 0.
+  /// Corners whose estimated tangents turn by at most this many degrees are joined G¹ (above);
+  /// 0 keeps every corner as fitted. In [0, 90].
+  double smooth_corner_angle = 2.0;
+  /// ParameterError unless corner_tolerance is finite and > 0 and smooth_corner_angle in [0, 90].
   void validate() const;
 };
 
@@ -97,6 +137,11 @@ struct EdgeFit {
   /// of the correction.
   std::optional<std::string> parameters;
   std::optional<int> corrections;
+  /// The corner at the edge's end (where the next edge starts): "g1" when joined, "kept" when not
+  /// (C⁰ data only), and the angle in degrees by which the fitted edges' tangents turned there
+  /// before the join (0 is a smooth continuation).
+  std::optional<std::string> end_corner;
+  std::optional<double> end_corner_turn;
 };
 
 /// One curve at degree n >= 1: its Bernstein coefficients ((n+1) x 3) and the method used.

@@ -49,8 +49,11 @@ struct Model {
 // point-major) and the inner parameters, from (P, t); the parameters eliminated by the Schur
 // complement (each residual block has its own t_k), Levenberg's damping mu·Id, Nielsen's update
 // of the damping. A step is taken only when the parameters still increase strictly inside [0, 1]
-// and the sum falls. Returns the iterations taken.
-int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int max_iterations = kIterationsPerDegree) {
+// and the sum falls. Returns the iterations taken. With G (3(n−1) x N), the inner points move only
+// in its range, P_inner += G dz: the problem is solved over dz (the normal equations projected,
+// G^T A G, G^T C, G^T g; the damping on dz), as fit_samples_orthogonal_constrained needs.
+int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int max_iterations = kIterationsPerDegree,
+                  const Eigen::MatrixXd* G = nullptr) {
   const int n = m.n, k = 3 * (n - 1);
   const Eigen::Index M = t.size() - 1;
   std::vector<double> b(static_cast<size_t>(n + 1)), d(static_cast<size_t>(n));
@@ -62,8 +65,8 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
   Eigen::VectorXd gt(M + 1), ht(M + 1);
   while (it < max_iterations && cost > 0) {
     // Normal equations: [A  C; Cᵀ diag(ht)] over (P, t), gradient (g, gt).
-    A.setZero();
-    g.setZero();
+    A.setZero(k, k);
+    g.setZero(k);
     Eigen::MatrixXd C = Eigen::MatrixXd::Zero(k, M + 1), W = Eigen::MatrixXd::Zero(k, M + 1);
     for (Eigen::Index s = 1; s < M; ++s) {
       Eigen::Vector3d x, dx;
@@ -86,6 +89,12 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
         for (int c = 0; c < 3; ++c) A(3 * i + c, 3 * j + c) = A(3 * j + c, 3 * i + c) = v;
         if (i != j) A(3 * i, 3 * j) = A(3 * j, 3 * i) = v;
       }
+    if (G) {  // the problem over dz
+      A = G->transpose() * A * *G;
+      C = G->transpose() * C;
+      g = G->transpose() * g;
+      W.resize(G->cols(), M + 1);
+    }
     const double gnorm = std::max(g.cwiseAbs().maxCoeff(), gt.segment(1, M - 1).cwiseAbs().maxCoeff());
     if (!(gnorm > kGradientTolerance * std::max(1.0, std::sqrt(cost)))) break;
     if (mu < 0) mu = 1e-3 * std::max(A.diagonal().maxCoeff(), ht.segment(1, M - 1).maxCoeff());
@@ -108,11 +117,11 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
         nu *= 2;
         continue;
       }
-      const Eigen::VectorXd dp = llt.solve(rhs);
+      const Eigen::VectorXd dz = llt.solve(rhs), dp = G ? Eigen::VectorXd(*G * dz) : dz;
       Eigen::VectorXd tn = t;
       bool ok = dp.allFinite();
       for (Eigen::Index s = 1; ok && s < M; ++s) {
-        tn(s) = t(s) - (gt(s) + C.col(s).dot(dp)) / (ht(s) + mu);
+        tn(s) = t(s) - (gt(s) + C.col(s).dot(dz)) / (ht(s) + mu);
         ok = std::isfinite(tn(s));
       }
       for (Eigen::Index s = 1; ok && s <= M; ++s) ok = tn(s) > tn(s - 1) && tn(s) >= 0 && tn(s) <= 1;
@@ -123,7 +132,8 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
       if (cn < cost) {
         // Gain ratio against the model's predicted decrease: (dp, dt)ᵀ(mu (dp, dt) − (g, gt)).
         Eigen::VectorXd dt = tn - t;
-        const double pred = dp.dot(mu * dp - g) + dt.segment(1, M - 1).dot(mu * dt.segment(1, M - 1) - gt.segment(1, M - 1));
+        const double pred =
+            dz.dot(mu * dz - g) + dt.segment(1, M - 1).dot(mu * dt.segment(1, M - 1) - gt.segment(1, M - 1));
         const double rho = pred > 0 ? (cost - cn) / pred : 0;
         const bool small = cost - cn < kRelativeDecrease * cost;
         P = Pn;
@@ -218,6 +228,19 @@ SampleFit fit_samples_orthogonal(int n, const Eigen::VectorXd& t0, const Eigen::
     out.params = tall;
     out.corrected = true;
   }
+  return out;
+}
+
+SampleFit fit_samples_orthogonal_constrained(const Eigen::MatrixX3d& P, const Eigen::VectorXd& t,
+                                             const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G) {
+  const int n = static_cast<int>(P.rows()) - 1;
+  if (n < 2 || G.rows() != 3 * (n - 1) || t.size() != q.rows() || t.size() < 2)
+    throw SizeError("fit_samples_orthogonal_constrained: sizes do not match");
+  SampleFit out{P, t, true, 0};
+  if (G.cols() == 0) return out;
+  const Eigen::Index M = t.size() - 1;
+  out.iterations = orthogonal_lm(Model{n, q}, out.points, out.params,
+                                 M + 1 > kLadderSamples ? kFinalIterations : kIterationsPerDegree, &G);
   return out;
 }
 

@@ -47,4 +47,12 @@ Eigen::MatrixX3d least_squares_at(int n, const Eigen::VectorXd& t, const Eigen::
 /// The orthogonal least-squares fit above, from the parameters t0. Throws as least_squares_at.
 SampleFit fit_samples_orthogonal(int n, const Eigen::VectorXd& t0, const Eigen::MatrixX3d& q);
 
+/// The same problem with the inner points constrained to P_inner = P_inner(start) + G z (G is
+/// 3(n−1) x N, rows point-major: 3(i−1)+c for P_i's coordinate c), from the fit P (degree n >= 2,
+/// already in the constrained set) at the parameters t: Levenberg–Marquardt over z and the
+/// parameters, as above (100 iterations; 20 with more than 2049 samples). Used for the G¹ corners
+/// of fit_boundary.h (the end legs along given directions). SizeError when the sizes do not match.
+SampleFit fit_samples_orthogonal_constrained(const Eigen::MatrixX3d& P, const Eigen::VectorXd& t,
+                                             const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G);
+
 }  // namespace bpde

@@ -74,13 +74,15 @@ BoundaryData builder_curves(const Json& j, const std::string& path, const std::s
   if (type != b->type)
     throw UnsupportedProblem(path + ".builder: \"" + name + "\" builds " + b->type + " nets, not " + type);
   if (name == "circle-three-arcs") {
-    check_keys(j, path, {"type", "degree", "builder", "fit", "corner_tolerance", "radius", "center", "normal"});
+    check_keys(
+        j, path,
+        {"type", "degree", "builder", "fit", "corner_tolerance", "smooth_corner_angle", "radius", "center", "normal"});
     const double r = j.contains("radius") ? number(j["radius"], path + ".radius") : 1.0;
     const Eigen::Vector3d c = optional_vec3(j, path, "center").value_or(Eigen::Vector3d::Zero());
     const Eigen::Vector3d n = optional_vec3(j, path, "normal").value_or(Eigen::Vector3d::UnitZ());
     return at(path, [&] { return circle_three_arcs_curves(r, c, n); });
   }
-  check_keys(j, path, {"type", "degree", "builder", "fit", "corner_tolerance"});
+  check_keys(j, path, {"type", "degree", "builder", "fit", "corner_tolerance", "smooth_corner_angle"});
   if (name == "sphere-triangle") return triangular_surface_curves(sphere_triangle);
   if (name == "sphere-square") return tensor_surface_curves(sphere_square);
   return triangular_surface_curves(planar_triangle);
@@ -189,11 +191,15 @@ BoundaryNet boundary_from_json(const Json& j, const std::string& path) {
     o.corner_tolerance = number(j["corner_tolerance"], path + ".corner_tolerance");
     at(path + ".corner_tolerance", [&] { o.validate(); });
   }
+  if (j.contains("smooth_corner_angle")) {
+    o.smooth_corner_angle = number(j["smooth_corner_angle"], path + ".smooth_corner_angle");
+    at(path + ".smooth_corner_angle", [&] { o.validate(); });
+  }
   BoundaryData data;
   if (j.contains("builder")) {
     data = builder_curves(j, path, string(j["builder"], path + ".builder"), type);
   } else {
-    check_keys(j, path, {"type", "degree", "edges", "tangents", "fit", "corner_tolerance"});
+    check_keys(j, path, {"type", "degree", "edges", "tangents", "fit", "corner_tolerance", "smooth_corner_angle"});
     const size_t E = type == "tensor" ? 4 : 3;
     auto curves = [&](const char* key) {
       const Json& a = field(j, path, key);
@@ -231,6 +237,10 @@ Json boundary_fit_to_json(const std::vector<EdgeFit>& fits) {
       r["tangent_curve"] = *f.tangent_curve;
       r["tangent_method"] = *f.tangent_method;
       r["tangent_max_error"] = *f.tangent_max_error;
+    }
+    if (f.end_corner) {
+      r["end_corner"] = *f.end_corner;
+      r["end_corner_turn"] = *f.end_corner_turn;
     }
     if (f.parameters) {
       r["parameters"] = *f.parameters;

@@ -137,6 +137,16 @@ TEST(FitBoundary, CornersAreSharedExactlyAndGapsAreRefused) {
   EXPECT_NO_THROW(bpde::fit_triangular_boundary(5, d, o));
   o.corner_tolerance = 0;
   EXPECT_THROW(bpde::fit_triangular_boundary(5, d, o), bpde::ParameterError);
+  o.corner_tolerance = 1e-2;  // the gap is allowed: only the angle is wrong
+  for (double a : {-1.0, 91.0, std::nan("")}) {
+    o.smooth_corner_angle = a;
+    try {
+      bpde::fit_triangular_boundary(5, d, o);
+      ADD_FAILURE() << "expected ParameterError for " << a;
+    } catch (const bpde::ParameterError& e) {
+      EXPECT_NE(std::string(e.what()).find("smooth_corner_angle"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(FitBoundary, SampledPointsAreFittedByLeastSquares) {
@@ -311,8 +321,11 @@ TEST(FitBoundary, TriangularC1RingFromTangentFields) {
 TEST(FitBoundary, CircleThreeArcsCurvesAreTheReferenceNet) {
   // The reference net fits edges 1 and 2 in the opposite direction: the same interpolant, whose
   // control points agree to the collocation's rounding (growing with n), the curves to 1e-15.
+  // Kept as fitted (smooth_corner_angle 0): the joined corners are tested below.
+  bpde::BoundaryFitOptions kept;
+  kept.smooth_corner_angle = 0;
   for (int n = 3; n <= 12; ++n) {
-    const auto fit = bpde::fit_triangular_boundary(n, bpde::circle_three_arcs_curves());
+    const auto fit = bpde::fit_triangular_boundary(n, bpde::circle_three_arcs_curves(), kept);
     const bpde::TriangularNet ref = bpde::circle_three_arcs(n);
     EXPECT_LT((fit.net.points() - ref.points()).cwiseAbs().maxCoeff(), n <= 6 ? 1e-14 : 1e-12) << n;
     for (int k = 0; k <= 16; ++k) {
@@ -328,6 +341,115 @@ TEST(FitBoundary, CircleThreeArcsCurvesAreTheReferenceNet) {
     EXPECT_NEAR((p - c).norm(), 2.5, 1e-14);
     EXPECT_NEAR((p - c).dot(N), 0.0, 1e-14);
   }
+}
+
+// The sine of the angle between the legs of a net's edges at a corner: the end leg of one edge
+// and the start leg of the next, and the cosine (1 where they continue each other).
+std::pair<double, double> corner_legs(const Eigen::MatrixX3d& in, const Eigen::MatrixX3d& out) {
+  const Eigen::Index k = in.rows() - 1;
+  const Vector3d a = (in.row(k) - in.row(k - 1)).transpose().normalized();
+  const Vector3d b = (out.row(1) - out.row(0)).transpose().normalized();
+  return {a.cross(b).norm(), a.dot(b)};
+}
+
+// The edges of a triangular net as Bézier polygons in the edge order of fit_boundary.h.
+std::vector<Eigen::MatrixX3d> triangular_edges(const bpde::TriangularNet& net) {
+  const int n = net.n();
+  std::vector<Eigen::MatrixX3d> e(3, Eigen::MatrixX3d(n + 1, 3));
+  for (int s = 0; s <= n; ++s) {
+    e[0].row(s) = net.point(s, 0).transpose();
+    e[1].row(s) = net.point(n - s, s).transpose();
+    e[2].row(s) = net.point(0, n - s).transpose();
+  }
+  return e;
+}
+
+TEST(FitBoundary, CornersWhereTheCurveIsSmoothAreJoinedG1) {
+  // The circle in three arcs: the arcs give their tangents exactly and continue each other, so
+  // every corner is joined: the legs are collinear to rounding, where the plain interpolants met
+  // at 180° only up to their error (0.84° at n = 4). The joined fit stays within 3x the
+  // interpolation's own error (the remainder bound of arc_bound).
+  bpde::BoundaryFitOptions kept;
+  kept.smooth_corner_angle = 0;
+  for (int n = 3; n <= 14; ++n) {
+    const auto fit = bpde::fit_triangular_boundary(n, bpde::circle_three_arcs_curves());
+    const auto plain = bpde::fit_triangular_boundary(n, bpde::circle_three_arcs_curves(), kept);
+    const auto e = triangular_edges(fit.net), p = triangular_edges(plain.net);
+    for (int c = 0; c < 3; ++c) {
+      const auto [sin_joined, cos_joined] = corner_legs(e[c], e[(c + 1) % 3]);
+      EXPECT_LT(sin_joined, 1e-14) << n << " corner " << c;
+      EXPECT_GT(cos_joined, 0.0);
+      EXPECT_EQ(fit.edges[c].end_corner, "g1");
+      EXPECT_EQ(plain.edges[c].end_corner, "kept");
+      // The turn reported is that of the plain fit.
+      const double turn = std::asin(corner_legs(p[c], p[(c + 1) % 3]).first) * 180 / kPi;
+      EXPECT_NEAR(*fit.edges[c].end_corner_turn, turn, 1e-9 * std::max(1.0, turn)) << n;
+      EXPECT_NEAR(*plain.edges[c].end_corner_turn, turn, 1e-9 * std::max(1.0, turn)) << n;
+      EXPECT_LT(fit.edges[c].max_error, 3 * arc_bound(n, 2 * kPi / 3, 1.0) + 1e-15) << n;
+      EXPECT_LT(fit.edges[c].max_error, 3 * plain.edges[c].max_error + 1e-15) << n;
+    }
+    if (n == 4) EXPECT_NEAR(*plain.edges[0].end_corner_turn, 0.841, 1e-3);
+  }
+
+  // Samples of a smooth closed curve (no exact tangents: the estimated tier) cut into three edges
+  // at uneven places: joined, and the largest edge error stays within 3x the unjoined one
+  // (measured ×1.3 … ×2.5 at n = 5 … 12; an edge alone may lose more, ×25 at n = 12, where its own
+  // error was far below the others').
+  auto curve = [](double a) {
+    return Vector3d((1 + 0.2 * std::cos(3 * a)) * std::cos(a), (1 + 0.2 * std::cos(3 * a)) * std::sin(a),
+                    0.3 * std::sin(2 * a));
+  };
+  const double cuts[4] = {0.3, 2.0, 4.4, 0.3 + 2 * kPi};
+  BoundaryData samples;
+  for (int e = 0; e < 3; ++e) {
+    Eigen::MatrixX3d q(61, 3);
+    for (int k = 0; k <= 60; ++k) q.row(k) = curve(cuts[e] + (cuts[e + 1] - cuts[e]) * k / 60.0).transpose();
+    samples.edges.push_back(BoundaryCurve::samples(q));
+  }
+  for (int n : {5, 7, 9, 12}) {
+    const auto fit = bpde::fit_triangular_boundary(n, samples);
+    const auto plain = bpde::fit_triangular_boundary(n, samples, kept);
+    const auto e = triangular_edges(fit.net);
+    double joined_max = 0, plain_max = 0;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(fit.edges[c].end_corner, "g1") << n;
+      EXPECT_GT(*plain.edges[c].end_corner_turn, 1e-7) << n;  // a turn the join removed
+      EXPECT_LT(corner_legs(e[c], e[(c + 1) % 3]).first, 1e-14) << n;
+      joined_max = std::max(joined_max, fit.edges[c].max_error);
+      plain_max = std::max(plain_max, plain.edges[c].max_error);
+    }
+    EXPECT_LT(joined_max, 3 * plain_max) << n;
+  }
+
+  // Kept: a real corner (the three arcs of a sphere octant meet at 90°); a deliberate kink of
+  // 0.5° between exact arcs (below the 2° of the estimated tier, but the tangents are exact);
+  // and a degree too low to move a leg (2).
+  BoundaryData octant;
+  octant.edges.push_back(BoundaryCurve::arc(Vector3d::Zero(), Vector3d::UnitZ(), 1, 0, kPi / 2));
+  octant.edges.push_back(BoundaryCurve::arc(Vector3d::Zero(), Vector3d::UnitX(), 1, 0, kPi / 2, Vector3d::UnitY()));
+  octant.edges.push_back(BoundaryCurve::arc(Vector3d::Zero(), Vector3d::UnitY(), 1, 0, kPi / 2, Vector3d::UnitZ()));
+  const auto oct = bpde::fit_triangular_boundary(6, octant);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(oct.edges[c].end_corner, "kept");
+    EXPECT_NEAR(*oct.edges[c].end_corner_turn, 90.0, 0.5);
+  }
+  const double kink = 0.5 * kPi / 180;  // the second arc starts turned by 0.5°
+  BoundaryData kinked;
+  kinked.edges.push_back(BoundaryCurve::arc(Vector3d::Zero(), Vector3d::UnitZ(), 1, 0, 2.0));
+  const Vector3d p = kinked.edges[0].end(), t = kinked.edges[0].exact_tangent(true)->normalized();
+  const Vector3d t2 = std::cos(kink) * t + std::sin(kink) * Vector3d::UnitZ().cross(t);
+  // A segment along t2, then a Bézier curve back to the start.
+  kinked.edges.push_back(BoundaryCurve::segment(p, p + 0.8 * t2));
+  Eigen::MatrixX3d back(3, 3);
+  back.row(0) = (p + 0.8 * t2).transpose();
+  back.row(1) = Vector3d(-1, -1, 0.5).transpose();
+  back.row(2) = kinked.edges[0].start().transpose();
+  kinked.edges.push_back(BoundaryCurve::bezier(back));
+  const auto kf = bpde::fit_triangular_boundary(8, kinked);
+  EXPECT_EQ(kf.edges[0].end_corner, "kept");
+  EXPECT_NEAR(*kf.edges[0].end_corner_turn, 0.5, 1e-4);  // the fitted arc turns by 1.5e-5° less
+  const auto low = bpde::fit_triangular_boundary(2, bpde::circle_three_arcs_curves());
+  for (const auto& f : low.edges) EXPECT_EQ(f.end_corner, "kept");
 }
 
 TEST(FitBoundary, BadDataThrowTypedErrors) {

@@ -74,11 +74,23 @@ const fs::path kExamples = fs::path(BPDE_SOURCE_DIR) / "examples";
 
 }  // namespace
 
-// The example job with the circle as three arcs gives the result of the job that carries the
-// degree-4 control points (n4-b-H-1.json, written from circle_three_arcs(4)).
+// The example job with the circle as three arcs, its corners kept as fitted
+// ("smooth_corner_angle": 0), gives the result of the job that carries the degree-4 control points
+// (n4-b-H-1.json, written from circle_three_arcs(4)). Without that option it joins them G¹.
 TEST(BoundaryJobs, CircleArcsJobEqualsTheControlPointJob) {
+  Json job = bpde::read_json_file((kExamples / "004-cmc-circle" / "circle_curves.json").string());
+  ASSERT_EQ(job["boundary"]["smooth_corner_angle"], 0);
+  job["boundary"].erase("smooth_corner_angle");
+  const Json joined = solve(write("circle_curves_joined.json", job.dump()), "curves_arcs_joined");
   const Json a = solve(kExamples / "004-cmc-circle" / "circle_curves.json", "curves_arcs");
   const Json b = solve(kExamples / "004-cmc-circle" / "n4-b-H-1.json", "curves_points");
+  for (int e = 0; e < 3; ++e) {
+    EXPECT_EQ(a["report"]["boundary_fit"][e]["end_corner"], "kept");
+    EXPECT_EQ(joined["report"]["boundary_fit"][e]["end_corner"], "g1");
+    // The plain interpolants turn by 0.841° at every corner (all three alike by symmetry).
+    EXPECT_NEAR(joined["report"]["boundary_fit"][e]["end_corner_turn"].get<double>(), 0.841, 1e-3);
+  }
+  EXPECT_GT(net_difference(joined, b), 1e-4);
   EXPECT_LT(net_difference(a, b), 1e-13);
   EXPECT_NEAR(a["report"]["energy"].get<double>(), b["report"]["energy"].get<double>(), 1e-13);
   // The report gives the fit of each edge: interpolation, error at the remainder bound of

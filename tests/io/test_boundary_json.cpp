@@ -132,6 +132,10 @@ TEST(BoundaryJson, BadBoundariesThrowTypedErrorsWithTheirPath) {
   expect_error<bpde::ParameterError>(tri(R"({"type": "segment", "from": [0,1,0], "to": [0,0,0.5]})"),
                                      "b: edges 2 and 0 do not meet");
   expect_error<bpde::ParameterError>(tri(s2, R"(, "corner_tolerance": 0)"), "b.corner_tolerance");
+  expect_error<bpde::ParameterError>(
+      tri(s2, R"(, "smooth_corner_angle": 120)"),
+      "b.smooth_corner_angle: smooth_corner_angle: must be a number of degrees in [0, 90]");
+  expect_error<bpde::ParseError>(tri(s2, R"(, "smooth_corner_angle": "yes")"), "b.smooth_corner_angle");
   expect_error<bpde::SizeError>(tri(s2, ", \"tangents\": [" + s0 + "]"), "b.tangents: a triangular net has 3 edges");
   expect_error<bpde::ParseError>(R"({"type": "bspline", "degree": [3, 3], "edges": []})", "b.type");
   expect_error<bpde::DegreeError>(R"({"type": "tensor", "degree": [3, 65], "edges": []})", "b.degree[1]");
