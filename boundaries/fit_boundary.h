@@ -79,10 +79,13 @@
 // constrained problem is numerically rank deficient (seen at degree 64, where the plain fit's
 // corners are already smooth to rounding) or the constrained fit turns a leg around (a or b <= 0).
 // Cost: the search is O(k³) per trial; corrected samples pay one more constrained correction
-// (measured on four edges of 2001 samples at n = 8: 2.7 s against 1.8 s kept). The report gives each edge's end corner as
-// "g1" or "kept" and its turning angle before the join. The join costs accuracy: on that wavy
-// curve the largest edge error grows by ×1.3 … ×2.5 (samples, n = 5 … 12), and the arcs of the
-// circle stay within 3x their interpolation error (docs/boundaries.md has the table).
+// (measured on four edges of 2001 samples at n = 8: 2.7 s against 1.8 s kept). The report gives
+// each edge's end corner as "g1" or "kept" and its turning angle before the join.
+// The join costs accuracy: on that wavy curve the largest edge error grows by ×1.3 … ×2.5
+// (samples, n = 5 … 12); the arcs of the circle stay within 3x their interpolation error, but
+// the interpolant's error oscillates about 0 and the joined fit's does not, so integrals of the
+// result move more (the area of the circle's CMC cap: ×180 at n = 5, ×17 at n = 6; the table in
+// docs/boundaries.md, "Corners where the curve is smooth").
 //
 // The other control points are zero: every solver determines them (FORMATS.md "Jobs").
 // Errors (per edge): the maximum over 257 uniform parameters (samples: over the samples) of
