@@ -102,7 +102,8 @@ class BoundaryCurve {
   /// The direction of the curve's tangent at t = 0 (at_end false) or t = 1, where the form gives it
   /// exactly: c'(t) of a Bézier curve (the first non-zero difference of its end points when c' = 0
   /// there), segment, B-spline, arc or helix; nullopt for samples and functions, whose tangent a fit
-  /// only estimates. Not normalised; nullopt also when it vanishes (a curve that is one point).
+  /// only estimates. Not normalised; nullopt also when it vanishes (a curve that is one point, or
+  /// a B-spline whose derivative is 0 at that end: then the fit estimates it like a sample's).
   std::optional<Eigen::Vector3d> exact_tangent(bool at_end) const;
 
   /// The form, for the fit (nullptr when it is another one; a segment is a Bézier curve).

@@ -152,7 +152,8 @@ struct EdgeLeastSquares {
         for (Eigen::Index j = 0; j < N; ++j)
           A(3 * row + q, j) = T(row, cols[static_cast<size_t>(j)].first) * cols[static_cast<size_t>(j)].second(q);
       }
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+    qr.setThreshold(1e-12);  // as least_squares_at (fit_samples.cpp)
     if (qr.rank() < N) return std::nullopt;
     const Eigen::VectorXd z = qr.solve(r);
     Eigen::MatrixX3d R = base;
@@ -344,6 +345,7 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
   // at least one more corner).
   std::vector<Eigen::MatrixX3d> refit(E);
   std::vector<Eigen::VectorXd> params(E);
+  std::vector<int> corrections(E, 0);
   for (size_t pass = 0; pass <= E; ++pass) {
     bool changed = false;
     for (size_t g = 0; g < E; ++g) {
@@ -351,6 +353,7 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
       const auto [d0, d1] = dirs_of(g);
       refit[g] = fits[g].points;
       params[g] = fits[g].params;
+      corrections[g] = fits[g].corrections;
       if (!d0 && !d1) continue;
       std::optional<Eigen::MatrixX3d> r;
       if (!ls[g]) {
@@ -363,22 +366,29 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
             const SampleFit c = fit_samples_orthogonal_constrained(*r, ls[g]->t, ls[g]->Q, G);
             r = c.points;
             params[g] = c.params;
+            corrections[g] += c.iterations;
           }
-          if (!legs_forward(*r, d0, d1)) r.reset();
         }
       }
-      if (r) {
+      // Keep only the corner whose leg turned around (both where the problem had no solution).
+      const bool start_ok = r && legs_forward(*r, d0, nullptr), end_ok = r && legs_forward(*r, nullptr, d1);
+      if (start_ok && end_ok) {
         refit[g] = *r;
       } else {
-        joined[start] = joined[g] = 0;
+        if (!start_ok) joined[start] = 0;
+        if (!end_ok) joined[g] = 0;
         changed = true;
       }
     }
     if (!changed) break;
   }
   for (size_t g = 0; g < E; ++g) {
+    const size_t start = (g + E - 1) % E;
     fits[g].points = refit[g];
     fits[g].params = params[g];
+    fits[g].corrections = corrections[g];
+    // An interpolant refitted at a joined corner is a least-squares fit (fit_boundary.h).
+    if ((joined[start] || joined[g]) && fits[g].method == "interpolation") fits[g].method = "least-squares";
   }
 
   Eigen::MatrixX3d& P = net.points();

@@ -58,7 +58,8 @@
 // So a corner is joined G¹ when it is smooth:
 //   - where both curves give their end tangents exactly (BoundaryCurve::exact_tangent: Bézier,
 //     segment, B-spline, arc, helix): when those agree in direction to kExactSmoothRadians;
-//   - otherwise: when the data's tangents turn by at most smooth_corner_angle degrees (0: never).
+//   - otherwise: when the data's tangents turn by at most smooth_corner_angle degrees.
+//   smooth_corner_angle 0 keeps every corner as fitted (both tiers).
 //     The data's tangent is the exact one where the form gives it; for samples the derivative of
 //     the cubic through the four samples nearest the corner (at their parameters), for a function
 //     that of the cubic through c at t = 0, 1e-3, 2e-3, 3e-3 (or from t = 1). Both are independent
@@ -74,14 +75,19 @@
 // 8k+1 parameters), "interpolation" as least squares at the 4k+1 Chebyshev–Lobatto nodes, all
 // solved by QR (the Bernstein matrix reduced to its triangle, then the constrained problem on it);
 // corrected samples then have their parameters corrected again under the constraint
-// (fit_samples_orthogonal_constrained); an exactly elevated Bézier curve has its leg projected onto d instead (it moves by at most
-// |leg| kExactSmoothRadians). A corner is kept as fitted when an edge at it has degree < 3, the
-// constrained problem is numerically rank deficient (seen at degree 64, where the plain fit's
-// corners are already smooth to rounding) or the constrained fit turns a leg around (a or b <= 0).
+// (fit_samples_orthogonal_constrained); an exactly elevated Bézier curve has its leg projected
+// onto d instead (it moves by at most |leg| kExactSmoothRadians; a leg of length 0 cannot be
+// projected: the corner is kept). An "interpolation" edge refitted so is reported as
+// "least-squares", and corrected samples add the iterations of the constrained correction to
+// `corrections`. A corner is kept as fitted when an edge at it has degree < 3, the constrained
+// problem is numerically rank deficient (QR threshold 1e-12; seen at degree 64, where the plain
+// fit's corners are already smooth to rounding) or the constrained fit turns that corner's leg
+// around (a or b <= 0); the edges are then fitted again without it (the searched directions are
+// not searched again).
 // Cost: the search is O(k³) per trial; corrected samples pay one more constrained correction
 // (measured on four edges of 2001 samples at n = 8: 2.7 s against 1.8 s kept). The report gives
 // each edge's end corner as "g1" or "kept" and its turning angle before the join.
-// The join costs accuracy: on that wavy curve the largest edge error grows by ×1.3 … ×2.5
+// The join costs accuracy: on that wavy curve the largest edge error changes by ×0.8 … ×1.45
 // (samples, n = 5 … 12); the arcs of the circle stay within 3x their interpolation error, but
 // the interpolant's error oscillates about 0 and the joined fit's does not, so integrals of the
 // result move more (the area of the circle's CMC cap: ×180 at n = 5, ×17 at n = 6; the table in
@@ -141,8 +147,8 @@ struct EdgeFit {
   std::optional<std::string> parameters;
   std::optional<int> corrections;
   /// The corner at the edge's end (where the next edge starts): "g1" when joined, "kept" when not
-  /// (C⁰ data only), and the angle in degrees by which the fitted edges' tangents turned there
-  /// before the join (0 is a smooth continuation).
+  /// (always with C¹ data), and the angle in degrees by which the fitted edges' tangents turned
+  /// there before the join (0 is a smooth continuation).
   std::optional<std::string> end_corner;
   std::optional<double> end_corner_turn;
 };

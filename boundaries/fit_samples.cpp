@@ -93,7 +93,7 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
       A = G->transpose() * A * *G;
       C = G->transpose() * C;
       g = G->transpose() * g;
-      W.resize(G->cols(), M + 1);
+      W.setZero(G->cols(), M + 1);  // columns 0 and M stay zero (the fixed end parameters)
     }
     const double gnorm = std::max(g.cwiseAbs().maxCoeff(), gt.segment(1, M - 1).cwiseAbs().maxCoeff());
     if (!(gnorm > kGradientTolerance * std::max(1.0, std::sqrt(cost)))) break;
