@@ -83,6 +83,19 @@ Eigen::Vector3d data_tangent(const BoundaryCurve& c, bool at_end) {
   return lagrange_derivative(t, y);
 }
 
+// The curve at M >= 2 parameters: uniform, t_r = r/(M-1), or the Chebyshev–Lobatto nodes
+// t_r = (1 - cos(π r/(M-1)))/2; the last is 1 exactly.
+void curve_rows(const BoundaryCurve& c, int M, bool chebyshev, Eigen::VectorXd& t, Eigen::MatrixX3d& Q) {
+  t.resize(M);
+  Q.resize(M, 3);
+  for (int r = 0; r < M; ++r) {
+    t(r) = r == M - 1
+               ? 1.0
+               : (chebyshev ? 0.5 * (1 - std::cos(std::numbers::pi * r / (M - 1))) : static_cast<double>(r) / (M - 1));
+    Q.row(r) = c.evaluate(t(r)).transpose();
+  }
+}
+
 // The rows of an edge's least squares (fit_boundary.h, "Corners where the curve is smooth"): the
 // samples at the fit's parameters, 8k+1 uniform parameters ("least-squares") or the 4k+1
 // Chebyshev–Lobatto nodes ("interpolation").
@@ -93,14 +106,7 @@ void fit_rows(const BoundaryCurve& c, const CurveFit& fit, int k, Eigen::VectorX
     return;
   }
   const bool uniform = fit.method == "least-squares";
-  const int M = uniform ? 8 * k + 1 : 4 * k + 1;
-  t.resize(M);
-  Q.resize(M, 3);
-  for (int r = 0; r < M; ++r) {
-    const double x = static_cast<double>(r) / (M - 1);
-    t(r) = r == M - 1 ? 1.0 : (uniform ? x : 0.5 * (1 - std::cos(std::numbers::pi * x)));
-    Q.row(r) = c.evaluate(t(r)).transpose();
-  }
+  curve_rows(c, uniform ? 8 * k + 1 : 4 * k + 1, !uniform, t, Q);
 }
 
 // The least squares of one edge (its rows from fit_rows) reduced to its triangle: with
@@ -481,27 +487,21 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool corr
     return {least_squares_at(n, s->params, s->points), "least-squares", s->params,
             s->chord_length ? "chord-length" : "given", 0};
   }
+  Eigen::VectorXd t;
+  Eigen::MatrixX3d Q;
   if (method == FitMethod::LeastSquares) {
-    const int M = 8 * n + 1;
-    Eigen::VectorXd t(M);
-    Eigen::MatrixX3d Q(M, 3);
-    for (int k = 0; k < M; ++k) {
-      t(k) = k == M - 1 ? 1.0 : static_cast<double>(k) / (M - 1);
-      Q.row(k) = curve.evaluate(t(k)).transpose();
-    }
+    curve_rows(curve, 8 * n + 1, false, t, Q);
     return {least_squares_at(n, t, Q), "least-squares", {}, "", 0};
   }
   // Chebyshev–Lobatto interpolation (the same computation as fit_curve of reference_boundaries.h).
+  curve_rows(curve, n + 1, true, t, Q);
   Eigen::MatrixXd A(n + 1, n + 1);
-  Eigen::MatrixX3d rhs(n + 1, 3);
   std::vector<double> B(static_cast<size_t>(n + 1));
   for (int k = 0; k <= n; ++k) {
-    const double t = 0.5 * (1 - std::cos(std::numbers::pi * k / n));
-    bernstein_values(n, t, B.data());
+    bernstein_values(n, t(k), B.data());
     for (int i = 0; i <= n; ++i) A(k, i) = B[static_cast<size_t>(i)];
-    rhs.row(k) = curve.evaluate(t).transpose();
   }
-  Eigen::MatrixX3d P = A.partialPivLu().solve(rhs);
+  Eigen::MatrixX3d P = A.partialPivLu().solve(Q);
   P.row(0) = curve.evaluate(0.0).transpose();
   P.row(n) = curve.evaluate(1.0).transpose();
   return {P, "interpolation"};

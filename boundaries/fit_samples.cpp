@@ -235,7 +235,15 @@ SampleFit fit_samples_orthogonal_constrained(const Eigen::MatrixX3d& P, const Ei
                                              const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G) {
   const int n = static_cast<int>(P.rows()) - 1;
   if (n < 2 || G.rows() != 3 * (n - 1) || t.size() != q.rows() || t.size() < 2)
-    throw SizeError("fit_samples_orthogonal_constrained: sizes do not match");
+    throw SizeError("fit_samples_orthogonal_constrained: expected P of degree >= 2, G with 3(n-1) = " +
+                    std::to_string(3 * std::max(n - 1, 0)) + " rows and one parameter per sample; got degree " +
+                    std::to_string(n) + ", " + std::to_string(G.rows()) + " rows, " + std::to_string(t.size()) +
+                    " parameters for " + std::to_string(q.rows()) + " samples");
+  if (!P.allFinite() || !t.allFinite() || !q.allFinite() || !G.allFinite())
+    throw NonFiniteError("fit_samples_orthogonal_constrained: non-finite P, t, q or G");
+  for (Eigen::Index s = 1; s < t.size(); ++s)
+    if (!(t(s) > t(s - 1)) || t(0) != 0 || t(t.size() - 1) != 1)
+      throw ParameterError("fit_samples_orthogonal_constrained: the parameters must increase strictly from 0 to 1");
   SampleFit out{P, t, true, 0};
   if (G.cols() == 0) return out;
   const Eigen::Index M = t.size() - 1;

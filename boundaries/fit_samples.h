@@ -51,7 +51,8 @@ SampleFit fit_samples_orthogonal(int n, const Eigen::VectorXd& t0, const Eigen::
 /// 3(n−1) x N, rows point-major: 3(i−1)+c for P_i's coordinate c), from the fit P (degree n >= 2,
 /// already in the constrained set) at the parameters t: Levenberg–Marquardt over z and the
 /// parameters, as above (100 iterations; 20 with more than 2049 samples). Used for the G¹ corners
-/// of fit_boundary.h (the end legs along given directions). SizeError when the sizes do not match.
+/// of fit_boundary.h (the end legs along given directions). SizeError when the sizes do not match,
+/// NonFiniteError for non-finite input, ParameterError unless t increases strictly from 0 to 1.
 SampleFit fit_samples_orthogonal_constrained(const Eigen::MatrixX3d& P, const Eigen::VectorXd& t,
                                              const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G);
 

@@ -571,6 +571,12 @@ TEST(FitBoundary, ConstrainedOrthogonalFitStaysInItsSubspace) {
   for (int i = 1; i < n; ++i) moved.segment<3>(3 * (i - 1)) = (back.points.row(i) - P.row(i)).transpose();
   EXPECT_LT((moved - G * (G.transpose() * moved)).norm(), 1e-14 * std::max(1.0, moved.norm()));
   EXPECT_THROW(bpde::fit_samples_orthogonal_constrained(P, best.params, q, Eigen::MatrixXd(14, 2)), bpde::SizeError);
+  Eigen::VectorXd bad = best.params;
+  std::swap(bad(3), bad(4));
+  EXPECT_THROW(bpde::fit_samples_orthogonal_constrained(P, bad, q, G), bpde::ParameterError);
+  bad = best.params;
+  bad(5) = NAN;
+  EXPECT_THROW(bpde::fit_samples_orthogonal_constrained(P, bad, q, G), bpde::NonFiniteError);
 }
 
 TEST(FitBoundary, BadDataThrowTypedErrors) {
