@@ -94,6 +94,43 @@ TEST(BoundaryCurves, BezierBSplineSegmentAndSamplesAgainstClosedForms) {
   EXPECT_DOUBLE_EQ(d.as_samples()->params(1), 0.25);
 }
 
+// exact_tangent (used to decide which corners are smooth, fit_boundary.h): the direction of c'
+// at each end, against finite differences of evaluate() (arc, helix, B-spline) and the first
+// non-zero difference of a Bézier polygon; none for samples and functions.
+TEST(BoundaryCurves, ExactTangentsAreTheDirectionsOfTheDerivative) {
+  auto same_direction = [](const Vector3d& a, const Vector3d& b) {
+    return a.normalized().cross(b.normalized()).norm() < 1e-6 && a.dot(b) > 0;
+  };
+  auto difference = [](const BoundaryCurve& c, bool at_end) {
+    const double h = 1e-7;
+    return at_end ? Vector3d((c.evaluate(1) - c.evaluate(1 - h)) / h) : Vector3d((c.evaluate(h) - c.evaluate(0)) / h);
+  };
+  Eigen::MatrixX3d Q(4, 3);
+  Q << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 1;
+  const BoundaryCurve curves[] = {
+      BoundaryCurve::arc(Vector3d(1, 2, 3), Vector3d(0, 1, 1), 1.5, 0.2, 2.4),
+      BoundaryCurve::arc(Vector3d::Zero(), Vector3d::UnitZ(), 1, 3.0, 1.0),  // clockwise
+      BoundaryCurve::helix(Vector3d::Zero(), Vector3d::UnitZ(), 2, 0.5, 4.0, 0.7),
+      BoundaryCurve::bspline(2, {0, 0, 0, 1, 2, 2, 2}, Q),
+      BoundaryCurve::bezier(Q),
+  };
+  for (const auto& c : curves)
+    for (bool at_end : {false, true}) {
+      ASSERT_TRUE(c.exact_tangent(at_end).has_value()) << c.kind();
+      EXPECT_TRUE(same_direction(*c.exact_tangent(at_end), difference(c, at_end))) << c.kind() << " " << at_end;
+    }
+  // The arc's value is c' itself: r (a1 - a0) at unit speed in angle.
+  EXPECT_NEAR(curves[0].exact_tangent(false)->norm(), 1.5 * 2.2, 1e-14);
+  // A Bézier curve whose first legs vanish: the first non-zero difference (P_2 - P_0 here).
+  Eigen::MatrixX3d D(4, 3);
+  D << 0, 0, 0, 0, 0, 0, 1, 2, 0, 3, 3, 3;
+  EXPECT_TRUE(same_direction(*BoundaryCurve::bezier(D).exact_tangent(false), Vector3d(1, 2, 0)));
+  Eigen::MatrixX3d S(3, 3);
+  S << 0, 0, 0, 1, 0, 0, 3, 0, 0;
+  EXPECT_FALSE(BoundaryCurve::samples(S).exact_tangent(false).has_value());
+  EXPECT_FALSE(BoundaryCurve::function([](double t) { return Vector3d(t, t * t, 0); }).exact_tangent(true));
+}
+
 TEST(BoundaryCurves, BadCurvesThrowTypedErrors) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(BoundaryCurve::bezier(Eigen::MatrixX3d::Zero(1, 3)), bpde::DegreeError);
