@@ -75,29 +75,42 @@
 // 8k+1 parameters), "interpolation" as least squares at the 4k+1 Chebyshev–Lobatto nodes, all
 // solved by QR (the Bernstein matrix reduced to its triangle, then the constrained problem on it);
 // corrected samples then have their parameters corrected again under the constraint
-// (fit_samples_orthogonal_constrained); an exactly elevated Bézier curve has its leg projected
-// onto d instead (it moves by at most |leg| kExactSmoothRadians; a leg of length 0 cannot be
-// projected: the corner is kept). An "interpolation" edge refitted so is reported as
-// "least-squares", and corrected samples add the iterations of the constrained correction to
-// `corrections`. A corner is kept as fitted when an edge at it has degree < 3, the constrained
-// problem is numerically rank deficient (QR threshold 1e-12; seen at degree 64, where the plain
+// (fit_samples_orthogonal_constrained), and so do the rows of every other curve (its points at
+// those 4k+1 or 8k+1 parameters, taken as samples: the orthogonal least squares, each row's
+// parameter on the fit moved to the foot point of its curve point; 500 iterations, first damping
+// 1e-12, each end leg held within ×2 of the least squares' length, fit_boundary.cpp). With its end
+// legs held, the least squares at the curve's own parameters errs to one side of the curve (the
+// circle's arcs: a mean radial error of 1.2e-5 at n = 5, where the interpolant's oscillates about
+// 0 with mean 9e-8); the corrected fit spends the freedom of the parametrisation on the distance
+// instead (reported with `parameters` "corrected" and the iterations as `corrections`). An
+// exactly elevated Bézier curve has its leg projected onto d instead (it moves by at most
+// |leg| kExactSmoothRadians; a leg of length 0 cannot be projected: the corner is kept). An
+// "interpolation" edge refitted so is reported as "least-squares", and corrected samples add the
+// iterations of the constrained correction to `corrections`. A corner is kept as fitted when an edge at it has degree <
+// 3, the constrained problem is numerically rank deficient (QR threshold 1e-12; seen at degree 64, where the plain
 // fit's corners are already smooth to rounding) or the constrained fit turns that corner's leg
 // around (a or b <= 0); the edges are then fitted again without it (the searched directions are
 // not searched again).
 // Cost: the search is O(k³) per trial; corrected samples pay one more constrained correction
 // (measured on four edges of 2001 samples: 3.2 s against 1.8 s kept at n = 8, 7.2 s against
-// 4.5 s at n = 32). The report gives
+// 4.5 s at n = 32); a curve's correction runs on 4k+1 rows (the circle's three arcs: 2 ms at
+// n = 8, 31 ms at n = 32). The report gives
 // each edge's end corner as "g1" or "kept" and its turning angle before the join.
-// The join costs accuracy: on that wavy curve the largest edge error changes by ×0.8 … ×1.45
-// (samples, n = 5 … 12); the arcs of the circle stay within 3x their interpolation error, but
-// the interpolant's error oscillates about 0 and the joined fit's does not, so integrals of the
-// result move more (the area of the circle's CMC cap: ×180 at n = 5, ×17 at n = 6; the table in
-// docs/boundaries.md, "Corners where the curve is smooth").
+// What the join costs or gains: on that wavy curve given as samples the largest edge error
+// changes by ×0.8 … ×1.45 (n = 5 … 12); given as functions, it falls ×3 … ×4.5 against the plain
+// interpolants (n = 6, 9, 12), though one edge alone may lose (×15 at n = 12 on an edge whose
+// plain error was far below the others'). The circle's arcs come ×63 … ×9e4 nearer the circle
+// than the interpolants (n = 4 … 8), and the area of its CMC cap with them (docs/boundaries.md,
+// "Corners where the curve is smooth", and FitBoundary.JoinedCurvesAreFittedGeometrically).
 //
 // The other control points are zero: every solver determines them (FORMATS.md "Jobs").
 // Errors (per edge): the maximum over 257 uniform parameters (samples: over the samples) of
 // |x_e(t) - c_e(t)|, with x_e the net's boundary curve: the parametric distance, an upper bound
-// of the geometric one. Tangent errors likewise with the net's cross derivative.
+// of the geometric one. A curve corrected at a joined corner (`parameters` "corrected"): the
+// geometric distance instead, the maximum over the 257 points c_e(t) of their distance to the foot
+// point on x_e (from the fit's parameter interpolated between its rows', Newton on
+// (x_e(τ) − c)·x_e'(τ) while the distance falls). Tangent errors likewise with the net's cross
+// derivative, always parametric.
 #include <optional>
 #include <string>
 #include <vector>
@@ -160,9 +173,13 @@ struct CurveFit {
   std::string method;
   /// Samples: the parameters of the fit (as given, chord length, or corrected); empty otherwise.
   Eigen::VectorXd params;
-  /// Samples: "given", "chord-length" or "corrected"; empty otherwise.
+  /// Samples: "given", "chord-length" or "corrected"; a curve refitted at a joined corner:
+  /// "corrected" (its rows' parameters corrected, above); empty otherwise.
   std::string parameters;
-  int corrections = 0;  ///< samples, "corrected": the rounds of the correction taken
+  int corrections = 0;  ///< "corrected": the iterations of the correction taken
+  /// A curve (not samples) corrected at a joined corner: the curve's parameters of its rows, whose
+  /// foot points on the fit are at `params` (same size); empty otherwise.
+  Eigen::VectorXd curve_params;
 };
 /// `correct` false keeps chord-length parameters of samples uncorrected (C¹ data: the tangent
 /// field is given in the edge's parameter).

@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "bezierpde/core/bernstein.h"
@@ -18,6 +19,8 @@ namespace {
 constexpr int kIterationsPerDegree = 100;
 constexpr double kRelativeDecrease = 1e-14;
 constexpr double kGradientTolerance = 1e-16;
+// The first damping, relative to the largest diagonal entry of the normal equations.
+constexpr double kInitialDamping = 1e-3;
 // The ladder's first degree (fit_samples.h, "Method").
 constexpr int kLadderStart = 3;
 // More samples than this: the ladder runs on this many of them (evenly spread by index, the ends
@@ -53,7 +56,8 @@ struct Model {
 // in its range, P_inner += G dz: the problem is solved over dz (the normal equations projected,
 // G^T A G, G^T C, G^T g; the damping on dz), as fit_samples_orthogonal_constrained needs.
 int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int max_iterations = kIterationsPerDegree,
-                  const Eigen::MatrixXd* G = nullptr) {
+                  const Eigen::MatrixXd* G = nullptr, double initial_damping = kInitialDamping,
+                  const std::function<bool(const Eigen::MatrixX3d&)>* admissible = nullptr) {
   const int n = m.n, k = 3 * (n - 1);
   const Eigen::Index M = t.size() - 1;
   std::vector<double> b(static_cast<size_t>(n + 1)), d(static_cast<size_t>(n));
@@ -97,7 +101,7 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
     }
     const double gnorm = std::max(g.cwiseAbs().maxCoeff(), gt.segment(1, M - 1).cwiseAbs().maxCoeff());
     if (!(gnorm > kGradientTolerance * std::max(1.0, std::sqrt(cost)))) break;
-    if (mu < 0) mu = 1e-3 * std::max(A.diagonal().maxCoeff(), ht.segment(1, M - 1).maxCoeff());
+    if (mu < 0) mu = initial_damping * std::max(A.diagonal().maxCoeff(), ht.segment(1, M - 1).maxCoeff());
     bool accepted = false;
     while (!accepted && it < max_iterations) {
       ++it;
@@ -128,6 +132,7 @@ int orthogonal_lm(const Model& m, Eigen::MatrixX3d& P, Eigen::VectorXd& t, int m
       Eigen::MatrixX3d Pn = P;
       for (int i = 1; ok && i < n; ++i)
         for (int c = 0; c < 3; ++c) Pn(i, c) += dp(3 * (i - 1) + c);
+      if (ok && admissible && *admissible) ok = (*admissible)(Pn);
       const double cn = ok ? m.cost(Pn, tn) : INFINITY;
       if (cn < cost) {
         // Gain ratio against the model's predicted decrease: (dp, dt)ᵀ(mu (dp, dt) − (g, gt)).
@@ -232,7 +237,8 @@ SampleFit fit_samples_orthogonal(int n, const Eigen::VectorXd& t0, const Eigen::
 }
 
 SampleFit fit_samples_orthogonal_constrained(const Eigen::MatrixX3d& P, const Eigen::VectorXd& t,
-                                             const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G) {
+                                             const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G,
+                                             const ConstrainedFitOptions& options) {
   const int n = static_cast<int>(P.rows()) - 1;
   if (n < 2 || G.rows() != 3 * (n - 1) || t.size() != q.rows() || t.size() < 2)
     throw SizeError("fit_samples_orthogonal_constrained: expected P of degree >= 2, G with 3(n-1) = " +
@@ -245,10 +251,16 @@ SampleFit fit_samples_orthogonal_constrained(const Eigen::MatrixX3d& P, const Ei
     if (!(t(s) > t(s - 1)) || t(0) != 0 || t(t.size() - 1) != 1)
       throw ParameterError("fit_samples_orthogonal_constrained: the parameters must increase strictly from 0 to 1");
   SampleFit out{P, t, true, 0};
+  if (!(options.max_iterations >= 1) || !(options.initial_damping > 0) || !std::isfinite(options.initial_damping))
+    throw ParameterError(
+        "fit_samples_orthogonal_constrained: max_iterations must be >= 1 and initial_damping a "
+        "finite number > 0");
   if (G.cols() == 0) return out;
   const Eigen::Index M = t.size() - 1;
-  out.iterations = orthogonal_lm(Model{n, q}, out.points, out.params,
-                                 M + 1 > kLadderSamples ? kFinalIterations : kIterationsPerDegree, &G);
+  out.iterations = orthogonal_lm(
+      Model{n, q}, out.points, out.params,
+      M + 1 > kLadderSamples ? std::min(kFinalIterations, options.max_iterations) : options.max_iterations, &G,
+      options.initial_damping, &options.admissible);
   return out;
 }
 

@@ -29,6 +29,7 @@
 // Shapes: q is (M+1) x 3 (M >= 1), t0 has M+1 entries, strictly increasing from 0 to 1.
 // Conventions: Bernstein coefficients P are (n+1) x 3, P_0 first (core/bernstein.h).
 #include <Eigen/Core>
+#include <functional>
 
 namespace bpde {
 
@@ -47,13 +48,26 @@ Eigen::MatrixX3d least_squares_at(int n, const Eigen::VectorXd& t, const Eigen::
 /// The orthogonal least-squares fit above, from the parameters t0. Throws as least_squares_at.
 SampleFit fit_samples_orthogonal(int n, const Eigen::VectorXd& t0, const Eigen::MatrixX3d& q);
 
+/// The iterations of fit_samples_orthogonal_constrained.
+struct ConstrainedFitOptions {
+  /// Levenberg–Marquardt iterations, >= 1 (with more than 2049 samples at most 20).
+  int max_iterations = 100;
+  /// The first damping relative to the largest diagonal entry of the normal equations, > 0. Small
+  /// where P is already near the optimum in the stiff directions and only the nearly free
+  /// reparametrisations are left (a curve's rows in fit_boundary.h: 1e-12).
+  double initial_damping = 1e-3;
+  /// Where set, a step is kept only where it returns true for the step's points ((n+1) x 3).
+  std::function<bool(const Eigen::MatrixX3d&)> admissible;
+};
+
 /// The same problem with the inner points constrained to P_inner = P_inner(start) + G z (G is
 /// 3(n−1) x N, rows point-major: 3(i−1)+c for P_i's coordinate c), from the fit P (degree n >= 2,
 /// already in the constrained set) at the parameters t: Levenberg–Marquardt over z and the
-/// parameters, as above (100 iterations; 20 with more than 2049 samples). Used for the G¹ corners
-/// of fit_boundary.h (the end legs along given directions). SizeError when the sizes do not match,
-/// NonFiniteError for non-finite input, ParameterError unless t increases strictly from 0 to 1.
+/// parameters, as above. Used for the G¹ corners of fit_boundary.h (the end legs along given
+/// directions). SizeError when the sizes do not match, NonFiniteError for non-finite input,
+/// ParameterError unless t increases strictly from 0 to 1, or for invalid options.
 SampleFit fit_samples_orthogonal_constrained(const Eigen::MatrixX3d& P, const Eigen::VectorXd& t,
-                                             const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G);
+                                             const Eigen::MatrixX3d& q, const Eigen::MatrixXd& G,
+                                             const ConstrainedFitOptions& options = {});
 
 }  // namespace bpde
