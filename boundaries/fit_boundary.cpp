@@ -543,7 +543,7 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool corr
     curve_rows(curve, 8 * n + 1, false, t, Q);
     return curve_fit(least_squares_at(n, t, Q), "least-squares");
   }
-  // Chebyshev–Lobatto interpolation (the same computation as fit_curve of reference_boundaries.h).
+  // Chebyshev–Lobatto interpolation (fit_curve of reference_boundaries.h calls this).
   curve_rows(curve, n + 1, true, t, Q);
   Eigen::MatrixXd A(n + 1, n + 1);
   std::vector<double> B(static_cast<size_t>(n + 1));

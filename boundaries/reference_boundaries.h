@@ -12,6 +12,8 @@
 #include <functional>
 #include <numbers>
 
+#include "bezierpde/boundaries/boundary_curves.h"
+#include "bezierpde/boundaries/fit_boundary.h"
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/tensor/tensor_net.h"
 #include "bezierpde/triangular/triangular_net.h"
@@ -19,21 +21,10 @@
 namespace bpde {
 
 /// Degree-n Bézier control points of the curve c(t), t in [0,1], interpolating it at the
-/// Chebyshev–Lobatto nodes (end points exact).
+/// Chebyshev–Lobatto nodes (end points exact): fit_edge of fit_boundary.h on the curve as a
+/// function, so that the reference nets and jobs' boundary curves share one interpolation.
 inline Eigen::MatrixX3d fit_curve(int n, const std::function<Eigen::Vector3d(double)>& c) {
-  Eigen::MatrixXd A(n + 1, n + 1);
-  Eigen::MatrixX3d rhs(n + 1, 3);
-  std::vector<double> b(static_cast<size_t>(n + 1));
-  for (int k = 0; k <= n; ++k) {
-    const double t = 0.5 * (1 - std::cos(std::numbers::pi * k / n));
-    bernstein_values(n, t, b.data());
-    for (int i = 0; i <= n; ++i) A(k, i) = b[static_cast<size_t>(i)];
-    rhs.row(k) = c(t).transpose();
-  }
-  Eigen::MatrixX3d P = A.partialPivLu().solve(rhs);
-  P.row(0) = c(0).transpose();
-  P.row(n) = c(1).transpose();
-  return P;
+  return fit_edge(BoundaryCurve::function(c), n, FitMethod::Interpolation).points;
 }
 
 /// Triangular net whose boundary fits the surface s(u,v) along the three edges (interior zero).

@@ -389,7 +389,9 @@ TEST(FitBoundary, CornersWhereTheCurveIsSmoothAreJoinedG1) {
       EXPECT_LT(fit.edges[c].max_error, 3 * arc_bound(n, 2 * kPi / 3, 1.0) + 1e-15) << n;
       EXPECT_LT(fit.edges[c].max_error, 3 * plain.edges[c].max_error + 1e-15) << n;
     }
-    if (n == 4) EXPECT_NEAR(*plain.edges[0].end_corner_turn, 0.841, 1e-3);
+    if (n == 4) {
+      EXPECT_NEAR(*plain.edges[0].end_corner_turn, 0.841, 1e-3);
+    }
   }
 
   // Samples of a smooth closed curve (no exact tangents: the estimated tier) cut into three edges

@@ -357,7 +357,9 @@ TEST(CmcMeanCurvature, C1DataMinimalSurfaceIsTheHelicoidPiece) {
     // the outer two rings are the data's
     for (int i = 0; i <= 6; ++i)
       for (int j = 0; j <= 6; ++j)
-        if (std::min({i, j, 6 - i, 6 - j}) <= 1) EXPECT_EQ((r.net.point(i, j) - data.point(i, j)).norm(), 0.0);
+        if (std::min({i, j, 6 - i, 6 - j}) <= 1) {
+          EXPECT_EQ((r.net.point(i, j) - data.point(i, j)).norm(), 0.0);
+        }
   }
 }
 
