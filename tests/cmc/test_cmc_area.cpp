@@ -843,7 +843,8 @@ TEST(CmcArea, MeanCurvatureStartGoesOnFromLeastSquaresAboveTheirTolerance) {
 // MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit). The way it ends here: the
 // triangular catenoid at n = 8 (H = 0), whose least squares stop at
 // √Φ 1.6e-4 and whose Newton iterations and final phases end at a stationary point of the first
-// variation's norm (7.2e-11, measured), where the routes from the D_H point converge.
+// variation's norm (7.2e-11, measured), where the routes from the D_H point converge; and in the
+// V form the same boundary at n = 7 (below).
 TEST(CmcArea, MeanCurvatureStartGivesWayAndRestoresWhatItChanged) {
   auto catenoid = [](double u, double v) {
     const double th = 1.2 * u + 0.4 * v, rho = 1.1 + 0.8 * v;
@@ -876,6 +877,29 @@ TEST(CmcArea, MeanCurvatureStartGivesWayAndRestoresWhatItChanged) {
   EXPECT_EQ(r.net.points(), off.net.points());
   EXPECT_EQ(r.H, off.H);
   EXPECT_EQ(r.summary.residual, off.summary.residual);
+
+  // The V form likewise (the volume and the multiplier H go back too): the same catenoid's
+  // boundary at n = 7 with V = 0.19 (its minimal surface encloses 0.158; the multiplier is
+  // H ≈ −0.472). Route 0's least squares stop at √Φ 1.3e-3 and its correction on A_H at 6.0e-10
+  // (measured); the route from the minimiser of D at V converges (1.4e-15).
+  const TriangularNet data7 = testing::triangular_boundary(7, catenoid);
+  CmcOptions o7 = area_options(0.0);
+  o7.V = 0.19;
+  const CmcResult<TriangularNet> rv = solve_cmc(data7, o7);
+  EXPECT_EQ(rv.summary.status, Status::Converged) << rv.summary.message;
+  EXPECT_NE(rv.summary.message.find("(route 0: the least-squares mean-curvature surface"), std::string::npos)
+      << rv.summary.message;
+  EXPECT_NE(rv.summary.message.find("above its tolerance) was corrected on A_H to "), std::string::npos)
+      << rv.summary.message;
+  CmcOptions o7off = o7;
+  o7off.area_start = AreaStart::Dirichlet;
+  const CmcResult<TriangularNet> offv = solve_cmc(data7, o7off);
+  EXPECT_EQ(rv.net.points(), offv.net.points());
+  EXPECT_EQ(rv.H, offv.H);
+  EXPECT_EQ(rv.V, offv.V);
+  EXPECT_EQ(rv.summary.residual, offv.summary.residual);
+  EXPECT_NEAR(rv.V, 0.19, 1e-11);
+  EXPECT_NEAR(rv.H, -0.4723, 1e-3);
 }
 
 // Route 0 by Ceres (the least squares and the corrector both by Ceres), H form, n = 10, H = -0.5.
