@@ -465,7 +465,8 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
     for (size_t e = 0; e < E; ++e) {
       const int d = static_cast<int>(maps[e].adj.size()) - 1;
       // A tangent field is read at the edge's parameter: samples of it are never corrected.
-      const CurveFit D = fit_edge(data.tangents[e], d, o.method, false);
+      const CurveFit D =
+          fit_edge(data.tangents[e], d, o.method == FitMethod::Geometric ? FitMethod::Interpolation : o.method, false);
       out.edges[e].tangent_curve = data.tangents[e].kind();
       out.edges[e].tangent_method = D.method;
       for (int s = 0; s <= d; ++s) {
@@ -513,7 +514,9 @@ void check_degree(int n, const char* what) {
 
 }  // namespace
 
-std::string to_string(FitMethod m) { return m == FitMethod::Interpolation ? "interpolation" : "least-squares"; }
+std::string to_string(FitMethod m) {
+  return m == FitMethod::Interpolation ? "interpolation" : m == FitMethod::LeastSquares ? "least-squares" : "geometric";
+}
 
 void BoundaryFitOptions::validate() const {
   if (!std::isfinite(corner_tolerance) || !(corner_tolerance > 0))
@@ -539,6 +542,15 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool corr
   }
   Eigen::VectorXd t;
   Eigen::MatrixX3d Q;
+  if (method == FitMethod::Geometric && correct && n >= 2) {
+    curve_rows(curve, 4 * n + 1, true, t, Q);
+    const SampleFit g = fit_samples_orthogonal(n, t, Q);
+    if (g.corrected) {
+      CurveFit f = curve_fit(g.points, "geometric", g.params, "corrected", g.iterations);
+      f.curve_params = t;
+      return f;
+    }
+  }
   if (method == FitMethod::LeastSquares) {
     curve_rows(curve, 8 * n + 1, false, t, Q);
     return curve_fit(least_squares_at(n, t, Q), "least-squares");

@@ -184,8 +184,10 @@ BoundaryNet boundary_from_json(const Json& j, const std::string& path) {
       o.method = FitMethod::Interpolation;
     else if (f == "least-squares")
       o.method = FitMethod::LeastSquares;
+    else if (f == "geometric")
+      o.method = FitMethod::Geometric;
     else
-      throw ParseError(path + ".fit: unknown fit \"" + f + "\" (expected interpolation or least-squares)");
+      throw ParseError(path + ".fit: unknown fit \"" + f + "\" (expected interpolation, least-squares or geometric)");
   }
   if (j.contains("corner_tolerance")) {
     o.corner_tolerance = number(j["corner_tolerance"], path + ".corner_tolerance");
