@@ -394,7 +394,8 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
             if (!samples) {
               const Eigen::Index k = r->rows() - 1;
               const double a0 = (r->row(1) - r->row(0)).norm(), b0 = (r->row(k) - r->row(k - 1)).norm();
-              options = {kCurveIterations, kCurveDamping, [=](const Eigen::MatrixX3d& P) {
+              // The directions by value, not the structured bindings (clang < 16 cannot capture those).
+              options = {kCurveIterations, kCurveDamping, [d0 = d0, d1 = d1, k, a0, b0](const Eigen::MatrixX3d& P) {
                            auto within = [](double x, double x0) { return x >= x0 / kLegRange && x <= x0 * kLegRange; };
                            return (!d0 || within((P.row(1) - P.row(0)).dot(d0->transpose()), a0)) &&
                                   (!d1 || within((P.row(k) - P.row(k - 1)).dot(d1->transpose()), b0));
@@ -406,7 +407,6 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
             if (!samples) {
               curve_params[g] = ls[g]->t;
               parameters[g] = "corrected";
-              corrections[g] = 0;
             }
             corrections[g] += c.iterations;
           }
@@ -432,8 +432,10 @@ BoundaryFit<NetT> fit_net(NetT net, const std::vector<EdgeMap>& maps, const Boun
     fits[g].curve_params = curve_params[g];
     fits[g].parameters = parameters[g];
     fits[g].corrections = corrections[g];
-    // An interpolant refitted at a joined corner is a least-squares fit (fit_boundary.h).
-    if ((joined[start] || joined[g]) && fits[g].method == "interpolation") fits[g].method = "least-squares";
+    // A curve refitted at a joined corner is a geometric fit (its rows corrected), whatever its
+    // own method was (fit_boundary.h).
+    if ((joined[start] || joined[g]) && !data.edges[g].as_samples() && fits[g].parameters == "corrected")
+      fits[g].method = "geometric";
   }
 
   Eigen::MatrixX3d& P = net.points();
@@ -544,11 +546,16 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool corr
   Eigen::MatrixX3d Q;
   if (method == FitMethod::Geometric && correct && n >= 2) {
     curve_rows(curve, 4 * n + 1, true, t, Q);
-    const SampleFit g = fit_samples_orthogonal(n, t, Q);
-    if (g.corrected) {
-      CurveFit f = curve_fit(g.points, "geometric", g.params, "corrected", g.iterations);
-      f.curve_params = t;
-      return f;
+    try {
+      const SampleFit g = fit_samples_orthogonal(n, t, Q);
+      if (g.corrected) {
+        CurveFit f = curve_fit(g.points, "geometric", g.params, "corrected", g.iterations);
+        f.curve_params = t;
+        return f;
+      }
+    } catch (const ParameterError&) {
+      // The nodes' least squares is numerically rank deficient (QR threshold 1e-12: high degrees,
+      // where the interpolant is at rounding anyway): the interpolant below.
     }
   }
   if (method == FitMethod::LeastSquares) {
@@ -577,15 +584,27 @@ double edge_error(const BoundaryCurve& curve, const Eigen::MatrixX3d& points) {
 double edge_error(const BoundaryCurve& curve, const CurveFit& fit) {
   const Eigen::MatrixX3d& points = fit.points;
   double err = 0;
+  // The largest distance; a NaN stays (fit_net refuses a non-finite error).
+  auto take = [&err](double x) {
+    if (!(x <= err) && !std::isnan(err)) err = x;
+  };
   if (const auto* s = curve.as_samples()) {
     const Eigen::VectorXd& t = fit.params.size() == s->params.size() ? fit.params : s->params;
-    for (Eigen::Index i = 0; i < t.size(); ++i)
-      err = std::max(err, (bezier_at(points, t(i)) - s->points.row(i).transpose()).norm());
+    for (Eigen::Index i = 0; i < t.size(); ++i) take((bezier_at(points, t(i)) - s->points.row(i).transpose()).norm());
     return err;
   }
   constexpr int kSamples = 256;
   const Eigen::VectorXd &s = fit.curve_params, &tf = fit.params;
-  const bool corrected = s.size() >= 2 && s.size() == tf.size();
+  const bool corrected = s.size() > 0;
+  if (corrected) {
+    bool ok = s.size() >= 2 && s.size() == tf.size() && s(0) == 0 && s(s.size() - 1) == 1 && tf.allFinite() &&
+              tf.minCoeff() >= 0 && tf.maxCoeff() <= 1;
+    for (Eigen::Index i = 1; ok && i < s.size(); ++i) ok = s(i) > s(i - 1);
+    if (!ok)
+      throw ParameterError("edge_error: curve_params (" + std::to_string(s.size()) +
+                           ") must increase strictly from 0 to 1, with as many params (" + std::to_string(tf.size()) +
+                           ") in [0, 1]");
+  }
   const int k = static_cast<int>(points.rows()) - 1;
   const Eigen::MatrixX3d D =
       k >= 1 ? Eigen::MatrixX3d(k * (points.bottomRows(k) - points.topRows(k))) : Eigen::MatrixX3d::Zero(1, 3);
@@ -594,7 +613,7 @@ double edge_error(const BoundaryCurve& curve, const CurveFit& fit) {
     const double t = static_cast<double>(j) / kSamples;
     const Eigen::Vector3d c = curve.evaluate(t);
     if (!corrected || k < 1) {
-      err = std::max(err, (bezier_at(points, t) - c).norm());
+      take((bezier_at(points, t) - c).norm());
       continue;
     }
     // A corrected curve: the distance from c(t) to its foot point on the fit, from the fit's
@@ -614,7 +633,7 @@ double edge_error(const BoundaryCurve& curve, const CurveFit& fit) {
       best = dist;
       tau = next;
     }
-    err = std::max(err, best);
+    take(best);
   }
   return err;
 }

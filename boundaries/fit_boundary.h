@@ -81,7 +81,8 @@
 // [-turn, 2 turn] from the incoming leg, two sweeps over the corners). Each edge at a joined corner
 // is then fitted again with its end leg along d, P_1 = P_0 + a d (or P_{k-1} = P_k - b d), a, b
 // free: the same least squares as its fit (samples at the fit's parameters, "least-squares" at its
-// 8k+1 parameters), "interpolation" as least squares at the 4k+1 Chebyshev–Lobatto nodes, all
+// 8k+1 parameters), "interpolation" and "geometric" as least squares at the 4k+1
+// Chebyshev–Lobatto nodes (a geometric edge restarts there, not from its own fit), all
 // solved by QR (the Bernstein matrix reduced to its triangle, then the constrained problem on it);
 // corrected samples then have their parameters corrected again under the constraint
 // (fit_samples_orthogonal_constrained), and so do the rows of every other curve (its points at
@@ -93,11 +94,12 @@
 // 0 with mean 9e-8); the corrected fit spends the freedom of the parametrisation on the distance
 // instead (reported with `parameters` "corrected" and the iterations as `corrections`). An
 // exactly elevated Bézier curve has its leg projected onto d instead (it moves by at most
-// |leg| kExactSmoothRadians; a leg of length 0 cannot be projected: the corner is kept). An
-// "interpolation" edge refitted so is reported as "least-squares", and corrected samples add the
-// iterations of the constrained correction to `corrections`. A corner is kept as fitted when an edge at it has degree <
-// 3, the constrained problem is numerically rank deficient (QR threshold 1e-12; seen at degree 64, where the plain
-// fit's corners are already smooth to rounding) or the constrained fit turns that corner's leg
+// |leg| kExactSmoothRadians; a leg of length 0 cannot be projected: the corner is kept). A curve
+// refitted so is reported as "geometric" whatever its own method, and every corrected edge adds
+// the iterations of the constrained correction to `corrections`. A corner is kept as fitted when
+// an edge at it has degree < 3, the constrained problem is numerically rank deficient (QR
+// threshold 1e-12; seen at degree 64, where the plain fit's corners are already smooth to
+// rounding) or the constrained fit turns that corner's leg
 // around (a or b <= 0); the edges are then fitted again without it (the searched directions are
 // not searched again).
 // Cost: the search is O(k³) per trial; corrected samples pay one more constrained correction
@@ -118,8 +120,10 @@
 // of the geometric one. A curve corrected at a joined corner (`parameters` "corrected"): the
 // geometric distance instead, the maximum over the 257 points c_e(t) of their distance to the foot
 // point on x_e (from the fit's parameter interpolated between its rows', Newton on
-// (x_e(τ) − c)·x_e'(τ) while the distance falls). Tangent errors likewise with the net's cross
-// derivative, always parametric.
+// (x_e(τ) − c)·x_e'(τ) while the distance falls). It is one-sided, from the curve to the fit: a
+// loop of the fit between foot points would not show (the correction starts at the curve's own
+// parameters and only lowers the distances at its rows, 4k+1 of them for degree k). Tangent
+// errors likewise with the net's cross derivative, always parametric.
 #include <optional>
 #include <string>
 #include <vector>
@@ -160,13 +164,13 @@ struct BoundaryFitOptions {
 struct EdgeFit {
   int edge = 0;
   std::string curve;   ///< the curve's kind
-  std::string method;  ///< "elevation", "interpolation" or "least-squares"
+  std::string method;  ///< "elevation", "interpolation", "least-squares" or "geometric"
   double max_error = 0;
   /// C¹ data: the tangent field's kind, method and error on the result.
   std::optional<std::string> tangent_curve, tangent_method;
   std::optional<double> tangent_max_error;
-  /// Samples: how their parameters were set ("given", "chord-length", "corrected") and the rounds
-  /// of the correction.
+  /// Samples: how their parameters were set ("given", "chord-length", "corrected"); a geometric
+  /// curve fit: "corrected". With the iterations of the correction.
   std::optional<std::string> parameters;
   std::optional<int> corrections;
   /// The corner at the edge's end (where the next edge starts): "g1" when joined, "kept" when not
@@ -180,24 +184,29 @@ struct EdgeFit {
 struct CurveFit {
   Eigen::MatrixX3d points;
   std::string method;
-  /// Samples: the parameters of the fit (as given, chord length, or corrected); empty otherwise.
+  /// Samples: the parameters of the fit (as given, chord length, or corrected); a geometric curve
+  /// fit: the parameters on the fit of its rows (`curve_params`); empty otherwise.
   Eigen::VectorXd params;
-  /// Samples: "given", "chord-length" or "corrected"; a curve refitted at a joined corner:
-  /// "corrected" (its rows' parameters corrected, above); empty otherwise.
+  /// Samples: "given", "chord-length" or "corrected"; a geometric curve fit ("geometric", or
+  /// refitted at a joined corner): "corrected"; empty otherwise.
   std::string parameters;
   int corrections = 0;  ///< "corrected": the iterations of the correction taken
-  /// A curve (not samples) corrected at a joined corner: the curve's parameters of its rows, whose
-  /// foot points on the fit are at `params` (same size); empty otherwise.
+  /// A geometric curve fit: the curve's parameters of its rows (4n+1 Chebyshev–Lobatto nodes, or
+  /// the rows of the join's refit), strictly increasing from 0 to 1, whose foot points on the fit
+  /// are at `params` (same size); empty otherwise.
   Eigen::VectorXd curve_params;
 };
-/// `correct` false keeps chord-length parameters of samples uncorrected (C¹ data: the tangent
-/// field is given in the edge's parameter).
+/// `correct` false keeps chord-length parameters of samples uncorrected and a "geometric" fit
+/// interpolating (C¹ data: the tangent field is given in the edge's parameter).
 CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method = FitMethod::Interpolation, bool correct = true);
 
 /// The maximum distance between the Bézier curve `points` and the curve (see above; samples at
 /// their own parameters).
 double edge_error(const BoundaryCurve& curve, const Eigen::MatrixX3d& points);
-/// The same for a fit, samples at the fit's parameters (the corrected ones where corrected).
+/// The same for a fit, samples at the fit's parameters (the corrected ones where corrected); a
+/// geometric curve fit (`curve_params` set): the geometric distance of Errors above. Throws
+/// ParameterError when curve_params and params do not correspond (sizes, order, range). A NaN
+/// anywhere gives NaN, never a smaller number.
 double edge_error(const BoundaryCurve& curve, const CurveFit& fit);
 
 template <class NetT>

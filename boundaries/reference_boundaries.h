@@ -22,7 +22,8 @@ namespace bpde {
 
 /// Degree-n Bézier control points of the curve c(t), t in [0,1], interpolating it at the
 /// Chebyshev–Lobatto nodes (end points exact): fit_edge of fit_boundary.h on the curve as a
-/// function, so that the reference nets and jobs' boundary curves share one interpolation.
+/// function, so that the reference nets and jobs' boundary curves share one interpolation (and
+/// its DegreeError outside 1..kMaxDegree).
 inline Eigen::MatrixX3d fit_curve(int n, const std::function<Eigen::Vector3d(double)>& c) {
   return fit_edge(BoundaryCurve::function(c), n, FitMethod::Interpolation).points;
 }

@@ -460,10 +460,6 @@ TEST(FitBoundary, CornersWhereTheCurveIsSmoothAreJoinedG1) {
   for (const auto& f : low.edges) EXPECT_EQ(f.end_corner, "kept");
 }
 
-// A corner between an exact tangent and an estimated one takes the exact direction; an exactly
-// elevated Bézier curve at a joined corner has its leg projected (it moves only by rounding where
-// its tangent is the other curve's). The unit circle as an arc (edge 0), samples (edge 1) and the
-// cubic Bézier quarter-circle construction over the last third (edge 2: end tangents exact).
 // The largest distance of a Bézier polygon's points from the circle |x − c| = r in the plane
 // through c normal to N, and the mean of |x − c| − r over the angle swept (the trapezoidal rule on
 // 4001 points): measured on the curve, not on the fit's parameters.
@@ -512,7 +508,7 @@ TEST(FitBoundary, JoinedCurvesAreFittedGeometrically) {
       EXPECT_LT(dist, std::max(dist_plain / 20, 2e-14)) << n << " edge " << k;
       EXPECT_LT(std::abs(mean), std::max(std::abs(mean_plain) / 20, 2e-15)) << n << " edge " << k;
       EXPECT_EQ(fit.edges[k].end_corner, "g1");
-      EXPECT_EQ(fit.edges[k].method, "least-squares");
+      EXPECT_EQ(fit.edges[k].method, "geometric");
       EXPECT_EQ(fit.edges[k].parameters, "corrected");
       EXPECT_GT(*fit.edges[k].corrections, 0);
       EXPECT_FALSE(plain.edges[k].parameters.has_value());
@@ -648,8 +644,37 @@ TEST(FitBoundary, GeometricFitFollowsTheCurveNotItsParametrisation) {
     EXPECT_FALSE(e.parameters.has_value());
     EXPECT_EQ(*e.tangent_method, "interpolation");
   }
+  // With the G¹ join (the circle's arcs meet smoothly): refitted under the constraint from the
+  // least squares at the nodes, still reported geometric, and its correction's iterations added
+  // to the edge's own; as near the circle as the joined interpolants' refit.
+  bpde::BoundaryFitOptions geo_joined;
+  geo_joined.method = bpde::FitMethod::Geometric;
+  for (int n : {5, 8}) {
+    const auto j = bpde::fit_triangular_boundary(n, bpde::circle_three_arcs_curves(), geo_joined);
+    const auto i = bpde::fit_triangular_boundary(n, bpde::circle_three_arcs_curves());
+    const auto own = bpde::fit_edge(curves[0], n, bpde::FitMethod::Geometric);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(j.edges[k].end_corner, "g1");
+      EXPECT_EQ(j.edges[k].method, "geometric");
+      EXPECT_EQ(i.edges[k].method, "geometric");
+      EXPECT_GT(*j.edges[k].corrections, own.corrections) << n;
+      EXPECT_LT(j.edges[k].max_error, 2 * i.edges[k].max_error + 1e-15) << n;
+    }
+  }
+  // Degree 1 is the chord whatever the fit; degree 2 is corrected; at degree 64 the nodes' least
+  // squares is rank deficient to the QR threshold and the interpolant (at rounding) is returned.
+  EXPECT_EQ(bpde::fit_edge(curves[0], 1, bpde::FitMethod::Geometric).method, "interpolation");
+  const auto q = bpde::fit_edge(curves[0], 2, bpde::FitMethod::Geometric);
+  EXPECT_EQ(q.method, "geometric");
+  EXPECT_LT(bpde::edge_error(curves[0], q), 0.5 * bpde::edge_error(curves[0], bpde::fit_edge(curves[0], 2)));
+  const auto hd = bpde::fit_edge(curves[0], 64, bpde::FitMethod::Geometric);
+  EXPECT_LT(bpde::edge_error(curves[0], hd), 1e-13) << hd.method;
 }
 
+// A corner between an exact tangent and an estimated one takes the exact direction; an exactly
+// elevated Bézier curve at a joined corner has its leg projected (it moves only by rounding where
+// its tangent is the other curve's). The unit circle as an arc (edge 0), samples (edge 1) and the
+// cubic Bézier quarter-circle construction over the last third (edge 2: end tangents exact).
 TEST(FitBoundary, MixedCornersTakeTheExactTangent) {
   const double a0 = 4 * kPi / 3, third = 2 * kPi / 3;
   auto circle = [](double a) { return Vector3d(std::cos(a), std::sin(a), 0); };
@@ -683,7 +708,7 @@ TEST(FitBoundary, MixedCornersTakeTheExactTangent) {
   // The elevated cubic is kept to rounding; the arc and the samples were fitted again.
   EXPECT_EQ(fit.edges[2].method, "elevation");
   EXPECT_LT((e[2] - p[2]).cwiseAbs().maxCoeff(), 1e-15);
-  EXPECT_EQ(fit.edges[0].method, "least-squares");  // the arc's interpolant, refitted
+  EXPECT_EQ(fit.edges[0].method, "geometric");  // the arc's interpolant, refitted geometrically
   EXPECT_EQ(plain.edges[0].method, "interpolation");
   EXPECT_GT((e[0] - p[0]).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_GT((e[1] - p[1]).cwiseAbs().maxCoeff(), 1e-9);
@@ -786,6 +811,24 @@ TEST(FitBoundary, BadDataThrowTypedErrors) {
   // A helix whose rise overflows at its end point.
   h.edges[0] = BoundaryCurve::helix(Vector3d::Zero(), Vector3d(0, 0, 1), 1, 0, 1e10, 1e308);
   EXPECT_THROW(bpde::fit_triangular_boundary(4, h), bpde::NonFiniteError);
+  // edge_error of a corrected fit checks the correspondence it is given, and keeps a NaN.
+  const BoundaryCurve arc = BoundaryCurve::arc(Vector3d::Zero(), Vector3d::UnitZ(), 1, 0, 2.0);
+  bpde::CurveFit f = bpde::fit_edge(arc, 5, bpde::FitMethod::Geometric);
+  ASSERT_EQ(f.parameters, "corrected");
+  bpde::CurveFit bad = f;
+  bad.curve_params(2) = bad.curve_params(1);  // not increasing
+  EXPECT_THROW(bpde::edge_error(arc, bad), bpde::ParameterError);
+  bad = f;
+  bad.params.conservativeResize(bad.params.size() - 1);  // sizes differ
+  EXPECT_THROW(bpde::edge_error(arc, bad), bpde::ParameterError);
+  bad = f;
+  bad.params(3) = 1.5;  // outside [0, 1]
+  EXPECT_THROW(bpde::edge_error(arc, bad), bpde::ParameterError);
+  bad = f;
+  bad.points(2, 0) = NAN;
+  EXPECT_TRUE(std::isnan(bpde::edge_error(arc, bad)));
+  bad.curve_params.resize(0);  // the parametric distance: NaN too
+  EXPECT_TRUE(std::isnan(bpde::edge_error(arc, bad)));
 }
 
 }  // namespace
