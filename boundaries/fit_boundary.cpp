@@ -549,7 +549,13 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool corr
     try {
       const SampleFit g = fit_samples_orthogonal(n, t, Q);
       if (g.corrected) {
-        CurveFit f = curve_fit(g.points, "geometric", g.params, "corrected", g.iterations);
+        // The ladder ends where its 100 iterations at degree n crawl along the nearly free
+        // reparametrisations; a last run with every inner point free and the curves' settings
+        // (kCurveIterations, kCurveDamping) goes on from there (fit_boundary.h).
+        const SampleFit h = fit_samples_orthogonal_constrained(
+            g.points, g.params, Q, Eigen::MatrixXd::Identity(3 * (n - 1), 3 * (n - 1)),
+            ConstrainedFitOptions{kCurveIterations, kCurveDamping, {}});
+        CurveFit f = curve_fit(h.points, "geometric", h.params, "corrected", g.iterations + h.iterations);
         f.curve_params = t;
         return f;
       }

@@ -33,9 +33,10 @@
 //     or least squares over 8n+1 uniform parameters with the end points fixed ("least-squares"),
 //     or the orthogonal least squares of fit_samples.h over its points at the 4n+1
 //     Chebyshev–Lobatto nodes ("geometric": each node's parameter on the fit moves to the foot
-//     point of its curve point, from the nodes themselves). The geometric fit follows the curve,
+//     point of its curve point, from the nodes themselves: the degree ladder of fit_samples.h,
+//     then 500 iterations at degree n with first damping 1e-12). The geometric fit follows the curve,
 //     not its parametrisation: on a 120° arc 1.4e-8 from the circle at n = 5 where the
-//     interpolant is 1.1e-4 away, on a catenoid's edge 9.0e-8 against 3.6e-4 at n = 6
+//     interpolant is 1.1e-4 away, on a catenoid's edge 2.0e-8 against 3.6e-4 at n = 6
 //     (docs/boundaries.md, "Geometric fits"). For the functionals that do not depend on the
 //     boundary's parametrisation (area, mean curvature); the Dirichlet functional's result does.
 //     Not with C¹ data (the tangent field is given in the edge's parameter: interpolation then),

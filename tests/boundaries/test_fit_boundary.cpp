@@ -586,10 +586,10 @@ TEST(FitBoundary, GeometricFitFollowsTheCurveNotItsParametrisation) {
   // fit "geometric": the orthogonal least squares over the curve's points at 4n+1
   // Chebyshev–Lobatto nodes. Its distance from the curve (brute force, distance_to_bezier on 257
   // points) against the interpolant's, measured: a 120° arc 1.4e-8 against 1.1e-4 (n = 5),
-  // 4.3e-11 against 3.5e-6 (n = 6); a catenoid's edge (the w = 0 edge of the tests' piece) 2.7e-6
-  // against 9.4e-4 (5), 9.0e-8 against 3.6e-4 (6), 5.8e-10 against 6.3e-5 (8); a helix-like
-  // space curve 1.4e-5 against 9.2e-4 (5), 3.7e-10 against 4.6e-7 (8). Bound: ×30 below the
-  // interpolant. The reported max_error is that distance.
+  // 4.3e-11 against 3.5e-6 (n = 6), 2.9e-13 against 1.3e-8 (8); a catenoid's edge (the w = 0
+  // edge of the tests' piece) 1.9e-6 against 9.4e-4 (5), 2.0e-8 against 3.6e-4 (6), 2.6e-10
+  // against 6.3e-5 (8); a helix-like space curve 1.4e-5 against 9.2e-4 (5), 1.2e-10 against
+  // 4.6e-7 (8). Bound: ×30 below the interpolant. The reported max_error is that distance.
   auto catenoid = [](double u, double v) {
     const double th = 1.2 * u + 0.4 * v, rho = 1.1 + 0.8 * v;
     return Vector3d(rho * std::cos(th), rho * std::sin(th), std::acosh(rho));
