@@ -37,7 +37,8 @@
 //     then 500 iterations at degree n with first damping 1e-12). The geometric fit follows the curve,
 //     not its parametrisation: on a 120° arc 1.4e-8 from the circle at n = 5 where the
 //     interpolant is 1.1e-4 away, on a catenoid's edge 2.0e-8 against 3.6e-4 at n = 6
-//     (docs/boundaries.md, "Geometric fits"). For the functionals that do not depend on the
+//     (docs/boundaries.md, "Geometric fits"; cost: 1.4 ms at n = 8, 0.11 s at n = 32 per edge,
+//     against 0.04 ms for the interpolant). For the functionals that do not depend on the
 //     boundary's parametrisation (area, mean curvature); the Dirichlet functional's result does.
 //     Not with C¹ data (the tangent field is given in the edge's parameter: interpolation then),
 //     and where the correction does not lower the sum of squares at the nodes, the interpolant.
