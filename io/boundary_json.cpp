@@ -161,7 +161,7 @@ BoundaryCurve curve_from_json(const Json& j, const std::string& path) {
                    "\" (expected bezier, bspline, samples, segment, arc or helix)");
 }
 
-BoundaryNet boundary_from_json(const Json& j, const std::string& path) {
+BoundaryNet boundary_from_json(const Json& j, const std::string& path, FitMethod default_fit) {
   using namespace json_read;
   require_object(j, path);
   const std::string type = string(field(j, path, "type"), path + ".type");
@@ -178,6 +178,7 @@ BoundaryNet boundary_from_json(const Json& j, const std::string& path) {
     n = degree_value(dj, path + ".degree");
   }
   BoundaryFitOptions o;
+  o.method = default_fit;
   if (j.contains("fit")) {
     const std::string f = string(j["fit"], path + ".fit");
     if (f == "interpolation")

@@ -24,8 +24,11 @@ struct BoundaryNet {
 BoundaryCurve curve_from_json(const Json& j, const std::string& path);
 
 /// The whole "boundary" object (path e.g. "job.boundary"); the same exceptions, and the fit's
-/// (corners that do not meet: ParameterError naming the edges and the gap).
-BoundaryNet boundary_from_json(const Json& j, const std::string& path);
+/// (corners that do not meet: ParameterError naming the edges and the gap). `default_fit` is the
+/// method when the object has no "fit": a job passes Geometric for the area and mean-curvature
+/// functionals and Interpolation otherwise (io/job.cpp, FORMATS.md "Boundary curves").
+BoundaryNet boundary_from_json(const Json& j, const std::string& path,
+                               FitMethod default_fit = FitMethod::Interpolation);
 
 /// The report's `boundary_fit`: [{edge, curve, method, max_error[, tangent_curve, tangent_method,
 /// tangent_max_error]}, ...].

@@ -192,6 +192,20 @@ Problem problem_from_json(const Json& j, const std::string& path) {
   return p;
 }
 
+// The default `fit` of a "boundary" form (FORMATS.md, "Boundary curves"): "geometric" for the
+// functionals whose results do not depend on the boundary's parametrisation (area and
+// mean-curvature: only the curve matters, and the orthogonal least squares follows it 60 ... 1e7
+// times more closely than the interpolant at n = 4 ... 10), "interpolation" for every other problem
+// (the paper's D_H and the extremals depend on the parametrisation the curve is given in). Only a
+// peek: the problem is checked in full afterwards, and a malformed one fails there.
+FitMethod default_boundary_fit(const Json& j) {
+  if (!j.is_object() || !j.contains("problem")) return FitMethod::Interpolation;
+  const Json& p = j["problem"];
+  if (!p.is_object() || !p.contains("functional") || !p["functional"].is_string()) return FitMethod::Interpolation;
+  const std::string f = p["functional"].get<std::string>();
+  return f == "area" || f == "mean-curvature" ? FitMethod::Geometric : FitMethod::Interpolation;
+}
+
 }  // namespace
 
 Job parse_job(const Json& j, const std::string& source) {
@@ -204,7 +218,7 @@ Job parse_job(const Json& j, const std::string& source) {
   if (j.contains("net"))
     job.net = net_from_json(j["net"], source + ".net");
   else
-    b = boundary_from_json(j["boundary"], source + ".boundary");
+    b = boundary_from_json(j["boundary"], source + ".boundary", default_boundary_fit(j));
   if (j.contains("fixed")) job.fixed = fixed_from_string(string(j["fixed"], source + ".fixed"), source + ".fixed");
   if (b) {
     if (job.fixed == FixedSet::BoundaryAdjacent && !b->c1)

@@ -118,10 +118,13 @@ TEST(BoundaryJobs, CircleArcsJobEqualsTheControlPointJob) {
 // converges, and the cap's area is at least as near the exact one as with the interpolants
 // (measured 2.5e-7 against 4.5e-7).
 TEST(BoundaryJobs, GeometricFitIsReportedAndSolved) {
-  auto job = [](const std::string& fit) {
-    return R"({"boundary": {"type": "triangular", "degree": 5, "builder": "circle-three-arcs", "fit": ")" + fit +
-           R"(", "smooth_corner_angle": 0}, "fixed": "boundary",
-               "problem": {"kind": "cmc", "H": -0.5, "functional": "area"}, "samples": 8})";
+  // fit "" leaves "fit" out: the default, by the functional.
+  auto job = [](const std::string& fit, const std::string& functional = "area") {
+    return R"({"boundary": {"type": "triangular", "degree": 5, "builder": "circle-three-arcs", )" +
+           (fit.empty() ? std::string() : R"("fit": ")" + fit + R"(", )") +
+           R"("smooth_corner_angle": 0}, "fixed": "boundary",
+               "problem": {"kind": "cmc", "H": -0.5, "functional": ")" +
+           functional + R"("}, "samples": 8})";
   };
   const Json g = solve(write("geometric_fit.json", job("geometric")), "geometric_fit");
   const Json p = solve(write("interpolated_fit.json", job("interpolation")), "interpolated_fit");
@@ -140,6 +143,23 @@ TEST(BoundaryJobs, GeometricFitIsReportedAndSolved) {
   EXPECT_TRUE(p["report"]["converged"].get<bool>());
   EXPECT_LT(std::abs(g["report"]["area"].get<double>() - A), 1e-6);
   EXPECT_LT(std::abs(g["report"]["area"].get<double>() - A), 1.2 * std::abs(p["report"]["area"].get<double>() - A));
+
+  // Without "fit" the area and mean-curvature functionals get the geometric fit (the same net, bit
+  // for bit), the paper's Dirichlet functional the interpolant.
+  const Json da = solve(write("default_fit_area.json", job("")), "default_fit_area");
+  EXPECT_EQ(net_difference(da, g), 0.0);
+  // (The mean-curvature least squares stops above its tolerance at this degree: exit 1.)
+  const Json dm = solve(write("default_fit_mc.json", job("", "mean-curvature")), "default_fit_mc", 1);
+  const Json dd = solve(write("default_fit_dirichlet.json", job("", "dirichlet")), "default_fit_dirichlet");
+  const Json dp =
+      solve(write("interpolated_fit_dirichlet.json", job("interpolation", "dirichlet")), "interpolated_fit_dirichlet");
+  EXPECT_EQ(net_difference(dd, dp), 0.0);
+  for (int e = 0; e < 3; ++e) {
+    EXPECT_EQ(da["report"]["boundary_fit"][e]["method"], "geometric");
+    EXPECT_EQ(dm["report"]["boundary_fit"][e]["method"], "geometric");
+    EXPECT_EQ(dd["report"]["boundary_fit"][e]["method"], "interpolation");
+    EXPECT_EQ(dm["report"]["boundary_fit"][e]["max_error"], g["report"]["boundary_fit"][e]["max_error"]);
+  }
 }
 
 // A tensor job whose edges are the Bézier rows of its net at the net's degree is the same job:
