@@ -185,13 +185,14 @@ std::string csv_cell(const Json& v) {
 
 }  // namespace
 
-const std::vector<std::string> kSweepResultColumns = {"status",       "exit_code",
-                                                      "converged",    "energy",
-                                                      "residual",     "H",
-                                                      "H_min",        "H_max",
-                                                      "H_mean",       "check_self_intersections",
-                                                      "check_closed", "check_volume",
-                                                      "seconds",      "error"};
+const std::vector<std::string> kSweepResultColumns = {"status",        "exit_code",
+                                                      "converged",     "energy",
+                                                      "residual",      "H",
+                                                      "H_min",         "H_max",
+                                                      "H_mean",        "check_self_intersections",
+                                                      "check_closed",  "check_volume",
+                                                      "seconds",       "error",
+                                                      "boundary_error"};
 
 SweepSpec sweep_from_json(const Json& j, const std::string& source, const std::string& base_dir) {
   json_read::require_object(j, source);
@@ -340,6 +341,15 @@ Json run_sweep_job(const SweepJob& job, const std::string& dir) {
     row["check_closed"] = field_or_null(ck, "closed");
     row["check_volume"] = field_or_null(ck, "volume");
     if (!out.converged) row["error"] = field_or_null(rep, "message");
+    // Boundary-form jobs: the largest fitting error of the edges (a degree axis shows the
+    // boundary converging with the surface).
+    if (rep.contains("boundary_fit") && rep["boundary_fit"].is_array()) {
+      double worst = 0;
+      for (const Json& e : rep["boundary_fit"])
+        if (e.contains("max_error") && e["max_error"].is_number())
+          worst = std::max(worst, e["max_error"].get<double>());
+      row["boundary_error"] = worst;
+    }
   } catch (...) {
     const ErrorExit e = error_exit(std::current_exception());
     row["status"] = e.code == 2 ? "invalid-input" : "internal-error";
@@ -367,6 +377,9 @@ Json finished_sweep_row(const SweepJob& job, const std::string& dir) {
     const int code = row["exit_code"].get<int>();
     if (code < 0 || code > 2) return nullptr;
     if (row.value("job", std::string()) != job.id) return nullptr;
+    // A row written before a column was added is run again, so that every row has every column.
+    for (const std::string& c : kSweepResultColumns)
+      if (!row.contains(c)) return nullptr;
     return row;
   } catch (...) {
     return nullptr;

@@ -78,11 +78,14 @@ extern const std::vector<std::string> kSweepResultColumns;
 ///   `bpde solve`), converged, energy, residual (report residual, else pde_residual), H (report H:
 ///   the requested H, or the last H reached before a fold), H_min,
 ///   H_max, H_mean (report mean_curvature), check_self_intersections, check_closed, check_volume,
-///   seconds (wall time of the job), error (one line, or the report's message when not converged).
+///   seconds (wall time of the job), error (one line, or the report's message when not converged),
+///   boundary_error (a job in the boundary form: the largest max_error of its report's
+///   boundary_fit; null otherwise).
 Json run_sweep_job(const SweepJob& job, const std::string& dir);
 
-/// The row of a job already run into `dir` (resume): row.json when job.json equals the job and
-/// its exit code is 0, 1 or 2 (internal errors are retried); null otherwise.
+/// The row of a job already run into `dir` (resume): row.json when job.json equals the job, its
+/// exit code is 0, 1 or 2 (internal errors are retried) and it has every column of
+/// kSweepResultColumns (a row of an older version is run again); null otherwise.
 Json finished_sweep_row(const SweepJob& job, const std::string& dir);
 
 struct SweepProgress {

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/json_io.h"
 
 namespace {
 
@@ -170,6 +171,7 @@ TEST(SweepRun, RowsThreadsResume) {
   EXPECT_EQ(rows[4]["H_mean"], result["report"]["mean_curvature"]["mean"]);
   EXPECT_EQ(rows[4]["check_self_intersections"], result["report"]["check"]["self_intersections"]);
   EXPECT_GE(rows[4]["seconds"].get<double>(), 0.0);
+  EXPECT_TRUE(rows[4]["boundary_error"].is_null());  // a net job: no boundary fit
 
   // Two threads: the same rows (but wall times), in index order.
   bpde::SweepRunOptions two;
@@ -202,6 +204,62 @@ TEST(SweepRun, RowsThreadsResume) {
   int k = 0;
   for (std::string line; std::getline(jsonl, line); ++k) EXPECT_EQ(Json::parse(line), rows3[static_cast<size_t>(k)]);
   EXPECT_EQ(k, 6);
+}
+
+// A base job in the boundary form (FORMATS.md "Boundary curves") with the degree as an axis: the
+// boundary is fitted at each job's degree, and the row's boundary_error is the largest max_error of
+// the report's boundary_fit. Corners kept (smooth_corner_angle 0), so the Dirichlet jobs get the
+// interpolant (docs/boundaries.md's table: 1.17e-3, 8.03e-6, 3.12e-8 at n = 4, 6, 8) and the area
+// jobs the geometric fit by default (3.0e-6 at n = 4, 4.3e-11 at n = 6).
+TEST(SweepRun, BoundaryFormWithTheDegreeAsAnAxis) {
+  const double third = 2 * std::numbers::pi / 3;
+  Json edges = Json::array();
+  for (int e = 0; e < 3; ++e)
+    edges.push_back({{"type", "arc"},
+                     {"center", {0, 0, 0}},
+                     {"normal", {0, 0, 1}},
+                     {"radius", 1},
+                     {"angles", {e == 0 ? -third : (e - 1) * third, e == 0 ? 0.0 : e * third}}});
+  Json spec = {{"base",
+                {{"boundary", {{"type", "triangular"}, {"degree", 3}, {"edges", edges}, {"smooth_corner_angle", 0}}},
+                 {"fixed", "boundary"},
+                 {"problem", {{"kind", "cmc"}, {"H", -0.5}}},
+                 {"samples", 8}}},
+               {"axes", {{"boundary.degree", {4, 6, 8}}, {"problem.functional", {"area", "dirichlet"}}}}};
+  const fs::path dir = tmp("boundary-form");
+  const std::vector<Json> rows = bpde::run_sweep(bpde::sweep_from_json(spec), dir.string());
+  ASSERT_EQ(rows.size(), 6u);
+  const double interpolated[3] = {1.17e-3, 8.03e-6, 3.12e-8};
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const Json result =
+        bpde::read_json_file((dir / "jobs" / rows[k]["job"].get<std::string>() / "result.json").string());
+    double worst = 0;
+    for (const Json& e : result["report"]["boundary_fit"]) worst = std::max(worst, e["max_error"].get<double>());
+    EXPECT_EQ(rows[k]["boundary_error"].get<double>(), worst) << k;
+    const bool area = rows[k]["problem.functional"] == "area";
+    const double interp = interpolated[k / 2];
+    if (area) {
+      EXPECT_EQ(result["report"]["boundary_fit"][0]["method"], "geometric");
+      EXPECT_LT(worst, 1e-2 * interp) << k;
+    } else {
+      EXPECT_EQ(result["report"]["boundary_fit"][0]["method"], "interpolation");
+      EXPECT_NEAR(worst, interp, 0.01 * interp) << k;
+    }
+    EXPECT_EQ(rows[k]["status"], "converged") << k << " " << rows[k].dump();
+  }
+  // A row.json without a column (written by an older version) is run again on resume.
+  const fs::path old_row = dir / "jobs" / rows[2]["job"].get<std::string>() / "row.json";
+  Json r = bpde::read_json_file(old_row.string());
+  r.erase("boundary_error");
+  std::ofstream(old_row) << r.dump() << "\n";
+  bpde::SweepRunOptions o;
+  int resumed = -1;
+  o.on_progress = [&resumed](const bpde::SweepProgress& p) {
+    if (!p.row) resumed = p.resumed;
+  };
+  const std::vector<Json> again = bpde::run_sweep(bpde::sweep_from_json(spec), dir.string(), o);
+  EXPECT_EQ(resumed, 5);
+  EXPECT_EQ(again[2]["boundary_error"], rows[2]["boundary_error"]);
 }
 
 TEST(SweepCsv, QuotingAndNumbers) {
