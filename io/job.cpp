@@ -201,7 +201,9 @@ Problem problem_from_json(const Json& j, const std::string& path) {
 FitMethod default_boundary_fit(const Json& j) {
   if (!j.is_object() || !j.contains("problem")) return FitMethod::Interpolation;
   const Json& p = j["problem"];
-  if (!p.is_object() || !p.contains("functional") || !p["functional"].is_string()) return FitMethod::Interpolation;
+  if (!p.is_object() || !p.contains("kind") || p["kind"] != "cmc" || !p.contains("functional") ||
+      !p["functional"].is_string())
+    return FitMethod::Interpolation;
   const std::string f = p["functional"].get<std::string>();
   return f == "area" || f == "mean-curvature" ? FitMethod::Geometric : FitMethod::Interpolation;
 }

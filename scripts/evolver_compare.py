@@ -139,7 +139,11 @@ class Case:
         self.functionals = functionals
 
     def job(self, degree, functional, mc_tolerance=None, start=None):
-        boundary = {"type": "triangular", "degree": degree, "builder": self.builder}
+        # The same boundary net for every functional: the interpolant, pinned (since 2026-12-06 a job
+        # without "fit" gets the geometric fit for the area and mean-curvature functionals, which
+        # would change the sphere case's boundary and the published tables; the circle's corners
+        # are joined, so its arcs are refitted geometrically either way).
+        boundary = {"type": "triangular", "degree": degree, "builder": self.builder, "fit": "interpolation"}
         problem = {"kind": "cmc", "H": self.H, "solver": "newton"}
         if functional != "dirichlet":
             problem["functional"] = functional

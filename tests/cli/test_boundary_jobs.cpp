@@ -29,6 +29,14 @@ Json solve(const fs::path& job, const std::string& out_name, int expected_status
   return bpde::read_json_file((out / "result.json").string());
 }
 
+// The same without a verdict on the exit code (0 or 1: a result.json is written either way).
+Json solve_any(const fs::path& job, const std::string& out_name) {
+  const fs::path out = tmpdir() / out_name;
+  const CmdResult r = run("solve " + job.string() + " --out " + out.string());
+  EXPECT_TRUE(r.status == 0 || r.status == 1) << job << "\n" << r.err;
+  return bpde::read_json_file((out / "result.json").string());
+}
+
 // The largest coordinate difference of the two result nets.
 double net_difference(const Json& a, const Json& b) {
   const Json &pa = a["net"]["points"], &pb = b["net"]["points"];
@@ -148,8 +156,9 @@ TEST(BoundaryJobs, GeometricFitIsReportedAndSolved) {
   // for bit), the paper's Dirichlet functional the interpolant.
   const Json da = solve(write("default_fit_area.json", job("")), "default_fit_area");
   EXPECT_EQ(net_difference(da, g), 0.0);
-  // (The mean-curvature least squares stops above its tolerance at this degree: exit 1.)
-  const Json dm = solve(write("default_fit_mc.json", job("", "mean-curvature")), "default_fit_mc", 1);
+  // (The mean-curvature least squares stops above its tolerance at this degree, exit 1; the test
+  // is about the fit, so it reads the report whatever the exit.)
+  const Json dm = solve_any(write("default_fit_mc.json", job("", "mean-curvature")), "default_fit_mc");
   const Json dd = solve(write("default_fit_dirichlet.json", job("", "dirichlet")), "default_fit_dirichlet");
   const Json dp =
       solve(write("interpolated_fit_dirichlet.json", job("interpolation", "dirichlet")), "interpolated_fit_dirichlet");
