@@ -396,7 +396,7 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     result fields, and the same net and numbers as the job route on the Fig. 1 circle."""
     o = bezierpde.CmcOptions()
     assert (o.functional, o.mean_curvature_tolerance, o.max_least_squares_iterations, o.geodesic_acceleration,
-            o.area_start) == ("dirichlet", 1e-6, 2000, True, "mean-curvature")
+            o.area_start, o.area_trust_region) == ("dirichlet", 1e-6, 2000, True, "mean-curvature", True)
     with pytest.raises(bezierpde.ParameterError, match="mean-curvature"):
         o.functional = "curvature"
     with pytest.raises(bezierpde.ParameterError, match="expected mean-curvature, dirichlet or minimal-surface"):

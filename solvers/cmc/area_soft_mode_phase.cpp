@@ -36,6 +36,26 @@
 // (a non-finite residual, h(s) not solved) restores h and the hard factor of the last good one.
 // The phase starts only within a relative first variation of 1e-6. It leaves p at the point with
 // the smallest residual it met.
+//
+// The trust-region part (CmcOptions::area_trust_region, default true; docs/cmc.md, "The
+// trust-region part of the soft-mode phase", 2026-12-06). Where the loop above stops above the
+// tolerance, the system is split again at the best point and A_H itself is minimised along the
+// valley floor: φ(s) = A_H(y0 + Vs s + Vh h(s)) has the gradient G(s) (the hard part of ∇A_H
+// vanishes on the floor) and the Hessian J, so trust-region Newton on φ needs nothing new but a
+// merit function. A_H's values cannot be it: along the soft modes they change by ‖G‖‖ds‖ ≈ 1e-11 ×
+// 1e-3, far below their rounding (1e-16 of the sum of the terms over thousands of nodes), which is
+// why every phase before judged its steps by ‖G‖, whose stationary points that are not critical
+// points are where they stopped. The change of φ along a step is instead measured by Simpson's
+// rule on G, ∫₀¹ G(s + τ ds)·ds dτ (trust_region_model.h), accurate to the rounding of G, which is
+// relative to its terms. A descent method on φ does not see the stationary points of ‖G‖; it finds
+// minima of A_H, so a critical point that is a saddle in the soft modes is left to the loop above.
+// Measured (docs/cmc.md): of the H-form cases that ended `numerical-limit` there, all but the
+// sphere triangle at n = 8 converge (the tensor catenoid at n = 10 in 22 trust-region steps, curve
+// A at n = 10 in 74). Where the reduced Hessian turns positive definite the last steps are Newton
+// steps inside the region (the helicoid piece at n = 4: one, from 6.8e-11 to 6.7e-12; the catenoid
+// boundary at n = 8, H = 0.12: five, of lengths 1.8e-2 … 5.3e-4, to 1.4e-12); elsewhere the first
+// variation falls below the tolerance on the way down the valley (the tensor catenoid at n = 10,
+// the lowest eigenvalue still −1.1e-6 of the largest at the last step).
 #include <ceres/ceres.h>
 
 #include <Eigen/Eigenvalues>
@@ -47,6 +67,7 @@
 #include "bezierpde/solvers/cmc/ceres_lm_options.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/levenberg_marquardt.h"
+#include "bezierpde/solvers/cmc/trust_region_model.h"
 
 namespace bpde::cmc_detail {
 
@@ -93,6 +114,17 @@ constexpr double kStationary = 1e-3;
 // step) the hard modes are not converged and the phase would only cost time.
 constexpr double kSoftPhaseStart = 1e-6;
 
+// The trust-region part (minimise_trust_region): acceptance and radius updates (Nocedal–Wright,
+// Algorithm 4.1, with the radius halved, not quartered, on a poor step: the valley is long and the
+// steps that work are near the largest that do), the first radius relative to ‖y‖_C, and the
+// smallest. kTrRegular: a step may not lower the smallest |x_u ∧ x_v| / mean at the nodes below
+// this fraction of the start's: on the sphere triangle at n = 8 the descent otherwise ends at a
+// critical point whose parametrisation degenerates (|x_u ∧ x_v| down to 4.5e-4 of its mean,
+// measured), which route 0 finds too; the phase keeps to the regular surfaces near its start.
+constexpr double kTrAccept = 0.1, kTrShrinkBelow = 0.25, kTrGrowAbove = 0.75;
+constexpr double kFirstRadius = 1e-3, kTrSmallestRadius = 1e-14;
+constexpr double kTrRegular = 0.25;
+
 // The reduced system at the point p holds when it is built (the split point y0).
 class SoftModeSystem {
  public:
@@ -135,6 +167,8 @@ class SoftModeSystem {
     return true;
   }
   double best_residual() const { return best_r_; }
+  /// min |x_u ∧ x_v| / mean at the nodes (AreaForm::min_normal) of the point last evaluated.
+  double min_normal() const { return p_.a->min_normal(p_.P()); }
   const Eigen::VectorXd& best_point() const { return best_y_; }
   /// ‖JᵀG‖ / (‖J‖_F ‖G‖) at s (+inf when s cannot be evaluated): 0 at a stationary point of ‖G‖.
   double stationarity(const Eigen::VectorXd& s) {
@@ -251,6 +285,43 @@ SoftOutcome minimise_newton(SoftModeSystem& sys, double tol, int max_iterations)
   return {lm.iterations, lm.stop == LsStop::NoStep && sys.stationarity(s) <= kStationary};
 }
 
+// Trust-region Newton on φ(s) = A_H(y0 + Vs s + Vh h(s)), A_H along the floor of the valley
+// (the hard modes solved): ∇φ = G (the hard part of the gradient vanishes), its Hessian the Schur
+// complement J. The step minimises G·c + ½cᵀJc over ‖c‖ <= radius (trust_region_model.h); the
+// change of φ along it is measured by Simpson's rule on G, ρ = that / the model's, and the step is
+// taken when ρ > kTrAccept and the parametrisation stays as regular as kTrRegular of the start's.
+// s is in C-orthonormal coordinates, so the radius is in the C-norm. Returns the steps tried.
+int minimise_trust_region(SoftModeSystem& sys, double tol, int max_iterations, double radius) {
+  const Eigen::Index n = sys.size();
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(n), G, Gm, G1;
+  Eigen::MatrixXd J;
+  if (!sys.evaluate(s, G, &J)) return 0;
+  const double regular = kTrRegular * sys.min_normal();
+  int it = 0;
+  while (it < max_iterations && sys.best_residual() > tol && radius > kTrSmallestRadius) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (J + J.transpose()));
+    if (es.info() != Eigen::Success) break;
+    const TrustRegionModel m{es.eigenvalues(), es.eigenvectors().transpose() * G, es.eigenvectors()};
+    const Eigen::VectorXd c = m.step(radius);
+    const double pred = m.decrease(c);
+    ++it;
+    if (!(c.allFinite() && pred > 0)) break;
+    const Eigen::VectorXd ds = m.V * c;
+    const bool ok =
+        sys.evaluate(s + 0.5 * ds, Gm, nullptr) && sys.evaluate(s + ds, G1, nullptr) && sys.min_normal() >= regular;
+    const double rho = ok ? -simpson_change(G, Gm, G1, ds) / pred : -std::numeric_limits<double>::infinity();
+    if (rho > kTrAccept) {
+      s += ds;
+      if (!sys.evaluate(s, G, &J)) break;
+    }
+    if (!(rho >= kTrShrinkBelow))
+      radius = 0.5 * c.norm();
+    else if (rho > kTrGrowAbove && c.norm() > 0.99 * radius)
+      radius *= 2;
+  }
+  return it;
+}
+
 // G(s) as one Ceres residual block on one parameter block, divided by `scale`.
 class ReducedFirstVariation final : public ceres::CostFunction {
  public:
@@ -341,6 +412,21 @@ CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& 
     }
     p.set(sys.best_point());
     st.residual = sys.best_residual();
+    if (o.area_trust_region && st.residual > o.tolerance && std::isfinite(st.residual)) {
+      // Trust-region Newton on A_H along the valley floor, from a new split at the best point.
+      SoftModeSystem tr(p, H, o.tolerance);
+      if (tr.ok()) {
+        const Eigen::VectorXd y = p.get();
+        const double radius = kFirstRadius * std::sqrt(std::max(y.dot(p.C * y), 0.0));
+        st.trust_region_iterations = minimise_trust_region(tr, o.tolerance, max_iterations, radius);
+        st.iterations += st.trust_region_iterations;
+        if (tr.best_residual() < st.residual) {
+          p.set(tr.best_point());
+          st.residual = tr.best_residual();
+          st.soft_stationary = false;
+        }
+      }
+    }
   }
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
   p.eps = e0;

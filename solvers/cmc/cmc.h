@@ -217,6 +217,11 @@ struct CmcOptions {
   /// D_H critical point (the routes before route 0), kept to measure the two side by side;
   /// MinimalSurface follows the branch from the minimal surface alone. Other functionals ignore it.
   AreaStart area_start = AreaStart::MeanCurvature;
+  /// area functional: where the soft-mode phase's Levenberg–Marquardt loop on the reduced first
+  /// variation stops above the tolerance, trust-region Newton on A_H along the valley floor
+  /// (docs/cmc.md, "The trust-region part of the soft-mode phase"); default true. false stops
+  /// there, as before 2026-12-06, kept to measure the two side by side. Other functionals ignore it.
+  bool area_trust_region = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area
   /// functional's route 0) report "cmc least squares", one stage across its rule refinements, the

@@ -280,6 +280,7 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
     const CorrectorStats soft = area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
     st.iterations += soft.iterations;
     st.soft_iterations = soft.iterations;
+    st.trust_region_iterations = soft.trust_region_iterations;
     st.residual = soft.residual;
     st.ok = soft.ok;
     st.soft_stationary = soft.soft_stationary;
@@ -667,6 +668,9 @@ struct AreaSolve {
     };
     std::string s = truncated > 0 ? phase("the truncated Newton phase", truncated) : "";
     if (t.soft_iterations > 0) s += (s.empty() ? "" : " and ") + phase("the soft-mode phase", t.soft_iterations);
+    if (t.trust_region_iterations > 0)
+      s += counts ? " (" + std::to_string(t.trust_region_iterations) + " of them trust-region steps on A_H)"
+                  : " (with trust-region steps on A_H)";
     return s;
   }
 

@@ -58,6 +58,7 @@ struct CorrectorStats {
   /// stationary point of its norm over the soft modes, not a critical point of A_H).
   bool soft_stationary = false;
   int soft_iterations = 0;  ///< of `iterations`, those of the area soft-mode phase
+  int trust_region_iterations = 0;  ///< of `soft_iterations`, those of its trust-region part
 };
 
 /// The stats of the start point of a corrector: its eq. (11) residual at H, ok when it already
