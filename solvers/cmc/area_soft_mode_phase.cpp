@@ -50,12 +50,14 @@
 // relative to its terms. A descent method on φ does not see the stationary points of ‖G‖; it finds
 // minima of A_H, so a critical point that is a saddle in the soft modes is left to the loop above.
 // Measured (docs/cmc.md): of the H-form cases that ended `numerical-limit` there, all but the
-// sphere triangle at n = 8 converge (the tensor catenoid at n = 10 in 22 trust-region steps, curve
-// A at n = 10 in 74). Where the reduced Hessian turns positive definite the last steps are Newton
-// steps inside the region (the helicoid piece at n = 4: one, from 6.8e-11 to 6.7e-12; the catenoid
-// boundary at n = 8, H = 0.12: five, of lengths 1.8e-2 … 5.3e-4, to 1.4e-12); elsewhere the first
-// variation falls below the tolerance on the way down the valley (the tensor catenoid at n = 10,
-// the lowest eigenvalue still −1.1e-6 of the largest at the last step).
+// sphere triangle at n = 8 converge (in the first version: the tensor catenoid at n = 10 in 22
+// trust-region steps, curve A at n = 10 in 74). Where the reduced Hessian turns positive definite
+// the last steps are Newton steps inside the region (traced in the first version: the helicoid
+// piece at n = 4, one, from 6.8e-11 to 6.7e-12; the catenoid boundary at n = 8, H = 0.12, five,
+// of lengths 1.8e-2 … 5.3e-4, to 1.4e-12); elsewhere the first variation falls below the
+// tolerance on the way down the valley (the tensor catenoid at n = 10, the lowest eigenvalue still
+// −1.1e-6 of the largest at the last step). The V form gains through its final phases at the
+// multiplier, which end here.
 #include <ceres/ceres.h>
 
 #include <Eigen/Eigenvalues>
@@ -116,13 +118,14 @@ constexpr double kSoftPhaseStart = 1e-6;
 
 // The trust-region part (minimise_trust_region): acceptance and radius updates (Nocedal–Wright,
 // Algorithm 4.1, with the radius halved, not quartered, on a poor step: the valley is long and the
-// steps that work are near the largest that do), the first radius relative to ‖y‖_C, and the
-// smallest. kTrRegular: a step may not lower the smallest |x_u ∧ x_v| / mean at the nodes below
-// this fraction of the start's: on the sphere triangle at n = 8 the descent otherwise ends at a
+// steps that work are near the largest that do), the first radius relative to the size of the
+// free points in the C-norm (about the net's centroid, so that it does not depend on where the
+// surface lies), and the smallest relative to the first. kTrRegular: a step may not lower the smallest |x_u ∧ x_v| /
+// mean at the nodes below this fraction of the start's: on the sphere triangle at n = 8 the descent otherwise ends at a
 // critical point whose parametrisation degenerates (|x_u ∧ x_v| down to 4.5e-4 of its mean,
 // measured), which route 0 finds too; the phase keeps to the regular surfaces near its start.
 constexpr double kTrAccept = 0.1, kTrShrinkBelow = 0.25, kTrGrowAbove = 0.75;
-constexpr double kFirstRadius = 1e-3, kTrSmallestRadius = 1e-14;
+constexpr double kFirstRadius = 1e-3, kTrSmallestRadius = 1e-12;
 constexpr double kTrRegular = 0.25;
 
 // The reduced system at the point p holds when it is built (the split point y0).
@@ -169,6 +172,8 @@ class SoftModeSystem {
   double best_residual() const { return best_r_; }
   /// min |x_u ∧ x_v| / mean at the nodes (AreaForm::min_normal) of the point last evaluated.
   double min_normal() const { return p_.a->min_normal(p_.P()); }
+  /// From now on a point counts as the best one only where min_normal() >= floor.
+  void set_min_normal_floor(double floor) { min_normal_floor_ = floor; }
   const Eigen::VectorXd& best_point() const { return best_y_; }
   /// ‖JᵀG‖ / (‖J‖_F ‖G‖) at s (+inf when s cannot be evaluated): 0 at a stationary point of ‖G‖.
   double stationarity(const Eigen::VectorXd& s) {
@@ -209,7 +214,9 @@ class SoftModeSystem {
     }
     // G is a function of s only when h(s) is solved: a point where it is not is out.
     if (!(nh <= hard_accept(G.norm(), r))) return false;
-    if (r < best_r_) best_r_ = r, best_y_ = p_.get();
+    // A point below the regularity floor (the trust-region part's) is never the best one.
+    if (r < best_r_ && (min_normal_floor_ <= 0 || p_.a->min_normal(p_.P()) >= min_normal_floor_))
+      best_r_ = r, best_y_ = p_.get();
     if (J) {
       if (!linearise()) return false;
       *J = J_;
@@ -248,7 +255,7 @@ class SoftModeSystem {
   Eigen::VectorXd y0_, h_, best_y_, kept_h_;
   Eigen::MatrixXd K_, KVh_, Vs_, Vh_, J_, J0_;
   Eigen::PartialPivLU<Eigen::MatrixXd> Khh_, kept_Khh_;
-  double lmax_ = 0, best_r_ = std::numeric_limits<double>::infinity();
+  double lmax_ = 0, best_r_ = std::numeric_limits<double>::infinity(), min_normal_floor_ = 0;
   bool ok_ = false;
 };
 
@@ -290,25 +297,37 @@ SoftOutcome minimise_newton(SoftModeSystem& sys, double tol, int max_iterations)
 // complement J. The step minimises G·c + ½cᵀJc over ‖c‖ <= radius (trust_region_model.h); the
 // change of φ along it is measured by Simpson's rule on G, ρ = that / the model's, and the step is
 // taken when ρ > kTrAccept and the parametrisation stays as regular as kTrRegular of the start's.
-// s is in C-orthonormal coordinates, so the radius is in the C-norm. Returns the steps tried.
-int minimise_trust_region(SoftModeSystem& sys, double tol, int max_iterations, double radius) {
+// s is in C-orthonormal coordinates, so the radius is in the C-norm. Returns the steps tried and
+// whether the regularity bound refused one.
+struct TrustRegionOutcome {
+  int iterations = 0;
+  bool blocked = false;  ///< a step was refused by the regularity bound (and the tolerance not reached)
+};
+
+TrustRegionOutcome minimise_trust_region(SoftModeSystem& sys, double tol, int max_iterations, double radius) {
+  TrustRegionOutcome out;
   const Eigen::Index n = sys.size();
   Eigen::VectorXd s = Eigen::VectorXd::Zero(n), G, Gm, G1;
   Eigen::MatrixXd J;
-  if (!sys.evaluate(s, G, &J)) return 0;
+  if (!sys.evaluate(s, G, &J)) return out;
   const double regular = kTrRegular * sys.min_normal();
-  int it = 0;
-  while (it < max_iterations && sys.best_residual() > tol && radius > kTrSmallestRadius) {
+  sys.set_min_normal_floor(regular);
+  int& it = out.iterations;
+  const double smallest = kTrSmallestRadius * radius;
+  while (it < max_iterations && sys.best_residual() > tol && radius > smallest) {
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (J + J.transpose()));
     if (es.info() != Eigen::Success) break;
     const TrustRegionModel m{es.eigenvalues(), es.eigenvectors().transpose() * G, es.eigenvectors()};
     const Eigen::VectorXd c = m.step(radius);
     const double pred = m.decrease(c);
-    ++it;
     if (!(c.allFinite() && pred > 0)) break;
+    ++it;
     const Eigen::VectorXd ds = m.V * c;
-    const bool ok =
-        sys.evaluate(s + 0.5 * ds, Gm, nullptr) && sys.evaluate(s + ds, G1, nullptr) && sys.min_normal() >= regular;
+    bool ok = sys.evaluate(s + 0.5 * ds, Gm, nullptr) && sys.evaluate(s + ds, G1, nullptr);
+    if (ok && !(sys.min_normal() >= regular)) {
+      ok = false;
+      out.blocked = true;
+    }
     const double rho = ok ? -simpson_change(G, Gm, G1, ds) / pred : -std::numeric_limits<double>::infinity();
     if (rho > kTrAccept) {
       s += ds;
@@ -319,7 +338,8 @@ int minimise_trust_region(SoftModeSystem& sys, double tol, int max_iterations, d
     else if (rho > kTrGrowAbove && c.norm() > 0.99 * radius)
       radius *= 2;
   }
-  return it;
+  out.blocked = out.blocked && sys.best_residual() > tol;
+  return out;
 }
 
 // G(s) as one Ceres residual block on one parameter block, divided by `scale`.
@@ -412,16 +432,22 @@ CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& 
     }
     p.set(sys.best_point());
     st.residual = sys.best_residual();
-    if (o.area_trust_region && st.residual > o.tolerance && std::isfinite(st.residual)) {
+    if (o.area_trust_region && sys.ok() && st.residual > o.tolerance && std::isfinite(st.residual)) {
       // Trust-region Newton on A_H along the valley floor, from a new split at the best point.
       SoftModeSystem tr(p, H, o.tolerance);
       if (tr.ok()) {
-        const Eigen::VectorXd y = p.get();
+        // The size of the free points about the net's centroid, in the C-norm.
+        const Eigen::RowVector3d centroid = p.P().colwise().mean();
+        Eigen::VectorXd y = p.get();
+        for (Eigen::Index i = 0; i < y.size(); ++i) y(i) -= centroid(i % 3);
         const double radius = kFirstRadius * std::sqrt(std::max(y.dot(p.C * y), 0.0));
-        st.trust_region_iterations = minimise_trust_region(tr, o.tolerance, max_iterations, radius);
-        st.iterations += st.trust_region_iterations;
+        const TrustRegionOutcome t = minimise_trust_region(tr, o.tolerance, max_iterations, radius);
+        st.trust_region_iterations = t.iterations;
+        st.iterations += t.iterations;
+        st.trust_region_blocked = t.blocked;
+        // The best regular point met, which is the start where nothing was better (evaluate moves p).
+        p.set(tr.best_point());
         if (tr.best_residual() < st.residual) {
-          p.set(tr.best_point());
           st.residual = tr.best_residual();
           st.soft_stationary = false;
         }

@@ -284,6 +284,7 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
     st.residual = soft.residual;
     st.ok = soft.ok;
     st.soft_stationary = soft.soft_stationary;
+    st.trust_region_blocked = soft.trust_region_blocked;
   }
   p.eps = e0;
   return st;
@@ -562,6 +563,9 @@ struct AreaSolve {
   // reported is still that point (the same residual: it is a function of the net and the rule) and
   // in the H form (the V form's residual includes the volume).
   double stationary_at = -1.0;
+  // The same for an end where the trust-region part of the soft-mode phase stopped at its
+  // regularity bound (its descent on A_H heads for a degenerate parametrisation).
+  double degenerate_at = -1.0;
 
   // What a route changes in the solve: the net, the rule and its measured error, the damping, the
   // regulariser and the soft-mode verdict. A route that is tried and not kept puts them back
@@ -569,9 +573,9 @@ struct AreaSolve {
   struct State {
     Eigen::MatrixX3d P;
     std::shared_ptr<const AreaForm> a;
-    double theta = 1.0, rule_change = 0.0, eps = 0.0, stationary_at = -1.0;
+    double theta = 1.0, rule_change = 0.0, eps = 0.0, stationary_at = -1.0, degenerate_at = -1.0;
   };
-  State save() const { return {p.base.P, p.a, theta, rule_change, p.eps, stationary_at}; }
+  State save() const { return {p.base.P, p.a, theta, rule_change, p.eps, stationary_at, degenerate_at}; }
   void restore(const State& s) {
     p.base.P = s.P;
     p.a = s.a;
@@ -579,6 +583,7 @@ struct AreaSolve {
     rule_change = s.rule_change;
     p.eps = s.eps;
     stationary_at = s.stationary_at;
+    degenerate_at = s.degenerate_at;
   }
 
   // Where route 0 ended in the H form above the tolerance but within kAreaStallResidual, at a
@@ -628,6 +633,20 @@ struct AreaSolve {
   bool at_stationary_point(double residual) const {
     return !o.V && stationary_at > 0 && std::abs(residual - stationary_at) <= 1e-12 * stationary_at;
   }
+  bool at_degenerate_bound(double residual) const {
+    return !o.V && degenerate_at > 0 && std::abs(residual - degenerate_at) <= 1e-12 * degenerate_at;
+  }
+  // The words for an end at one of the two: "" otherwise.
+  std::string soft_verdict(double residual, bool long_form) const {
+    if (at_stationary_point(residual))
+      return long_form ? "; no step over the soft (tangential) modes lowers it (a stationary point of its norm there, "
+                         "not a critical point of A_H)"
+                       : ", where no step over the soft (tangential) modes lowers it";
+    if (at_degenerate_bound(residual))
+      return "; the trust-region descent on A_H from there heads for a degenerate parametrisation (|x_u ∧ x_v| "
+             "below a quarter of its smallest value at the start) and stopped before it";
+    return "";
+  }
   // Whether finish() may choose the rule again (off in the final rule check, which only refines).
   bool choose_rules_again = true;
   // The final phases at ε = 0: newton, the truncated Newton phase, which ends in the soft-mode
@@ -656,6 +675,7 @@ struct AreaSolve {
     }
     p.refresh_rule = nullptr;
     stationary_at = t.soft_stationary ? t.residual : -1.0;
+    degenerate_at = t.trust_region_blocked ? t.residual : -1.0;
     return t;
   }
 
@@ -1566,10 +1586,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
           out = {out.H, false, Status::NumericalLimit,
                  "the correction with the refined quadrature rule (q = " +
                      std::to_string(s.p.a->points_per_direction()) + ") stopped at a relative first variation of " +
-                     num(st.residual) +
-                     (s.at_stationary_point(st.residual) ? ", where no step over the soft (tangential) modes lowers it"
-                                                         : "") +
-                     "; reached after: " + out.message};
+                     num(st.residual) + s.soft_verdict(st.residual, false) + "; reached after: " + out.message};
           break;
         }
       }
@@ -1596,10 +1613,7 @@ CmcResult<Net> solve_area_impl(const Net& data, const CmcOptions& o) {
     if (out.ok && !(res.summary.residual <= o.tolerance)) {
       out = {out.H, false, Status::NumericalLimit,
              "the final net misses the first variation of A_H by " + num(res.summary.residual) + " (relative)" +
-                 (s.at_stationary_point(res.summary.residual) ? "; no step over the soft (tangential) modes lowers it (a stationary point of its "
-                                      "norm there, not a critical point of A_H)"
-                                    : "") +
-                 "; reached after: " + out.message};
+                 s.soft_verdict(res.summary.residual, true) + "; reached after: " + out.message};
     }
     if (!reg.ok) {
       out.ok = false;

@@ -59,6 +59,9 @@ struct CorrectorStats {
   bool soft_stationary = false;
   int soft_iterations = 0;  ///< of `iterations`, those of the area soft-mode phase
   int trust_region_iterations = 0;  ///< of `soft_iterations`, those of its trust-region part
+  /// The trust-region part ended above the tolerance after a step refused by its regularity bound
+  /// (its descent heads for a degenerate parametrisation).
+  bool trust_region_blocked = false;
 };
 
 /// The stats of the start point of a corrector: its eq. (11) residual at H, ok when it already

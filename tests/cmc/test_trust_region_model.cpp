@@ -74,6 +74,38 @@ TEST(TrustRegionModel, HardCaseGoesAlongTheLowestMode) {
   EXPECT_LE(value(m, c), best + 1e-9);
 }
 
+// The minimum of the model over the circle ‖c‖ = radius by brute force (two dimensions).
+double circle_minimum(const TrustRegionModel& m, double radius) {
+  double best = INFINITY;
+  for (int k = 0; k < 200000; ++k) {
+    const double t = 2 * std::numbers::pi * k / 200000;
+    best = std::min(best, value(m, Eigen::Vector2d(radius * std::cos(t), radius * std::sin(t))));
+  }
+  return best;
+}
+
+// Nearly the hard case (gb along the lowest mode 1e-14, far below what μ can resolve next to
+// −λ_min), an eigenvalue so small that c(μ) overflows next to it, and λ_min = 0 with g = 0: the
+// step is on the boundary (or, with g = 0 and nothing to gain, any feasible point) and no point of
+// the circle is lower. (The bisection in log μ stopped 1e-12 of μ short of −λ_min in the first
+// case and returned a step of length 0.1 inside the region; the second took the hard case.)
+TEST(TrustRegionModel, NearlyHardAndDegenerateCases) {
+  for (const auto& [lam, g] : {std::pair{Eigen::Vector2d(-1, 2), Eigen::Vector2d(1e-14, 0.3)},
+                               std::pair{Eigen::Vector2d(-1e-300, 1), Eigen::Vector2d(0.3, 0.1)},
+                               std::pair{Eigen::Vector2d(-1, 2), Eigen::Vector2d(-1e-9, 0.3)}}) {
+    const TrustRegionModel m = model(lam, g);
+    const Eigen::VectorXd c = m.step(1.0);
+    ASSERT_TRUE(c.allFinite()) << lam.transpose();
+    EXPECT_NEAR(c.norm(), 1.0, 1e-9) << lam.transpose() << " / " << g.transpose();
+    EXPECT_LE(value(m, c), circle_minimum(m, 1.0) + 1e-9) << lam.transpose() << " / " << g.transpose();
+  }
+  const TrustRegionModel flat = model(Eigen::Vector2d(0, 1), Eigen::Vector2d(0, 0));
+  const Eigen::VectorXd c = flat.step(0.5);
+  ASSERT_TRUE(c.allFinite());
+  EXPECT_LE(c.norm(), 0.5 * (1 + 1e-12));
+  EXPECT_EQ(flat.decrease(c), 0.0);  // nothing to gain: the caller stops (its pred > 0 test)
+}
+
 // Simpson's rule integrates the gradient along the step, a polynomial in τ of one degree less
 // than f: exact for f of degree <= 4, and for f = Σ y_i⁵ its error is exactly (1/2880) times the
 // fourth τ-derivative of the integrand, 120 Σ d_i⁵ (a wrong weight, e.g. the trapezoid rule,
@@ -87,13 +119,13 @@ TEST(TrustRegionModel, SimpsonChangeIsExactToDegreeFour) {
     return Eigen::VectorXd(4 * a.array() * x.array().cube() + 3 * b.array() * x.array().square() + 2 * x.array());
   };
   const double exact = f(y + d) - f(y);
-  EXPECT_NEAR(simpson_change(g(y), g(y + 0.5 * d), g(y + d), d), exact, 1e-15);
+  EXPECT_NEAR(simpson_change(g(y), g(y + 0.5 * d), g(y + d), d), exact, 1e-14);
   const double trapezoid = 0.5 * (g(y) + g(y + d)).dot(d);
   EXPECT_GT(std::abs(trapezoid - exact), 1e-6);
   auto g5 = [](const Eigen::Vector3d& x) { return Eigen::VectorXd(5 * x.array().pow(4)); };
   const double exact5 = ((y + d).array().pow(5) - y.array().pow(5)).sum();
   const double err = simpson_change(g5(y), g5(y + 0.5 * d), g5(y + d), d) - exact5;
-  EXPECT_NEAR(err, 120.0 / 2880.0 * d.array().pow(5).sum(), 1e-15);
+  EXPECT_NEAR(err, 120.0 / 2880.0 * d.array().pow(5).sum(), 1e-14);
 }
 
 }  // namespace
