@@ -1,7 +1,8 @@
 // CMC solve time (Arnal–Lluch–Monterde, triangular CMC): routes Cmc/<solver>/<n> for one solve of the triangular
 // problem with sphere (inverse stereographic, conformal) boundary data at H = 1, and Cmc/dirichlet/<n> for the
 // Dirichlet extremal (the linear solve, H = 0) as the baseline; CmcArea/{newton,ceres}/<n> for the
-// area functional A + 2HV on the same data; CmcArea/circle/<n> for the area functional on the
+// area functional A + 2HV on the same data, and CmcArea/{newton,ceres}-without-trust-region/<n> the
+// same with CmcOptions::area_trust_region false; CmcArea/circle/<n> for the area functional on the
 // non-conformal data of the paper's Fig. 1 (the unit circle in three arcs by angle, H = -0.5), the
 // case of docs/cmc_evolver.md; CmcArea/folded/3 where the answer folds; CmcMeanCurvature/{newton,newton-plain,ceres}/circle/<n> for the
 // least squares of the mean curvature on that circle (newton-plain: without geodesic
@@ -32,7 +33,7 @@ using namespace bpde;
 // The unit sphere's boundary over the reference triangle (conformal data, H = +1).
 TriangularNet sphere_data(int n) { return triangular_boundary(n, sphere_triangle); }
 
-void run(benchmark::State& state, CmcSolver solver, bool dirichlet, bool area = false) {
+void run(benchmark::State& state, CmcSolver solver, bool dirichlet, bool area = false, bool trust_region = true) {
   const int n = static_cast<int>(state.range(0));
   const TriangularNet data = sphere_data(n);
   CmcFunctional::cached_triangular(n);
@@ -40,6 +41,7 @@ void run(benchmark::State& state, CmcSolver solver, bool dirichlet, bool area = 
   o.H = 1.0;
   o.solver = solver;
   if (area) o.functional = CmcFunctionalKind::Area;
+  o.area_trust_region = trust_region;
   int steps = 0, iters = 0;
   double residual = 0, converged = 0;
   for (auto _ : state) {
@@ -73,6 +75,9 @@ void NLopt(benchmark::State& s) { run(s, CmcSolver::NLopt, false); }
 // solve above, then the vanishing-regulariser stages with the newton or the ceres corrector.
 void AreaNewton(benchmark::State& s) { run(s, CmcSolver::Newton, false, true); }
 void AreaCeres(benchmark::State& s) { run(s, CmcSolver::Ceres, false, true); }
+// The same without the trust-region part of the soft-mode phase (CmcOptions::area_trust_region).
+void AreaNewtonNoTrustRegion(benchmark::State& s) { run(s, CmcSolver::Newton, false, true, false); }
+void AreaCeresNoTrustRegion(benchmark::State& s) { run(s, CmcSolver::Ceres, false, true, false); }
 
 // volume: the V form, v0 the volume of the exact cap of H = -0.5 over the unit circle.
 void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolver solver = CmcSolver::Newton,
@@ -206,6 +211,14 @@ BENCHMARK(Ceres)->Name("Cmc/ceres")->DenseRange(4, 15)->Unit(benchmark::kMicrose
 BENCHMARK(NLopt)->Name("Cmc/nlopt")->DenseRange(4, 15)->Unit(benchmark::kMicrosecond);
 BENCHMARK(AreaNewton)->Name("CmcArea/newton")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCeres)->Name("CmcArea/ceres")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(AreaNewtonNoTrustRegion)
+    ->Name("CmcArea/newton-without-trust-region")
+    ->DenseRange(4, 10, 2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(AreaCeresNoTrustRegion)
+    ->Name("CmcArea/ceres-without-trust-region")
+    ->DenseRange(4, 10, 2)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCircle)->Name("CmcArea/circle")->DenseRange(6, 12, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaFolded)->Name("CmcArea/folded")->Arg(3)->Unit(benchmark::kMillisecond);
 BENCHMARK(MeanCurvatureCircle)
