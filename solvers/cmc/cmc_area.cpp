@@ -638,14 +638,15 @@ struct AreaSolve {
   }
   // The words for an end at one of the two: "" otherwise.
   std::string soft_verdict(double residual, bool long_form) const {
+    std::string v;
     if (at_stationary_point(residual))
-      return long_form ? "; no step over the soft (tangential) modes lowers it (a stationary point of its norm there, "
-                         "not a critical point of A_H)"
-                       : ", where no step over the soft (tangential) modes lowers it";
+      v = long_form ? "; no step over the soft (tangential) modes lowers it (a stationary point of its norm there, "
+                      "not a critical point of A_H)"
+                    : ", where no step over the soft (tangential) modes lowers it";
     if (at_degenerate_bound(residual))
-      return "; the trust-region descent on A_H from there heads for a degenerate parametrisation (|x_u ∧ x_v| "
-             "below a quarter of its smallest value at the start) and stopped before it";
-    return "";
+      v += "; the trust-region descent on A_H from there heads for a degenerate parametrisation (|x_u ∧ x_v| "
+           "below a quarter of its smallest value at the start), so the net is the one it started from";
+    return v;
   }
   // Whether finish() may choose the rule again (off in the final rule check, which only refines).
   bool choose_rules_again = true;

@@ -778,21 +778,20 @@ TEST(CmcArea, TrustRegionPartConvergesWhereTheSoftModeLoopStops) {
 // first variation's norm (5.1e-10, ‖JᵀG‖ / (‖J‖_F ‖G‖) 5.9e-4). With the stall window of 30
 // iterations it stopped on the way there (same residual to two digits) and gave no verdict, so
 // this fails with kStallWindow = 30; the surface is the sphere's to the degree's accuracy.
-// With the trust-region part (above) the first variation goes on down to 8.0e-11 on regular
-// surfaces, where the descent would go on to the degenerate critical point that route 0 finds (its
-// steps may not lower min |x_u ∧ x_v| / mean below a quarter of the start's): still a numerical
-// limit, on the sphere as before.
+// With the trust-region part (above) the descent from there heads for the degenerate critical
+// point that route 0 finds: it lowers the first variation to 8.0e-11 on regular surfaces, but the
+// surface's mean curvature on the grid then ranges 0.812 … 1.017 (0.977 … 1.002 at its start), so
+// the part gives back its start and says why (measured 2026-12-06).
 TEST(CmcArea, SpherePatchAtDegree8EndsAsANumericalLimitOnARegularSurface) {
   const TriangularNet data = testing::triangular_boundary(8, testing::sphere_triangle);
   const CmcResult<TriangularNet> t = solve_cmc(data, dirichlet_routes(1.0));
   EXPECT_EQ(t.summary.status, Status::NumericalLimit) << t.summary.message;
-  EXPECT_LE(t.summary.residual, 2e-10) << t.summary.message;  // measured 8.0e-11
+  EXPECT_LE(t.summary.residual, 1e-9) << t.summary.message;  // measured 5.1e-10
   EXPECT_NE(t.summary.message.find("heads for a degenerate parametrisation"), std::string::npos) << t.summary.message;
-  double off_t = 0;
-  for (int i = 0; i <= 30; ++i)
-    for (int j = 0; i + j <= 30; ++j) off_t = std::max(off_t, std::abs(t.net.evaluate(i / 30.0, j / 30.0).norm() - 1));
-  EXPECT_LE(off_t, 1e-4);
+  const MeanCurvatureStats hs = mean_curvature_stats(t.net, 40, 0.1);
+  EXPECT_LE(std::max(std::abs(hs.min - 1), std::abs(hs.max - 1)), 0.05);  // measured 0.977 … 1.002
   const CmcResult<TriangularNet> r = solve_cmc(data, without_trust_region(dirichlet_routes(1.0)));
+  EXPECT_EQ(t.net.points(), r.net.points());  // the same net: the part gave back its start
   EXPECT_EQ(r.summary.status, Status::NumericalLimit) << r.summary.message;
   EXPECT_NE(r.summary.message.find("a stationary point of its norm there, not a critical point of A_H"),
             std::string::npos)
