@@ -23,7 +23,7 @@
 
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/energies/cmc.h"
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 
 namespace {

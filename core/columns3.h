@@ -1,8 +1,8 @@
 #pragma once
 // Products of #rows x 3 matrices (points, derivatives or weights at quadrature nodes, one x, y, z
 // column each) that the exact Bernstein integrals (energies/volume.cpp), the area quadrature
-// (solvers/cmc/area_functional.cpp) and the mean-curvature residuals
-// (solvers/cmc/mean_curvature_least_squares.cpp) share.
+// (energies/area_functional.cpp) and the mean-curvature residuals
+// (energies/mean_curvature_least_squares.cpp) share.
 #include <Eigen/Core>
 
 namespace bpde {

@@ -5,7 +5,7 @@
 //   J: #rows by k, a matrix or a block of one (direct access: an expression such as a product
 //      would be evaluated again for every block); A: k by k (SizeError otherwise).
 //
-// The normal matrix JᵀJ of the library's Levenberg–Marquardt loop (solvers/cmc/levenberg_marquardt.cpp:
+// The normal matrix JᵀJ of the library's Levenberg–Marquardt loop (solvers/optim/levenberg_marquardt.cpp:
 // the mean-curvature functional, whose Jacobian is #nodes by 3·#free, and the area soft-mode
 // phase) is such a sum.
 //

@@ -21,7 +21,7 @@ struct QuadratureRuleTriangle {
 };
 QuadratureRuleTriangle gauss_triangle(int q);
 
-/// Corner-collapsed rules (the area functional's, solvers/cmc/area_functional.h, "The rules"):
+/// Corner-collapsed rules (the area functional's, energies/area_functional.h, "The rules"):
 /// the triangle T cut by its centroid and edge midpoints into six triangles, each mapped from the
 /// unit square by the Duffy map collapsed at its corner of T, (u, v) = C + s(P1 − C) + st(P2 − P1),
 /// with q × q Gauss–Legendre points in (σ, t) and s = σ^grading: 6q² nodes, weights summing to 1/2.

@@ -49,7 +49,7 @@
 
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/energies/cmc.h"
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/triangular/triangular_net.h"
 #include "examples/common/generated.h"

@@ -68,10 +68,11 @@
 
 #include "bezierpde/solvers/cmc/ceres_lm_options.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
-#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
-#include "bezierpde/solvers/cmc/trust_region_model.h"
+#include "bezierpde/solvers/optim/levenberg_marquardt.h"
+#include "bezierpde/solvers/optim/trust_region_model.h"
 
 namespace bpde::cmc_detail {
+using namespace bpde::optim;  // the generic least squares and trust-region steps (solvers/optim)
 
 namespace {
 // Relative eigenvalue below which a mode is soft (measured: 21 … 136 soft modes of 63 … 243 on

@@ -10,7 +10,7 @@
 
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/cmc.h"
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 #include "bezierpde/solvers/summary.h"

@@ -37,7 +37,7 @@
 //    where the relative first variation of A_H at the D_H critical point (V mode: at the
 //    minimiser of D at V0) is at most 1e-6, as on conformal data, whose D_H point is a critical
 //    point of A_H to within the degree; the message then ends with "(route 0 not tried: …)".
-//  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (solvers/cmc/area_functional.h),
+//  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (energies/area_functional.h),
 //    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
 //    surface). The start is the D_H critical point at the requested H (the continuation above),
 //    corrected on A_H through a vanishing Dirichlet regulariser: F_ε = A_H + ε(D - A) for
@@ -81,7 +81,7 @@
 //  - converged = true means the first variation ∇A_H over the free points holds to
 //    options.tolerance relative to the size of its terms (the rows of AreaForm's gradient scale
 //    plus 2|H| those of V), measured with a quadrature rule whose own measured error is below the
-//    tolerance (solvers/cmc/area_rule.h), AND the parametrisation is regular: |x_u ∧ x_v| on a
+//    tolerance (energies/area_rule.h), AND the parametrisation is regular: |x_u ∧ x_v| on a
 //    40 x 40 sample grid away from the corners (margin 0.05) is at least 1e-3 of its mean and no
 //    two neighbouring samples have opposite normals. A degenerating surface is reported with
 //    converged = false, status NoConvergence, and a message that says "degenerate
@@ -91,7 +91,7 @@
 //    phase follows the last corrector directly, minimised by ceres::Solve).
 //
 // The least-squares mean-curvature functional (options.functional = MeanCurvature;
-// solvers/cmc/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
+// energies/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
 //  - H mode: minimise Φ = ∫ ρ (H_x − H)² dA over the free points (ρ a corner weight, 1 away
 //    from the corners and 0 at them: mean_curvature_least_squares.h). Φ = 0 exactly for a CMC
 //    surface, whatever the parametrisation; where the polynomial space holds no CMC surface, its
@@ -137,7 +137,7 @@
 //    low for the tolerance) or after options.max_least_squares_iterations; summary.residual is
 //    then the √Φ reached.
 //  - Fixed sets boundary and boundary+adjacent. Solver newton: the library's own Levenberg–Marquardt
-//    loop above (solvers/cmc/levenberg_marquardt.h, tested on its own against closed forms). Solver ceres: the same residuals as one Ceres residual block per quadrature node
+//    loop above (solvers/optim/levenberg_marquardt.h, tested on its own against closed forms). Solver ceres: the same residuals as one Ceres residual block per quadrature node
 //    on one parameter block (the free points), minimised by ceres::Solve (LM, dense normal
 //    Cholesky) with the same stopping tests (solvers/cmc/mean_curvature_minimise.h); both are
 //    measured side by side by CmcMeanCurvature/{newton,ceres}/circle/<n> (docs/performance.md).

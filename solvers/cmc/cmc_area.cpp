@@ -18,7 +18,7 @@
 #include "bezierpde/core/progress.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/kron.h"
-#include "bezierpde/solvers/cmc/area_rule.h"
+#include "bezierpde/energies/area_rule.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/summary.h"

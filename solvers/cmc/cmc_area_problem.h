@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bezierpde/core/progress.h"
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {

@@ -16,16 +16,17 @@
 #include "bezierpde/core/progress.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/energies/volume.h"
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
-#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
-#include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+#include "bezierpde/solvers/optim/levenberg_marquardt.h"
+#include "bezierpde/energies/mean_curvature_least_squares.h"
 #include "bezierpde/solvers/cmc/mean_curvature_minimise.h"
 #include "bezierpde/solvers/summary.h"
 
 namespace bpde::cmc_detail {
+using namespace bpde::optim;  // the generic least squares and trust-region steps (solvers/optim)
 namespace {
 
 // The rule minimised: the corner-collapsed rules with q = ⌈n/2⌉ + 4 points per direction

@@ -13,10 +13,11 @@
 
 #include "bezierpde/core/progress.h"
 #include "bezierpde/energies/volume.h"
-#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
-#include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+#include "bezierpde/solvers/optim/levenberg_marquardt.h"
+#include "bezierpde/energies/mean_curvature_least_squares.h"
 
 namespace bpde::cmc_detail {
+using namespace bpde::optim;  // the generic least squares and trust-region steps (solvers/optim)
 
 /// The volume constraint of the V form: V(P) = V0, with H an unknown.
 struct VolumeTarget {

@@ -19,7 +19,7 @@
 #include "bezierpde/boundaries/reference_curves.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/cmc.h"
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/cmc/cmc_area_problem.h"
 #include "cmc_test_util.h"

@@ -1,5 +1,5 @@
 // The least-squares mean-curvature functional Φ = ∫ ρ (H_x − H)² dA
-// (solvers/cmc/mean_curvature_least_squares.h) and its solve (solvers/cmc/cmc.h, functional
+// (energies/mean_curvature_least_squares.h) and its solve (solvers/cmc/cmc.h, functional
 // "mean-curvature"): the value against independent quadratures, the Jacobian against finite
 // differences, and the solve against closed-form surfaces.
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 #include "bezierpde/core/quadrature.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/cmc.h"
-#include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+#include "bezierpde/energies/mean_curvature_least_squares.h"
 #include "cmc_test_util.h"
 
 namespace bpde {

@@ -1,4 +1,4 @@
-// solvers/cmc/trust_region_model.h: the trust-region subproblem of the area functional's final
+// solvers/optim/trust_region_model.h: the trust-region subproblem of the area functional's final
 // phase against its optimality conditions (Moré–Sorensen: (K + μ I) c = −g, μ >= 0, K + μ I
 // positive semidefinite, μ (radius − ‖c‖) = 0) and against brute force over the sphere ‖c‖ = radius,
 // and Simpson's rule for the change of a function along a step against exact polynomials.
@@ -8,12 +8,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "bezierpde/solvers/cmc/trust_region_model.h"
+#include "bezierpde/solvers/optim/trust_region_model.h"
 
 namespace {
 
-using bpde::cmc_detail::simpson_change;
-using bpde::cmc_detail::TrustRegionModel;
+using bpde::optim::simpson_change;
+using bpde::optim::TrustRegionModel;
 
 TrustRegionModel model(const Eigen::VectorXd& lam, const Eigen::VectorXd& g) {
   return {lam, g, Eigen::MatrixXd::Identity(lam.size(), lam.size())};

@@ -1,4 +1,4 @@
-#include "bezierpde/solvers/cmc/area_rule.h"
+#include "bezierpde/energies/area_rule.h"
 
 #include <algorithm>
 #include <cmath>

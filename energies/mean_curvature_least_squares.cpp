@@ -1,4 +1,4 @@
-#include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
+#include "bezierpde/energies/mean_curvature_least_squares.h"
 
 #include <Eigen/Geometry>
 #include <ceres/jet.h>

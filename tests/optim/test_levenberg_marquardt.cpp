@@ -1,4 +1,4 @@
-// Levenberg–Marquardt with geodesic acceleration (solvers/cmc/levenberg_marquardt.h) on problems
+// Levenberg–Marquardt with geodesic acceleration (solvers/optim/levenberg_marquardt.h) on problems
 // with closed-form answers: the second directional derivative on quadratic residuals, the
 // accelerated step as Chebyshev's third-order step in one unknown, the Rosenbrock valley, the
 // nearest point of a sphere (the constrained step), and bad input.
@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "bezierpde/core/errors.h"
-#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
+#include "bezierpde/solvers/optim/levenberg_marquardt.h"
 
-namespace bpde::cmc_detail {
+namespace bpde::optim {
 namespace {
 
 // r(x) = (x0² + 3x0x1 − x2, x1² − 2x2x0 + 1, 5x2²): quadratic, so its second directional
@@ -373,4 +373,4 @@ TEST(LevenbergMarquardt, BadInput) {
 }
 
 }  // namespace
-}  // namespace bpde::cmc_detail
+}  // namespace bpde::optim

@@ -1,5 +1,5 @@
 #pragma once
-// The quadrature rule of the area (solvers/cmc/area_functional.h), chosen by its measured error.
+// The quadrature rule of the area (energies/area_functional.h), chosen by its measured error.
 //
 // A = ∫ |x_u ∧ x_v| is not polynomial, so no Gauss rule is exact. For a net P and the free points
 // idx the rule is chosen by refinement: q runs through q_0 = ⌈n/2⌉ + 3, q_{j+1} = q_j + ⌈q_j/3⌉
@@ -27,7 +27,7 @@
 #include <memory>
 #include <vector>
 
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 
 namespace bpde {
 

@@ -40,7 +40,7 @@
 
 #include "bezierpde/core/progress.h"
 
-namespace bpde::cmc_detail {
+namespace bpde::optim {
 
 /// Why a minimiser stopped (shared by this loop and the Ceres route of the mean-curvature functional).
 enum class LsStop {
@@ -132,4 +132,4 @@ LmTrial levenberg_marquardt_trial(const LeastSquaresProblem& problem, const Eige
 LsOutcome levenberg_marquardt(const LeastSquaresProblem& problem, Eigen::VectorXd& x,
                               const LevenbergMarquardtOptions& options, const ProgressFn& progress = {});
 
-}  // namespace bpde::cmc_detail
+}  // namespace bpde::optim

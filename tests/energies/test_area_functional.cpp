@@ -1,17 +1,17 @@
-// The area A = ∫|x_u ∧ x_v| (solvers/cmc/area_functional.h): value against closed forms, gradient
+// The area A = ∫|x_u ∧ x_v| (energies/area_functional.h): value against closed forms, gradient
 // and Hessian against finite differences, and the rule choice by measured error.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "cmc_test_util.h"
+#include "../cmc/cmc_test_util.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/quadrature.h"
 #include "bezierpde/energies/volume.h"
-#include "bezierpde/solvers/cmc/area_functional.h"
-#include "bezierpde/solvers/cmc/area_rule.h"
+#include "bezierpde/energies/area_functional.h"
+#include "bezierpde/energies/area_rule.h"
 
 namespace bpde {
 namespace {

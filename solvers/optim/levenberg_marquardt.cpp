@@ -1,5 +1,5 @@
 // Levenberg–Marquardt with geodesic acceleration (levenberg_marquardt.h).
-#include "bezierpde/solvers/cmc/levenberg_marquardt.h"
+#include "bezierpde/solvers/optim/levenberg_marquardt.h"
 
 #include <Eigen/Cholesky>
 #include <limits>
@@ -7,7 +7,7 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/gram.h"
 
-namespace bpde::cmc_detail {
+namespace bpde::optim {
 
 void LevenbergMarquardtOptions::validate() const {
   auto bad = [](const std::string& what) { throw ParameterError("Levenberg–Marquardt options: " + what); };
@@ -215,4 +215,4 @@ LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, 
   return out;
 }
 
-}  // namespace bpde::cmc_detail
+}  // namespace bpde::optim

@@ -19,7 +19,7 @@
 // differences), so Newton on them converges quadratically to the critical point of the discrete A.
 //
 // The rules. A is not polynomial (|N| is a square root), so no rule is exact; the caller chooses q
-// by the measured error (solvers/cmc/area_rule.h). The rules are built so that the error falls
+// by the measured error (energies/area_rule.h). The rules are built so that the error falls
 // exponentially in q also where |N| vanishes at a corner of the domain (the three arcs of the
 // paper's Fig. 1 meet at 180°, so x_u ∥ x_v there):
 //   - triangle: the six triangles cut by the centroid and the edge midpoints, each mapped from the

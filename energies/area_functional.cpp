@@ -1,4 +1,4 @@
-#include "bezierpde/solvers/cmc/area_functional.h"
+#include "bezierpde/energies/area_functional.h"
 
 #include <Eigen/Geometry>
 #include <array>

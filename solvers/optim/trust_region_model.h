@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-namespace bpde::cmc_detail {
+namespace bpde::optim {
 
 /// min over ‖c‖ <= radius of the model m(c) = gb·c + ½ Σ λ_i c_i² (a quadratic model in the
 /// eigenbasis V of its Hessian, gb = Vᵀg): c(μ) = −gb/(λ + μ) with μ = 0 where the Hessian is
@@ -81,4 +81,4 @@ inline double simpson_change(const Eigen::VectorXd& g0, const Eigen::VectorXd& g
   return (g0.dot(d) + 4.0 * gm.dot(d) + g1.dot(d)) / 6.0;
 }
 
-}  // namespace bpde::cmc_detail
+}  // namespace bpde::optim
