@@ -11,7 +11,7 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/energies/area_functional.h"
-#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/area/area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 #include "bezierpde/solvers/summary.h"
 

@@ -23,72 +23,26 @@
 // to the size of its terms (CmcFunctional::residual), and in V mode also |V - V0| <= tolerance *
 // (1/3 ∫ |<x_u ∧ x_v, x>|).
 //
-// The area functional (options.functional = Area; docs/cmc.md, "The area functional"):
-//  - Route 0, both modes (options.area_start = MeanCurvature, the default; docs/cmc.md, "The
-//    mean-curvature start"): the least-squares mean-curvature surface below (at H after at most
-//    min(max_least_squares_iterations, 300) Levenberg–Marquardt iterations; in the V mode at V0,
-//    with its H), converged or not, then at most 8 Newton iterations on A_H (the bordered
-//    corrector in the V mode) and, where they stall, the final phases of the routes below (in the
-//    V mode at its H, then back onto V0). Kept when they meet the tolerance: on the Fig. 1 circle
-//    that critical point lies 4–80× nearer the sphere than the one the routes below reach, in a
-//    fraction of their time. Otherwise the routes below run and the message ends with
-//    "(route 0: …)"; in the H mode, where both end above the tolerance (route 0 within 1e-6), the
-//    lower end is reported (numerical-limit, the message begins "the end of route 0"). Not tried
-//    where the relative first variation of A_H at the D_H critical point (V mode: at the
-//    minimiser of D at V0) is at most 1e-6, as on conformal data, whose D_H point is a critical
-//    point of A_H to within the degree; the message then ends with "(route 0 not tried: …)".
-//  - H mode: a critical point of A_H = A + 2HV, A = ∫|x_u ∧ x_v| (energies/area_functional.h),
-//    which has mean curvature H whatever the parametrisation of the boundary (H = 0: a minimal
-//    surface). The start is the D_H critical point at the requested H (the continuation above),
-//    corrected on A_H through a vanishing Dirichlet regulariser: F_ε = A_H + ε(D - A) for
-//    ε = 1, 1e-1, 1e-3, ... → 0 (each stage by the corrector below, started from the Euler
-//    predictor along the ε-path; F_1 = D_H; from ε <= 1e-4 on, after each stage, a jump: the
-//    predictor to ε = 0 and at most 8 corrector iterations on A_H, kept when they converge).
-//    When that fails (no D_H branch point, or the regulariser cannot be taken below 1e-4), the
-//    A_H branch is continued in H itself from the critical point of A at H = 0, started at the
-//    Dirichlet extremal, with a positive-definiteness test per step (before the fold). Where the
-//    D_H route ends above the tolerance, that continuation runs too and is kept when it converges.
-//    Where the truncated Newton phase (the last stage) stops above the tolerance, the soft-mode
-//    phase follows: the hard modes eliminated, Levenberg–Marquardt on the first variation over the
-//    soft (tangential) modes (solvers/cmc/area_soft_mode_phase.cpp); where no step lowers it the
-//    message says so ("a stationary point of its norm there, not a critical point of A_H").
-//    H = 0: the corrector on A from the Dirichlet extremal, then the truncated Newton phase; a stop
-//    above the tolerance but within 1e-6 (relative first variation) is status NumericalLimit,
-//    further off NoConvergence ("no critical point of the area (H = 0) ...").
-//  - V mode: minimise A subject to V = V0 from the minimiser of D at V = V0 (the nlopt route),
-//    through the same vanishing Dirichlet regulariser at fixed V0 (bordered corrector on (Y, H),
-//    bordered Euler predictor), then the truncated Newton phase at the H reached. If that route
-//    fails (e.g. some larger caps past the hemisphere, whose D minimiser keeps the regulariser
-//    above ε = 1e-4) or ends above the tolerance: the same route at V1 = Vref + (V0 − Vref)/k,
-//    k = 16, 64, 256 (Vref the Dirichlet extremal's volume), then continued in V from V1 to V0
-//    (each step to max(tolerance, 1e-8); a step is on the branch when the corrected surface lies
-//    nearer the prediction than half its distance to the last point, both along the surface
-//    normals), the bordered corrector and the final phases at V0; after a route that ended above
-//    the tolerance the lower residual is kept (each measured with a rule checked at its own net).
-//    Last, continued in V from the critical point of A at H = 0 (each step to max(tolerance, 1e-8),
-//    then the bordered corrector and the final phases at V0; alone with AreaStart::MinimalSurface;
-//    docs/cmc.md, "The minimal-surface start"). The multiplier H
-//    (∇A + 2H∇V = 0 on the free points) is reported.
-//  - The corrector (newton) is Levenberg–Marquardt: (∇²F + μ C) δ = -∇F with C the Dirichlet Gram
-//    over the free points and μ = θ · (relative residual); a step is accepted when F falls as
-//    predicted (ratio > 0.1) or ‖∇F‖₂ falls, with up to three chord corrections by the same factor;
-//    θ moves by ×4 / ×10 as in a trust region (solvers/cmc/cmc_area.cpp). The Hessian of A_H is
-//    nearly singular in the tangential directions (reparametrisations keep A_H); μ → 0 with the
-//    residual (Levenberg–Marquardt in the sense of Yamashita and Fukushima) fixes the tangential
-//    part of the step; the convergence is quadratic where the Hessian is regular, and linear in
-//    its nearly singular tangential modes (docs/cmc.md, "Not done yet"). ceres: Ceres Levenberg–Marquardt on
-//    the residual blocks ∇A_H of each free point with the exact Hessian blocks as Jacobians.
+// The area functional (options.functional = Area): critical points of A_H = A + 2HV,
+// A = ∫|x_u ∧ x_v| (energies/area_functional.h), which have mean curvature H whatever the
+// parametrisation of the boundary (H = 0: a minimal surface); in the V mode the minimum of A
+// subject to V = V0, with its multiplier H. The solve is a sequence of named routes
+// (AreaRoute: mean-curvature-start, dirichlet-start, h-continuation, dirichlet-volume-start,
+// smaller-volume-start, v-continuation, minimal-surface) ending in named final phases
+// (AreaPhase); CmcResult::routes records which ran, how each ended and which one the result comes
+// from (area_route.h). docs/cmc_algorithm.md describes the routes and phases under these names,
+// solvers/cmc/area/ holds one file per route.
 //  - converged = true means the first variation ∇A_H over the free points holds to
 //    options.tolerance relative to the size of its terms (the rows of AreaForm's gradient scale
 //    plus 2|H| those of V), measured with a quadrature rule whose own measured error is below the
-//    tolerance (energies/area_rule.h), AND the parametrisation is regular: |x_u ∧ x_v| on a
-//    40 x 40 sample grid away from the corners (margin 0.05) is at least 1e-3 of its mean and no
-//    two neighbouring samples have opposite normals. A degenerating surface is reported with
-//    converged = false, status NoConvergence, and a message that says "degenerate
-//    parametrisation".
-//  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode too: with ceres
-//    the bordered corrector is Ceres's LM, there is no truncated Newton phase, and the soft-mode
-//    phase follows the last corrector directly, minimised by ceres::Solve).
+//    tolerance (energies/area_rule.h), AND the parametrisation is regular (CmcResult::
+//    parametrisation): |x_u ∧ x_v| on a 40 x 40 sample grid away from the corners (margin 0.05)
+//    is at least 1e-3 of its mean, no two neighbouring samples have opposite normals, and no fold
+//    lies inside a corner margin. A degenerating surface is reported with converged = false,
+//    status NoConvergence and parametrisation.regular = false.
+//  - Above the tolerance but within reach of it (a stall in the nearly singular tangential modes)
+//    the status is NumericalLimit.
+//  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode too).
 //
 // The least-squares mean-curvature functional (options.functional = MeanCurvature;
 // energies/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
@@ -156,6 +110,7 @@
 
 #include "bezierpde/core/fixed_set.h"
 #include "bezierpde/core/progress.h"
+#include "bezierpde/solvers/cmc/area_route.h"
 #include "bezierpde/solvers/requirements.h"
 #include "bezierpde/solvers/summary.h"
 #include "bezierpde/tensor/tensor_net.h"
@@ -288,6 +243,19 @@ inline SolverRequirements cmc_mean_curvature_requirements() {
   return r;
 }
 
+/// The regularity verdict on an area or mean-curvature result (CmcResult::parametrisation): on a
+/// 40 x 40 grid away from the corners (margin 0.05) and on rays into each corner margin.
+struct ParametrisationCheck {
+  bool regular = true;   ///< no verdict below failed
+  bool checked = false;  ///< false: not checked (the Dirichlet functional)
+  double min_ratio = 0;  ///< min |x_u ∧ x_v| / its mean on the grid
+  bool flipped = false;  ///< two neighbouring grid samples with opposite normals
+  /// The corner near which the normal flips inside the corner margin, in the domain's (u, v)
+  /// (-1, -1: none), the smallest |x_u ∧ x_v| / mean met there, and the boundary's angle at that
+  /// corner in degrees on the side of the surface (above 180: reflex).
+  double fold_u = -1, fold_v = -1, fold_min_ratio = -1, fold_corner_angle = 0;
+};
+
 template <class Net>
 struct CmcResult {
   Net net;                     ///< the solution: critical point (D_H, A_H) or least-squares surface (mean-curvature); the last point reached if not converged
@@ -309,6 +277,10 @@ struct CmcResult {
   /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),
   /// NoConvergence when max_continuation_steps run out or the V-mode solve fails.
   Summary summary;
+  /// area: the routes considered, in order, with how each ended and which one was kept.
+  AreaRouteLog routes;
+  /// area: the regularity of the final net (mean-curvature: filled too).
+  ParametrisationCheck parametrisation;
 };
 
 /// Solve with the data (prescribed points) of `data`; its free points are ignored.

@@ -1,6 +1,6 @@
 // Ceres corrector of the CMC continuation (solvers/cmc/cmc.h): Levenberg–Marquardt on the residuals
 // F of triangular CMC eq. (11), with the analytic Jacobian (the exact Hessian of D_H over the free
-// control points); the same for the first variation of A_H = A + 2HV (cmc_area_problem.h), whose
+// control points); the same for the first variation of A_H = A + 2HV (area/area_problem.h), whose
 // Jacobian is the exact Hessian of A_H by quadrature. All 3k residuals and the 3k unknowns form ONE residual block on ONE parameter
 // block, so Ceres sees the dense Jacobian as it is (one copy per evaluation) instead of k^2 small
 // 3x3 blocks, and solves the LM step with a dense solver (kLinearSolver below; measured in
@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "bezierpde/solvers/cmc/ceres_lm_options.h"
-#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/area/area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {

@@ -18,7 +18,7 @@
 #include "bezierpde/energies/volume.h"
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
-#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/area/area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 #include "bezierpde/solvers/optim/levenberg_marquardt.h"
 #include "bezierpde/energies/mean_curvature_least_squares.h"
@@ -487,6 +487,7 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o,
                              " after " + std::to_string(end.iterations) +
                              (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
     const Regularity reg = g.reg.ok ? final_regularity(net, res.A) : g.reg;
+    res.parametrisation = parametrisation_check(reg);
     if (!reg.ok) {
       res.summary.set_failed(Status::NoConvergence,
                              "degenerate parametrisation: " + reg.describe() + " (not a CMC surface); " + what);

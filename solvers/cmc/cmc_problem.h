@@ -66,7 +66,7 @@ struct CorrectorStats {
 
 /// The stats of the start point of a corrector: its eq. (11) residual at H, ok when it already
 /// meets the tolerance. A corrector starts iterating only when `!ok` and the residual is finite.
-template <class Problem>  // CmcProblem or AreaProblem (cmc_area_problem.h)
+template <class Problem>  // CmcProblem or AreaProblem (area/area_problem.h)
 CorrectorStats start_stats(Problem& p, double H, const CmcOptions& o) {
   CorrectorStats st;
   st.residual = p.residual(H);

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to solvers/cmc/*.cpp: the trust-region subproblem of the area functional's final
-// phase (area_soft_mode_phase.cpp, its trust-region part), and Simpson's rule for the
+// phase (solvers/cmc/area/soft_mode_phase.cpp, its trust-region part), and Simpson's rule for the
 // change of a function along a step from its gradients.
 #include <Eigen/Core>
 #include <algorithm>

@@ -21,7 +21,7 @@
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/cmc.h"
-#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/area/area_problem.h"
 #include "cmc_test_util.h"
 
 namespace bpde {

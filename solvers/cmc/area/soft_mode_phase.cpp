@@ -1,4 +1,4 @@
-// The soft-mode phase of the area functional (cmc_area_problem.h, area_soft_mode_phase;
+// The soft-mode phase of the area functional (area_problem.h, area_soft_mode_phase;
 // docs/cmc.md, "The soft-mode phase").
 //
 // The method. At the point y0 where the truncated Newton phase stops, split the free coordinates
@@ -38,7 +38,7 @@
 // the smallest residual it met.
 //
 // The trust-region part (CmcOptions::area_trust_region, default true; docs/cmc.md, "The
-// trust-region part of the soft-mode phase", 2026-12-06). Where the loop above stops above the
+// trust-region part of the soft-mode phase"). Where the loop above stops above the
 // tolerance, the system is split again at the best point and A_H itself is minimised along the
 // valley floor: φ(s) = A_H(y0 + Vs s + Vh h(s)) has the gradient G(s) (the hard part of ∇A_H
 // vanishes on the floor) and the Hessian J, so trust-region Newton on φ needs nothing new but a
@@ -67,7 +67,7 @@
 #include <vector>
 
 #include "bezierpde/solvers/cmc/ceres_lm_options.h"
-#include "bezierpde/solvers/cmc/cmc_area_problem.h"
+#include "bezierpde/solvers/cmc/area/area_problem.h"
 #include "bezierpde/solvers/optim/levenberg_marquardt.h"
 #include "bezierpde/solvers/optim/trust_region_model.h"
 
@@ -124,7 +124,7 @@ constexpr double kSoftPhaseStart = 1e-6;
 // surface lies), and the smallest relative to the first. kTrRegular: a step may not lower the smallest |x_u ∧ x_v| /
 // mean at the nodes below this fraction of the start's: on the sphere triangle at n = 8 the descent otherwise ends at a
 // critical point whose parametrisation degenerates (|x_u ∧ x_v| down to 4.5e-4 of its mean,
-// measured), which route 0 finds too; the phase keeps to the regular surfaces near its start.
+// measured), which mean-curvature-start finds too; the phase keeps to the regular surfaces near its start.
 constexpr double kTrAccept = 0.1, kTrShrinkBelow = 0.25, kTrGrowAbove = 0.75;
 constexpr double kFirstRadius = 1e-3, kTrSmallestRadius = 1e-12;
 constexpr double kTrRegular = 0.25;

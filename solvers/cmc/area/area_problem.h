@@ -61,7 +61,7 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
 /// The soft-mode phase on A_H (ε = 0), run by area_truncated_newton when it stops above the
 /// tolerance: the hard modes eliminated by chord Newton steps, Levenberg–Marquardt on the reduced
-/// first variation over the soft modes (area_soft_mode_phase.cpp, where the method is explained).
+/// first variation over the soft modes (soft_mode_phase.cpp, where the method is explained).
 /// Leaves p at the point of smallest residual met; ok when it reaches o.tolerance;
 /// soft_stationary when no step lowers the reduced first variation.
 CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
@@ -82,6 +82,10 @@ struct Regularity {
   /// [and the normal flips]" or "the normal flips near the corner (u, v) = (…) …".
   std::string describe() const;
 };
+/// The public form of a verdict (CmcResult::parametrisation).
+inline ParametrisationCheck parametrisation_check(const Regularity& r) {
+  return {r.ok, true, r.min_ratio, r.flipped, r.fold_u, r.fold_v, r.fold_min_ratio, r.fold_corner_angle};
+}
 Regularity regularity(const TriangularNet& net, double A);
 Regularity regularity(const TensorNet& net, double A);
 /// The verdict on a result: regularity() and, where that is ok, folds inside the corner margins
@@ -104,7 +108,7 @@ CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const C
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options);
 /// The same from the D start already solved (`dirichlet`: solve_cmc of data with options' H and V,
 /// functional dirichlet, solver newton in the H form and nlopt in the V form), taken instead of
-/// solving it again (the area functional solves it before route 0); null: solved here.
+/// solving it again (the area functional solves it before mean-curvature-start); null: solved here.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options,
                                               const CmcResult<TriangularNet>* dirichlet);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,

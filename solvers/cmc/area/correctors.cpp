@@ -1,0 +1,276 @@
+// The A_H problem's evaluations and its two Newton correctors (area_problem.h): the regularised
+// Newton corrector on F_ε and the truncated Newton phase on A_H, which ends in the soft-mode phase.
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "bezierpde/core/progress.h"
+#include "bezierpde/solvers/cmc/area/area_problem.h"
+#include "bezierpde/solvers/cmc/area/tuning.h"
+
+namespace bpde::cmc_detail {
+using namespace area_impl;  // the tuning constants
+namespace {
+
+Eigen::VectorXd to_vector(const Eigen::MatrixX3d& G) {
+  Eigen::VectorXd g(3 * G.rows());
+  for (Eigen::Index a = 0; a < G.rows(); ++a) g.segment<3>(3 * a) = G.row(a).transpose();
+  return g;
+}
+
+}  // namespace
+
+double AreaProblem::value(double H) const {
+  double f = a->value(base.P) + 2.0 * H * base.f->volume(base.P);
+  if (eps != 0.0) f += eps * (base.f->dirichlet(base.P) - a->value(base.P));
+  return f;
+}
+
+Eigen::VectorXd AreaProblem::gradient(double H) const {
+  Eigen::VectorXd g;
+  residual_at(H, eps, &g);
+  return g;
+}
+
+Eigen::MatrixXd AreaProblem::hessian(double H) const {
+  Eigen::MatrixXd K = a->hessian(base.P, base.free);
+  if (eps != 0.0) K = (1.0 - eps) * K + eps * C;
+  if (H != 0.0) K += 2.0 * H * base.f->volume_form().hessian(base.P, base.free);
+  return K;
+}
+
+double AreaProblem::residual_at(double H, double e, Eigen::VectorXd* g) const {
+  if (progress) report(*progress, "cmc area", progress_done, 1);
+  Eigen::MatrixX3d G, S;
+  a->gradient_rows_and_scale(base.P, base.free, &G, &S);
+  if (e != 0.0) {
+    const Eigen::MatrixXd Cf = base.f->gram()(base.free, Eigen::all);
+    Eigen::MatrixX3d GD(G.rows(), 3), SD(G.rows(), 3);
+    for (int c = 0; c < 3; ++c) {
+      GD.col(c) = Cf * base.P.col(c);
+      SD.col(c) = Cf.cwiseAbs() * base.P.col(c).cwiseAbs();
+    }
+    G = (1.0 - e) * G + e * GD;
+    S = (1.0 - e) * S + e * SD;
+  }
+  if (H != 0.0) {
+    Eigen::MatrixX3d GV, SV;
+    base.f->volume_form().gradient_rows_and_scale(base.P, base.free, &GV, &SV);
+    G += 2.0 * H * GV;
+    S += 2.0 * std::abs(H) * SV;
+  }
+  if (g) *g = to_vector(G);
+  if (G.size() == 0) return 0.0;
+  const double nm = G.cwiseAbs().maxCoeff(), den = S.maxCoeff();
+  if (!std::isfinite(nm) || !std::isfinite(den)) return std::numeric_limits<double>::infinity();
+  if (den == 0.0) return nm == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  return nm / den;
+}
+
+CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o, int max_iterations, double& theta,
+                                   double target) {
+  // Levenberg–Marquardt on A_H: (K + μC) δ = -g, μ = θ r (r the relative residual, C the Dirichlet
+  // Gram). The step is judged by the ratio ρ of the actual to the predicted change of A_H
+  // (m(δ) = g·δ + ½ δᵀKδ) and θ follows it (kNewtonDamping, solvers/optim/damping.h). Once the
+  // predicted change is below the rounding noise of A_H (kValueNoise of the size of its terms), a
+  // step that lowers the Euclidean norm of the gradient is accepted instead, with θ unchanged. The
+  // surface must stay regular at the nodes.
+  const optim::Damping& damping = kNewtonDamping;
+  CorrectorStats st;
+  Eigen::VectorXd g;
+  st.residual = p.residual(H, &g);
+  double f = p.value(H);
+  const double fscale = std::abs(p.area()) + 2.0 * std::abs(H) * std::abs(p.base.f->volume(p.P())) + 1e-300;
+  int stalled = 0;
+  std::vector<double> history{st.residual};
+  for (int it = 0;; ++it) {
+    if (!std::isfinite(st.residual)) return st;
+    if (st.residual <= o.tolerance || (target > 0 && p.eps != 0.0 && p.residual_at(H, 0.0) <= target)) {
+      st.ok = true;
+      return st;
+    }
+    if (it >= max_iterations || stalled >= kNewtonStallIterations) return st;
+    // An ε-stage in the heavily damped regime crawling along the valley (kCrawlDamping): stop and
+    // let the homotopy change ε instead.
+    if (p.eps != 0.0 && theta >= kCrawlDamping && history.size() > kCrawlWindow &&
+        st.residual > 0.5 * history[history.size() - 1 - kCrawlWindow])
+      return st;
+    const Eigen::MatrixXd K = p.hessian(H);
+    if (!K.allFinite()) return st;
+    const Eigen::VectorXd y = p.get();
+    bool accepted = false;
+    for (int tries = 0; tries < damping.max_tries && !accepted; ++tries) {
+      const double mu = theta * st.residual;
+      Eigen::LLT<Eigen::MatrixXd> llt(K + mu * p.C);
+      if (llt.info() != Eigen::Success) {
+        damping.rejected(theta);
+        continue;
+      }
+      Eigen::VectorXd d = -llt.solve(g);
+      if (!d.allFinite()) {
+        damping.rejected(theta);
+        continue;
+      }
+      // Chord corrections with the same factor (while the residual falls): they bring a long step
+      // in the soft (tangential) directions back to the floor of the curved valley.
+      p.set(y + d);
+      Eigen::VectorXd gn;
+      double rn = p.residual(H, &gn);
+      for (int c = 0; c < kNewtonChords && std::isfinite(rn); ++c) {
+        const Eigen::VectorXd dc = -llt.solve(gn);
+        if (!dc.allFinite()) break;
+        p.set(y + d + dc);
+        Eigen::VectorXd gc;
+        const double rc = p.residual(H, &gc);
+        if (!(rc < rn)) {
+          p.set(y + d);
+          break;
+        }
+        d += dc;
+        rn = rc;
+        gn = gc;
+      }
+      const double pred = g.dot(d) + 0.5 * d.dot(K * d);
+      const double fn = p.value(H);
+      bool ok = std::isfinite(fn) && std::isfinite(rn) && p.a->min_normal(p.P()) > 0.0;
+      double rho = 0.0;
+      // Accepted on the fall of the Euclidean norm of the gradient alone (a short step along
+      // -(K + μC)^{-1} g always lowers it when K is positive semidefinite, the max-norm of the
+      // residual not necessarily): θ stays.
+      bool on_gradient_alone = false;
+      if (ok) {
+        const bool falls = gn.norm() < g.norm();
+        rho = std::abs(pred) > kValueNoise * fscale ? (fn - f) / pred : 0.0;
+        on_gradient_alone = falls && !(rho > damping.accept_ratio);
+        ok = falls || rho > damping.accept_ratio;
+      }
+      if (ok) {
+        accepted = true;
+        stalled = rn < st.residual || on_gradient_alone ? 0 : stalled + 1;
+        f = fn;
+        g = gn;
+        st.residual = rn;
+        if (!on_gradient_alone) damping.accepted(theta, rho);
+      } else {
+        p.set(y);
+        damping.rejected(theta);
+      }
+    }
+    ++st.iterations;
+    history.push_back(st.residual);
+    if (!accepted) return st;
+  }
+}
+
+CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations) {
+  // Newton on A_H (ε = 0) restricted to the well-conditioned part of the Hessian. K v = λ C v (C the
+  // Dirichlet Gram, so the cut does not depend on how the free points are scaled), v_iᵀ C v_j = δ_ij;
+  // the kept step is -Σ_{|λ_i| > c λ_max} (v_iᵀ g / λ_i) v_i (the least-C-norm Newton step in the span
+  // of the kept modes), the dropped step the same sum over the soft (tangential) modes. Each
+  // iteration tries the cuts c = 1e-5, ..., 1e-10 and the fractions t = 0, 0.003, ..., 1 of the
+  // dropped step, each trial followed by up to 16 chord corrections in the kept modes (back to the floor of the
+  // curved valley; ended by the second that does not lower ‖g‖), and keeps the trial with the smallest Euclidean norm of the gradient (the
+  // max-norm residual can stall while it falls); it stops when none lowers it. Measured (docs/cmc.md):
+  // the normal part goes in one or two steps, the soft part linearly (a few % to ~10 % a step).
+  CorrectorStats st;
+  const double e0 = p.eps;
+  p.eps = 0.0;
+  Eigen::VectorXd g;
+  st.residual = p.residual(H, &g);
+  // A rule chosen anew changes the discrete A_H: its first variation is measured again.
+  auto refresh = [&] {
+    if (p.refresh_rule && p.refresh_rule()) st.residual = p.residual(H, &g);
+  };
+  for (int it = 0; it < max_iterations && std::isfinite(st.residual) && st.residual > o.tolerance; ++it) {
+    if (it > 0 && it % kRuleRefreshEvery == 0) {
+      refresh();
+      if (!(std::isfinite(st.residual) && st.residual > o.tolerance)) break;
+    }
+    const Eigen::MatrixXd K = p.hessian(H);
+    if (!K.allFinite()) break;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, p.C);
+    if (es.info() != Eigen::Success) break;
+    const Eigen::VectorXd& lam = es.eigenvalues();
+    const Eigen::MatrixXd& Vm = es.eigenvectors();
+    const double lmax = lam.cwiseAbs().maxCoeff();
+    if (!(lmax > 0) || !std::isfinite(lmax)) break;
+    const Eigen::VectorXd c = Vm.transpose() * g;
+    const Eigen::VectorXd y = p.get();
+    // Merit: the Euclidean norm of the gradient (the max-norm residual can stall while it falls).
+    double best = g.norm(), best_r = st.residual;
+    Eigen::VectorXd best_y, best_g;
+    for (double cut = kTruncationFirstCut; cut >= kTruncationLastCut; cut *= 0.1) {
+      Eigen::VectorXd kept = Eigen::VectorXd::Zero(y.size()), dropped = kept;
+      std::vector<Eigen::Index> keep;
+      for (Eigen::Index i = 0; i < lam.size(); ++i) {
+        if (std::abs(lam(i)) > cut * lmax) {
+          kept -= (c(i) / lam(i)) * Vm.col(i);
+          keep.push_back(i);
+        } else if (lam(i) != 0.0) {
+          dropped -= (c(i) / lam(i)) * Vm.col(i);
+        }
+      }
+      if (!kept.allFinite() || !dropped.allFinite()) continue;
+      // The dropped (soft) modes by a fraction t of their Newton step, each trial followed by
+      // chord corrections in the kept modes (at most kTruncatedChords), which bring it back to the
+      // floor of the curved valley.
+      for (double t : kSoftStepFractions) {
+        Eigen::VectorXd d = kept + t * dropped;
+        double prev = std::numeric_limits<double>::infinity();
+        int rises = 0;
+        for (int chord = 0; chord <= kTruncatedChords; ++chord) {
+          p.set(y + d);
+          Eigen::VectorXd gn;
+          // Not finite also where |x_u ∧ x_v| vanishes at a node (n̂ = N/|N|): such a trial is out.
+          const double rn = p.residual(H, &gn);
+          if (!std::isfinite(rn)) break;
+          // The second chord correction that does not lower ‖g‖ ends the trial: past that the
+          // corrections diverge in the soft modes (measured on the circle, the sphere patch and
+          // the tensor catenoid: the same or lower end residuals in 1.2–2.8× less time, docs/cmc.md "Speed").
+          if (gn.norm() >= prev && ++rises >= kTruncatedChordRises) break;
+          prev = gn.norm();
+          if (gn.norm() < best) {
+            best = gn.norm();
+            best_r = rn;
+            best_y = p.get();
+            best_g = gn;
+          }
+          const Eigen::VectorXd cn = Vm.transpose() * gn;
+          for (Eigen::Index i : keep) d -= (cn(i) / lam(i)) * Vm.col(i);
+        }
+      }
+    }
+    ++st.iterations;
+    if (best_y.size() == 0) {
+      p.set(y);
+      break;
+    }
+    p.set(best_y);
+    g = best_g;
+    st.residual = best_r;
+  }
+  if (std::isfinite(st.residual) && st.residual > o.tolerance) refresh();
+  st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
+  if (!st.ok && std::isfinite(st.residual)) {
+    // What the truncated phase leaves is in the soft modes: the soft-mode phase
+    // (area_soft_mode_phase.cpp) eliminates the hard ones and solves the reduced system.
+    const CorrectorStats soft = area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
+    st.iterations += soft.iterations;
+    st.soft_iterations = soft.iterations;
+    st.trust_region_iterations = soft.trust_region_iterations;
+    st.residual = soft.residual;
+    st.ok = soft.ok;
+    st.soft_stationary = soft.soft_stationary;
+    st.trust_region_blocked = soft.trust_region_blocked;
+  }
+  p.eps = e0;
+  return st;
+}
+
+
+// ---------------------------------------------------------------- regularity
+
+}  // namespace bpde::cmc_detail
