@@ -72,6 +72,28 @@ SolveOutcome outcome(const Job& job, Net net, const Summary& s) {
 // Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
+// The area solve's route records (FORMATS.md, "Report fields": `routes`).
+Json routes_json(const AreaRouteLog& log) {
+  Json routes = Json::array();
+  for (const AreaRouteRecord& r : log.records) {
+    Json phases = Json::object();
+    for (const AreaPhaseRecord& ph : r.phases) phases[to_string(ph.phase)] = ph.count;
+    routes.push_back({{"route", to_string(r.route)},
+                      {"tried", r.tried},
+                      {"status", r.tried ? Json(to_string(r.status)) : Json(nullptr)},
+                      {"first_variation", r.first_variation ? finite_or_null(*r.first_variation) : Json(nullptr)},
+                      {"iterations", r.iterations},
+                      {"continuation_steps", r.continuation_steps},
+                      {"seconds", finite_or_null(r.seconds)},
+                      {"phases", phases},
+                      {"soft_mode_end", to_string(r.soft_mode_end)},
+                      {"kept", r.kept},
+                      {"why", r.why}});
+  }
+  return routes;
+}
+
+
 SolveOutcome tensor_extremal(const Job& job, const TensorNet& net) {
   const EnergySpec& e = *job.problem.energy;
   const ExtremalResult r = solve_extremal(net, e, job.fixed);
@@ -145,6 +167,15 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
                                 {"grading", r.quadrature_grading},
                                 {"levels", r.quadrature_levels},
                                 {"nodes", r.quadrature_nodes}};
+  // The area solve's routes, in the order considered, and the regularity of its net.
+  if (o.functional == CmcFunctionalKind::Area) out.report["routes"] = routes_json(r.routes);
+  if (r.parametrisation.checked)
+    out.report["parametrisation"] = {{"regular", r.parametrisation.regular},
+                                     {"min_ratio", finite_or_null(r.parametrisation.min_ratio)},
+                                     {"flipped", r.parametrisation.flipped},
+                                     {"fold_corner_angle", r.parametrisation.fold_u >= 0
+                                                               ? finite_or_null(r.parametrisation.fold_corner_angle)
+                                                               : Json(nullptr)}};
   return out;
 }
 
