@@ -294,6 +294,51 @@ constexpr int kEasyLsStep = 20;
 constexpr int kLsStepIterations = 200;
 constexpr double kLsStepResidual = 1e-2;
 
+// The steps of one continuation of the least squares in V from `cur` (at V1) to V0: the secant
+// predictor through the last two ends, minimise_at(end, V) as the corrector, the step control of
+// the H continuation over V − V1 (at most `attempts` attempts, counted down; `budget` the least
+// squares' iterations left, which minimise_at counts down). The steps taken, with cur at V0; or
+// nothing, with `why` saying where it stopped.
+template <class Minimise>
+std::optional<int> continue_from(LsEnd& cur, double V1, double V0, const CmcOptions& o, int& attempts,
+                                 const int& budget, const Minimise& minimise_at, std::string& why) {
+  const double span = V0 - V1;
+  CmcOptions oc = o;
+  oc.max_continuation_steps = attempts;
+  StepController control(span, span / 8, oc);
+  LsEnd prev = cur;
+  double v_prev = V1, v_cur = V1;
+  int taken = 0;
+  while (!control.reached_target()) {
+    if (budget <= 0 || !control.attempt()) {
+      why = "stopped at V = " + num(v_cur) + " (" +
+            (budget <= 0 ? "max_least_squares_iterations" : "max_continuation_steps") + ")";
+      return std::nullopt;
+    }
+    --attempts;
+    const StepController::Step step = control.propose();
+    const double vn = step.hn == span ? V0 : V1 + step.hn;
+    LsEnd next = cur;
+    if (v_cur != v_prev) {
+      const double t = (vn - v_cur) / (v_cur - v_prev);
+      next.P += t * (cur.P - prev.P);
+      next.H += t * (cur.H - prev.H);
+    }
+    if (minimise_at(next, vn)) {
+      prev = std::move(cur);
+      cur = std::move(next);
+      v_prev = v_cur;
+      v_cur = vn;
+      ++taken;
+      control.accept(step, cur.run.ls.iterations, kEasyLsStep);
+    } else if (!control.reject(step)) {
+      why = "the step fell below min_step at V = " + num(v_cur);
+      return std::nullopt;
+    }
+  }
+  return taken;
+}
+
 template <class Net>
 std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, const VolumeTarget& vt, double Vref,
                                         const std::vector<int>& free, int& iterations, int& steps, std::string& why) {
@@ -335,52 +380,146 @@ std::optional<LsEnd> continue_in_volume(const Net& data, const CmcOptions& o, co
       fail(V1, "no regular start there with √Φ <= " + num(kLsStepResidual));
       continue;
     }
-    const double span = V0 - V1;
-    CmcOptions oc = o;
-    oc.max_continuation_steps = attempts;
-    StepController control(span, span / 8, oc);
-    LsEnd prev = cur;
-    double v_prev = V1, v_cur = V1;
-    int taken = 0;
-    bool failed = false;
-    while (!control.reached_target()) {
-      if (budget <= 0 || !control.attempt()) {
-        failed = true;
-        fail(V1, "stopped at V = " + num(v_cur) + " (" +
-                     (budget <= 0 ? "max_least_squares_iterations" : "max_continuation_steps") + ")");
-        break;
-      }
-      --attempts;
-      const StepController::Step step = control.propose();
-      const double vn = step.hn == span ? V0 : V1 + step.hn;
-      LsEnd next = cur;
-      if (v_cur != v_prev) {
-        const double t = (vn - v_cur) / (v_cur - v_prev);
-        next.P += t * (cur.P - prev.P);
-        next.H += t * (cur.H - prev.H);
-      }
-      if (minimise_at(next, vn)) {
-        prev = std::move(cur);
-        cur = std::move(next);
-        v_prev = v_cur;
-        v_cur = vn;
-        ++taken;
-        control.accept(step, cur.run.ls.iterations, kEasyLsStep);
-      } else if (!control.reject(step)) {
-        failed = true;
-        fail(V1, "the step fell below min_step at V = " + num(v_cur));
-        break;
-      }
+    std::string stopped;
+    const std::optional<int> taken = continue_from(cur, V1, V0, o, attempts, budget, minimise_at, stopped);
+    if (!taken) {
+      fail(V1, stopped);
+      continue;
     }
-    if (failed) continue;
-    steps += taken;
+    steps += *taken;
     cur.start_note = "continued in V from V1 = " + num(V1) + " (from the minimiser of D there, H = " +
-                     num(start.H, 3) + ") in " + std::to_string(taken) + " step(s)";
+                     num(start.H, 3) + ") in " + std::to_string(*taken) + " step(s)";
     cur.iterations = ls_iterations;
     return cur;
   }
   why = "no continuation in V from V1 towards v0 (V1 = " + (tried.empty() ? std::string("none") : tried) + ")";
   return std::nullopt;
+}
+
+// The V form's start did not converge (past the hemisphere it folds: docs/cmc_measurements.md):
+// the continuation in V from V1 towards v0, kept when it ends better (converged, or regular and
+// on V0 where the first end is not, or a lower √Φ, both read by the finer of the two check rules).
+// end, g, the result's iterations and steps move to the continuation's where it is kept; the
+// returned note says how the other ended.
+template <class Net>
+std::string try_continuation_in_volume(const Net& data, const CmcOptions& o, const CmcFunctional& cf,
+                                       const VolumeTarget& vt, const std::vector<int>& free, LsEnd& end, LsGrade& g,
+                                       CmcResult<Net>& res) {
+  const VolumeTarget* v = &vt;
+  const DirichletStart ds = dirichlet_start(data, o);
+  const double Vref = cf.volume(ds.p.P);
+  int iterations = 0, steps = 0;
+  std::string why;
+  std::optional<LsEnd> cont = continue_in_volume(data, o, vt, Vref, free, iterations, steps, why);
+  res.summary.iterations += iterations;
+  if (cont) cont->H = best_h(*cont->run.f, cont->P, cont->H);
+  const LsGrade g2 = cont ? grade(data, o, *cont, v) : LsGrade{};
+  bool better = cont && g2.rank < g.rank;
+  double r1 = g.residual, r2 = g2.residual;
+  if (cont && g2.rank == 1 && g.rank == 1) {
+    const int extra = std::max(end.run.extra, cont->run.extra) + 1;
+    const MeanCurvatureLeastSquares fine = form_for(data, extra);
+    r1 = std::sqrt(fine.value(end.P, end.H));
+    r2 = std::sqrt(fine.value(cont->P, cont->H));
+    better = r2 < r1;
+  }
+  const std::string first = g.rank == 1 ? "above the tolerance (√Φ = " + num(r1, 3) + ")"
+                            : !g.reg.ok  ? std::string("at a degenerate parametrisation")
+                                         : std::string("off V0");
+  if (!better)
+    return cont ? "; the continuation in V from V1 towards v0 ended no better (√Φ = " + num(r2, 3) + ")" : "; " + why;
+  end = std::move(*cont);
+  g = g2;
+  res.continuation_steps += steps;
+  return "; from the minimiser of D at V0 it ended " + first;
+}
+
+// Why the least squares stopped above the tolerance, for the message.
+std::string stop_reason(const LsRun& run, const CmcOptions& o) {
+  std::string why;
+  switch (run.ls.stop) {
+    case LsStop::Reached:
+      why = " by the check rule (q = " + std::to_string(run.check->points_per_direction()) +
+            "), although the rule minimised (q = " + std::to_string(run.f->points_per_direction()) +
+            ") reached " + num(0.7 * o.mean_curvature_tolerance, 3) + ": the rule does not resolve Φ at this net";
+      break;
+    case LsStop::Stalled:
+      why = " and no longer falls (the degree is too low for it)";
+      break;
+    case LsStop::NoStep:
+      why = " and no Levenberg–Marquardt step lowers it (the degree is too low for it)";
+      break;
+    case LsStop::MaxIterations:
+      why = " after max_least_squares_iterations = " + std::to_string(o.max_least_squares_iterations) +
+            " (a library option)";
+      break;
+    case LsStop::NonFinite:
+      why = ": Φ or its Jacobian is not finite at the net reached";
+      break;
+    case LsStop::ConstraintUnmet:
+      why = std::string(": ") + kVolumeUnmet;
+      break;
+    case LsStop::Interrupted:
+      why = ": the rules refined " + std::to_string(kMaxRuleRefinements) + " times (now q = " +
+            std::to_string(run.f->points_per_direction()) + " and " +
+            std::to_string(run.check->points_per_direction()) +
+            " points per direction) still stop agreeing, so the parametrisation is folding where Φ's rule does not "
+            "see it; the net is the last point where they agreed";
+      break;
+  }
+  return why;
+}
+
+// The result at the least squares' end and its verdict: degenerate parametrisation, V off V0,
+// √Φ above the tolerance (with why the least squares stopped), or converged.
+template <class Net>
+void fill_result(const Net& data, const CmcOptions& o, const CmcFunctional& cf, const LsEnd& end, const LsGrade& g,
+                 CmcResult<Net>& res) {
+  const LsRun& run = end.run;
+  const double H = end.H;
+  const Eigen::MatrixX3d& P = end.P;
+  const Net net = make_net(data, P);
+  res.net = net;
+  res.H = H == 0.0 ? 0.0 : H;  // no "-0" in the report
+  res.D = cf.dirichlet(P);
+  res.V = cf.volume(P);
+  res.DH = res.D + 2.0 * H * res.V;
+  res.A = area(net);
+  res.energy = g.phi;
+  res.quadrature_points = run.f->points_per_direction();
+  res.quadrature_grading = 1;  // the plain corner-collapsed rules (mean_curvature_least_squares.h)
+  res.quadrature_nodes = run.f->nodes();
+  res.summary.residual = g.residual;
+  const std::string refined =
+      run.extra > 0 ? " (rule refined to q = " + std::to_string(run.f->points_per_direction()) + ": " +
+                          (run.folds > 0 ? "the check rule stopped agreeing with the coarser one" : "") +
+                          (run.folds > 0 && run.misses > 0 ? "; " : "") +
+                          (run.misses > 0 ? "the check rule read above the tolerance where the coarser one met it"
+                                          : "") +
+                          ")"
+                    : std::string();
+  const bool ceres = o.solver == CmcSolver::Ceres;
+  const std::string what = "least squares of the mean curvature " + end.start_note + refined + ": √Φ = " +
+                           num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
+                           " after " + std::to_string(end.iterations) +
+                           (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
+  const Regularity reg = g.reg.ok ? final_regularity(net, res.A) : g.reg;
+  res.parametrisation = parametrisation_check(reg);
+  if (!reg.ok) {
+    res.summary.set_failed(Status::NoConvergence,
+                           "degenerate parametrisation: " + reg.describe() + " (not a CMC surface); " + what);
+  } else if (!(g.v_off <= o.tolerance)) {
+    res.summary.set_failed(Status::NoConvergence,
+                           what + ", but V misses V0 by " + num(g.v_off, 3) + " (relative): " +
+                               (run.ls.stop == LsStop::ConstraintUnmet ? kVolumeUnmet : "above the tolerance"));
+  } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
+    const std::string why = stop_reason(run, o);
+    res.summary.set_failed(Status::NoConvergence,
+                           what + " is above the tolerance " + num(o.mean_curvature_tolerance, 3) + why);
+  } else {
+    res.summary.message = what;
+    res.summary.set_converged();
+  }
 }
 
 template <class Net>
@@ -423,116 +562,8 @@ CmcResult<Net> solve_mean_curvature_impl(const Net& data, const CmcOptions& o,
     if (vt && end.run.ls.stop != LsStop::ConstraintUnmet) end.H = best_h(*end.run.f, end.P, end.H);
     LsGrade g = grade(data, o, end, v);
     std::string route_note;
-    if (vt && g.rank > 0) {
-      // The V form's start did not converge (past the hemisphere it folds: docs/cmc.md, "The V
-      // form"): the continuation in V from V1 towards v0, kept when it ends better (converged, or
-      // regular and on V0 where the first end is not, or a lower √Φ, both read by the finer of the
-      // two check rules).
-      const DirichletStart ds = dirichlet_start(data, o);
-      const double Vref = cf->volume(ds.p.P);
-      int iterations = 0, steps = 0;
-      std::string why;
-      std::optional<LsEnd> cont = continue_in_volume(data, o, *vt, Vref, free, iterations, steps, why);
-      res.summary.iterations += iterations;
-      if (cont) cont->H = best_h(*cont->run.f, cont->P, cont->H);
-      const LsGrade g2 = cont ? grade(data, o, *cont, v) : LsGrade{};
-      bool better = cont && g2.rank < g.rank;
-      double r1 = g.residual, r2 = g2.residual;
-      if (cont && g2.rank == 1 && g.rank == 1) {
-        const int extra = std::max(end.run.extra, cont->run.extra) + 1;
-        const MeanCurvatureLeastSquares fine = form_for(data, extra);
-        r1 = std::sqrt(fine.value(end.P, end.H));
-        r2 = std::sqrt(fine.value(cont->P, cont->H));
-        better = r2 < r1;
-      }
-      const std::string first = g.rank == 1 ? "above the tolerance (√Φ = " + num(r1, 3) + ")"
-                                : !g.reg.ok  ? std::string("at a degenerate parametrisation")
-                                             : std::string("off V0");
-      if (better) {
-        route_note = "; from the minimiser of D at V0 it ended " + first;
-        end = std::move(*cont);
-        g = g2;
-        res.continuation_steps += steps;
-      } else {
-        route_note = cont ? "; the continuation in V from V1 towards v0 ended no better (√Φ = " + num(r2, 3) + ")"
-                          : "; " + why;
-      }
-    }
-    const LsRun& run = end.run;
-    const double H = end.H;
-    const Eigen::MatrixX3d& P = end.P;
-    const Net net = make_net(data, P);
-    res.net = net;
-    res.H = H == 0.0 ? 0.0 : H;  // no "-0" in the report
-    res.D = cf->dirichlet(P);
-    res.V = cf->volume(P);
-    res.DH = res.D + 2.0 * H * res.V;
-    res.A = area(net);
-    res.energy = g.phi;
-    res.quadrature_points = run.f->points_per_direction();
-    res.quadrature_grading = 1;  // the plain corner-collapsed rules (mean_curvature_least_squares.h)
-    res.quadrature_nodes = run.f->nodes();
-    res.summary.residual = g.residual;
-    const std::string refined =
-        run.extra > 0 ? " (rule refined to q = " + std::to_string(run.f->points_per_direction()) + ": " +
-                            (run.folds > 0 ? "the check rule stopped agreeing with the coarser one" : "") +
-                            (run.folds > 0 && run.misses > 0 ? "; " : "") +
-                            (run.misses > 0 ? "the check rule read above the tolerance where the coarser one met it"
-                                            : "") +
-                            ")"
-                      : std::string();
-    const bool ceres = o.solver == CmcSolver::Ceres;
-    const std::string what = "least squares of the mean curvature " + end.start_note + refined + ": √Φ = " +
-                             num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
-                             " after " + std::to_string(end.iterations) +
-                             (ceres ? " Ceres Levenberg–Marquardt iteration(s)" : " Levenberg–Marquardt iteration(s)");
-    const Regularity reg = g.reg.ok ? final_regularity(net, res.A) : g.reg;
-    res.parametrisation = parametrisation_check(reg);
-    if (!reg.ok) {
-      res.summary.set_failed(Status::NoConvergence,
-                             "degenerate parametrisation: " + reg.describe() + " (not a CMC surface); " + what);
-    } else if (!(g.v_off <= o.tolerance)) {
-      res.summary.set_failed(Status::NoConvergence,
-                             what + ", but V misses V0 by " + num(g.v_off, 3) + " (relative): " +
-                                 (run.ls.stop == LsStop::ConstraintUnmet ? kVolumeUnmet : "above the tolerance"));
-    } else if (!(res.summary.residual <= o.mean_curvature_tolerance)) {
-      std::string why;
-      switch (run.ls.stop) {
-        case LsStop::Reached:
-          why = " by the check rule (q = " + std::to_string(run.check->points_per_direction()) +
-                "), although the rule minimised (q = " + std::to_string(run.f->points_per_direction()) +
-                ") reached " + num(0.7 * o.mean_curvature_tolerance, 3) + ": the rule does not resolve Φ at this net";
-          break;
-        case LsStop::Stalled:
-          why = " and no longer falls (the degree is too low for it)";
-          break;
-        case LsStop::NoStep:
-          why = " and no Levenberg–Marquardt step lowers it (the degree is too low for it)";
-          break;
-        case LsStop::MaxIterations:
-          why = " after max_least_squares_iterations = " + std::to_string(o.max_least_squares_iterations) +
-                " (a library option)";
-          break;
-        case LsStop::NonFinite:
-          why = ": Φ or its Jacobian is not finite at the net reached";
-          break;
-        case LsStop::ConstraintUnmet:
-          why = std::string(": ") + kVolumeUnmet;
-          break;
-        case LsStop::Interrupted:
-          why = ": the rules refined " + std::to_string(kMaxRuleRefinements) + " times (now q = " +
-                std::to_string(run.f->points_per_direction()) + " and " +
-                std::to_string(run.check->points_per_direction()) +
-                " points per direction) still stop agreeing, so the parametrisation is folding where Φ's rule does not "
-                "see it; the net is the last point where they agreed";
-          break;
-      }
-      res.summary.set_failed(Status::NoConvergence,
-                             what + " is above the tolerance " + num(o.mean_curvature_tolerance, 3) + why);
-    } else {
-      res.summary.message = what;
-      res.summary.set_converged();
-    }
+    if (vt && g.rank > 0) route_note = try_continuation_in_volume(data, o, *cf, *vt, free, end, g, res);
+    fill_result(data, o, *cf, end, g, res);
     res.summary.message += route_note;
   }
   return res;

@@ -17,6 +17,8 @@ struct Damping {
   double accept_ratio = 0.1;  ///< a step whose gain ratio exceeds this is accepted
   double good_ratio = 0.75;
   double poor_ratio = 0.25;
+  /// A rejection raises θ from at least `floor` (a θ of 0 would otherwise stay 0).
+  bool reject_from_floor = false;
 
   /// θ after an accepted step with gain ratio rho (actual over predicted change of the merit).
   void accepted(double& theta, double rho) const {
@@ -26,7 +28,7 @@ struct Damping {
   /// θ after a step judged good without a gain ratio (a corrector that accepts on a falling residual).
   void good(double& theta) const { theta = std::max(theta / shrink, floor); }
   /// θ after a rejected step or a factorisation that failed.
-  void rejected(double& theta) const { theta *= reject; }
+  void rejected(double& theta) const { theta = (reject_from_floor ? std::max(theta, floor) : theta) * reject; }
 };
 
 }  // namespace bpde::optim

@@ -6,6 +6,7 @@
 
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/gram.h"
+#include "bezierpde/solvers/optim/damping.h"
 
 namespace bpde::optim {
 
@@ -120,6 +121,59 @@ LmTrial levenberg_marquardt_trial(const LeastSquaresProblem& problem, const Eige
   return trial(problem, linearise(problem, x, r, J, options), x, r, J, lambda, options);
 }
 
+namespace {
+
+// λ: /5 after a good step, ×3 after a poor one, ×10 (from at least 1e-15) after a rejected or
+// unsolvable trial, 30 trials per iteration.
+constexpr Damping kLmDamping{30, 1e-15, 5.0, 3.0, 10.0, 0.0, 0.75, 0.25, true};
+
+// One iteration's step: trials with rising λ until one lowers Φ. x, and λ, move; false when no
+// trial does.
+bool lm_step(const LeastSquaresProblem& p, const Linearisation& L, Eigen::VectorXd& x, const Eigen::VectorXd& r,
+             const Eigen::MatrixXd& J, double phi, double& lambda, const LevenbergMarquardtOptions& o) {
+  for (int tries = 0; tries < kLmDamping.max_tries; ++tries) {
+    const LmTrial t = trial(p, L, x, r, J, lambda, o);
+    if (!t.ok || t.bent) {  // not solvable, or bending too much for its second-order model
+      kLmDamping.rejected(lambda);
+      continue;
+    }
+    const Eigen::VectorXd& d = t.velocity;
+    Eigen::VectorXd xn = t.acceleration.size() ? Eigen::VectorXd(d + 0.5 * t.acceleration) : d;
+    xn += x;
+    Eigen::VectorXd rn;
+    double phin = std::numeric_limits<double>::infinity();
+    if (!p.constraint || p.restore(xn)) {
+      p.residuals(xn, rn, nullptr);
+      if (rn.size() != r.size())
+        throw SizeError("Levenberg–Marquardt: the residuals changed size from " + std::to_string(r.size()) + " to " +
+                        std::to_string(rn.size()));
+      phin = rn.squaredNorm();
+    }
+    const double pred = -(2.0 * L.g.dot(d) + d.dot(L.A * d));  // the fall of Φ the velocity predicts
+    if (std::isfinite(phin) && phin < phi) {
+      kLmDamping.accepted(lambda, pred > 0 ? (phi - phin) / pred : 0.0);
+      x = std::move(xn);
+      return true;
+    }
+    kLmDamping.rejected(lambda);
+  }
+  return false;
+}
+
+// The start restored onto the constraint; false (out.stop set) when it cannot be.
+bool start_point(const LeastSquaresProblem& p, Eigen::VectorXd& x, LsOutcome& out) {
+  if (!p.constraint) return true;
+  Eigen::VectorXd xr = x;  // on a copy: a start that cannot be restored is reported as it was given
+  if (!p.restore(xr)) {
+    out.stop = LsStop::ConstraintUnmet;
+    return false;
+  }
+  x = std::move(xr);
+  return true;
+}
+
+}  // namespace
+
 LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, const LevenbergMarquardtOptions& o,
                               const ProgressFn& progress) {
   o.validate();
@@ -128,14 +182,9 @@ LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, 
   if (!x.allFinite()) throw NonFiniteError("Levenberg–Marquardt: the start is not finite");
   LsOutcome out;
   report(progress, o.stage, 0, 1);
-  if (p.constraint) {  // on a copy: a start that cannot be restored is reported as it was given
-    Eigen::VectorXd xr = x;
-    if (!p.restore(xr)) {
-      out.stop = LsStop::ConstraintUnmet;
-      report(progress, o.stage, 1, 1);
-      return out;
-    }
-    x = std::move(xr);
+  if (!start_point(p, x, out)) {
+    report(progress, o.stage, 1, 1);
+    return out;
   }
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
@@ -161,38 +210,7 @@ LsOutcome levenberg_marquardt(const LeastSquaresProblem& p, Eigen::VectorXd& x, 
       out.stop = LsStop::MaxIterations;
       break;
     }
-    const Linearisation L = linearise(p, x, r, J, o);
-    bool accepted = false;
-    for (int tries = 0; tries < 30 && !accepted; ++tries) {
-      const LmTrial t = trial(p, L, x, r, J, lambda, o);
-      if (!t.ok || t.bent) {
-        lambda = std::max(lambda, 1e-15) * 10;  // not solvable, or bending too much for its second-order model
-        continue;
-      }
-      const Eigen::VectorXd& d = t.velocity;
-      Eigen::VectorXd xn = t.acceleration.size() ? Eigen::VectorXd(d + 0.5 * t.acceleration) : d;
-      xn += x;
-      Eigen::VectorXd rn;
-      double phin = std::numeric_limits<double>::infinity();
-      if (!p.constraint || p.restore(xn)) {
-        p.residuals(xn, rn, nullptr);
-        if (rn.size() != r.size())
-          throw SizeError("Levenberg–Marquardt: the residuals changed size from " + std::to_string(r.size()) + " to " +
-                          std::to_string(rn.size()));
-        phin = rn.squaredNorm();
-      }
-      const double pred = -(2.0 * L.g.dot(d) + d.dot(L.A * d));  // the fall of Φ the velocity predicts
-      if (std::isfinite(phin) && phin < phi) {
-        const double rho = pred > 0 ? (phi - phin) / pred : 0.0;
-        if (rho > 0.75) lambda = std::max(lambda / 5, 1e-15);
-        if (rho < 0.25) lambda *= 3;
-        x = std::move(xn);
-        accepted = true;
-      } else {
-        lambda = std::max(lambda, 1e-15) * 10;
-      }
-    }
-    if (!accepted) {
+    if (!lm_step(p, linearise(p, x, r, J, o), x, r, J, phi, lambda, o)) {
       out.stop = LsStop::NoStep;
       break;
     }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "bezierpde/core/progress.h"
@@ -70,14 +71,71 @@ double AreaProblem::residual_at(double H, double e, Eigen::VectorXd* g) const {
   return nm / den;
 }
 
+namespace {
+
+// One regularised Newton trial of area_newton_correct from y (gradient g, value f): the step of
+// (K + μC) δ = −g with chord corrections by the same factor (at most kNewtonChords, while the
+// residual falls: they bring a long step in the soft, tangential directions back to the floor of
+// the curved valley), judged by the gain ratio ρ of A_H, or where the predicted change is rounding
+// noise (kValueNoise) by the fall of the Euclidean norm of the gradient alone (a short step along
+// −(K + μC)⁻¹ g always lowers it when K is positive semidefinite, the max-norm residual not
+// necessarily). The surface must stay regular at the nodes. p is at the trial point when it is
+// accepted, at y otherwise.
+struct NewtonTrial {
+  bool accepted = false;
+  bool on_gradient_alone = false;  ///< accepted on the gradient's fall, not on ρ: θ stays
+  double rho = 0.0, f = 0.0, residual = 0.0;
+  Eigen::VectorXd g;
+};
+
+NewtonTrial newton_trial(AreaProblem& p, double H, const Eigen::MatrixXd& K, const Eigen::VectorXd& y,
+                         const Eigen::VectorXd& g, double f, double mu, double fscale, double accept_ratio) {
+  NewtonTrial t;
+  Eigen::LLT<Eigen::MatrixXd> llt(K + mu * p.C);
+  if (llt.info() != Eigen::Success) return t;
+  Eigen::VectorXd d = -llt.solve(g);
+  if (!d.allFinite()) return t;
+  p.set(y + d);
+  Eigen::VectorXd gn;
+  double rn = p.residual(H, &gn);
+  for (int c = 0; c < kNewtonChords && std::isfinite(rn); ++c) {
+    const Eigen::VectorXd dc = -llt.solve(gn);
+    if (!dc.allFinite()) break;
+    p.set(y + d + dc);
+    Eigen::VectorXd gc;
+    const double rc = p.residual(H, &gc);
+    if (!(rc < rn)) {
+      p.set(y + d);
+      break;
+    }
+    d += dc;
+    rn = rc;
+    gn = gc;
+  }
+  const double pred = g.dot(d) + 0.5 * d.dot(K * d);
+  const double fn = p.value(H);
+  if (std::isfinite(fn) && std::isfinite(rn) && p.a->min_normal(p.P()) > 0.0) {
+    const bool falls = gn.norm() < g.norm();
+    t.rho = std::abs(pred) > kValueNoise * fscale ? (fn - f) / pred : 0.0;
+    t.on_gradient_alone = falls && !(t.rho > accept_ratio);
+    t.accepted = falls || t.rho > accept_ratio;
+  }
+  if (!t.accepted) {
+    p.set(y);
+    return t;
+  }
+  t.f = fn;
+  t.residual = rn;
+  t.g = std::move(gn);
+  return t;
+}
+
+}  // namespace
+
 CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o, int max_iterations, double& theta,
                                    double target) {
   // Levenberg–Marquardt on A_H: (K + μC) δ = -g, μ = θ r (r the relative residual, C the Dirichlet
-  // Gram). The step is judged by the ratio ρ of the actual to the predicted change of A_H
-  // (m(δ) = g·δ + ½ δᵀKδ) and θ follows it (kNewtonDamping, solvers/optim/damping.h). Once the
-  // predicted change is below the rounding noise of A_H (kValueNoise of the size of its terms), a
-  // step that lowers the Euclidean norm of the gradient is accepted instead, with θ unchanged. The
-  // surface must stay regular at the nodes.
+  // Gram), each step a newton_trial; θ follows the trials (kNewtonDamping, solvers/optim/damping.h).
   const optim::Damping& damping = kNewtonDamping;
   CorrectorStats st;
   Eigen::VectorXd g;
@@ -103,61 +161,17 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
     const Eigen::VectorXd y = p.get();
     bool accepted = false;
     for (int tries = 0; tries < damping.max_tries && !accepted; ++tries) {
-      const double mu = theta * st.residual;
-      Eigen::LLT<Eigen::MatrixXd> llt(K + mu * p.C);
-      if (llt.info() != Eigen::Success) {
+      NewtonTrial t = newton_trial(p, H, K, y, g, f, theta * st.residual, fscale, damping.accept_ratio);
+      if (!t.accepted) {
         damping.rejected(theta);
         continue;
       }
-      Eigen::VectorXd d = -llt.solve(g);
-      if (!d.allFinite()) {
-        damping.rejected(theta);
-        continue;
-      }
-      // Chord corrections with the same factor (while the residual falls): they bring a long step
-      // in the soft (tangential) directions back to the floor of the curved valley.
-      p.set(y + d);
-      Eigen::VectorXd gn;
-      double rn = p.residual(H, &gn);
-      for (int c = 0; c < kNewtonChords && std::isfinite(rn); ++c) {
-        const Eigen::VectorXd dc = -llt.solve(gn);
-        if (!dc.allFinite()) break;
-        p.set(y + d + dc);
-        Eigen::VectorXd gc;
-        const double rc = p.residual(H, &gc);
-        if (!(rc < rn)) {
-          p.set(y + d);
-          break;
-        }
-        d += dc;
-        rn = rc;
-        gn = gc;
-      }
-      const double pred = g.dot(d) + 0.5 * d.dot(K * d);
-      const double fn = p.value(H);
-      bool ok = std::isfinite(fn) && std::isfinite(rn) && p.a->min_normal(p.P()) > 0.0;
-      double rho = 0.0;
-      // Accepted on the fall of the Euclidean norm of the gradient alone (a short step along
-      // -(K + μC)^{-1} g always lowers it when K is positive semidefinite, the max-norm of the
-      // residual not necessarily): θ stays.
-      bool on_gradient_alone = false;
-      if (ok) {
-        const bool falls = gn.norm() < g.norm();
-        rho = std::abs(pred) > kValueNoise * fscale ? (fn - f) / pred : 0.0;
-        on_gradient_alone = falls && !(rho > damping.accept_ratio);
-        ok = falls || rho > damping.accept_ratio;
-      }
-      if (ok) {
-        accepted = true;
-        stalled = rn < st.residual || on_gradient_alone ? 0 : stalled + 1;
-        f = fn;
-        g = gn;
-        st.residual = rn;
-        if (!on_gradient_alone) damping.accepted(theta, rho);
-      } else {
-        p.set(y);
-        damping.rejected(theta);
-      }
+      accepted = true;
+      stalled = t.residual < st.residual || t.on_gradient_alone ? 0 : stalled + 1;
+      f = t.f;
+      g = std::move(t.g);
+      st.residual = t.residual;
+      if (!t.on_gradient_alone) damping.accepted(theta, t.rho);
     }
     ++st.iterations;
     history.push_back(st.residual);
@@ -165,16 +179,84 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
   }
 }
 
+namespace {
+
+// The best point of one truncated Newton iteration from y (gradient g, residual r): the smallest
+// Euclidean norm of the gradient (the max-norm residual can stall while it falls) over the cuts
+// and the fractions of the dropped step. best.y empty: no trial lowered it.
+struct TruncatedTrial {
+  double norm, residual;
+  Eigen::VectorXd y, g;
+};
+
+TruncatedTrial best_truncated_step(AreaProblem& p, double H, const Eigen::VectorXd& g, double r,
+                                   const Eigen::VectorXd& lam, const Eigen::MatrixXd& Vm) {
+  const double lmax = lam.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd c = Vm.transpose() * g;
+  const Eigen::VectorXd y = p.get();
+  TruncatedTrial best{g.norm(), r, {}, {}};
+  for (double cut = kTruncationFirstCut; cut >= kTruncationLastCut; cut *= 0.1) {
+    Eigen::VectorXd kept = Eigen::VectorXd::Zero(y.size()), dropped = kept;
+    std::vector<Eigen::Index> keep;
+    for (Eigen::Index i = 0; i < lam.size(); ++i) {
+      if (std::abs(lam(i)) > cut * lmax) {
+        kept -= (c(i) / lam(i)) * Vm.col(i);
+        keep.push_back(i);
+      } else if (lam(i) != 0.0) {
+        dropped -= (c(i) / lam(i)) * Vm.col(i);
+      }
+    }
+    if (!kept.allFinite() || !dropped.allFinite()) continue;
+    // The dropped (soft) modes by a fraction t of their Newton step, each trial followed by chord
+    // corrections in the kept modes (at most kTruncatedChords), which bring it back to the floor
+    // of the curved valley.
+    for (double t : kSoftStepFractions) {
+      Eigen::VectorXd d = kept + t * dropped;
+      double prev = std::numeric_limits<double>::infinity();
+      int rises = 0;
+      for (int chord = 0; chord <= kTruncatedChords; ++chord) {
+        p.set(y + d);
+        Eigen::VectorXd gn;
+        // Not finite also where |x_u ∧ x_v| vanishes at a node (n̂ = N/|N|): such a trial is out.
+        const double rn = p.residual(H, &gn);
+        if (!std::isfinite(rn)) break;
+        // The second chord correction that does not lower ‖g‖ ends the trial: past that the
+        // corrections diverge in the soft modes.
+        if (gn.norm() >= prev && ++rises >= kTruncatedChordRises) break;
+        prev = gn.norm();
+        if (gn.norm() < best.norm) best = {gn.norm(), rn, p.get(), gn};
+        const Eigen::VectorXd cn = Vm.transpose() * gn;
+        for (Eigen::Index i : keep) d -= (cn(i) / lam(i)) * Vm.col(i);
+      }
+    }
+  }
+  return best;
+}
+
+// What the truncated phase leaves is in the soft modes: the soft-mode phase (soft_mode_phase.cpp)
+// eliminates the hard ones and solves the reduced system; its counts go into st.
+void soft_mode_phase_after(AreaProblem& p, double H, const CmcOptions& o, CorrectorStats& st) {
+  const CorrectorStats soft =
+      area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
+  st.iterations += soft.iterations;
+  st.soft_iterations = soft.iterations;
+  st.trust_region_iterations = soft.trust_region_iterations;
+  st.residual = soft.residual;
+  st.ok = soft.ok;
+  st.soft_stationary = soft.soft_stationary;
+  st.trust_region_blocked = soft.trust_region_blocked;
+}
+
+}  // namespace
+
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations) {
   // Newton on A_H (ε = 0) restricted to the well-conditioned part of the Hessian. K v = λ C v (C the
   // Dirichlet Gram, so the cut does not depend on how the free points are scaled), v_iᵀ C v_j = δ_ij;
   // the kept step is -Σ_{|λ_i| > c λ_max} (v_iᵀ g / λ_i) v_i (the least-C-norm Newton step in the span
   // of the kept modes), the dropped step the same sum over the soft (tangential) modes. Each
-  // iteration tries the cuts c = 1e-5, ..., 1e-10 and the fractions t = 0, 0.003, ..., 1 of the
-  // dropped step, each trial followed by up to 16 chord corrections in the kept modes (back to the floor of the
-  // curved valley; ended by the second that does not lower ‖g‖), and keeps the trial with the smallest Euclidean norm of the gradient (the
-  // max-norm residual can stall while it falls); it stops when none lowers it. Measured (docs/cmc.md):
-  // the normal part goes in one or two steps, the soft part linearly (a few % to ~10 % a step).
+  // iteration tries the cuts and fractions of best_truncated_step and keeps the best trial; it
+  // stops when none lowers ‖g‖. Measured (docs/cmc_measurements.md): the normal part goes in one or
+  // two steps, the soft part linearly (a few % to ~10 % a step).
   CorrectorStats st;
   const double e0 = p.eps;
   p.eps = 0.0;
@@ -193,84 +275,25 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
     if (!K.allFinite()) break;
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, p.C);
     if (es.info() != Eigen::Success) break;
-    const Eigen::VectorXd& lam = es.eigenvalues();
-    const Eigen::MatrixXd& Vm = es.eigenvectors();
-    const double lmax = lam.cwiseAbs().maxCoeff();
+    const double lmax = es.eigenvalues().cwiseAbs().maxCoeff();
     if (!(lmax > 0) || !std::isfinite(lmax)) break;
-    const Eigen::VectorXd c = Vm.transpose() * g;
     const Eigen::VectorXd y = p.get();
-    // Merit: the Euclidean norm of the gradient (the max-norm residual can stall while it falls).
-    double best = g.norm(), best_r = st.residual;
-    Eigen::VectorXd best_y, best_g;
-    for (double cut = kTruncationFirstCut; cut >= kTruncationLastCut; cut *= 0.1) {
-      Eigen::VectorXd kept = Eigen::VectorXd::Zero(y.size()), dropped = kept;
-      std::vector<Eigen::Index> keep;
-      for (Eigen::Index i = 0; i < lam.size(); ++i) {
-        if (std::abs(lam(i)) > cut * lmax) {
-          kept -= (c(i) / lam(i)) * Vm.col(i);
-          keep.push_back(i);
-        } else if (lam(i) != 0.0) {
-          dropped -= (c(i) / lam(i)) * Vm.col(i);
-        }
-      }
-      if (!kept.allFinite() || !dropped.allFinite()) continue;
-      // The dropped (soft) modes by a fraction t of their Newton step, each trial followed by
-      // chord corrections in the kept modes (at most kTruncatedChords), which bring it back to the
-      // floor of the curved valley.
-      for (double t : kSoftStepFractions) {
-        Eigen::VectorXd d = kept + t * dropped;
-        double prev = std::numeric_limits<double>::infinity();
-        int rises = 0;
-        for (int chord = 0; chord <= kTruncatedChords; ++chord) {
-          p.set(y + d);
-          Eigen::VectorXd gn;
-          // Not finite also where |x_u ∧ x_v| vanishes at a node (n̂ = N/|N|): such a trial is out.
-          const double rn = p.residual(H, &gn);
-          if (!std::isfinite(rn)) break;
-          // The second chord correction that does not lower ‖g‖ ends the trial: past that the
-          // corrections diverge in the soft modes (measured on the circle, the sphere patch and
-          // the tensor catenoid: the same or lower end residuals in 1.2–2.8× less time, docs/cmc.md "Speed").
-          if (gn.norm() >= prev && ++rises >= kTruncatedChordRises) break;
-          prev = gn.norm();
-          if (gn.norm() < best) {
-            best = gn.norm();
-            best_r = rn;
-            best_y = p.get();
-            best_g = gn;
-          }
-          const Eigen::VectorXd cn = Vm.transpose() * gn;
-          for (Eigen::Index i : keep) d -= (cn(i) / lam(i)) * Vm.col(i);
-        }
-      }
-    }
+    TruncatedTrial best = best_truncated_step(p, H, g, st.residual, es.eigenvalues(), es.eigenvectors());
     ++st.iterations;
-    if (best_y.size() == 0) {
+    if (best.y.size() == 0) {
       p.set(y);
       break;
     }
-    p.set(best_y);
-    g = best_g;
-    st.residual = best_r;
+    p.set(best.y);
+    g = std::move(best.g);
+    st.residual = best.residual;
   }
   if (std::isfinite(st.residual) && st.residual > o.tolerance) refresh();
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
-  if (!st.ok && std::isfinite(st.residual)) {
-    // What the truncated phase leaves is in the soft modes: the soft-mode phase
-    // (area_soft_mode_phase.cpp) eliminates the hard ones and solves the reduced system.
-    const CorrectorStats soft = area_soft_mode_phase(p, H, o, kSoftModeIterationsPerCorrector * o.max_corrector_iterations);
-    st.iterations += soft.iterations;
-    st.soft_iterations = soft.iterations;
-    st.trust_region_iterations = soft.trust_region_iterations;
-    st.residual = soft.residual;
-    st.ok = soft.ok;
-    st.soft_stationary = soft.soft_stationary;
-    st.trust_region_blocked = soft.trust_region_blocked;
-  }
+  if (!st.ok && std::isfinite(st.residual)) soft_mode_phase_after(p, H, o, st);
   p.eps = e0;
   return st;
 }
 
-
-// ---------------------------------------------------------------- regularity
 
 }  // namespace bpde::cmc_detail
