@@ -17,10 +17,10 @@ differs, when a program prints a section that no doc holds, or when a doc holds 
 program printed. Columns named in `machine-dependent:` (timings) are not compared. The columns
 that ROUNDING below names for a section hold numbers whose last printed digit depends on how the
 build rounds (FMA contraction with -march=native against the portable build,
-docs/performance_measurements.md, section 2): there each number may differ from the documented one by one unit of its last printed
-digit (1.000001 against 1.000002; -0.0000 against 0.0000), and a bound "< 1eK"
-(examples/common/generated.h, order_bound) by one power of ten; the text around the numbers must
-be the same. Anything more is a difference.
+docs/performance_measurements.md, section 2): there each number may differ from the documented
+one by one unit of its last printed digit (1.000001 against 1.000002; -0.0000 against 0.0000), and
+a bound "< 1eK" (examples/common/generated.h, order_bound) by one power of ten; the text around
+the numbers must be the same. Anything more is a difference.
 
 Heavy tables: sections whose name ends in "-full" are printed only when the program runs with the
 extra arguments of FULL_ARGS (minutes, not for CI). `--full` runs those programs with them and
