@@ -3,7 +3,7 @@
 //   Blend/cholesky/<k>  the default: the reduced SPD system by sparse Cholesky (CHOLMOD supernodal
 //                       with its fill-reducing ordering; Eigen SimplicialLDLT without CHOLMOD);
 //   Blend/kkt/<k>       the KKT system of eq. (8) by SparseLU (COLAMD), the former default.
-// Memory is not measured here (Google Benchmark has no per-run peak): docs/performance.md gives
+// Memory is not measured here (Google Benchmark has no per-run peak): docs/performance_measurements.md gives
 // the peak RSS of `bpde blend` from /usr/bin/time for the same configs.
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,5 @@
 // The hand-written kernel core/row_major_product against Eigen's product on the same row-major
-// operands (docs/performance.md "row_major_product"), compiled with the same flags:
+// operands (docs/performance_measurements.md "row_major_product"), compiled with the same flags:
 //   Kernel/grid-{row-major,eigen}/<n>    one coordinate of a 51 x 51 grid evaluation of a degree-(n, n)
 //                                        patch: T = P BvT ((n+1) x 51), X = Bu T (51 x 51);
 //   Kernel/mould-{row-major,eigen}/<n>   the mould product of the tensor pde lu route, x, y, z at once:

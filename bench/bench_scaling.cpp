@@ -1,4 +1,4 @@
-// How each main job grows with its size (docs/performance.md "Scaling"): one whole job as a user
+// How each main job grows with its size (docs/performance_measurements.md "Scaling"): one whole job as a user
 // runs it, once per process (Iterations(1): the per-degree caches are cold, as in `bpde solve`):
 //   Scaling/<kind>/<n>   run_job + write_job_result (solve, report, result.json and the files);
 //   Scaling/blend/<k>    run_blend + write_blend_outcome on a k x k partition.

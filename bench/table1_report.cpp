@@ -129,7 +129,7 @@ int run_table1(int argc, char** argv) {
     std::printf("\n(some Table 1 routes did not run: the goals below are not checked)\n");
     return 0;
   }
-  // The goals as decided (docs/performance.md "Table 1"): the speed-up of explicit and mould is
+  // The goals as decided (docs/performance_measurements.md "Table 1"): the speed-up of explicit and mould is
   // measured against the dense linear system, the generic "LU solve" the paper times; the block
   // LU is a third, structured route whose closeness to explicit is a finding, not a goal.
   if (have_dense)

@@ -15,7 +15,7 @@
 // (i = 0..k-1 for every entry), so results differ only by the rounding of fused versus separate
 // multiply-add.
 //
-// Why not Eigen's product: measured (bench Kernel/*, docs/performance.md "The native build and the
+// Why not Eigen's product: measured (bench Kernel/*, docs/performance_measurements.md "The native build and the
 // hand-written kernel"), CPU time, same operands, same flags. Portable build (BPDE_NATIVE=OFF, the
 // default: Eigen sees SSE2 only): this kernel is 2.3-2.6x faster on the 51 x 51 grid evaluation
 // (n = 5..20) and 6x on the 3-row mould product at n = 20. Native build (-march=native, Eigen with

@@ -4,7 +4,7 @@
 # Builds the example programs first. `bash scripts/docs.sh --check` changes nothing and fails when
 # a section is stale (the CTest test Docs.GeneratedSectionsMatchTheExamples runs that check).
 # `bash scripts/docs.sh --full` also regenerates the heavy sections (names ending in "-full", e.g.
-# the area tables of docs/cmc.md from example_004_cmc_area_tables --full; minutes), which the check
+# the area tables of docs/cmc_measurements.md from example_004_cmc_area_tables --full; minutes), which the check
 # leaves alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."

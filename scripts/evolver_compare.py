@@ -139,7 +139,7 @@ class Case:
         self.functionals = functionals
 
     def job(self, degree, functional, mc_tolerance=None, start=None):
-        # The same boundary net for every functional: the interpolant, pinned (since 2026-12-06 a job
+        # The same boundary net for every functional: the interpolant, pinned (a job
         # without "fit" gets the geometric fit for the area and mean-curvature functionals, which
         # would change the sphere case's boundary and the published tables; the circle's corners
         # are joined, so its arcs are refitted geometrically either way).

@@ -4,7 +4,7 @@ parameters"): 24 wavy closed space curves (random trigonometric radius and heigh
 the edges of a triangular or tensor net (3 or 4, at jittered angles) and given as 61 samples per
 edge without parameters; a random degree 4..8, H (mostly 0) and functional (area, mean-curvature,
 dirichlet). Each job runs twice: with the samples' chord length kept (`"parameters":
-"chord-length"`, the fit before 2026-12-05) and with the default (the chord length corrected to
+"chord-length"`) and with the default (the chord length corrected to
 foot points). Prints one table row per job: its outcome both ways (exit status, seconds, the
 mean-curvature range away from the corners, the start of the message).
 Usage: python3 scripts/random_boundary_sweep.py [path/to/bpde] [seed]  (default build/bpde 7).

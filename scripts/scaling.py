@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Scaling table of the main jobs (docs/performance.md "Scaling").
+"""Scaling table of the main jobs (docs/performance_measurements.md "Scaling").
 
 Runs every Scaling/<kind>/<n> route of bpde_bench (bench/bench_scaling.cpp: one whole job, cold,
 solve + report + files) in its own process under /usr/bin/time, so that the peak resident memory

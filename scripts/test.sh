@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 # The suite runs on build/ configured exactly as scripts/build.sh configures it (native,
 # -march=native, unless BPDE_NATIVE=OFF; shared unless BPDE_SHARED_LIBS=OFF), so running one
 # after the other rebuilds nothing. It passes on the native and on the portable build: its
-# tolerances were measured on both (docs/performance.md, section 2).
+# tolerances were measured on both (docs/performance_measurements.md, section 2).
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc)"
 # The libFuzzer targets of the readers (fuzz/, clang, ./build-fuzz): 20000 inputs each, failing on

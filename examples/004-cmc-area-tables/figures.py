@@ -2,7 +2,7 @@
 functionals (D_H and A_H) and coloured by mean curvature, and the error against the degree of the
 degree tables (circle at H = −0.5 and −0.9, helicoid, catenoid), both functionals, log scale.
 
-The degree plots read the `-full` generated sections of docs/cmc.md, which this example's
+The degree plots read the `-full` generated sections of docs/cmc_measurements.md, which this example's
 `--full` run writes (`bash scripts/docs.sh --full`, minutes); pass `--run` to run it here instead.
 
     bash scripts/figures.sh 004-cmc-area-tables        # or, with the module on PYTHONPATH:
@@ -19,7 +19,7 @@ import bezierpde  # noqa: E402
 from bezierpde import figures as fg  # noqa: E402
 
 EXAMPLE = "004-cmc-area-tables"
-# section of docs/cmc.md -> (label, error column)
+# section of docs/cmc_measurements.md -> (label, error column)
 CIRCLE = [("cmc-area-circle-0.5-full", "circle, H = −0.5"), ("cmc-area-circle-0.9-full", "circle, H = −0.9")]
 MINIMAL = [("cmc-area-helicoid-full", "helicoid (tensor)"), ("cmc-area-catenoid-full", "catenoid (triangular)")]
 
@@ -27,7 +27,7 @@ MINIMAL = [("cmc-area-helicoid-full", "helicoid (tensor)"), ("cmc-area-catenoid-
 def tables(run):
     if run:
         return fg.example_tables(EXAMPLE, "--full")
-    return fg.parse_tables((HERE.parents[1] / "docs" / "cmc.md").read_text(encoding="utf-8"))
+    return fg.parse_tables((HERE.parents[1] / "docs" / "cmc_measurements.md").read_text(encoding="utf-8"))
 
 
 def series(sections, cases):

@@ -16,20 +16,20 @@
 //                                     --larger-caps-mean-curvature [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
-//   docs/cmc.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
+//   docs/cmc_measurements.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
 //   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
 //   margins 0.1 … 0.3, boundary samples left out; under a minute).
 //   --solve-circle N TOLERANCE: one library solve of the circle (H = -0.5) at degree N to that
 //   first-variation tolerance, printed as JSON (scripts/evolver_compare.py --tolerances).
 //   --rule-probe: the circle's corner angles by degree and the error of the plain and graded area
-//   rules on the solved nets (docs/cmc.md, "The rule near nearly degenerate corners"; seconds).
+//   rules on the solved nets (docs/cmc_algorithm.md, "The area functional A_H"; seconds).
 //   --gauge-probe: Newton steps restricted to normal motion of the free points on the solved
-//   circle (docs/cmc.md, "Not done yet"; seconds).
-//   --larger-caps [N H]: the V form on the circle with v0 the larger cap's volume (docs/cmc.md,
-//   "Past the hemisphere: continuation in V"; about 10 minutes, or the one case N, H).
-//   --larger-caps-mean-curvature [N H]: the same with the mean-curvature functional (docs/cmc.md,
-//   "The V form" of "Least squares of the mean curvature"; about 20 s, or the one case N, H).
+//   circle (docs/cmc_algorithm.md, "The final phases"; seconds).
+//   --larger-caps [N H]: the V form on the circle with v0 the larger cap's volume (docs/cmc_algorithm.md,
+//   `smaller-volume-start`; about 10 minutes, or the one case N, H).
+//   --larger-caps-mean-curvature [N H]: the same with the mean-curvature functional (docs/cmc_algorithm.md,
+//   "The least squares of the mean curvature", the V form; about 20 s, or the one case N, H).
 // Columns: "dist" is the max over a 40-sample grid (every sample, corners included) of the distance
 // measure above; the H range is taken on the 40-grid with corner margin 0.1; "residual" is the
 // relative first variation of the functional solved (eq. (11) for D_H, A_H for area) or, for
@@ -172,7 +172,7 @@ void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<in
 }
 
 // The circle at n = 10 solved to tighter first-variation tolerances than the default 1e-11
-// (docs/cmc.md, "Degree tables"): whether the distance and the H range at a degree are set by the
+// (docs/cmc_measurements.md, "Degree tables"): whether the distance and the H range at a degree are set by the
 // polynomial space or by where the solve stops.
 void tolerance_probe() {
   std::printf("| H | n | tolerance | residual | status | iterations | dist to the sphere | max \\|H_sampled − H\\| |\n");
@@ -195,7 +195,7 @@ void tolerance_probe() {
   }
 }
 
-// The V form past the hemisphere (docs/cmc.md, "Past the hemisphere: continuation in V"): v0 the
+// The V form past the hemisphere (docs/cmc_algorithm.md, `smaller-volume-start`): v0 the
 // volume of the larger cap of H over the unit circle (radius 1/|H|, centre √(R² − 1) above the
 // plane, height R + √(R² − 1)), the area or the mean-curvature functional, solver newton or ceres;
 // one row per (n, H) of `cases`.
@@ -374,8 +374,8 @@ void gauge_probe() {
   }
 }
 
-// Where the mean curvature of the area route deviates from H on the circle (docs/cmc.md, "Degree
-// tables"): max |H_sampled - H| over the 40-grid for corner margins 0.1 … 0.3 (the margin of
+// Where the mean curvature of the area route deviates from H on the circle (docs/cmc_measurements.md,
+// "Degree tables"): max |H_sampled - H| over the 40-grid for corner margins 0.1 … 0.3 (the margin of
 // mean_curvature_stats: every barycentric coordinate <= 1 - margin), the same at margin 0.1 without
 // the samples on the boundary edges, and the sample where the margin-0.1 maximum is taken.
 void margin_probe() {
@@ -408,7 +408,7 @@ void margin_probe() {
 
 // One library solve of the circle (H = -0.5, area functional, solver newton) at degree n and
 // first-variation tolerance t, for scripts/evolver_compare.py --tolerances (docs/cmc_evolver.md,
-// "The circle with the tolerance as a second knob"): prints one JSON object with the summary and
+// "Reproduce"): prints one JSON object with the summary and
 // the net (FORMATS.md point order), whose error the script measures as it does for `bpde solve`.
 // The CLI's jobs always solve to 1e-11 (FORMATS.md, "converged"); a looser tolerance is a library
 // option only. Exit 0 converged (to t), 1 not converged, 2 bad arguments.
