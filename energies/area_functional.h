@@ -1,7 +1,7 @@
 #pragma once
 // The area A(x) = ∫ |x_u ∧ x_v| du dv of a triangular or tensor Bézier patch, with its exact
 // gradient and Hessian with respect to the control points, by a fixed quadrature rule. This is the
-// geometric half of A_H = A + 2HV (docs/cmc.md, "The area functional"); V is energies/volume.h.
+// geometric half of A_H = A + 2HV (docs/cmc_algorithm.md, "The area functional A_H"); V is energies/volume.h.
 //
 // Conventions: triangular nets as triangular/triangular_net.h (barycentric order: i from n down to
 // 0, then j from n-i down to 0, k = n-i-j; P_{n00} is row 0, P_{00n} the last row; the third index
@@ -34,20 +34,19 @@
 //     mean |N|) puts a branch point of |N| ≈ √(c² + |a u + b v|²) at s ~ c from the corner; the
 //     plain rule then converges only like ~exp(-2q√(2c)) (measured error at n = 5: 1.6e-10 at
 //     q = 15, 1.1e-11 at q = 64). With s = σ³ the branch point sits at σ ~ c^(1/3) (0.1 at
-//     n = 5), and the error is 3.6e-12 at q = 15, 9.5e-14 at q = 20 (docs/cmc.md, "The rule near nearly degenerate
-//     corners"). An integrand analytic in s stays analytic in σ, so the graded rule also converges
+//     n = 5), and the error is 3.6e-12 at q = 15, 9.5e-14 at q = 20 (docs/cmc_algorithm.md, "The area functional A_H"). An integrand analytic in s stays analytic in σ, so the graded rule also converges
 //     exponentially where the plain one does, with about twice the points.
 //   - geometric (levels L > 0, used by area_rule.h where the graded rule misses too): the radial
 //     coordinate cut at s = ρ^k (ρ = 0.3, k = 1 … L), q Gauss points on each piece. A branch point
 //     at distance c from the corner is at a fixed ratio of the length of every piece above it, so
 //     the error falls exponentially in q for any c ≥ ρ^L; the graded rule needs q ~ c^(-1/3) there.
 //     Measured on the triangular nets of smooth closed curves that the graded q = 64 rule misses
-//     (docs/cmc.md, "The rule near nearly degenerate corners").
+//     (docs/cmc_algorithm.md, "The area functional A_H").
 // The node tables (Bernstein derivatives at the nodes, #nodes x N) are built once per
 // (degree, q, grading).
 //
 // A node where |N| = 0 (a degenerate parametrisation) makes the gradient and Hessian non-finite:
-// callers check min_normal() first (solvers/cmc/cmc_area.cpp reports it as not converged).
+// callers check min_normal() first (solvers/cmc/area/ reports it as not converged).
 #include <Eigen/Core>
 #include <cstddef>
 #include <memory>

@@ -23,8 +23,7 @@ constexpr int kGeometricLevels = 10;
 constexpr int kGeometricQ0 = 11;
 constexpr int kMaxGeometricPoints = 20;
 // They are tried only where the graded rule missed by less than this factor of the tolerance: they
-// gained 3 orders or less on the nets measured (docs/cmc.md, "Geometric rules, and folds at
-// corners"), and a start that folds at a corner misses by far more (1.7e-4 on a wavy curve), where
+// gained 3 orders or less on the nets measured (docs/cmc_algorithm.md, "The area functional A_H"), and a start that folds at a corner misses by far more (1.7e-4 on a wavy curve), where
 // building them (66 000 nodes for the q = 27 that measures the cap on a tensor net) only costs.
 constexpr double kGeometricGate = 1e3;
 

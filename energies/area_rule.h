@@ -22,7 +22,7 @@
 // when the surface moved far from where the rule was chosen, choose it again during the final
 // phases where it missed its tolerance at the net where it was chosen (a start that nearly folds
 // at a corner), and report a rule that misses its tolerance as not converged
-// (solvers/cmc/cmc_area.cpp).
+// (solvers/cmc/area/).
 #include <Eigen/Core>
 #include <memory>
 #include <vector>

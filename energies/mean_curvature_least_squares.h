@@ -7,7 +7,7 @@
 // core/differential_geometry.h: N = x_u ∧ x_v, H_x = (eG − 2fF + gE) / (2(EG − F²)), so
 // z = u² + v² has H = +2). Φ is dimensionless; Φ = 0 exactly when x has constant mean curvature H
 // (on the whole patch: ρ > 0 away from the corners). It is the `"functional": "mean-curvature"` of
-// a cmc job (solvers/cmc/cmc.h; docs/cmc.md, "Least squares of the mean curvature").
+// a cmc job (solvers/cmc/cmc.h; docs/cmc_algorithm.md, "The least squares of the mean curvature").
 //
 // The corner weight ρ = Π_c (1 − λ_c⁸)⁴ over the corners c of the domain, with λ_c the barycentric
 // coordinate of corner c (triangle) or its bilinear corner function ((1 − u)(1 − v) at (0, 0), …;
@@ -25,7 +25,7 @@
 // the deviation by B_I; those vanish on the boundary edges, where the deviation of a
 // polynomial patch from a CMC surface sits. Φ weighs it everywhere (measured on the circle of
 // Arnal–Lluch–Monterde's Fig. 1, H = −0.9, degree 10: the A_H end point deviates 5.3e-3 from H,
-// the Φ minimiser 1.1e-5; docs/cmc.md).
+// the Φ minimiser 1.1e-5; docs/cmc_measurements.md).
 //
 // Discretisation: Φ = Σ_q r_q², r_q = √(w_q |N(u_q, v_q)|) (H_x(u_q, v_q) − H), over the nodes of the
 // corner-collapsed rules of the area functional (core/quadrature.h: corner_collapsed_triangle_rule,

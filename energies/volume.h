@@ -14,7 +14,7 @@
 //
 // Production route: Gauss rules that integrate the polynomial integrand, its gradient and its
 // Hessian exactly; VolumeForm stores only the basis tables at the nodes, never the N^3 tensor
-// C_IJK (rule sizes and memory per degree: docs/cmc.md, "How V is computed").
+// C_IJK (rule sizes and memory per degree: docs/cmc_algorithm.md, "How V is computed").
 //
 // Gradient (exact, for every control point, boundary included):
 //   dV/dP_L = 1/3 ∫ (B_L)_u (x_v ∧ x) + (B_L)_v (x ∧ x_u) + B_L (x_u ∧ x_v).

@@ -37,7 +37,7 @@ class BfsSpace {
  public:
   /// Largest k and l accepted (a k×l partition has 4(k+1)(l+1) dofs): what `bpde blend` solves
   /// within a minute and 2 GB with the sparse Cholesky of the reduced system (measured:
-  /// docs/performance.md "Blend"; it was 128 with the KKT LU).
+  /// docs/performance_measurements.md "Blend"; it was 128 with the KKT LU).
   static constexpr int kMaxPartition = 256;
 
   /// Throws ParameterError unless 1 <= k, l <= kMaxPartition.

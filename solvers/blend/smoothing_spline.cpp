@@ -47,7 +47,7 @@ std::string sci(double v) {
 /// CHOLMOD 3's supernodal factorisation opens a parallel region of a fixed CHOLMOD_OMP_NUM_THREADS
 /// (4, compiled in: neither OMP_NUM_THREADS nor cholmod_common changes it) around the copy and
 /// assembly loops of every large supernode; on the blend systems that costs CPU in waking and
-/// waiting threads and, with 2 cores, wall time too (docs/performance.md "Blend").
+/// waiting threads and, with 2 cores, wall time too (docs/performance_measurements.md "Blend").
 /// max-active-levels 0 makes every parallel region inactive (one thread). The OpenMP runtime is
 /// the one CHOLMOD links (found through CHOLMOD's own library, so it also works when this
 /// library was loaded with RTLD_LOCAL, e.g. by Python); without one this does nothing. The
@@ -188,7 +188,7 @@ struct SmoothingSplineSolver::Impl {
   SmoothingSplineProblem key;  // k, l, a, epsilon, points
   SmoothingSplineOptions options;
   BfsSpace space{1, 1};
-  // R is not stored (docs/performance.md "Blend"): the energy σᵀRσ is summed element by element
+  // R is not stored (docs/performance_measurements.md "Blend"): the energy σᵀRσ is summed element by element
   // as Σ_e |B c_e|² with the square root B of the one element matrix K = BᵀB of the uniform
   // partition (BfsSpace::element_form_factor), and form_matrix() assembles R on demand.
   // C = εR + AᵀA is assembled as its lower triangle (rows >= columns) and kept only as its blocks
@@ -203,7 +203,7 @@ struct SmoothingSplineSolver::Impl {
 #ifdef BPDE_HAVE_CHOLMOD
   // Supernodal sparse Cholesky (CHOLMOD) of C_ff, which is built in its fill-reducing order
   // (order_free_dofs): CHOLMOD factors it in place, without permuted copies; measured against
-  // SimplicialLDLT and the KKT LU in docs/performance.md ("Blend").
+  // SimplicialLDLT and the KKT LU in docs/performance_measurements.md ("Blend").
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> ldlt;
 #else
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;  // AMD ordering
@@ -237,7 +237,7 @@ struct SmoothingSplineSolver::Impl {
   /// nodes: nested dissection of the node grid by grid lines (node (i, j) couples with the 3 x 3
   /// nodes around it; less fill than METIS_NodeND, AMD or CHOLMOD's NESDIS here, and no METIS
   /// run), followed by CHOLMOD's weighted postorder of its elimination tree, each node's free dofs
-  /// kept together (they have the same couplings); docs/performance.md "Blend".
+  /// kept together (they have the same couplings); docs/performance_measurements.md "Blend".
   void order_free_dofs();
   /// The KKT matrix of eq. (8), equilibrated, by sparse LU.
   void factor_kkt();
@@ -517,7 +517,7 @@ void SmoothingSplineSolver::Impl::split_system() {
     }
   // Freed: the factorisation is the peak of the memory. (Not `C = SparseMatrix()`: Eigen's copy
   // assignment from an empty matrix keeps C's value and index arrays allocated; it did so here
-  // until this was measured, docs/performance.md "Blend".)
+  // until this was measured, docs/performance_measurements.md "Blend".)
   Eigen::SparseMatrix<double>().swap(C);
   const int* outer = Cff.outerIndexPtr();
   for (int c = 0; c < nf; ++c)  // insertion sort of each column by row (at most 36 entries)
@@ -590,7 +590,7 @@ Eigen::MatrixX3d SmoothingSplineSolver::Impl::solve_linear(const Eigen::MatrixX3
   const int n = space.num_dofs();
   const int nc = static_cast<int>(constrained.size());
   // (The arrays here are n by 3 and live beside the factor: each is allocated only when the
-  // previous ones are freed; the solve is the peak of the memory, docs/performance.md "Blend".)
+  // previous ones are freed; the solve is the peak of the memory, docs/performance_measurements.md "Blend".)
   if (options.method == SmoothingSplineOptions::Method::kKktLu) {
     Eigen::MatrixX3d alpha(n, 3);
     Eigen::MatrixXd rhs(n + nc, 3);

@@ -71,7 +71,7 @@ struct SmoothingSplineOptions {
   /// kElimination with CHOLMOD: let CHOLMOD's supernodal factorisation run its OpenMP threads
   /// (CHOLMOD 3: a fixed 4 per parallel region, for the copy and assembly loops of large
   /// supernodes; the dense kernels are the BLAS's). Default false: on the blend systems the threads
-  /// cost more CPU than they save (docs/performance.md "Blend"). While a factorisation runs with
+  /// cost more CPU than they save (docs/performance_measurements.md "Blend"). While a factorisation runs with
   /// false, OpenMP's max-active-levels is 0 process-wide (restored after it).
   bool threaded_factorization = false;
   int load_quadrature = 6;         ///< Gauss points per direction and element for (f, ω)_0; 1..50

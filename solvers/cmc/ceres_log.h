@@ -3,7 +3,7 @@
 // stderr at level ERROR whatever Solver::Options::logging_type says, e.g.
 //   E… trust_region_minimizer.cc:118] Terminating: projected_gradient_step = Plus(x, -gradient) failed.
 // when a manifold's Plus fails on the whole gradient step (the mean-curvature V form from a folded
-// start, docs/cmc.md, "The V form"). The solvers report what they concluded in their Summary, so an
+// start, docs/cmc_algorithm.md, "The routes"). The solvers report what they concluded in their Summary, so an
 // application that keeps stderr for its own messages turns that log off once at start: the bpde CLI
 // and the Python module do. A C++ program linking the library decides for itself: glog's level is a
 // process-wide setting, and the library never changes it on its own.

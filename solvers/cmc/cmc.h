@@ -16,7 +16,7 @@
 //
 // Solvers (one interface, options.solver): newton (exact symmetric Hessian, Cholesky), ceres
 // (Levenberg–Marquardt on the residuals F_I of eq. (11)), nlopt (L-BFGS on D_H, polished by at most
-// 3 Newton steps). The continuation's step control and each solver's details: docs/cmc.md,
+// 3 Newton steps). The continuation's step control and each solver's details: docs/cmc_algorithm.md,
 // "Solver".
 //
 // converged = true means eq. (11) over the free points holds to options.tolerance (1e-11) relative
@@ -45,7 +45,7 @@
 //  - Fixed sets boundary and boundary+adjacent; solvers newton and ceres (V mode too).
 //
 // The least-squares mean-curvature functional (options.functional = MeanCurvature;
-// energies/mean_curvature_least_squares.h; docs/cmc.md, "Least squares of the mean curvature"):
+// energies/mean_curvature_least_squares.h; docs/cmc_algorithm.md, "The least squares of the mean curvature"):
 //  - H mode: minimise Φ = ∫ ρ (H_x − H)² dA over the free points (ρ a corner weight, 1 away
 //    from the corners and 0 at them: mean_curvature_least_squares.h). Φ = 0 exactly for a CMC
 //    surface, whatever the parametrisation; where the polynomial space holds no CMC surface, its
@@ -69,7 +69,7 @@
 //    them, the step at V0 what is left) and max_continuation_steps step attempts, over all V1. Its
 //    end is kept when it is better (converged, or regular and on V0 where the first one was not,
 //    or a lower √Φ by the same rule); the message says which route gave the result and how the
-//    other ended (docs/cmc.md, "The V form", "Past the hemisphere").
+//    other ended (docs/cmc_algorithm.md, "The routes", "Past the hemisphere").
 //  - The start is the D_H critical point at H (the newton continuation above, whatever the
 //    solver; if the branch folds first, its last point). Levenberg–Marquardt on the residuals of Φ with the exact Jacobian:
 //    (JᵀJ + λ diag JᵀJ) δ = −Jᵀr, λ by the gain ratio (÷5 above 0.75, ×3 below 0.25, ×10 on a
@@ -79,7 +79,7 @@
 //    r_δδ ≈ (2/h)((r(x + hδ) − r(x))/h − Jδ), h = 0.1, gives a = −(JᵀJ + λ diag JᵀJ)⁻¹ Jᵀ r_δδ, and
 //    the step is δ + a/2 when 2‖a‖ ≤ 0.75‖δ‖ (norms scaled by diag JᵀJ; twice as strict as the
 //    paper's ‖a‖ ≤ 0.75‖δ‖, by measurement), else a rejected step. It follows the curved, nearly
-//    tangential valley of Φ that plain LM crawls along (docs/cmc.md, "Geodesic acceleration": on
+//    tangential valley of Φ that plain LM crawls along (docs/cmc_algorithm.md, "The least squares of the mean curvature": on
 //    the circle at n = 8 … 14, 1.6–7.6× fewer iterations where both converge and plain LM needs
 //    more than 30, up to 20 % more where it needs about 20).
 //  - converged = true means √Φ ≤ options.mean_curvature_tolerance (1e-6; Φ is dimensionless), with
@@ -128,7 +128,7 @@ enum class CmcFunctionalKind { Dirichlet, Area, MeanCurvature };
 CmcFunctionalKind parse_cmc_functional(const std::string& name);
 std::string to_string(CmcFunctionalKind f);
 
-/// Where the area functional starts (CmcOptions::area_start; docs/cmc.md, "The area functional"):
+/// Where the area functional starts (CmcOptions::area_start; docs/cmc_algorithm.md, "The area functional A_H"):
 ///  - MeanCurvature (default): route 0, the least-squares mean-curvature surface, then the routes
 ///    from the D_H critical point (Dirichlet) and, where they fail, the minimal-surface route;
 ///  - Dirichlet: the routes from the D_H critical point, then the minimal-surface route;
@@ -168,13 +168,13 @@ struct CmcOptions {
   bool geodesic_acceleration = true;
   /// area functional: where it starts (AreaStart above; a job's "start", docs/FORMATS.md); default
   /// MeanCurvature: route 0 first, the least-squares mean-curvature surface corrected on A_H by a
-  /// few Newton iterations (docs/cmc.md, "The mean-curvature start"). Dirichlet starts from the
+  /// few Newton iterations (docs/cmc_algorithm.md, "The routes"). Dirichlet starts from the
   /// D_H critical point (the routes before route 0), kept to measure the two side by side;
   /// MinimalSurface follows the branch from the minimal surface alone. Other functionals ignore it.
   AreaStart area_start = AreaStart::MeanCurvature;
   /// area functional: where the soft-mode phase's Levenberg–Marquardt loop on the reduced first
   /// variation stops above the tolerance, trust-region Newton on A_H along the valley floor
-  /// (docs/cmc.md, "The trust-region part of the soft-mode phase"); default true. false stops
+  /// (docs/cmc_algorithm.md, "The final phases"); default true. false stops
   /// there, as before 2026-12-06, kept to measure the two side by side. Other functionals ignore it.
   bool area_trust_region = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H

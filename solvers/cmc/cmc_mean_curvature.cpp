@@ -1,5 +1,5 @@
 // The least-squares mean-curvature functional of the cmc problem (cmc.h, "The least-squares
-// mean-curvature functional"; docs/cmc.md, "Least squares of the mean curvature"): from the D_H
+// mean-curvature functional"; docs/cmc_algorithm.md, "The least squares of the mean curvature"): from the D_H
 // critical point, Levenberg–Marquardt on Φ = ∫ ρ (H_x − H)² dA (mean_curvature_least_squares.h):
 // the library's own loop (solver newton, minimise_newton below, over levenberg_marquardt.h) or ceres::Solve with one residual
 // block per node (solver ceres, mean_curvature_ceres.cpp).
@@ -177,7 +177,7 @@ namespace {
 // minimisation goes on from the last agreed point with the next finer pair of rules; when the rule
 // minimised reaches the target but the check rule reads above the tolerance (they disagree by less
 // than the 2× of the fold test, e.g. 1.0e-6 … 1.4e-6 against 7e-7 on the circle at n = 12, 14:
-// docs/cmc.md, "The V form"), it goes on from the point reached with the next finer pair. At most
+// docs/cmc_algorithm.md, "The routes"), it goes on from the point reached with the next finer pair. At most
 // kMaxRuleRefinements times and max_iterations iterations in all.
 struct LsRun {
   LsOutcome ls;
@@ -234,7 +234,7 @@ LsRun minimise_checked(const Net& data, const CmcOptions& o, Eigen::MatrixX3d& P
 // Φ is quadratic in H (r = r₀ + H ∂r/∂H): the V form reports the best H for the surface reached,
 // H* = −⟨∂r/∂H, r₀⟩/‖∂r/∂H‖², the ρ-weighted mean of its H_x (never raises Φ, leaves V as it is).
 // The loops stop at √Φ <= target, not at ∂Φ/∂H = 0; on the circle their last H was up to 9.6e-8 off
-// the cap's, H* is within 4.2e-8 (docs/cmc.md, "The V form").
+// the cap's, H* is within 4.2e-8 (docs/cmc_algorithm.md, "The routes").
 double best_h(const MeanCurvatureLeastSquares& f, const Eigen::MatrixX3d& P, double H) {
   Eigen::VectorXd r0, dH;
   f.residuals(P, 0.0, &r0, nullptr, nullptr, &dH);
@@ -273,7 +273,7 @@ LsGrade grade(const Net& data, const CmcOptions& o, const LsEnd& e, const Volume
   return g;
 }
 
-// The V form's second route (docs/cmc.md, "The V form", "Past the hemisphere"): Φ minimised at
+// The V form's second route (docs/cmc_algorithm.md, "The routes", "Past the hemisphere"): Φ minimised at
 // V1 = Vref + (V0 − Vref)/k for k = 4, 16, 64, 256 in turn (Vref the volume of the Dirichlet
 // extremal, so V1 lies between the nearly minimal surface and V0 wherever the origin is) from the
 // minimiser of D there, then V stepped from V1 to V0 by the step control of the H continuation over

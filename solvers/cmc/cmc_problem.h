@@ -90,7 +90,7 @@ CorrectorStats nlopt_volume_solve(CmcProblem& p, double V0, const CmcOptions& o,
 double multiplier(const CmcProblem& p);
 
 
-// ---- shared by the D_H and the A_H routes (cmc.cpp, cmc_area.cpp)
+// ---- shared by the D_H and the A_H routes (cmc.cpp, area/)
 
 std::string fold_message(double h, bool gram_singular);
 void check_degree(const TriangularNet& net, FixedSet fixed);
@@ -176,7 +176,7 @@ class StepController {
   double h_ = 0.0;
 };
 
-/// The area functional (cmc.h, "The area functional"; cmc_area.cpp). options are validated.
+/// The area functional (cmc.h, "The area functional"; area/driver.cpp). options are validated.
 CmcResult<TriangularNet> solve_area(const TriangularNet& data, const CmcOptions& options);
 CmcResult<TensorNet> solve_area(const TensorNet& data, const CmcOptions& options);
 

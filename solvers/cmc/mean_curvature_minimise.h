@@ -34,7 +34,7 @@ bool restore_volume(const VolumeTarget& vt, Eigen::MatrixX3d& P, const std::vect
 /// The check of the rule minimised, every kRuleCheckEvery accepted steps of either minimiser: √Φ by
 /// the finer rule `check` at P (with H) against √phi of the rule minimised. They agree when the
 /// check reads at most kRuleAgreement × √phi, or at most the target. Measured on the conformal
-/// sphere triangle at n = 10 (docs/cmc.md, "The rule minimised can be exploited"): with q = 9 the
+/// sphere triangle at n = 10 (docs/cmc_algorithm.md, "The area functional A_H"): with q = 9 the
 /// iterate folds after 200–400 steps where the q = 60 rule reads 5.6e-2 against 6e-6; the coarse
 /// rule's own value disagreed with q = 60 by ×1.4 at step 100 and ×1.2 at step 200 before that.
 inline constexpr int kRuleCheckEvery = 10;

@@ -19,8 +19,7 @@
 // the acceleration a = −M⁻¹Jᵀr_δδ (with the constraint: projected, a − (∇cᵀa/∇cᵀe) e, so that
 // ∇cᵀa = 0) and the trial step is δ + a/2: the second-order Taylor step along the geodesic the LM
 // velocity starts. It is taken only when 2‖a‖_D ≤ α‖δ‖_D (α = 0.75; the paper and GSL's `avmax`
-// take ‖a‖ ≤ α‖δ‖; this bound is twice as strict, by measurement: docs/cmc.md, "Geodesic
-// acceleration"); otherwise the trial counts as rejected. With λ = 0 and one residual in one
+// take ‖a‖ ≤ α‖δ‖; this bound is twice as strict, by measurement: docs/cmc_algorithm.md, "The least squares of the mean curvature"); otherwise the trial counts as rejected. With λ = 0 and one residual in one
 // unknown the accelerated step is Chebyshev's third-order step x − r/r' − r''r²/(2r'³), which the
 // tests use as the closed-form check of the factor 1/2.
 //

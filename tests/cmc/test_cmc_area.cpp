@@ -149,7 +149,7 @@ TEST(CmcArea, CircleInThreeArcsAtDegree5MeetsTheRuleTolerance) {
 // No plain or graded rule up to q = 64 met its tolerance there (graded: 1.3e-12 against 1e-12;
 // the plain rule 3.4e-09), which kept it from being reported converged (it was, with the rule
 // compared with itself); the geometric rules meet it (2026-12-05), and the fold itself is what
-// the report names now: the corner check of the final verdict (corner_folds, cmc_area.cpp).
+// the report names now: the corner check of the final verdict (corner_folds, area/regularity.cpp).
 TEST(CmcArea, CircleInThreeArcsAtDegree4IsReportedAsAFoldAtACorner) {
   const CmcResult<TriangularNet> r = solve_cmc(testing::circle_three_arcs(4), dirichlet_routes(-0.5));
   EXPECT_FALSE(r.summary.converged);
@@ -313,11 +313,10 @@ TEST(CmcArea, VolumeFormByCeres) {
 // Past the hemisphere, where route 1 fails: the larger cap of H = -0.7 over the unit circle (the
 // sphere of radius 1/0.7 with its centre 1.02 above the plane; V0 = 11.54, 5.5 times the
 // hemisphere's). The minimiser of D at V0 keeps the regulariser above ε = 0.018, so route 2
-// (docs/cmc.md, V mode step 3) solves the V form at V0/16 (H = -0.728, a cap below the
+// (docs/cmc_algorithm.md, "The routes") solves the V form at V0/16 (H = -0.728, a cap below the
 // hemisphere) and continues in V through the hemisphere, where H turns back from -1, to V0. Before it: no-convergence after 8 s ("the
 // Dirichlet regulariser could not be removed below ε = 0.0178"). Measured at n = 10, 14-16 s:
-// where the final phases stop moves with the rounding, as on the tensor catenoid (docs/cmc.md,
-// "Not done yet"): a probe linked to the same library converged (9.1e-12, 111 steps, H within
+// where the final phases stop moves with the rounding, as on the tensor catenoid (docs/cmc_algorithm.md, "The final phases"): a probe linked to the same library converged (9.1e-12, 111 steps, H within
 // 7.3e-4 of -0.7 at corner margin 0.1), this test's build ends numerical-limit at 1.02e-11 (76
 // steps, 2.2e-3); both 4.7e-7 from the sphere.
 TEST(CmcArea, VolumeFormReachesTheLargerCapByContinuationInV) {
@@ -638,7 +637,7 @@ TEST(CmcArea, MinimalSurfaceIsTheCatenoidPieceOnATriangle) {
 
 // H = 0 on a tensor net: the catenoid piece from its radial parametrisation (θ, ρ) = (1.2u,
 // 1.1 + 0.8v), not conformal. The exact minimal surface is not polynomial: at n = 4 the A critical
-// point is 2.7e-3 off the catenoid (8.9e-2 for the Dirichlet extremal; docs/cmc.md, "Degree tables").
+// point is 2.7e-3 off the catenoid (8.9e-2 for the Dirichlet extremal; docs/cmc_measurements.md).
 TEST(CmcArea, MinimalSurfaceIsTheCatenoidPieceOnASquare) {
   const TensorNet data = tensor_boundary(4, testing::catenoid_square);
   const CmcResult<TensorNet> r = solve_cmc(data, area_options(0.0));
@@ -668,8 +667,8 @@ TEST(CmcArea, StalledMinimalSurfaceIsReportedAsANumericalLimit) {
 // 4.75) given as 61 samples per edge without parameters, tensor n = 8, H = 0. The Dirichlet
 // extremal nearly folds at a corner: its rule is the graded q = 64 and misses its tolerance there
 // (1.7e-4). The rule is chosen again where the final phases start and on their way
-// (cmc_area.cpp, AreaSolve::finish), so they run on the rule of the surface they reach, the plain
-// q = 26 (measured; 5408 nodes against 32 768, about 6x faster: docs/performance.md, section 13).
+// (area/final_phases.cpp, AreaSolve::finish), so they run on the rule of the surface they reach, the plain
+// q = 26 (measured; 5408 nodes against 32 768, about 6x faster: docs/performance_measurements.md, section 13).
 // Before, the whole solve kept q = 64. It converges since the trust-region part of the soft-mode
 // phase (2026-12-06: 2.9e-12 in 8.9 s); before, it ended at the numerical limit 2.6e-11 (route
 // 0's; 9.1e-11 before that, where route 0 gave up on the start's rule).
@@ -721,7 +720,7 @@ TEST(CmcArea, CircleInThreeArcsAtHMinus09) {
 // The tensor catenoid piece at n = 6 (H = 0): the soft-mode phase stops where no step over the
 // soft modes lowers the reduced first variation (measured 1.16e-10 relative; multi-start probes
 // from points 1e-3 … 3e-2 away in the soft modes all return to the same value, and it rises along
-// the reduced Hessian's null vector both ways: docs/cmc.md, "The soft-mode phase"). Reported as a
+// the reduced Hessian's null vector both ways: docs/cmc_algorithm.md, "The final phases"). Reported as a
 // numerical limit whose message says so, with the surface 4.0e-4 off the catenoid (the degree).
 // (Route 0 off: route 0 converges on this case, far along the tangential valley,
 // MeanCurvatureStartGoesOnFromLeastSquaresAboveTheirTolerance.)
@@ -803,7 +802,7 @@ TEST(CmcArea, SpherePatchAtDegree8EndsAsANumericalLimitOnARegularSurface) {
   EXPECT_LE(off, 1e-4);  // as AgreesWithDirichletOnConformalData at n = 8 (5.0e-5)
 }
 
-// Route 0 (docs/cmc.md, "The mean-curvature start"): the least-squares mean-curvature surface,
+// Route 0 (docs/cmc_algorithm.md, "The routes"): the least-squares mean-curvature surface,
 // corrected on A_H by at most 8 Newton iterations. On the circle at n = 10, H = -0.9 (measured: 2
 // iterations, 5.5e-9 from the sphere, H within 6e-5 of -0.9 at corner margin 0.1) it reaches a
 // critical point 24× nearer the sphere than the routes from the D_H critical point (1.3e-7, H

@@ -503,7 +503,7 @@ TEST(CmcMeanCurvature, IterationLimitIsReportedAsSuch) {
 // solver's default) against plain Levenberg–Marquardt on the circle, where plain LM crawls along
 // the curved valley of Φ: both meet the tolerance, the accelerated loop in at most half the
 // iterations (the summary's, the D_H start's included). Measured: n = 8, H = -0.5: 384 plain, 83
-// accelerated; n = 10, H = -0.9: 136 and 48 (docs/cmc.md, "Geodesic acceleration").
+// accelerated; n = 10, H = -0.9: 136 and 48 (docs/cmc_algorithm.md, "The least squares of the mean curvature").
 TEST(CmcMeanCurvature, GeodesicAccelerationTakesFewerStepsThanPlainLevenbergMarquardt) {
   for (const auto& [n, H] : {std::pair{8, -0.5}, std::pair{10, -0.9}}) {
     SCOPED_TRACE(n);

@@ -27,7 +27,7 @@ struct AreaProblem {
   const ProgressFn* progress = nullptr;
   double progress_done = 0.0;
   /// The rule chosen again at the current net where the rule in use missed its tolerance at the
-  /// net where it was chosen (AreaSolve in cmc_area.cpp); true when `a` changed. Called by
+  /// net where it was chosen (AreaSolve::finish, final_phases.cpp); true when `a` changed. Called by
   /// area_truncated_newton every kRuleRefreshEvery iterations and before the soft-mode phase. Null: never.
   std::function<bool()> refresh_rule;
 
@@ -57,7 +57,7 @@ struct AreaProblem {
 CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o, int max_iterations, double& theta,
                                    double target);
 /// The final Newton phase on A_H (ε = 0) with the Hessian solve truncated to the modes above a relative
-/// eigenvalue cut (cmc_area.cpp); ok when the first variation reaches o.tolerance.
+/// eigenvalue cut (correctors.cpp); ok when the first variation reaches o.tolerance.
 CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
 /// The soft-mode phase on A_H (ε = 0), run by area_truncated_newton when it stops above the
 /// tolerance: the hard modes eliminated by chord Newton steps, Levenberg–Marquardt on the reduced
@@ -67,7 +67,7 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
 CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& o, int max_iterations);
 /// Regularity of a solved net on a 40 × 40 grid away from the corners (margin 0.05): |x_u ∧ x_v|
 /// relative to its mean A / |domain| at least 1e-3, and no two neighbouring samples with opposite
-/// normals (cmc_area.cpp). Shared by the area and the mean-curvature solves.
+/// normals (regularity.cpp). Shared by the area and the mean-curvature solves.
 struct Regularity {
   bool ok = true;
   double min_ratio = 0;  ///< min |N| / mean |N| on the grid
@@ -96,7 +96,7 @@ Regularity final_regularity(const TriangularNet& net, double A);
 Regularity final_regularity(const TensorNet& net, double A);
 /// max over the samples (a/10, b/10) of the domain, without the corners (the regularity test's
 /// margin 0.05), of |<x_b − x_a, N_a>|, N_a the unit normal of a: how far surface b lies from
-/// surface a along a's normals (the branch test of the area's H and V continuations, cmc_area.cpp). A motion of
+/// surface a along a's normals (the branch test of the area's H and V continuations, regularity.cpp). A motion of
 /// the points along the surface (a reparametrisation, the nearly singular directions of A_H)
 /// changes it only to second order, where the distance of the points themselves changes to first
 /// order. +inf where a's normal vanishes at a sample. a and b of the same degree.

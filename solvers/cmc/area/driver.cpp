@@ -177,7 +177,7 @@ struct Driver {
                     (r.ok ? " ended above the tolerance too, at " + num(r2, 3) : " failed");
   }
 
-  /// Where mean-curvature-start stalled within kAreaStallResidual and the Dirichlet routes end
+  /// Where mean-curvature-start stalled within kAreaStallResidual and the other routes end
   /// higher (or fail), its end instead (the tensor catenoid at n = 10: 2.6e-11 against 5.2e-11).
   void reconsider_mean_curvature_end() {
     if (V0 || !mean_curvature_failed || !s.stalled_mean_curvature_end) return;
@@ -195,8 +195,7 @@ struct Driver {
     AreaRouteRecord* mc = log().find(AreaRoute::MeanCurvatureStart);
     mc->first_variation = r0;
     mc->status = Status::NumericalLimit;
-    mc->why = out.ok ? "the Dirichlet routes ended at " + num(r_dh, 3) + ": " + out.message
-                     : "the Dirichlet routes failed: " + out.message;
+    mc->why = out.ok ? "the other routes ended higher, at " + num(r_dh, 3) : "the other routes failed";
     if (reported) reported->why = "not kept: mean-curvature-start's end is lower";
     take({o.H, true, Status::Converged, "the end of mean-curvature-start, " + s.stalled_mean_curvature_end->note}, mc, 0);
   }

@@ -34,7 +34,7 @@ bool near_corner(bool triangular, double u, double v) {
 // a sample and the one at 0.05 on its ray, or between neighbouring rays at one distance, is a fold.
 // A corner where the edges meet at 180° has N → 0 there but N ≈ r (a cos φ + b sin φ) along each
 // ray, whose direction does not turn; a fold (the circle's arcs fitted at degree 4, which meet at
-// 180.84°: docs/cmc.md, "The rule near nearly degenerate corners") turns it over.
+// 180.84°: docs/cmc_algorithm.md, "The area functional A_H") turns it over.
 template <class Net>
 void corner_folds(const Net& net, double mean, const std::vector<std::array<double, 6>>& corners, Regularity& r) {
   constexpr int kRays = 4, kDepth = 7;
@@ -169,7 +169,7 @@ std::vector<Eigen::Vector2d> gap_samples(bool triangular) {
   return uv;
 }
 
-// normal_gap (cmc_area_problem.h) for both nets.
+// normal_gap (area_problem.h) for both nets.
 template <class Net>
 double normal_gap_on(const Net& a, const Net& b) {
   double gap = 0.0;

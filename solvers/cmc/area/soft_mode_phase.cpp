@@ -1,5 +1,5 @@
 // The soft-mode phase of the area functional (area_problem.h, area_soft_mode_phase;
-// docs/cmc.md, "The soft-mode phase").
+// docs/cmc_algorithm.md, "The final phases").
 //
 // The method. At the point y0 where the truncated Newton phase stops, split the free coordinates
 // by the generalised eigenproblem K v = λ C v (K the Hessian of A_H, C the Dirichlet Gram over the
@@ -19,7 +19,7 @@
 //    stopping tests in an IterationCallback. The ceres route has no truncated Newton phase; this
 //    phase follows its last corrector directly.
 //
-// Why. Measured at the end of stalled solves (docs/cmc.md, "The soft-mode phase"): J has singular
+// Why. Measured at the end of stalled solves (docs/cmc_algorithm.md, "The final phases"): J has singular
 // values down to 6e-12 (its largest 1.5e-4 on the tensor catenoid at n = 6), so the Newton step in
 // the soft modes is long (|d|_C = 2.6 there), while G(s) is quadratic in s on a far smaller scale: with the
 // hard modes eliminated exactly, ‖G‖ along the Newton direction rises from 1e-3 of the step on.
@@ -30,15 +30,14 @@
 // It stops at the tolerance (max-norm relative residual, the solve's measure), after
 // max_iterations, when ‖G‖ falls by less than 10 % in 100 iterations, or when no step lowers ‖G‖
 // (30 trials with growing damping: LsStop::NoStep; with Ceres, its own convergence tests). In the
-// last case the point is called stationary (soft_stationary; cmc_area.cpp words the message) only
+// last case the point is called stationary (soft_stationary; final_phases.cpp words the message) only
 // when ‖JᵀG‖ <= 1e-3 ‖J‖_F ‖G‖ there: G lies along the nearly null directions of the reduced
 // Hessian, a stationary point of ‖G‖ that is not a critical point of A_H. An evaluation that fails
 // (a non-finite residual, h(s) not solved) restores h and the hard factor of the last good one.
 // The phase starts only within a relative first variation of 1e-6. It leaves p at the point with
 // the smallest residual it met.
 //
-// The trust-region part (CmcOptions::area_trust_region, default true; docs/cmc.md, "The
-// trust-region part of the soft-mode phase"). Where the loop above stops above the
+// The trust-region part (CmcOptions::area_trust_region, default true; docs/cmc_algorithm.md, "The final phases"). Where the loop above stops above the
 // tolerance, the system is split again at the best point and A_H itself is minimised along the
 // valley floor: φ(s) = A_H(y0 + Vs s + Vh h(s)) has the gradient G(s) (the hard part of ∇A_H
 // vanishes on the floor) and the Hessian J, so trust-region Newton on φ needs nothing new but a
@@ -49,7 +48,7 @@
 // rule on G, ∫₀¹ G(s + τ ds)·ds dτ (trust_region_model.h), accurate to the rounding of G, which is
 // relative to its terms. A descent method on φ does not see the stationary points of ‖G‖; it finds
 // minima of A_H, so a critical point that is a saddle in the soft modes is left to the loop above.
-// Measured (docs/cmc.md): of the H-form cases that ended `numerical-limit` there, all but the
+// Measured (docs/cmc_measurements.md): of the H-form cases that ended `numerical-limit` there, all but the
 // sphere triangle at n = 8 converge (in the first version: the tensor catenoid at n = 10 in 22
 // trust-region steps, curve A at n = 10 in 74). Where the reduced Hessian turns positive definite
 // the last steps are Newton steps inside the region (traced in the first version: the helicoid
@@ -76,7 +75,7 @@ using namespace bpde::optim;  // the generic least squares and trust-region step
 
 namespace {
 // Relative eigenvalue below which a mode is soft (measured: 21 … 136 soft modes of 63 … 243 on
-// the cases of docs/cmc.md, "The soft-mode phase").
+// the cases of docs/cmc_algorithm.md, "The final phases").
 constexpr double kSoftCut = 1e-4;
 // Chord steps in the hard modes per evaluation, until the hard part of the gradient is below
 // kHardFraction of ‖G‖; where they stop falling by 2x a step above hard_accept (kHardAccept of ‖G‖,
