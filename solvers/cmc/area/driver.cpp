@@ -32,6 +32,9 @@ struct RoutePlan {
   AreaRoute route;
   Entry entry = Entry::First;
   Keep keep = Keep::OnlyIfConverged;
+  /// SecondOpinion: the route whose end it is a second opinion on (an end from any other route
+  /// stands as it is).
+  AreaRoute on = AreaRoute::DirichletStart;
 };
 
 /// The routes for the options, in order. mean-curvature-start first unless "start" says
@@ -46,13 +49,14 @@ std::vector<RoutePlan> routes_for(const CmcOptions& o) {
   if (o.area_start == AreaStart::MeanCurvature) plan.push_back({AreaRoute::MeanCurvatureStart});
   if (o.V) {
     plan.push_back({AreaRoute::DirichletVolumeStart});
-    plan.push_back({AreaRoute::SmallerVolumeStart, Entry::SecondOpinion, Keep::LowerFirstVariation});
+    plan.push_back({AreaRoute::SmallerVolumeStart, Entry::SecondOpinion, Keep::LowerFirstVariation,
+                    AreaRoute::DirichletVolumeStart});
     plan.push_back({AreaRoute::VContinuation, Entry::LastResort});
   } else if (o.H == 0.0) {
     plan.push_back({AreaRoute::MinimalSurface});
   } else {
     plan.push_back({AreaRoute::DirichletStart});
-    plan.push_back({AreaRoute::HContinuation, Entry::SecondOpinion, Keep::OnlyIfConverged});
+    plan.push_back({AreaRoute::HContinuation, Entry::SecondOpinion, Keep::OnlyIfConverged, AreaRoute::DirichletStart});
   }
   return plan;
 }
@@ -204,7 +208,7 @@ struct Driver {
     log().records.reserve(8);  // records are held by pointer while routes run: no reallocation
     for (const RoutePlan& plan : routes_for(o)) {
       if (plan.entry == Entry::SecondOpinion && out.ok) {
-        second_opinion(plan);
+        if (reported && reported->route == plan.on) second_opinion(plan);
         continue;
       }
       if (out.ok) continue;  // a point is there: First and LastResort routes are not needed
