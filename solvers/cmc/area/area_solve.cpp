@@ -42,20 +42,20 @@ bool AreaSolve<Net>::refine_rule() {
 }
 
 template <class Net>
-SoftModeEnd AreaSolve<Net>::soft_end(double residual) const {
-  auto at = [&](const SoftEndMark& mark) {
-    return !o.V && mark.residual > 0 && std::abs(residual - mark.residual) <= 1e-12 * mark.residual;
-  };
+bool AreaSolve<Net>::at(const SoftEndMark& mark) const {
+  return !o.V && mark.kind != SoftModeEnd::None && mark.a == p.a && p.eps == 0.0 && mark.P.rows() == p.P().rows() &&
+         mark.P == p.P();
+}
+
+template <class Net>
+SoftModeEnd AreaSolve<Net>::soft_end() const {
   if (at(degenerate_end)) return SoftModeEnd::DegenerateBound;
   if (at(stationary_end)) return SoftModeEnd::Stationary;
   return SoftModeEnd::None;
 }
 
 template <class Net>
-std::string AreaSolve<Net>::soft_verdict(double residual, bool long_form) const {
-  auto at = [&](const SoftEndMark& mark) {
-    return !o.V && mark.residual > 0 && std::abs(residual - mark.residual) <= 1e-12 * mark.residual;
-  };
+std::string AreaSolve<Net>::soft_verdict(bool long_form) const {
   std::string v;
   if (at(stationary_end))
     v = long_form ? "; no step over the soft (tangential) modes lowers it (a stationary point of its norm there, "
@@ -142,8 +142,9 @@ double AreaSolve<Net>::dirichlet_first_variation(const double* V0) {
   template const CmcResult<Net>& AreaSolve<Net>::dirichlet_solution(double, const double*);              \
   template bool AreaSolve<Net>::choose_rule_for(double, int, int, int);                                  \
   template bool AreaSolve<Net>::refine_rule();                                                           \
-  template SoftModeEnd AreaSolve<Net>::soft_end(double) const;                                           \
-  template std::string AreaSolve<Net>::soft_verdict(double, bool) const;                                 \
+  template bool AreaSolve<Net>::at(const SoftEndMark&) const;                                            \
+  template SoftModeEnd AreaSolve<Net>::soft_end() const;                                                 \
+  template std::string AreaSolve<Net>::soft_verdict(bool) const;                                         \
   template AreaSolve<Net>::State AreaSolve<Net>::save() const;                                           \
   template void AreaSolve<Net>::restore(const State&);                                                   \
   template double AreaSolve<Net>::checked_residual(double);                                              \

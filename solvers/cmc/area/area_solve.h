@@ -74,18 +74,21 @@ struct AreaSolve {
   bool refine_rule();
   double rule_change = 0.0;  ///< the measured error of the rule last chosen
 
-  /// Where the last final phases ended at a soft-mode end (SoftModeEnd): the residual there, so
-  /// that the end is recognised while the net reported is still that point (the residual is a
-  /// function of the net and the rule). H form only (the V form's residual holds the volume).
+  /// Where the last final phases ended at a soft-mode end (SoftModeEnd): the net and the rule
+  /// there, so that the end is recognised while the net reported is still that point on that rule
+  /// (at ε = 0). H form only (the V form's end goes on back onto V0).
   struct SoftEndMark {
     SoftModeEnd kind = SoftModeEnd::None;
-    double residual = -1.0;
+    Eigen::MatrixX3d P;
+    std::shared_ptr<const AreaForm> a;
   };
   SoftEndMark stationary_end, degenerate_end;
-  /// The soft-mode end at `residual` (None unless the net is still the one the mark was set at).
-  SoftModeEnd soft_end(double residual) const;
+  /// Whether p is still at `mark`.
+  bool at(const SoftEndMark& mark) const;
+  /// The soft-mode end p is at (None when it has moved on since).
+  SoftModeEnd soft_end() const;
   /// The words for such an end: "" otherwise.
-  std::string soft_verdict(double residual, bool long_form) const;
+  std::string soft_verdict(bool long_form) const;
 
   /// What a route changes: the net, the rule and its error, the damping, ε and the soft-mode
   /// marks. A route tried and not kept puts them back.

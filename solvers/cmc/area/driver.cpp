@@ -131,7 +131,7 @@ struct Driver {
       const double fv = V0 ? s.vresidual(*V0, r.H) : s.p.residual_at(o.H == 0.0 ? 0.0 : r.H, 0.0);
       rec->first_variation = fv;
       rec->status = fv <= o.tolerance ? Status::Converged : Status::NumericalLimit;
-      rec->soft_mode_end = s.soft_end(fv);
+      rec->soft_mode_end = s.soft_end();
     } else {
       rec->status = r.why;
     }
@@ -261,7 +261,7 @@ void fill(CmcResult<Net>& res, AreaSolve<Net>& s, AreaOutcome out, const Net& da
   if (out.ok && !(res.summary.residual <= o.tolerance)) {
     out = {out.H, false, Status::NumericalLimit,
            "the final net misses the first variation of A_H by " + num(res.summary.residual) + " (relative)" +
-               s.soft_verdict(res.summary.residual, true) + "; reached after: " + out.message};
+               s.soft_verdict(true) + "; reached after: " + out.message};
   }
   if (!reg.ok) {
     out.ok = false;

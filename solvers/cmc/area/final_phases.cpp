@@ -34,8 +34,8 @@ CorrectorStats AreaSolve<Net>::finish(double H, int max_iterations) {
     t = area_truncated_newton(p, H, o, max_iterations);
   }
   p.refresh_rule = nullptr;
-  stationary_end = t.soft_stationary ? SoftEndMark{SoftModeEnd::Stationary, t.residual} : SoftEndMark{};
-  degenerate_end = t.trust_region_blocked ? SoftEndMark{SoftModeEnd::DegenerateBound, t.residual} : SoftEndMark{};
+  stationary_end = t.soft_stationary ? SoftEndMark{SoftModeEnd::Stationary, p.P(), p.a} : SoftEndMark{};
+  degenerate_end = t.trust_region_blocked ? SoftEndMark{SoftModeEnd::DegenerateBound, p.P(), p.a} : SoftEndMark{};
   if (record) {
     record->add_phase(AreaPhase::TruncatedNewton, t.iterations - t.soft_iterations);
     record->add_phase(o.solver == CmcSolver::Ceres ? AreaPhase::SoftModeCeres : AreaPhase::SoftModeLm,

@@ -31,7 +31,7 @@ void AreaSolve<Net>::rule_check(AreaOutcome& out) {
     if (!st.ok) {
       out = {out.H, false, Status::NumericalLimit,
              "the correction with the refined quadrature rule (q = " + std::to_string(p.a->points_per_direction()) +
-                 ") stopped at a relative first variation of " + num(st.residual) + soft_verdict(st.residual, false) +
+                 ") stopped at a relative first variation of " + num(st.residual) + soft_verdict(false) +
                  "; reached after: " + out.message};
       return;
     }
