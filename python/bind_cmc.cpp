@@ -33,7 +33,7 @@ void bind_cmc(py::module_& m) {
           "from the minimal surface, H = 0, alone); docs/cmc.md, \"The area functional\".")
       .def_readwrite("area_trust_region", &bpde::CmcOptions::area_trust_region,
                      "area functional: the trust-region part of the soft-mode phase (default True; False "
-                     "stops where its Levenberg-Marquardt loop stops, as before 2026-12-06); docs/cmc.md.")
+                     "stops where its Levenberg-Marquardt loop stops); docs/cmc.md.")
       .def_readwrite("max_corrector_iterations", &bpde::CmcOptions::max_corrector_iterations)
       .def_readwrite("max_continuation_steps", &bpde::CmcOptions::max_continuation_steps)
       .def_readwrite("min_step", &bpde::CmcOptions::min_step);
