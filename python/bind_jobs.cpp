@@ -101,7 +101,7 @@ void bind_jobs(py::module_& m) {
         Json r;
         {
           py::gil_scoped_release release;
-          r = bpde::check_report(bpde::TriangleMesh{V, F, Eigen::VectorXd()});
+          r = bpde::check_report(bpde::TriangleMesh{V, F, Eigen::VectorXd(), {}});
         }
         return from_json(r);
       },
