@@ -1,0 +1,72 @@
+// The cmc problem (solvers/cmc/cmc.h): CmcOptions, the results, solve_cmc.
+#include "bindings.h"
+
+#include "bezierpde/solvers/cmc/cmc.h"
+
+namespace bpde::python {
+
+void bind_cmc(py::module_& m) {
+  py::class_<bpde::CmcOptions>(m, "CmcOptions")
+      .def(py::init<>())
+      .def_readwrite("H", &bpde::CmcOptions::H)
+      .def_readwrite("V", &bpde::CmcOptions::V)
+      .def_property(
+          "solver", [](const bpde::CmcOptions& o) { return bpde::to_string(o.solver); },
+          [](bpde::CmcOptions& o, const std::string& s) { o.solver = bpde::parse_cmc_solver(s); })
+      .def_property(
+          "fixed", [](const bpde::CmcOptions& o) { return bpde::to_string(o.fixed); },
+          [](bpde::CmcOptions& o, const std::string& s) { o.fixed = parse_fixed(s); })
+      .def_property(
+          "functional", [](const bpde::CmcOptions& o) { return bpde::to_string(o.functional); },
+          [](bpde::CmcOptions& o, const std::string& s) { o.functional = bpde::parse_cmc_functional(s); },
+          "\"dirichlet\" (default), \"area\" or \"mean-curvature\" (solvers/cmc/cmc.h).")
+      .def_readwrite("tolerance", &bpde::CmcOptions::tolerance)
+      .def_readwrite("mean_curvature_tolerance", &bpde::CmcOptions::mean_curvature_tolerance)
+      .def_readwrite("max_least_squares_iterations", &bpde::CmcOptions::max_least_squares_iterations)
+      .def_readwrite("geodesic_acceleration", &bpde::CmcOptions::geodesic_acceleration)
+      .def_property(
+          "area_start", [](const bpde::CmcOptions& o) { return bpde::to_string(o.area_start); },
+          [](bpde::CmcOptions& o, const std::string& s) { o.area_start = bpde::parse_area_start(s); },
+          "area functional: \"mean-curvature\" (default: the least-squares mean-curvature surface first, "
+          "route 0, not tried where the D_H solution is already within 1e-6 of a critical point of A_H, as "
+          "on conformal data), \"dirichlet\" (from the D_H solution) or \"minimal-surface\" (the branch "
+          "from the minimal surface, H = 0, alone); docs/cmc.md, \"The area functional\".")
+      .def_readwrite("area_trust_region", &bpde::CmcOptions::area_trust_region,
+                     "area functional: the trust-region part of the soft-mode phase (default True; False "
+                     "stops where its Levenberg-Marquardt loop stops); docs/cmc.md.")
+      .def_readwrite("max_corrector_iterations", &bpde::CmcOptions::max_corrector_iterations)
+      .def_readwrite("max_continuation_steps", &bpde::CmcOptions::max_continuation_steps)
+      .def_readwrite("min_step", &bpde::CmcOptions::min_step);
+  auto cmc_result = [&m](const char* name, auto tag) {
+    using R = decltype(tag);
+    py::class_<R>(m, name)
+        .def_readonly("net", &R::net)
+        .def_readonly("H", &R::H)
+        .def_readonly("D", &R::D)
+        .def_readonly("V", &R::V)
+        .def_readonly("DH", &R::DH)
+        .def_readonly("A", &R::A)
+        .def_readonly("energy", &R::energy)
+        .def_property_readonly("functional", [](const R& r) { return bpde::to_string(r.functional); })
+        .def_readonly("quadrature_points", &R::quadrature_points)
+        .def_readonly("quadrature_grading", &R::quadrature_grading)
+        .def_readonly("quadrature_levels", &R::quadrature_levels)
+        .def_readonly("quadrature_nodes", &R::quadrature_nodes)
+        .def_readonly("continuation_steps", &R::continuation_steps)
+        .def_readonly("summary", &R::summary);
+  };
+  cmc_result("CmcResultTriangular", bpde::CmcResult<bpde::TriangularNet>{});
+  cmc_result("CmcResultTensor", bpde::CmcResult<bpde::TensorNet>{});
+  m.def(
+      "solve_cmc",
+      [](const bpde::TriangularNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },
+      py::arg("data"), py::arg("options"), py::call_guard<py::gil_scoped_release>(),
+      "The cmc problem of solvers/cmc/cmc.h (options.functional: the critical point of D + 2HV, of A + 2HV, "
+      "or the least squares of the mean curvature) -> CmcResult (net, H, D, V, DH, A, energy, functional, summary).");
+  m.def(
+      "solve_cmc",
+      [](const bpde::TensorNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },
+      py::arg("data"), py::arg("options"), py::call_guard<py::gil_scoped_release>());
+}
+
+}  // namespace bpde::python

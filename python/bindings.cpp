@@ -1,0 +1,106 @@
+// The conversions shared by the binding files (bindings.h).
+#include "bindings.h"
+
+#include <cmath>
+#include <variant>
+
+#include "bezierpde/io/job.h"
+
+namespace bpde::python {
+
+Json to_json(py::handle h, int depth) {
+  if (depth > bpde::kMaxJsonDepth)
+    throw bpde::SizeError("JSON input nested deeper than " + std::to_string(bpde::kMaxJsonDepth) + " levels");
+  if (h.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(h)) return h.cast<bool>();
+  if (py::isinstance<py::int_>(h)) {
+    try {
+      return h.cast<long long>();
+    } catch (const py::cast_error&) {
+      throw bpde::ParseError("integer out of range: " + py::str(h).cast<std::string>());
+    }
+  }
+  if (py::isinstance<py::float_>(h)) {
+    const double x = h.cast<double>();
+    if (!std::isfinite(x)) throw bpde::NonFiniteError("a number is not finite (JSON has no NaN or infinity)");
+    return x;
+  }
+  if (py::isinstance<py::str>(h)) return h.cast<std::string>();
+  if (py::isinstance<py::dict>(h)) {
+    Json j = Json::object();
+    for (auto item : h.cast<py::dict>()) {
+      if (!py::isinstance<py::str>(item.first)) throw bpde::ParseError("a JSON object key must be a str");
+      j[item.first.cast<std::string>()] = to_json(item.second, depth + 1);
+    }
+    return j;
+  }
+  if (py::isinstance<py::list>(h) || py::isinstance<py::tuple>(h)) {
+    Json j = Json::array();
+    for (auto v : h) j.push_back(to_json(v, depth + 1));
+    return j;
+  }
+  // numpy scalars and arrays: through their Python values.
+  if (py::hasattr(h, "tolist")) return to_json(h.attr("tolist")(), depth + 1);
+  throw bpde::ParseError("cannot convert a Python " + py::str(h.get_type().attr("__name__")).cast<std::string>() +
+                         " to JSON");
+}
+
+py::object from_json(const Json& j) {
+  switch (j.type()) {
+    case Json::value_t::null:
+      return py::none();
+    case Json::value_t::boolean:
+      return py::bool_(j.get<bool>());
+    case Json::value_t::number_integer:
+      return py::int_(j.get<long long>());
+    case Json::value_t::number_unsigned:
+      return py::int_(j.get<unsigned long long>());
+    case Json::value_t::number_float:
+      return py::float_(j.get<double>());
+    case Json::value_t::string:
+      return py::str(j.get<std::string>());
+    case Json::value_t::array: {
+      py::list l;
+      for (const Json& v : j) l.append(from_json(v));
+      return l;
+    }
+    case Json::value_t::object: {
+      py::dict d;
+      for (auto it = j.begin(); it != j.end(); ++it) d[py::str(it.key())] = from_json(it.value());
+      return d;
+    }
+    default:
+      throw bpde::InternalError("JSON value of an unexpected type");
+  }
+}
+
+py::tuple mesh_tuple(bpde::TriangleMesh&& mesh) {
+  return py::make_tuple(adopt(std::move(mesh.V)), adopt(std::move(mesh.F)), adopt(std::move(mesh.H)));
+}
+
+bpde::Net net_arg(py::handle h) {
+  if (py::isinstance<bpde::TensorNet>(h)) return h.cast<bpde::TensorNet>();
+  if (py::isinstance<bpde::TriangularNet>(h)) return h.cast<bpde::TriangularNet>();
+  if (py::isinstance<bpde::BSplineNet>(h)) return h.cast<bpde::BSplineNet>();
+  const Json j = to_json(h);
+  return bpde::net_from_json(j, "net");
+}
+
+py::object net_object(bpde::Net&& net) {
+  return std::visit([](auto&& n) -> py::object { return py::cast(std::move(n)); }, std::move(net));
+}
+
+bpde::FixedSet parse_fixed(const std::string& s) {
+  if (s == "boundary") return bpde::FixedSet::Boundary;
+  if (s == "boundary+adjacent") return bpde::FixedSet::BoundaryAdjacent;
+  if (s == "u-boundaries") return bpde::FixedSet::UBoundaries;
+  throw bpde::ParameterError("fixed: expected \"boundary\", \"boundary+adjacent\" or \"u-boundaries\", got \"" + s +
+                             "\"");
+}
+
+bpde::EnergySpec energy_arg(py::handle h) {
+  if (py::isinstance<py::str>(h)) return bpde::energy_from_argument(h.cast<std::string>());
+  return bpde::energy_from_json(to_json(h), "operator", true);
+}
+
+}  // namespace bpde::python
