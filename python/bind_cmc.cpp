@@ -27,16 +27,41 @@ void bind_cmc(py::module_& m) {
       .def_property(
           "area_start", [](const bpde::CmcOptions& o) { return bpde::to_string(o.area_start); },
           [](bpde::CmcOptions& o, const std::string& s) { o.area_start = bpde::parse_area_start(s); },
-          "area functional: \"mean-curvature\" (default: the least-squares mean-curvature surface first, "
-          "route 0, not tried where the D_H solution is already within 1e-6 of a critical point of A_H, as "
-          "on conformal data), \"dirichlet\" (from the D_H solution) or \"minimal-surface\" (the branch "
-          "from the minimal surface, H = 0, alone); docs/cmc.md, \"The area functional\".")
+          "area functional: \"mean-curvature\" (default: the route mean-curvature-start first, the "
+          "least-squares mean-curvature surface, not tried where the D_H solution is already within 1e-6 of "
+          "a critical point of A_H, as on conformal data), \"dirichlet\" (from the D_H solution) or "
+          "\"minimal-surface\" (the branch from the minimal surface, H = 0, alone); docs/cmc_algorithm.md.")
       .def_readwrite("area_trust_region", &bpde::CmcOptions::area_trust_region,
                      "area functional: the trust-region part of the soft-mode phase (default True; False "
-                     "stops where its Levenberg-Marquardt loop stops); docs/cmc.md.")
+                     "stops where its Levenberg-Marquardt loop stops); docs/cmc_algorithm.md, \"The final phases\".")
       .def_readwrite("max_corrector_iterations", &bpde::CmcOptions::max_corrector_iterations)
       .def_readwrite("max_continuation_steps", &bpde::CmcOptions::max_continuation_steps)
       .def_readwrite("min_step", &bpde::CmcOptions::min_step);
+  py::class_<bpde::AreaRouteRecord>(m, "AreaRouteRecord",
+                                    "One route of the area solve (solvers/cmc/area_route.h; docs/cmc_algorithm.md).")
+      .def_property_readonly("route", [](const bpde::AreaRouteRecord& r) { return bpde::to_string(r.route); })
+      .def_readonly("tried", &bpde::AreaRouteRecord::tried)
+      .def_readonly("status", &bpde::AreaRouteRecord::status)
+      .def_readonly("first_variation", &bpde::AreaRouteRecord::first_variation, "None where the route failed")
+      .def_readonly("iterations", &bpde::AreaRouteRecord::iterations)
+      .def_readonly("continuation_steps", &bpde::AreaRouteRecord::continuation_steps)
+      .def_readonly("seconds", &bpde::AreaRouteRecord::seconds)
+      .def_property_readonly("phases",
+                             [](const bpde::AreaRouteRecord& r) {
+                               py::dict d;
+                               for (const bpde::AreaPhaseRecord& ph : r.phases) d[bpde::to_string(ph.phase)] = ph.count;
+                               return d;
+                             },
+                             "iterations of each final phase run, by name")
+      .def_property_readonly("soft_mode_end",
+                             [](const bpde::AreaRouteRecord& r) { return bpde::to_string(r.soft_mode_end); })
+      .def_readonly("kept", &bpde::AreaRouteRecord::kept)
+      .def_readonly("message", &bpde::AreaRouteRecord::message)
+      .def_readonly("why", &bpde::AreaRouteRecord::why)
+      .def("__repr__", [](const bpde::AreaRouteRecord& r) {
+        return std::string("<AreaRouteRecord ") + bpde::to_string(r.route) + " " +
+               (r.tried ? bpde::to_string(r.status) : "not tried") + (r.kept ? ", kept>" : ">");
+      });
   auto cmc_result = [&m](const char* name, auto tag) {
     using R = decltype(tag);
     py::class_<R>(m, name)
@@ -53,7 +78,33 @@ void bind_cmc(py::module_& m) {
         .def_readonly("quadrature_levels", &R::quadrature_levels)
         .def_readonly("quadrature_nodes", &R::quadrature_nodes)
         .def_readonly("continuation_steps", &R::continuation_steps)
-        .def_readonly("summary", &R::summary);
+        .def_readonly("summary", &R::summary)
+        .def_property_readonly(
+            "routes", [](const R& r) { return r.routes.records; },
+            "area functional: the routes considered, in order (list of AreaRouteRecord); empty otherwise")
+        .def_property_readonly(
+            "kept_route",
+            [](const R& r) -> py::object {
+              const bpde::AreaRouteRecord* k = r.routes.kept();
+              return k ? py::object(py::str(bpde::to_string(k->route))) : py::object(py::none());
+            },
+            "area functional: the name of the route the result comes from, or None")
+        .def_property_readonly(
+            "routes_report", [](const R& r) { return bpde::full_report(r.routes); },
+            "area functional: one line per route considered (route, status, first variation, iterations, ...)")
+        .def_property_readonly(
+            "parametrisation",
+            [](const R& r) {
+              const bpde::ParametrisationCheck& c = r.parametrisation;
+              py::dict d;
+              d["regular"] = c.regular;
+              d["checked"] = c.checked;
+              d["min_ratio"] = c.min_ratio;
+              d["flipped"] = c.flipped;
+              d["fold_corner_angle"] = c.fold_u >= 0 ? py::object(py::float_(c.fold_corner_angle)) : py::none();
+              return d;
+            },
+            "area and mean-curvature functionals: the regularity verdict on the net");
   };
   cmc_result("CmcResultTriangular", bpde::CmcResult<bpde::TriangularNet>{});
   cmc_result("CmcResultTensor", bpde::CmcResult<bpde::TensorNet>{});

@@ -437,3 +437,32 @@ def test_solve_cmc_takes_each_functional_and_equals_the_job_route():
     plain = bezierpde.solve_cmc(data, o)
     assert plain.summary.iterations != r.summary.iterations
     assert bits(np.asarray(plain.net.points).tolist()) != bits(np.asarray(r.net.points).tolist())
+
+
+def test_area_solve_reports_its_routes_as_the_job_does():
+    """The area solve's route records from Python (routes, kept_route, routes_report,
+    parametrisation) and in result.json's report (FORMATS.md "routes"): the same routes in the same
+    order, one kept, its first variation within the tolerance. The Fig. 1 circle at n = 8,
+    H = -0.5 converges from the least-squares mean-curvature surface."""
+    job = {"boundary": {"type": "triangular", "degree": 8, "builder": "circle-three-arcs"},
+           "problem": {"kind": "cmc", "H": -0.5, "functional": "area"}}
+    net_cli, report = bezierpde.solve(job)
+    o = bezierpde.CmcOptions()
+    o.H = -0.5
+    o.functional = "area"
+    r = bezierpde.solve_cmc(bezierpde.net_from_dict(net_cli), o)
+    assert r.summary.converged and report["converged"]
+    assert r.kept_route == "mean-curvature-start"
+    assert [x.route for x in r.routes] == [x["route"] for x in report["routes"]]
+    kept = [x for x in report["routes"] if x["kept"]]
+    assert len(kept) == 1 and kept[0]["route"] == "mean-curvature-start" and kept[0]["status"] == "converged"
+    assert 0 <= kept[0]["first_variation"] <= 1e-11
+    assert r.routes[0].status == bezierpde.Status.Converged and r.routes[0].tried
+    assert r.routes[0].first_variation <= 1e-11
+    assert "mean-curvature-start: converged" in r.routes_report
+    assert r.parametrisation["regular"] and r.parametrisation["checked"]
+    assert report["parametrisation"]["regular"] and report["parametrisation"]["fold_corner_angle"] is None
+    # the Dirichlet functional has no routes
+    o.functional = "dirichlet"
+    d = bezierpde.solve_cmc(bezierpde.net_from_dict(net_cli), o)
+    assert d.routes == [] and d.kept_route is None and not d.parametrisation["checked"]
