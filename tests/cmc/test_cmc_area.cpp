@@ -831,7 +831,7 @@ TEST(CmcArea, SpherePatchAtDegree8EndsAsANumericalLimitOnARegularSurface) {
 // iterations, 5.5e-9 from the sphere, H within 6e-5 of -0.9 at corner margin 0.1) it reaches a
 // critical point 24× nearer the sphere than the routes from the D_H critical point (1.3e-7, H
 // -0.90023 … -0.89860): A_H is nearly flat along its tangential valley, both nets are critical
-// points to 1e-11, and Φ is what pins the geometry. The target at n = 10 (H within 5e-4
+// points to 1e-11, and Φ is what pins the geometry. The mean-curvature target at n = 10 (H within 5e-4
 // away from the corners) holds with it and not without it.
 TEST(CmcArea, MeanCurvatureStartLandsNearerTheSphere) {
   const double H = -0.9, R = 1 / 0.9;

@@ -178,7 +178,7 @@ CmcOptions mc_options(double H, CmcSolver solver = CmcSolver::Newton) {
 // one residual block per node (ceres); every target below holds for each.
 constexpr CmcSolver kSolvers[] = {CmcSolver::Newton, CmcSolver::Ceres};
 
-// The target at degree 10 (Arnal–Lluch–Monterde's Fig. 1 circle, three arcs by angle):
+// The mean-curvature target at degree 10 (Arnal–Lluch–Monterde's Fig. 1 circle, three arcs by angle):
 // on the sphere of radius 1/|H| to 1e-6, corners included, and H within 5e-4 away from the
 // corners. The area route meets the first and misses the second at H = -0.9 (5.3e-3,
 // CmcArea.CircleInThreeArcsAtHMinus09). Measured here: H = -0.5: 1.6e-8 from the sphere, H within
