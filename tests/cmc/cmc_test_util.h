@@ -6,6 +6,8 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
+#include <ostream>
 #include <random>
 #include <vector>
 
@@ -151,4 +153,19 @@ inline LargerCapOffTheOrigin larger_cap_off_the_origin(int n, double H, const Ei
   return c;
 }
 
+}  // namespace bpde::testing
+
+namespace bpde {
+/// Failure output of the area routes' typed records by their names.
+inline void PrintTo(AreaRoute r, std::ostream* os) { *os << to_string(r); }
+inline void PrintTo(SoftModeEnd e, std::ostream* os) { *os << to_string(e); }
+inline void PrintTo(Status s, std::ostream* os) { *os << to_string(s); }
+}  // namespace bpde
+
+namespace bpde::testing {
+/// The route an area result comes from (none: no route was kept, the solve failed in every route).
+inline std::optional<AreaRoute> kept_route(const AreaRouteLog& log) {
+  const AreaRouteRecord* k = log.kept();
+  return k ? std::optional<AreaRoute>(k->route) : std::nullopt;
+}
 }  // namespace bpde::testing

@@ -61,7 +61,7 @@ TEST(CmcProgress, MeanCurvatureReportsTheLeastSquaresStage) {
   for (size_t i = 1; i < ls.size(); ++i) EXPECT_GE(ls[i], ls[i - 1]);  // Φ never rises in LM
 }
 
-// The area functional from the D_H critical point (route 0, the mean-curvature start, off): after
+// The area functional from the D_H critical point (mean-curvature-start off): after
 // its D_H start ("cmc continuation"), the stage "cmc area" reports the decades of the Dirichlet
 // regulariser removed (out of 12), never falling, from 0 to 1; the same for the V form (its start
 // is the nlopt minimiser of D).
@@ -94,10 +94,10 @@ TEST(CmcProgress, AreaReportsTheRegulariserStages) {
   }
 }
 
-// Route 0's least squares (the triangular catenoid at n = 12, H = 0, where they stop at their 300
-// iterations and refine their rule once on the way, measured) report one stage "cmc least
-// squares": its fraction starts at 0, never falls, lies in [0, 1] and reaches 1 once, at their
-// end (before 2026-12-05 each minimisation of a refinement reported its own way from 0 to 1).
+// mean-curvature-start's least squares (the triangular catenoid at n = 12, H = 0, where they stop
+// at their 300 iterations and refine their rule once on the way, measured) report one stage "cmc
+// least squares": its fraction starts at 0, never falls, lies in [0, 1] and reaches 1 once, at their
+// end (before, each minimisation of a refinement reported its own way from 0 to 1).
 TEST(CmcProgress, AreaRouteZeroReportsTheLeastSquaresStage) {
   auto catenoid = [](double u, double v) {
     const double th = 1.2 * u + 0.4 * v, rho = 1.1 + 0.8 * v;
@@ -106,7 +106,7 @@ TEST(CmcProgress, AreaRouteZeroReportsTheLeastSquaresStage) {
   CmcOptions o = testing::cmc_options(CmcFunctionalKind::Area, 0.0);
   std::vector<double> ls;
   int area_before_end = 0;  // "cmc area" reports before its end: here no ε-homotopy runs (H = 0,
-                            // route 0 kept), so only the residual evaluations report it
+                            // mean-curvature-start kept), so only the residual evaluations report it
   o.progress = [&](std::string_view stage, double d, double total) {
     if (stage == "cmc area" && d < total) ++area_before_end;
     if (stage != "cmc least squares") return;
@@ -116,8 +116,7 @@ TEST(CmcProgress, AreaRouteZeroReportsTheLeastSquaresStage) {
   };
   const auto r = solve_cmc(testing::triangular_boundary(12, catenoid), o);
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
-  ASSERT_NE(r.summary.message.find("from the least-squares mean-curvature surface"), std::string::npos)
-      << r.summary.message;
+  ASSERT_EQ(testing::kept_route(r.routes), AreaRoute::MeanCurvatureStart) << full_report(r.routes);
   ASSERT_GE(ls.size(), 3u);
   EXPECT_EQ(ls.front(), 0.0);
   EXPECT_EQ(ls.back(), 1.0);
@@ -127,8 +126,8 @@ TEST(CmcProgress, AreaRouteZeroReportsTheLeastSquaresStage) {
 }
 
 // The area functional solves the D_H critical point once (the stage "cmc continuation" ends once):
-// the test before route 0, route 0's least squares (their start) and the routes from the D_H point
-// share it (the circle at n = 10, H = -0.5, where route 0 is tried and kept). Before 2026-12-05 the
+// the gate of mean-curvature-start, its least squares (their start) and the routes from the D_H point
+// share it (the circle at n = 10, H = -0.5, where mean-curvature-start is tried and kept). Before, the
 // least squares solved it again.
 TEST(CmcProgress, AreaSolvesTheDirichletStartOnce) {
   CmcOptions o = testing::cmc_options(CmcFunctionalKind::Area, -0.5);
@@ -138,8 +137,7 @@ TEST(CmcProgress, AreaSolvesTheDirichletStartOnce) {
   };
   const auto r = solve_cmc(testing::circle_three_arcs(10), o);
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
-  ASSERT_NE(r.summary.message.find("from the least-squares mean-curvature surface"), std::string::npos)
-      << r.summary.message;
+  ASSERT_EQ(testing::kept_route(r.routes), AreaRoute::MeanCurvatureStart) << full_report(r.routes);
   EXPECT_EQ(ended, 1);
 }
 

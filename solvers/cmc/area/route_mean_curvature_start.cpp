@@ -33,6 +33,10 @@ bool AreaSolve<Net>::from_mean_curvature(const double* V0, double& H, std::strin
   if (!V0) om.max_least_squares_iterations = std::min(o.max_least_squares_iterations, kMeanCurvatureStartIterations);
   const CmcResult<Net> m = solve_mean_curvature(data, om, &dirichlet_solution(o.H, V0));
   summary.iterations += m.summary.iterations;
+  if (record) {
+    record->least_squares_residual = m.summary.residual;
+    record->least_squares_converged = m.summary.converged;
+  }
   const std::string start = "the least-squares mean-curvature surface (√Φ = " + num(m.summary.residual, 3) +
                             (m.summary.converged                                      ? std::string()
                              : m.summary.residual > o.mean_curvature_tolerance ? ", above its tolerance"

@@ -40,6 +40,7 @@ AreaOutcome AreaSolve<Net>::volume_continuation_from_smaller(double V0, double V
       tried += (tried.empty() ? "" : "; ") + num(V1) + ": " + out.message;
       continue;
     }
+    if (record) record->start_volume = V1;
     double H = out.H;
     choose_rule();
     theta = kFreshDamping;
