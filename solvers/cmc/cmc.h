@@ -175,7 +175,7 @@ struct CmcOptions {
   /// area functional: where the soft-mode phase's Levenberg–Marquardt loop on the reduced first
   /// variation stops above the tolerance, trust-region Newton on A_H along the valley floor
   /// (docs/cmc_algorithm.md, "The final phases"); default true. false stops
-  /// there, as before 2026-12-06, kept to measure the two side by side. Other functionals ignore it.
+  /// there (the soft-mode phase without its trust-region part), kept to measure the two side by side. Other functionals ignore it.
   bool area_trust_region = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area

@@ -1,4 +1,4 @@
-// Knot vectors whose arithmetic overflows or loses the domain (issue 14): rejected when the net is
+// Knot vectors whose arithmetic overflows or loses the domain: rejected when the net is
 // built, and basis_table never indexes from a non-finite parameter.
 #include <gtest/gtest.h>
 

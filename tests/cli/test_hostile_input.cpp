@@ -1,4 +1,4 @@
-// Hostile input (issue 14): each class that once crashed the command, read without bound or gave
+// Hostile input: each class that once crashed the command, read without bound or gave
 // a wrong exit status, run through the `bpde` binary. Bad input must exit 2 with one line
 // `error: ...` on stderr and leave the output folder as it was.
 #include <gtest/gtest.h>

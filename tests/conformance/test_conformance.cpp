@@ -354,8 +354,8 @@ TEST_P(Conformance, PrescribedPointsSecondsAndFailures) {
   }
 }
 
-// Status == Converged exactly when converged. Passes once every solver sets Summary::status
-// (issue 11); until then a converged solve still carries the default status.
+// Status == Converged exactly when converged, for every solver (Summary::set_converged /
+// set_failed keep the two together).
 TEST_P(ConformanceStatus, StatusIsConvergedExactlyWhenConverged) {
   for (const Solve& r : GetParam().runs()) {
     SCOPED_TRACE(GetParam().name + ": " + r.what);

@@ -1,4 +1,4 @@
-// gnorm (rho, t) with e1 parallel to e2 is a singular G (issue 14): the same relative test as for
+// gnorm (rho, t) with e1 parallel to e2 is a singular G: the same relative test as for
 // a G matrix, |det G| <= 1e-12 |G|_F^2, with det G = rho sin t and |G|_F^2 = rho^2 + 1.
 #include <gtest/gtest.h>
 

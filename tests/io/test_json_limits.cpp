@@ -1,4 +1,4 @@
-// Input limits of the JSON readers (issue 14; docs/FORMATS.md "Input limits").
+// Input limits of the JSON readers (docs/FORMATS.md "Input limits").
 #include <gtest/gtest.h>
 
 #include <unistd.h>

@@ -1,5 +1,5 @@
-// converged of the tensor PDE solvers past the degree they can deliver (issue 14;
-// docs/pde_accuracy.md "Numerical limit").
+// converged of the tensor PDE solvers past the degree they can deliver
+// (docs/pde_accuracy.md "Numerical limit").
 #include <gtest/gtest.h>
 
 #include "bezierpde/solvers/pde/pde_explicit.h"
