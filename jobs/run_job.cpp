@@ -229,11 +229,9 @@ Solver select_tensor_pde(const Problem& p) {
   return {pde_lu_requirements(e), on<TensorNet, pde_lu>};
 }
 
-// The cmc requirements of the job's functional (the area functional takes boundary and
-// boundary+adjacent data, solvers newton and ceres).
+// The cmc requirements of the job's functional and form (solvers/cmc/cmc.h).
 SolverRequirements cmc_requirements_for(const Problem& p) {
-  if (p.functional == CmcFunctionalKind::MeanCurvature) return cmc_mean_curvature_requirements();
-  return p.functional == CmcFunctionalKind::Area ? cmc_area_requirements() : cmc_requirements();
+  return cmc_requirements(p.functional, p.kind == ProblemKind::CmcV);
 }
 
 const Route kRoutes[] = {
