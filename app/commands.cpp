@@ -47,7 +47,7 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir, const Sol
   check_output_dir(out_dir, output_file_names(true, exports));
   const SolveOutcome out = run_job(job);
   const WrittenResult written = write_job_result(out_dir, job, out);
-  if (!flags.quiet) std::fputs(solve_summary(written.result, job_path, out_dir).c_str(), stdout);
+  if (!flags.quiet) std::fputs(solve_summary(out, written, job_path, out_dir).c_str(), stdout);
   return written.exit_code;
 }
 

@@ -146,34 +146,36 @@ Problem problem_from_json(const Json& j, const std::string& path) {
                          "\" (expected dirichlet, area or mean-curvature)");
       p.functional = parse_cmc_functional(f);
     }
-    const bool area = p.functional == CmcFunctionalKind::Area;
-    const bool mean_curvature = p.functional == CmcFunctionalKind::MeanCurvature;
+    // Which fields the functional takes, and the solver it runs by default, are the solver's rules
+    // (cmc_requirements); whether it takes the solver and the fixed set is checked with the net
+    // (jobs/run_job.h validate_job).
+    const SolverRequirements rules = cmc_requirements(p.functional, hasV);
+    auto refuse = [&](const std::string& key) {
+      if (const std::string* why = rules.refusal(key)) throw ParseError(path + "." + key + ": " + *why);
+    };
     if (j.contains("mean_curvature_tolerance")) {
-      if (!mean_curvature)
-        throw ParseError(path + ".mean_curvature_tolerance: only with \"functional\": \"mean-curvature\"");
+      refuse("mean_curvature_tolerance");
       p.mean_curvature_tolerance = number(j["mean_curvature_tolerance"], path + ".mean_curvature_tolerance");
-      if (!(p.mean_curvature_tolerance > 0.0 && p.mean_curvature_tolerance < 1.0)) {
+      if (!mean_curvature_tolerance_in_range(p.mean_curvature_tolerance)) {
         char got[32];
         std::snprintf(got, sizeof got, "%g", p.mean_curvature_tolerance);
         throw ParseError(path + ".mean_curvature_tolerance: must be in (0, 1), got " + got);
       }
     }
     if (j.contains("start")) {
-      if (!area) throw ParseError(path + ".start: only with \"functional\": \"area\"");
+      refuse("start");
       try {
         p.area_start = parse_area_start(string(j["start"], path + ".start"));
       } catch (const ParameterError& e) {  // the names live in one place (cmc_solver_name.cpp)
         throw ParseError(path + ".start: " + e.what());
       }
     }
-
+    p.solver = default_cmc_solver(p.functional, hasV);
     if (j.contains("solver")) {
       const std::string s = string(j["solver"], path + ".solver");
       if (s != "newton" && s != "ceres" && s != "nlopt")
         throw ParseError(path + ".solver: unknown solver \"" + s + "\" (expected newton, ceres or nlopt)");
       p.solver = parse_cmc_solver(s);
-      if (mean_curvature && p.solver == CmcSolver::NLopt)
-        throw UnsupportedProblem(path + ": " + kMeanCurvatureSolvers);
     }
     if (hasH) {
       p.kind = ProblemKind::CmcH;
@@ -181,9 +183,6 @@ Problem problem_from_json(const Json& j, const std::string& path) {
     } else {
       p.kind = ProblemKind::CmcV;
       p.V = number(j["V"], path + ".V");
-      if (!j.contains("solver")) p.solver = area || mean_curvature ? CmcSolver::Newton : CmcSolver::NLopt;
-      if (!area && !mean_curvature && p.solver != CmcSolver::NLopt)
-        throw UnsupportedProblem(path + ": a cmc problem with \"V\" needs \"solver\": \"nlopt\"");
     }
   } else {
     throw ParseError(path + ".kind: unknown problem kind \"" + kind +

@@ -25,15 +25,15 @@ struct Problem {
   /// extremal: the energy; pde: the operator (its Euler–Lagrange operator).
   std::optional<EnergySpec> energy;
   PdeMethod method = PdeMethod::Lu;      ///< pde, tetraharmonic (default lu)
-  CmcSolver solver = CmcSolver::Newton;  ///< cmc (default newton)
+  CmcSolver solver = CmcSolver::Newton;  ///< cmc (default: default_cmc_solver of the functional and form)
   double H = 0.0;                        ///< cmc with "H"
   double V = 0.0;                        ///< cmc with "V"
   /// cmc: "dirichlet" (D_H, default), "area" (A_H) or "mean-curvature" (least squares of H_x − H)
   CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet;
   double mean_curvature_tolerance = 1e-6;  ///< cmc, functional mean-curvature: converged when √Φ ≤ this
-  /// cmc, functional area: "start": "mean-curvature" (the default: route 0 first), "dirichlet" (the
-  /// routes from the D_H critical point) or "minimal-surface" (the branch from H = 0 alone);
-  /// CmcOptions::area_start
+  /// cmc, functional area: "start": "mean-curvature" (the default: the mean-curvature-start route
+  /// first), "dirichlet" (the routes from the D_H critical point) or "minimal-surface" (the branch
+  /// from H = 0 alone); CmcOptions::area_start
   AreaStart area_start = AreaStart::MeanCurvature;
 };
 

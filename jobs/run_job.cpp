@@ -2,12 +2,14 @@
 // and that solver's requirements (declared next to its Options, solvers/requirements.h). The same
 // table validates a job when it is read (validate_job) and dispatches it (run_job); the solvers
 // check their own preconditions again and throw InvalidInput. Also the report each solver writes.
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "bezierpde/jobs/run_job.h"
 
 #include <cmath>
+#include <limits>
 #include <filesystem>
 
 #include "bezierpde/checks/mesh_checks.h"
@@ -37,14 +39,17 @@
 namespace bpde {
 namespace {
 
-Json check_report_impl(const TriangleMesh& mesh) {
+MeshCheckReport mesh_check(const TriangleMesh& mesh) {
   std::vector<double> V(static_cast<size_t>(mesh.V.rows()) * 3);
   for (Eigen::Index r = 0; r < mesh.V.rows(); ++r)
     for (int c = 0; c < 3; ++c) V[static_cast<size_t>(3 * r + c)] = mesh.V(r, c);
   std::vector<int> F(static_cast<size_t>(mesh.F.rows()) * 3);
   for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
     for (int c = 0; c < 3; ++c) F[static_cast<size_t>(3 * r + c)] = mesh.F(r, c);
-  const MeshCheckReport rep = check_mesh(V, F);
+  return check_mesh(V, F);
+}
+
+Json check_json(const MeshCheckReport& rep) {
   Json j = {{"self_intersections", rep.self_intersections}, {"closed", rep.closed}, {"cone_volume", rep.cone_volume}};
   j["volume"] = rep.volume ? Json(*rep.volume) : Json(nullptr);
   return j;
@@ -56,21 +61,41 @@ Json stats_json(const MeanCurvatureStats& st) {
   return {{"min", st.min}, {"max", st.max}, {"mean", st.mean}, {"count", st.count}};
 }
 
-Json base_report(const Job& job, const Summary& s) {
-  Json r = {{"problem", to_string(job.problem.kind)}, {"converged", s.converged}, {"seconds", s.seconds}};
+// Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+// The report's fields that come from the figures.
+Json figures_report(const SolveFigures& f) {
+  const Summary& s = f.summary;
+  Json r = {{"problem", to_string(f.problem)}, {"converged", s.converged}, {"seconds", s.seconds}};
   if (!s.message.empty()) r["message"] = s.message;
-  if (s.iterations > 0) r["iterations"] = s.iterations;
+  if (f.iterations) r["iterations"] = *f.iterations;
+  if (f.continuation_steps) r["continuation_steps"] = *f.continuation_steps;
+  if (!f.energy_name.empty()) r["energy_name"] = f.energy_name;
+  if (!f.method.empty()) r["method"] = f.method;
+  if (!f.solver.empty()) r["solver"] = f.solver;
+  const std::pair<const char*, const std::optional<double>*> numbers[] = {
+      {"energy", &f.energy}, {"D", &f.D},     {"volume", &f.volume}, {"H", &f.H}, {"residual", &f.residual},
+      {"pde_residual", &f.pde_residual}};
+  for (const auto& [key, x] : numbers)
+    if (*x) r[key] = finite_or_null(**x);
   return r;
 }
 
-// The outcome of a solve with its base report; the status is checked against the Summary contract.
+// The outcome of a solve with its base figures; the status is checked against the Summary contract.
+// The solver's function adds its figures and its own report fields; run_job writes the figures
+// into the report.
 SolveOutcome outcome(const Job& job, Net net, const Summary& s) {
   const Status status = checked_status(s);
-  return SolveOutcome{std::move(net), base_report(job, s), Json::object(), status == Status::Converged, status};
+  SolveOutcome out{std::move(net), SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status};
+  out.figures.problem = job.problem.kind;
+  out.figures.summary = s;
+  if (s.iterations > 0) out.figures.iterations = s.iterations;
+  return out;
 }
 
-// Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
-Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+// NaN: reported as null (a figure the problem reports without a value).
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 // The area solve's route records (FORMATS.md, "Report fields": `routes`).
 Json routes_json(const AreaRouteLog& log) {
@@ -98,10 +123,9 @@ SolveOutcome tensor_extremal(const Job& job, const TensorNet& net) {
   const EnergySpec& e = *job.problem.energy;
   const ExtremalResult r = solve_extremal(net, e, job.fixed);
   SolveOutcome out = outcome(job, r.net, r.summary);
-  out.report["energy"] = finite_or_null(r.energy);
-  out.report["energy_name"] = e.name();
-  if (e.order() == 4 || e.order() == 2)
-    out.report["pde_residual"] = finite_or_null(pde_residual(r.net, e, job.samples));
+  out.figures.energy = r.energy;
+  out.figures.energy_name = e.name();
+  if (e.order() == 4 || e.order() == 2) out.figures.pde_residual = pde_residual(r.net, e, job.samples);
   return out;
 }
 
@@ -109,10 +133,10 @@ SolveOutcome tensor_extremal(const Job& job, const TensorNet& net) {
 SolveOutcome tensor_pde_outcome(const Job& job, const PdeSolution& sol) {
   const EnergySpec& e = *job.problem.energy;
   SolveOutcome out = outcome(job, sol.net, sol.summary);
-  out.report["method"] = to_string(job.problem.method);
-  out.report["energy"] = finite_or_null(energy_value(sol.net, e));
-  out.report["energy_name"] = e.name();
-  out.report["pde_residual"] = finite_or_null(pde_residual(sol.net, e, job.samples));
+  out.figures.method = to_string(job.problem.method);
+  out.figures.energy = energy_value(sol.net, e);
+  out.figures.energy_name = e.name();
+  out.figures.pde_residual = pde_residual(sol.net, e, job.samples);
   return out;
 }
 
@@ -130,8 +154,8 @@ SolveOutcome triangular_extremal(const Job& job, const TriangularNet& net) {
   const EnergySpec& e = *job.problem.energy;
   const TriangularExtremalResult r = solve_extremal(net, e, job.fixed);
   SolveOutcome out = outcome(job, r.net, r.summary);
-  out.report["energy"] = finite_or_null(r.energy);
-  out.report["energy_name"] = e.name();
+  out.figures.energy = r.energy;
+  out.figures.energy_name = e.name();
   return out;
 }
 
@@ -150,16 +174,16 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
     o.H = job.problem.H;
   const CmcResult<NetT> r = solve_cmc(net, o);
   SolveOutcome out = outcome(job, r.net, r.summary);
-  out.report["solver"] = to_string(o.solver);
-  out.report["energy"] = finite_or_null(r.energy);
+  out.figures.solver = to_string(o.solver);
+  out.figures.energy = r.energy;
+  out.figures.D = r.D;
+  out.figures.volume = r.V;
+  out.figures.H = r.H;
+  out.figures.continuation_steps = r.continuation_steps;
+  out.figures.iterations = r.summary.iterations;
+  out.figures.residual = r.summary.residual;
   out.report["functional"] = to_string(o.functional);
   out.report["area"] = finite_or_null(r.A);
-  out.report["D"] = finite_or_null(r.D);
-  out.report["volume"] = finite_or_null(r.V);
-  out.report["H"] = finite_or_null(r.H);
-  out.report["continuation_steps"] = r.continuation_steps;
-  out.report["iterations"] = r.summary.iterations;
-  out.report["residual"] = finite_or_null(r.summary.residual);
   // The quadrature rule of the area and mean-curvature functionals (their results depend on it;
   // the Dirichlet functional's matrices are exact).
   if (o.functional != CmcFunctionalKind::Dirichlet)
@@ -188,16 +212,16 @@ SolveOutcome tetraharmonic(const Job& job, const TensorNet& net) {
                                                        : TetraharmonicOptions::Method::LU;
   const TetraharmonicResult r = solve_tetraharmonic(net, o);
   SolveOutcome out = outcome(job, r.net, r.summary);
-  out.report["method"] = to_string(job.problem.method);
-  out.report["energy"] = nullptr;
-  out.report["pde_residual"] = finite_or_null(pde_residual(r.net, tetraharmonic_terms(), job.samples));
+  out.figures.method = to_string(job.problem.method);
+  out.figures.energy = kNoValue;
+  out.figures.pde_residual = pde_residual(r.net, tetraharmonic_terms(), job.samples);
   return out;
 }
 
 SolveOutcome biharmonic_load(const Job& job, const TensorNet& net) {
   const BiharmonicLoadResult r = solve_biharmonic_load(net);
   SolveOutcome out = outcome(job, r.net, r.summary);
-  out.report["energy"] = nullptr;
+  out.figures.energy = kNoValue;
   out.extra["load"] = net_to_json(r.load);
   return out;
 }
@@ -208,9 +232,9 @@ SolveOutcome bspline_extremal(const Job& job, const BSplineNet& net) {
   o.fixed = job.fixed;
   const BSplineExtremalResult r = solve_bspline_extremal(net, e, o);
   SolveOutcome out = outcome(job, r.net, r.summary);
-  out.report["energy"] = finite_or_null(r.energy);
-  out.report["energy_name"] = e.name();
-  out.report["pde_residual"] = finite_or_null(bspline_pde_residual(r.net, e, job.samples));
+  out.figures.energy = r.energy;
+  out.figures.energy_name = e.name();
+  out.figures.pde_residual = bspline_pde_residual(r.net, e, job.samples);
   return out;
 }
 
@@ -220,15 +244,15 @@ SolveOutcome bspline_pde(const Job& job, const BSplineNet& net) {
   o.fixed = job.fixed;
   const BSplinePdeResult r = solve_bspline_pde(net, e, o);
   SolveOutcome out = outcome(job, r.net, r.summary);
-  out.report["method"] = "lu";
-  out.report["energy"] = finite_or_null(r.energy);
-  out.report["energy_name"] = e.name();
+  out.figures.method = "lu";
+  out.figures.energy = r.energy;
+  out.figures.energy_name = e.name();
   out.report["rank"] = r.rank;
   out.report["equations"] = r.equations;
   out.report["free_parameters"] = r.free_parameters;
   out.report["compatibility_conditions"] = r.compatibility_conditions;
   out.report["minimum_energy_member"] = r.minimum_energy_member;
-  if (r.summary.converged) out.report["pde_residual"] = finite_or_null(bspline_pde_residual(r.net, e, job.samples));
+  if (r.summary.converged) out.figures.pde_residual = bspline_pde_residual(r.net, e, job.samples);
   return out;
 }
 
@@ -260,11 +284,9 @@ Solver select_tensor_pde(const Problem& p) {
   return {pde_lu_requirements(e), on<TensorNet, pde_lu>};
 }
 
-// The cmc requirements of the job's functional (the area functional takes boundary and
-// boundary+adjacent data, solvers newton and ceres).
+// The cmc requirements of the job's functional and form (solvers/cmc/cmc.h).
 SolverRequirements cmc_requirements_for(const Problem& p) {
-  if (p.functional == CmcFunctionalKind::MeanCurvature) return cmc_mean_curvature_requirements();
-  return p.functional == CmcFunctionalKind::Area ? cmc_area_requirements() : cmc_requirements();
+  return cmc_requirements(p.functional, p.kind == ProblemKind::CmcV);
 }
 
 const Route kRoutes[] = {
@@ -375,6 +397,7 @@ Status checked_status(const Summary& s) {
 
 SolveOutcome run_job(const Job& job) {
   SolveOutcome out = checked_solver(job, "job").run(job);
+  out.report.update(figures_report(out.figures));
   if (!job.boundary_fit.is_null()) out.report["boundary_fit"] = job.boundary_fit;
   return out;
 }
@@ -417,33 +440,41 @@ void write_output_files(const std::string& dir, const Json* result, const Net& n
 // The statistics of the mesh that the surface files are written from (one tabulated evaluation).
 // Tensor and triangular nets skip the singular samples (energies/cmc.h); B-spline surfaces (blends)
 // count every sample, at its robust H, as they always have.
-Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
+MeanCurvatureStats surface_mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
   if (std::holds_alternative<TensorNet>(net))
-    return stats_json(bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1));
+    return bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1);
   if (std::holds_alternative<TriangularNet>(net))
-    return stats_json(bpde::mean_curvature_stats(mesh, SampleLayout::TriangularGrid, samples, 0.1));
-  return stats_json(bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1, false));
+    return bpde::mean_curvature_stats(mesh, SampleLayout::TriangularGrid, samples, 0.1);
+  return bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1, false);
 }
 
-Json check_report(const TriangleMesh& mesh) { return check_report_impl(mesh); }
+Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
+  return stats_json(surface_mean_curvature_stats(net, mesh, samples));
+}
+
+Json check_report(const TriangleMesh& mesh) { return check_json(mesh_check(mesh)); }
 
 // result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
 // statistics and the CGAL figures unless the solver already set them.
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
                            const Json& extra, Status status, MeshFormat format, const Exports& exports) {
+  WrittenResult written;
   if (!report.contains("mean_curvature")) {
     const ProgressStage stage(job_progress(), "mean curvature");
-    report["mean_curvature"] = mean_curvature_stats(net, mesh, samples);
+    written.mean_curvature = surface_mean_curvature_stats(net, mesh, samples);
+    report["mean_curvature"] = stats_json(*written.mean_curvature);
   }
   if (!report.contains("check")) {
     const ProgressStage stage(job_progress(), "checking (CGAL)");
-    report["check"] = check_report(mesh);
+    written.check = mesh_check(mesh);
+    report["check"] = check_json(*written.check);
   }
   const ProgressStage stage(job_progress(), "writing files");
-  Json result = {{"net", net_to_json(net)}, {"report", report}};
-  for (auto it = extra.begin(); it != extra.end(); ++it) result[it.key()] = it.value();
-  write_output_files(dir, &result, net, mesh, format, exports);
-  return {std::move(result), exit_code(status)};
+  written.result = {{"net", net_to_json(net)}, {"report", report}};
+  for (auto it = extra.begin(); it != extra.end(); ++it) written.result[it.key()] = it.value();
+  write_output_files(dir, &written.result, net, mesh, format, exports);
+  written.exit_code = exit_code(status);
+  return written;
 }
 
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out) {

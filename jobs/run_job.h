@@ -9,10 +9,13 @@
 // One table (jobs/run_job.cpp) maps each problem kind and net kind to the solver that runs it and
 // to that solver's requirements (solvers/requirements.h, declared next to each solver's Options).
 // The same table validates a job when it is read and dispatches it when it runs.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bezierpde/checks/mesh_checks.h"
 #include "bezierpde/core/mesh.h"
+#include "bezierpde/energies/cmc.h"
 #include "bezierpde/io/job.h"
 #include "bezierpde/jobs/exports.h"
 #include "bezierpde/solvers/requirements.h"
@@ -32,10 +35,30 @@ void validate_job(const Job& job, const std::string& where = "job");
 /// The kind and degrees of a net.
 NetShape net_shape(const Net& net);
 
-/// What a solve produced: the net, the report object (FORMATS.md "Results"), extra top-level
-/// result fields (e.g. {"load": NET} for biharmonic-load) and how it ended.
+/// The figures of a solve, typed, taken from the solver's result struct: the report (FORMATS.md
+/// "Results") is written from them, and so is the summary `bpde solve` prints
+/// (jobs/solve_summary.h). A figure the problem does not report is empty; a reported value that is
+/// not finite (a failed solve) is written as null.
+struct SolveFigures {
+  ProblemKind problem = ProblemKind::Extremal;
+  Summary summary;                        ///< converged and status, message, seconds
+  std::string energy_name;                ///< the energy or operator (extremal, pde); else empty
+  std::string method;                     ///< "explicit" | "lu" (pde, tetraharmonic); else empty
+  std::string solver;                     ///< "newton" | "ceres" | "nlopt" (cmc); else empty
+  std::optional<int> iterations;          ///< summary.iterations where > 0; cmc: always
+  std::optional<int> continuation_steps;  ///< cmc
+  std::optional<double> energy;           ///< the value of the energy or functional solved
+  std::optional<double> D, volume, H;     ///< cmc: Dirichlet energy, volume, H of the net
+  std::optional<double> residual;         ///< cmc: summary.residual
+  std::optional<double> pde_residual;     ///< pde_residual of the net (solvers/pde/pde_residual.h)
+};
+
+/// What a solve produced: the net, its figures, the report object (FORMATS.md "Results": the
+/// figures and the solver's own fields), extra top-level result fields (e.g. {"load": NET} for
+/// biharmonic-load) and how it ended.
 struct SolveOutcome {
   Net net;
+  SolveFigures figures;
   Json report = Json::object();
   Json extra = Json::object();
   /// status == Status::Converged (the exit code follows it).
@@ -54,9 +77,11 @@ inline int exit_code(Status s) { return s == Status::Converged ? 0 : 1; }
 /// valid problem without a solution returns a non-Converged status with report["message"].
 SolveOutcome run_job(const Job& job);
 
-/// Mean-curvature statistics {min, max, mean, count} of a sampled net, away from the corners
-/// (energies/cmc.h mean_curvature_stats with corner margin 0.1; corners of a circle split into
-/// arcs are nearly singular), null when no sample qualifies.
+/// Mean-curvature statistics of a sampled net, away from the corners (energies/cmc.h
+/// mean_curvature_stats with corner margin 0.1; corners of a circle split into arcs are nearly
+/// singular); count 0 when no sample qualifies.
+MeanCurvatureStats surface_mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples);
+/// The same as the report writes it: {min, max, mean, count}, null when no sample qualifies.
 Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples);
 /// The object `bpde check` prints for a mesh (CGAL figures).
 Json check_report(const TriangleMesh& mesh);
@@ -80,10 +105,13 @@ void check_output_dir(const std::string& dir, const std::vector<std::string>& na
 void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh,
                         MeshFormat format = MeshFormat::Ascii, const Exports& exports = {});
 
-/// What was written: the whole result.json object and the exit code.
+/// What was written: the whole result.json object, the exit code, and the figures write_result
+/// added to the report (empty where the report had them already).
 struct WrittenResult {
   Json result;
   int exit_code = 0;
+  std::optional<MeanCurvatureStats> mean_curvature;  ///< count 0: no sample away from the corners
+  std::optional<MeshCheckReport> check;
 };
 
 /// Write DIR/result.json and surface.obj, surface.ply, surface.vtp, net.obj (write_output_files:

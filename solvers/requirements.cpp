@@ -28,6 +28,12 @@ const MaxDegree* SolverRequirements::max_degree(NetKind k) const {
   return nullptr;
 }
 
+const std::string* SolverRequirements::refusal(const std::string& field) const {
+  for (const RefusedField& f : refused_fields)
+    if (f.field == field) return &f.reason;
+  return nullptr;
+}
+
 int SolverRequirements::min_degree(NetKind k, FixedSet f) const {
   for (const MinDegree& d : min_degrees)
     if (d.net == k && d.fixed == f) return d.degree;
@@ -78,6 +84,18 @@ std::string quoted(FixedSet f) {
 
 }  // namespace
 
+void check_fixed_set_and_method(const SolverRequirements& r, FixedSet fixed, const std::string& method,
+                                const std::string& where) {
+  auto unsupported = [&](const std::string& msg) { throw UnsupportedProblem(where + ": " + msg); };
+  if (!r.takes(fixed))
+    unsupported(!r.fixed_reason.empty() ? r.fixed_reason
+                                        : r.problem + " takes \"fixed\": " + alternatives(r.fixed, quoted));
+  if (!method.empty() && std::find(r.methods.begin(), r.methods.end(), method) == r.methods.end())
+    unsupported(!r.method_reason.empty() ? r.method_reason
+                                         : r.problem + " has no method \"" + method + "\" (expected " +
+                                               alternatives(r.methods, [](const std::string& s) { return s; }) + ")");
+}
+
 void check_requirements(const SolverRequirements& r, const NetShape& net, FixedSet fixed, const std::string& method,
                         const std::string& where) {
   auto unsupported = [&](const std::string& msg) { throw UnsupportedProblem(where + ": " + msg); };
@@ -89,13 +107,7 @@ void check_requirements(const SolverRequirements& r, const NetShape& net, FixedS
   if (!r.takes(net.kind))
     unsupported(r.problem + " needs a " + alternatives(r.nets, [](NetKind k) { return std::string(to_string(k)); }) +
                 " net, not a " + kind + " net");
-  if (!r.takes(fixed))
-    unsupported(!r.fixed_reason.empty() ? r.fixed_reason
-                                        : r.problem + " takes \"fixed\": " + alternatives(r.fixed, quoted));
-  if (!method.empty() && std::find(r.methods.begin(), r.methods.end(), method) == r.methods.end())
-    unsupported(!r.method_reason.empty() ? r.method_reason
-                                         : r.problem + " has no method \"" + method + "\" (expected " +
-                                               alternatives(r.methods, [](const std::string& s) { return s; }) + ")");
+  check_fixed_set_and_method(r, fixed, method, where);
 
   const bool triangular = net.kind == NetKind::Triangular;
   if (r.square && !triangular && net.n != net.m) degree(r.problem + " needs n = m, got " + pair(net.n, net.m));

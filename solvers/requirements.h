@@ -1,10 +1,10 @@
 #pragma once
 // What a solver accepts: the net kinds, the prescribed (fixed) sets with their minimum degrees,
-// square degrees, the methods it offers. Each solver declares its requirements next to its
-// Options (e.g. extremal_requirements() in solvers/extremal.h); the job layer (jobs/run_job.h)
-// checks a job against them before anything runs, and answers bad combinations with the typed
-// errors of core/errors.h (UnsupportedProblem, DegreeError). The solvers still check their own
-// preconditions when called directly.
+// square degrees, the methods it offers, the optional problem fields it refuses. Each solver
+// declares its requirements next to its Options (e.g. extremal_requirements() in
+// solvers/extremal.h); the job layer (jobs/run_job.h) checks a job against them before anything
+// runs, and answers bad combinations with the typed errors of core/errors.h (UnsupportedProblem,
+// DegreeError). The solvers still check their own preconditions when called directly.
 #include <string>
 #include <vector>
 
@@ -42,6 +42,13 @@ struct MaxDegree {
   std::string reason;  ///< e.g. "the Bernstein Gram system is numerically singular above"
 };
 
+/// An optional field of a problem (a job's key, FORMATS.md) that a combination does not take, and
+/// the message when a job gives it.
+struct RefusedField {
+  std::string field;   ///< e.g. "start"
+  std::string reason;  ///< e.g. "only with \"functional\": \"area\""
+};
+
 struct SolverRequirements {
   /// How messages name the problem, e.g. `problem "extremal"` (FORMATS.md problem kinds).
   std::string problem;
@@ -63,6 +70,9 @@ struct SolverRequirements {
   /// listing them).
   std::vector<std::string> methods;
   std::string method_reason;
+  /// Optional problem fields this combination does not take (the job reader, io/job.cpp, asks
+  /// refusal() for each one a job gives and refuses it with ParseError).
+  std::vector<RefusedField> refused_fields;
 
   bool takes(NetKind k) const;
   bool takes(FixedSet f) const;
@@ -70,6 +80,8 @@ struct SolverRequirements {
   int min_degree(NetKind k, FixedSet f) const;
   /// The maximum degree entry for k, nullptr when there is none.
   const MaxDegree* max_degree(NetKind k) const;
+  /// Why `field` is refused, nullptr when it is taken.
+  const std::string* refusal(const std::string& field) const;
 };
 
 /// Check a net and fixed set (and, unless `method` is empty, a method name) against `r`, in this
@@ -83,5 +95,11 @@ struct SolverRequirements {
 ///   job: problem "cmc" on a triangular net takes degrees up to 24 (<reason>), got 64
 void check_requirements(const SolverRequirements& r, const NetShape& net, FixedSet fixed, const std::string& method,
                         const std::string& where);
+
+/// The part of check_requirements that needs no net: the fixed set and, unless `method` is empty,
+/// the method (UnsupportedProblem, the same messages). An Options::validate without a net checks
+/// its fixed set and method with it.
+void check_fixed_set_and_method(const SolverRequirements& r, FixedSet fixed, const std::string& method,
+                                const std::string& where);
 
 }  // namespace bpde

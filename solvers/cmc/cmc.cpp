@@ -20,20 +20,9 @@ namespace bpde {
 void CmcOptions::validate() const {
   if (!std::isfinite(H)) throw NonFiniteError("cmc: H must be a finite number");
   if (V && !std::isfinite(*V)) throw NonFiniteError("cmc: V must be a finite number");
-  if (functional == CmcFunctionalKind::Area) {
-    if (solver == CmcSolver::NLopt)
-      throw UnsupportedProblem("cmc: the area functional is solved by the newton or the ceres solver");
-    if (fixed == FixedSet::UBoundaries)
-      throw UnsupportedProblem("cmc: the area functional needs fixed \"boundary\" or \"boundary+adjacent\"");
-  } else if (functional == CmcFunctionalKind::MeanCurvature) {
-    // The job reader (io/job.cpp) gives the same text for mean-curvature with nlopt.
-    if (solver == CmcSolver::NLopt) throw UnsupportedProblem(std::string("cmc: ") + kMeanCurvatureSolvers);
-    if (fixed == FixedSet::UBoundaries)
-      throw UnsupportedProblem("cmc: the mean-curvature functional needs fixed \"boundary\" or \"boundary+adjacent\"");
-  } else if (V && solver != CmcSolver::NLopt)
-    throw UnsupportedProblem("cmc: the volume-constrained problem (V) is solved by the nlopt solver only");
+  check_fixed_set_and_method(cmc_requirements(functional, V.has_value()), fixed, to_string(solver), "cmc");
   if (!(tolerance > 0.0 && tolerance <= 1e-3)) throw ParameterError("cmc: tolerance must be in (0, 1e-3]");
-  if (!(mean_curvature_tolerance > 0.0 && mean_curvature_tolerance < 1.0))
+  if (!mean_curvature_tolerance_in_range(mean_curvature_tolerance))
     throw ParameterError("cmc: mean_curvature_tolerance must be in (0, 1)");
   if (max_least_squares_iterations < 1) throw ParameterError("cmc: max_least_squares_iterations must be >= 1");
   if (max_corrector_iterations < 1) throw ParameterError("cmc: max_corrector_iterations must be >= 1");

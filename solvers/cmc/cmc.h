@@ -100,7 +100,7 @@
 //    form's continuation in V is a second route).
 //
 // Bad input throws: non-finite H or V (NonFiniteError), unknown solver name (ParameterError),
-// V with a solver other than nlopt (UnsupportedProblem; the functionals' own rules: validate()),
+// a fixed set or solver the functional does not take (UnsupportedProblem; cmc_requirements),
 // an option out of its range (ParameterError), degree too low for the fixed set
 // (DegreeError: triangular n >= 3 with C0 data, n >= 6 with C1 data; tensor n, m >= 2 with C0 data
 // and >= 4 with C1 data), u-boundaries on a triangular net (UnsupportedProblem), non-finite data
@@ -185,16 +185,10 @@ struct CmcOptions {
   /// not known; 1 at the end); default none.
   ProgressFn progress;
   /// Throws NonFiniteError (H, V non-finite) or ParameterError (other fields out of range, whatever
-  /// the functional), UnsupportedProblem (Dirichlet V mode with a solver other than nlopt; area with
-  /// nlopt, with or without V; area or mean-curvature with u-boundaries;
-  /// mean-curvature with nlopt, with or without V).
+  /// the functional), UnsupportedProblem (a fixed set or solver the functional does not take in
+  /// this form: cmc_requirements).
   void validate() const;
 };
-
-/// The one wording of "mean-curvature with a solver it does not have" (CmcOptions::validate and the
-/// job reader, io/job.cpp).
-inline constexpr const char* kMeanCurvatureSolvers =
-    "the mean-curvature functional is solved by the newton or the ceres solver (Levenberg–Marquardt)";
 
 /// Largest degrees of a cmc job: above them the Dirichlet Gram over the free points is no longer
 /// Cholesky-factorable (condition ~4^n; docs/cmc.md "Numerical limit"), so eq. (11) cannot be
@@ -203,11 +197,19 @@ inline constexpr const char* kMeanCurvatureSolvers =
 inline constexpr int kMaxCmcTensorDegree = 16;
 inline constexpr int kMaxCmcTriangularDegree = 25;
 
-/// The FORMATS.md "cmc" problem: triangular or tensor nets, any fixed set the net defines;
-/// triangular n >= 3 with C0 data and >= 6 with C1 data, tensor n, m >= 2 and >= 4; solvers
-/// newton, ceres, nlopt (the V form: nlopt only, CmcOptions::validate). With "functional":
-/// "area": fixed boundary or boundary+adjacent, solvers newton and ceres (cmc_area_requirements).
-inline SolverRequirements cmc_requirements() {
+/// The cmc combination rules, stated once: what the FORMATS.md "cmc" problem takes with each
+/// functional, in the H form or the V form (`volume_form`). The job layer checks a job against them
+/// before anything runs (jobs/run_job.h), the job reader asks them which fields the functional
+/// takes (io/job.cpp), CmcOptions::validate checks the fixed set and the solver against them.
+///  - every functional: triangular or tensor nets; triangular n >= 3 with C0 data and >= 6 with
+///    C1 data, tensor n, m >= 2 and >= 4; degrees up to kMaxCmcTensorDegree, kMaxCmcTriangularDegree;
+///  - dirichlet: any fixed set the net defines; solvers newton, ceres and nlopt in the H form,
+///    nlopt only in the V form;
+///  - area and mean-curvature: fixed boundary or boundary+adjacent; solvers newton and ceres in
+///    both forms;
+///  - the fields "start" only with area, "mean_curvature_tolerance" only with mean-curvature.
+inline SolverRequirements cmc_requirements(CmcFunctionalKind functional = CmcFunctionalKind::Dirichlet,
+                                           bool volume_form = false) {
   SolverRequirements r;
   r.problem = "problem \"cmc\"";
   r.max_degrees = {{NetKind::Tensor, kMaxCmcTensorDegree,
@@ -215,33 +217,40 @@ inline SolverRequirements cmc_requirements() {
                    {NetKind::Triangular, kMaxCmcTriangularDegree,
                     "above it the Dirichlet Gram over the free points is numerically singular"}};
   r.nets = {NetKind::Triangular, NetKind::Tensor};
-  r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
   r.min_degrees = {{NetKind::Triangular, FixedSet::Boundary, 3},
                    {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6},
                    {NetKind::Tensor, FixedSet::Boundary, 2},
                    {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4},
                    {NetKind::Tensor, FixedSet::UBoundaries, 2}};
-  r.methods = {"newton", "ceres", "nlopt"};
-  return r;
-}
-
-inline SolverRequirements cmc_area_requirements() {
-  SolverRequirements r = cmc_requirements();
-  r.problem = "problem \"cmc\" with \"functional\": \"area\"";
+  if (functional != CmcFunctionalKind::Area) r.refused_fields.push_back({"start", "only with \"functional\": \"area\""});
+  if (functional != CmcFunctionalKind::MeanCurvature)
+    r.refused_fields.push_back(
+        {"mean_curvature_tolerance", "only with \"functional\": \"mean-curvature\""});
+  if (functional == CmcFunctionalKind::Dirichlet) {
+    r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent, FixedSet::UBoundaries};
+    r.methods = {"newton", "ceres", "nlopt"};
+    if (volume_form) {
+      r.methods = {"nlopt"};
+      r.method_reason = "a cmc problem with \"V\" needs \"solver\": \"nlopt\"";
+    }
+    return r;
+  }
+  r.problem += " with \"functional\": \"" + to_string(functional) + "\"";
   r.fixed = {FixedSet::Boundary, FixedSet::BoundaryAdjacent};
-  r.min_degrees = {{NetKind::Triangular, FixedSet::Boundary, 3},
-                   {NetKind::Triangular, FixedSet::BoundaryAdjacent, 6},
-                   {NetKind::Tensor, FixedSet::Boundary, 2},
-                   {NetKind::Tensor, FixedSet::BoundaryAdjacent, 4}};
   r.methods = {"newton", "ceres"};
+  if (functional == CmcFunctionalKind::MeanCurvature)
+    r.method_reason = "the mean-curvature functional is solved by the newton or the ceres solver (Levenberg–Marquardt)";
   return r;
 }
 
-inline SolverRequirements cmc_mean_curvature_requirements() {
-  SolverRequirements r = cmc_area_requirements();
-  r.problem = "problem \"cmc\" with \"functional\": \"mean-curvature\"";
-  return r;
+/// The solver a cmc problem runs when none is given: nlopt for the Dirichlet functional's V form
+/// (the only one it takes there, cmc_requirements), newton otherwise.
+inline CmcSolver default_cmc_solver(CmcFunctionalKind functional, bool volume_form) {
+  return functional == CmcFunctionalKind::Dirichlet && volume_form ? CmcSolver::NLopt : CmcSolver::Newton;
 }
+
+/// CmcOptions::mean_curvature_tolerance is in (0, 1) (validate; a job's "mean_curvature_tolerance").
+inline bool mean_curvature_tolerance_in_range(double t) { return t > 0.0 && t < 1.0; }
 
 /// The regularity verdict on an area or mean-curvature result (CmcResult::parametrisation): on a
 /// 40 x 40 grid away from the corners (margin 0.05) and on rays into each corner margin.
@@ -271,8 +280,8 @@ struct CmcResult {
   int quadrature_levels = 0;   ///< area: its geometric radial pieces beyond the first (0: plain or graded; area_functional.h)
   int quadrature_nodes = 0;    ///< area, mean-curvature: its number of nodes (6q² triangular, 8q² tensor)
   int continuation_steps = 0;  ///< accepted continuation steps (H mode; the V form: its steps in V)
-  /// converged, iterations (corrector iterations in all; the area functional's also those of its
-  /// route 0, least squares and their D_H start included), residual (mean-curvature: √Φ by the check
+  /// converged, iterations (corrector iterations in all; the area functional's also those of
+  /// mean-curvature-start, least squares and their D_H start included), residual (mean-curvature: √Φ by the check
   /// rule), message; status Fold past the
   /// fold, NumericalLimit when rounding stops it (singular Gram, eq. (11) missed at the end),
   /// NoConvergence when max_continuation_steps run out or the V-mode solve fails.
