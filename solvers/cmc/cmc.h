@@ -129,7 +129,7 @@ CmcFunctionalKind parse_cmc_functional(const std::string& name);
 std::string to_string(CmcFunctionalKind f);
 
 /// Where the area functional starts (CmcOptions::area_start; docs/cmc_algorithm.md, "The area functional A_H"):
-///  - MeanCurvature (default): route 0, the least-squares mean-curvature surface, then the routes
+///  - MeanCurvature (default): mean-curvature-start, the least-squares mean-curvature surface, then the routes
 ///    from the D_H critical point (Dirichlet) and, where they fail, the minimal-surface route;
 ///  - Dirichlet: the routes from the D_H critical point, then the minimal-surface route;
 ///  - MinimalSurface: only the branch through the critical point of A at H = 0 (the minimal
@@ -157,19 +157,19 @@ struct CmcOptions {
   int max_continuation_steps = 400;          ///< default 400, >= 1
   double min_step = 1e-5;                    ///< smallest H step, relative to max(1, |H reached|); default 1e-5
   /// mean-curvature functional: converged when √Φ = ‖H_x − H‖ in L²(ρ dA) is at most this; default 1e-6, in (0, 1).
-  /// The area functional's route 0 uses it too, as the least squares' target
+  /// The area functional's mean-curvature-start uses it too, as the least squares' target
   double mean_curvature_tolerance = 1e-6;
   /// mean-curvature functional: Levenberg–Marquardt iterations at most; default 2000, >= 1 (the area
-  /// functional's route 0: at most min(this, 300) in the H form, this in the V form)
+  /// functional's mean-curvature-start: at most min(this, 300) in the H form, this in the V form)
   int max_least_squares_iterations = 2000;
   /// mean-curvature functional, solver newton: geodesic acceleration of the Levenberg–Marquardt
   /// steps (above); default true. false is plain LM, kept to measure the two side by side
   /// (CmcMeanCurvature/{newton,newton-plain}/circle/<n>). Solver ceres has no such step.
   bool geodesic_acceleration = true;
   /// area functional: where it starts (AreaStart above; a job's "start", docs/FORMATS.md); default
-  /// MeanCurvature: route 0 first, the least-squares mean-curvature surface corrected on A_H by a
+  /// MeanCurvature: mean-curvature-start first, the least-squares mean-curvature surface corrected on A_H by a
   /// few Newton iterations (docs/cmc_algorithm.md, "The routes"). Dirichlet starts from the
-  /// D_H critical point (the routes before route 0), kept to measure the two side by side;
+  /// D_H critical point (dirichlet-start, dirichlet-volume-start), kept to measure the two side by side;
   /// MinimalSurface follows the branch from the minimal surface alone. Other functionals ignore it.
   AreaStart area_start = AreaStart::MeanCurvature;
   /// area functional: where the soft-mode phase's Levenberg–Marquardt loop on the reduced first
@@ -179,7 +179,7 @@ struct CmcOptions {
   bool area_trust_region = true;
   /// Called after each continuation attempt (H mode) with stage "cmc continuation", done = |H
   /// reached|, total = |H requested| (core/progress.h); the mean-curvature functional (and the area
-  /// functional's route 0) report "cmc least squares", one stage across its rule refinements, the
+  /// functional's mean-curvature-start) report "cmc least squares", one stage across its rule refinements, the
   /// area functional "cmc area" (the decades of its regulariser removed, out of 12, repeated at
   /// every evaluation of the first variation, so also through the final phases, whose length is
   /// not known; 1 at the end); default none.
