@@ -16,12 +16,8 @@ foreach(folder ${BPDE_HEADER_FOLDERS})
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/bezierpde/${folder}
           COMPONENT development FILES_MATCHING PATTERN "*.h")
 endforeach()
-# Installed headers include each other as "bezierpde/<folder>/...": sources still written in the
-# short style ("core/errors.h", accepted in the build tree; scripts/rewrite_includes.sh converts
-# them) get the prefix as they are installed, so the package never depends on the consumer's path.
-install(CODE "set(BPDE_INSTALLED_INCLUDE_DIR \"${CMAKE_INSTALL_INCLUDEDIR}\")
-set(BPDE_HEADER_FOLDERS \"${BPDE_HEADER_FOLDERS}\")" COMPONENT development)
-install(SCRIPT ${PROJECT_SOURCE_DIR}/cmake/rewrite_installed_includes.cmake COMPONENT development)
+# The headers are installed as they are: they include each other as "bezierpde/<folder>/...", the
+# only form that resolves in the build tree too (tests/package fails on any other).
 
 install(TARGETS bpde_core bpde_solvers bpde_cmc bpde_io bpde_view bpde_step bpde_checks bpde_jobs bpde_lib
         EXPORT bezierpdeTargets

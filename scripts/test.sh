@@ -18,6 +18,8 @@ cd "$(dirname "$0")/.."
 # after the other rebuilds nothing. It passes on the native and on the portable build: its
 # tolerances were measured on both (docs/performance_measurements.md, section 2).
 bash scripts/build.sh
+# Every tier: unit, integration and slow (tests/tiers.cmake). The inner loop while editing is
+# `ctest --test-dir build -L unit -j2` (under 2 minutes on 2 cores); `-LE slow` adds the integration tests.
 ctest --test-dir build --output-on-failure -j "$(nproc)"
 # The libFuzzer targets of the readers (fuzz/, clang, ./build-fuzz): 20000 inputs each, failing on
 # any crash or sanitizer report (docs/robustness.md; the long run is `bash scripts/fuzz.sh`).
