@@ -202,7 +202,7 @@ void tolerance_probe() {
 void larger_caps(const std::vector<std::pair<int, double>>& cases, bpde::CmcSolver solver,
                  bpde::CmcFunctionalKind functional = bpde::CmcFunctionalKind::Area) {
   std::printf("| n | H of the larger cap | v0 | status | first variation | H found | dist | H range | "
-              "continuation steps | seconds | message |\n");
+              "continuation steps | seconds | route kept |\n");
   std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const auto& [n, H] : cases) {
     const double R = 1 / std::abs(H), hb = R + std::sqrt(R * R - 1);
@@ -216,7 +216,9 @@ void larger_caps(const std::vector<std::pair<int, double>>& cases, bpde::CmcSolv
     std::printf("| %d | %g | %.4g | %s | %.2e | %.10f | %.1e | %.5f … %.5f | %d | %.1f | %s |\n", n, H, *o.V,
                 status_cell(r.summary).c_str(), r.summary.residual, r.H,
                 worst(r.net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; }), s.min, s.max,
-                r.continuation_steps, r.summary.seconds, r.summary.message.c_str());
+                r.continuation_steps, r.summary.seconds,
+                r.routes.kept() ? bpde::to_string(r.routes.kept()->route)
+                                : (functional == bpde::CmcFunctionalKind::Area ? "none" : "-"));
     std::fflush(stdout);
   }
 }
