@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -45,11 +46,18 @@ using StageFn = std::function<bool(double& H, double eps)>;
 
 template <class Net>
 struct AreaSolve {
+  /// The solve of `data` with options o from the problem p (its rule unset), its iterations
+  /// counted into `summary`.
+  AreaSolve(const Net& data_, const CmcOptions& o_, AreaProblem p_, Summary& summary_)
+      : data(data_), o(o_), p(std::move(p_)), tri(is_triangular(data_)), n(data_.n()), m(data_.n()), summary(summary_) {
+    if constexpr (std::is_same_v<Net, TensorNet>) m = data_.m();
+  }
+
   const Net& data;
   const CmcOptions& o;
   AreaProblem p;
   bool tri;
-  int n, m;
+  int n, m;  ///< the degrees (triangular: n, n)
   double theta = 1.0;  ///< the damping carried from one corrector call to the next
   Summary& summary;
   /// The record of the route running (finish() adds its phases); null between routes.

@@ -63,6 +63,10 @@ std::vector<RoutePlan> routes_for(const CmcOptions& o) {
 
 template <class Net>
 struct Driver {
+  Driver(AreaSolve<Net>& s_, const CmcOptions& o_, CmcResult<Net>& res_, const Eigen::MatrixX3d& extremal_,
+         const std::vector<int>& fixed_idx_, const double* V0_)
+      : s(s_), o(o_), res(res_), extremal(extremal_), fixed_idx(fixed_idx_), V0(V0_) {}
+
   AreaSolve<Net>& s;
   const CmcOptions& o;
   CmcResult<Net>& res;
@@ -290,12 +294,12 @@ CmcResult<Net> solve(const Net& data, const CmcOptions& o) {
     CmcProblem& base = start.p;
     const Eigen::MatrixX3d extremal = base.P;
     const Eigen::MatrixXd Cff = base.f->gram()(base.free, base.free);
-    int m = data.n();
-    if constexpr (std::is_same_v<Net, TensorNet>) m = data.m();
-    AreaSolve<Net> s{data, o, AreaProblem{base, nullptr, kron(Cff, Eigen::Matrix3d::Identity())},
-                     is_triangular(data), data.n(), m, 1.0, res.summary};
+    AreaProblem problem;
+    problem.base = base;
+    problem.C = kron(Cff, Eigen::Matrix3d::Identity());
+    AreaSolve<Net> s(data, o, std::move(problem), res.summary);
     if (o.progress) s.p.progress = &o.progress;
-    Driver<Net> d{s, o, res, extremal, start.fixed_idx, o.V ? &*o.V : nullptr};
+    Driver<Net> d(s, o, res, extremal, start.fixed_idx, o.V ? &*o.V : nullptr);
     d.run_routes();
     res.continuation_steps = d.steps;
     if (!o.V) d.out.H = d.out.ok ? o.H : d.out.H;
