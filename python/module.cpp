@@ -11,6 +11,7 @@
 //                                                NonFiniteError, ParameterError, UnsupportedProblem
 //     bezierpde.InternalError(Error, RuntimeError)
 // std::bad_alloc is MemoryError. The GIL is released while C++ runs.
+#include "bezierpde/core/eigen.h"
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>

@@ -1,5 +1,6 @@
 // The area functional of the cmc problem (cmc.h, "The area functional"): critical points of
 // A_H = A + 2HV and the volume-constrained minimum of A, by a regularised Newton method.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>

@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/cmc/mean_curvature_least_squares.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <ceres/jet.h>
 
