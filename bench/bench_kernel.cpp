@@ -7,6 +7,7 @@
 //   Kernel/rows-{row-major,eigen}/<r>    r = 1, 2, 3, 4 rows times the n = 20 mould (80 x 361).
 #include <benchmark/benchmark.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <random>
 

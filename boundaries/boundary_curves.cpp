@@ -1,5 +1,6 @@
 #include "bezierpde/boundaries/boundary_curves.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>

@@ -32,6 +32,7 @@
 // SizeError (too few points, wrong knot count), NonFiniteError (non-finite numbers),
 // ParameterError (radius <= 0, a zero normal, a reference parallel to the normal, an empty angle
 // range, collinear three points, samples whose parameters do not increase).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <functional>
 #include <optional>

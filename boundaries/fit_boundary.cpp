@@ -1,5 +1,6 @@
 #include "bezierpde/boundaries/fit_boundary.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>

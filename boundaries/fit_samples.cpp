@@ -1,6 +1,7 @@
 // The orthogonal least-squares fit of samples (fit_samples.h).
 #include "bezierpde/boundaries/fit_samples.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>

@@ -28,6 +28,7 @@
 //
 // Shapes: q is (M+1) x 3 (M >= 1), t0 has M+1 entries, strictly increasing from 0 to 1.
 // Conventions: Bernstein coefficients P are (n+1) x 3, P_0 first (core/bernstein.h).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <functional>
 

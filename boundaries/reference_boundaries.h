@@ -7,6 +7,7 @@
 // Conventions: tensor and triangular nets as in tensor/tensor_net.h and
 // triangular/triangular_net.h; only the boundary points (outer ring / some index 0) are set, the
 // others are zero.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 #include <functional>

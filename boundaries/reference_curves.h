@@ -3,6 +3,7 @@
 // (boundaries/boundary_curves.h), in the edge order and direction of boundaries/fit_boundary.h, so
 // that fit_tensor_boundary / fit_triangular_boundary build them at any degree (the job form
 // `"boundary": {"builder": NAME, ...}` of FORMATS.md "Boundary curves"). C⁰ data only.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <functional>
 

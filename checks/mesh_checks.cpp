@@ -22,6 +22,7 @@
 //  7. cone volume: (1/6) sum det(a, b, c) over the input triangles, in input coordinates.
 #include "bezierpde/checks/mesh_checks.h"
 
+#include "bezierpde/core/eigen.h"
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 

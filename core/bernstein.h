@@ -8,6 +8,7 @@
 //
 // These are the building blocks that every net (tensor/, triangular/) and every energy
 // (energies/) reuses. Binomials: core/binomial.h; other precisions: core/bernstein_ops.h.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 
 namespace bpde {

@@ -17,6 +17,7 @@
 // double); E and T carry one rounding per product and sum.
 //
 // Errors: DegreeError for negative degrees or orders, and for d > n in the derivative operator.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
 #include <string>

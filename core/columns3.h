@@ -3,6 +3,7 @@
 // column each) that the exact Bernstein integrals (energies/volume.cpp), the area quadrature
 // (energies/area_functional.cpp) and the mean-curvature residuals
 // (energies/mean_curvature_least_squares.cpp) share.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 
 namespace bpde {

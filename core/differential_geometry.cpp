@@ -1,5 +1,6 @@
 #include "bezierpde/core/differential_geometry.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <cmath>
 

@@ -6,6 +6,7 @@
 //   e,f,g = <x_uu,N>, <x_uv,N>, <x_vv,N>,
 //   K = (eg - f^2)/(EG - F^2),  H = (eG - 2fF + gE) / (2(EG - F^2)).
 // So z = u^2 + v^2 has H = +2 at the origin.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cmath>
 

@@ -1,5 +1,6 @@
 #pragma once
 // Which control points a problem prescribes (FORMATS.md, job field "fixed").
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cmath>
 #include <string>

@@ -34,6 +34,7 @@
 //
 // The sum is over the same terms in another order, so A differs from the one-product value by
 // rounding only.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
 #include <string>

@@ -2,6 +2,7 @@
 // Kronecker product of dense matrices, in the row-major layout of tensor nets:
 // (A kron B) vec_r(X) = vec_r(A X B^T), with vec_r stacking the rows of X (row i*(m+1)+j of a
 // tensor net's points is X(i, j)).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 
 namespace bpde {

@@ -1,5 +1,6 @@
 #pragma once
 // A sampled surface: vertices, triangles and the mean curvature at each vertex.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cstddef>
 #include <string>

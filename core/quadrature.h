@@ -1,6 +1,7 @@
 #pragma once
 // Gauss quadrature rules, used to cross-check exact Bernstein integrals and to assemble
 // finite-element forms.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 
 namespace bpde {

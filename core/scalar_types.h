@@ -7,6 +7,7 @@
 //   quad         IEEE binary128 (GCC's __float128, 113-bit mantissa): residuals and exact
 //                operator entries beyond long double (solvers/c1). Eigen has no NumTraits for it,
 //                so binary128 data lives in std::vector (row-major where it is a matrix).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 
 namespace bpde {

@@ -15,6 +15,7 @@
 // solve() uses whichever factorisation was kept. Scalar: double or long double.
 // No exceptions (a failed factorisation is a verdict, not an error); an empty matrix is positive
 // definite.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 

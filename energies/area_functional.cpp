@@ -1,5 +1,6 @@
 #include "bezierpde/energies/area_functional.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <array>
 #include <algorithm>

@@ -47,6 +47,7 @@
 //
 // A node where |N| = 0 (a degenerate parametrisation) makes the gradient and Hessian non-finite:
 // callers check min_normal() first (solvers/cmc/area/ reports it as not converged).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cstddef>
 #include <memory>

@@ -23,6 +23,7 @@
 // phases where it missed its tolerance at the net where it was chosen (a start that nearly folds
 // at a corner), and report a rule that misses its tolerance as not converged
 // (solvers/cmc/area/).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <memory>
 #include <vector>

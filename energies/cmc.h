@@ -17,6 +17,7 @@
 //
 // Points P are N x 3 matrices in the net's order. Restricted gradients/Hessians over a list of
 // point indices idx use the entry 3a + c for (idx[a], coordinate c).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <memory>
 #include <vector>

@@ -1,5 +1,6 @@
 #include "bezierpde/energies/energy_spec.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/LU>
 
 #include <cmath>

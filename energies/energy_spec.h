@@ -23,6 +23,7 @@
 //
 // The operator [A..E] of a fourth-order energy means A x_uuuu + B x_uuuv + C x_uuvv + D x_uvvv +
 // E x_vvvv = 0 (Arnal–Monterde–Ugail eq. (2); docs/errata.md, explicit PDE solutions eq. (2)).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <array>
 #include <string>

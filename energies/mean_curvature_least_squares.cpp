@@ -1,5 +1,6 @@
 #include "bezierpde/energies/mean_curvature_least_squares.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <ceres/jet.h>
 

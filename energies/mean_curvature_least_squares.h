@@ -38,6 +38,7 @@
 //
 // Shapes: P is #points by 3 in the net's order (FORMATS.md); idx lists the free points; J is
 // #nodes by 3·#idx, column 3a + c for point idx[a], coordinate c.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <array>
 #include <vector>

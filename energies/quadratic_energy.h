@@ -9,6 +9,7 @@
 //             (P_0x, P_0y, P_0z, P_1x, ...) it is kron(Q, I_3), see full_hessian()).
 // The energies are those of FORMATS.md ("ENERGY"); Arnal–Monterde–Ugail eq. (1) (gnorm),
 // Sun–Zhu (fourth order); docs/errata.md, explicit PDE solutions §2 (laplacian-squared vs biharmonic).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 
 #include "bezierpde/energies/energy_spec.h"

@@ -19,6 +19,7 @@
 // then ∂_u = ∂_s / hu, ∂_v = ∂_t / hv and du dv = hu hv ds dt, so each term is scaled by
 //     hu^(1 - au - bu) * hv^(1 - av - bv).
 // With hu = hv = 1 this is the Bézier patch on [0,1]^2.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <vector>
 

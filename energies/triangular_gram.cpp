@@ -1,5 +1,6 @@
 #include "bezierpde/energies/triangular_gram.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/SparseCore>
 #include <cmath>
 #include <vector>

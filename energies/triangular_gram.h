@@ -16,6 +16,7 @@
 // matrix below follow the barycentric order of TriangularNet (i from n down to 0, then j from n-i
 // down to 0): row of (i,j,k) = s(s+1)/2 + (s-j), s = n-i. Derivatives are with respect to the two
 // free parameters u and v (w = 1-u-v), so d/du B_I^n = n (B_{I-e1}^{n-1} - B_{I-e3}^{n-1}).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <array>
 #include <vector>

@@ -1,5 +1,6 @@
 #include "bezierpde/energies/volume.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <cmath>
 #include <string>

@@ -26,6 +26,7 @@
 // The 3k x 3k Hessian over points idx[0..k-1] uses row 3a + c for (idx[a], coordinate c).
 //
 // Point matrices P are N x 3 in the net's order (TriangularNet / TensorNet, FORMATS.md).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>

@@ -11,6 +11,7 @@
 //    triangular/tensor_form.h, y(s, t) = x(s, (1-s)t), as a Geom_BezierSurface on [0,1]^2 whose
 //    edge s = 1 is collapsed onto P_{n00}.
 // Lengths are written as they are, in the file's millimetres.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
 #include <string>

@@ -1,5 +1,6 @@
 #include "bezierpde/io/surface_fields.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <cmath>
 #include <string>

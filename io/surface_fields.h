@@ -2,6 +2,7 @@
 // Per-vertex fields of a sampled net for the surface files (surface.ply, surface.vtp, view.html):
 // parameters, unit normals, mean and Gaussian curvature, and whether the parametrisation is
 // regular at the vertex.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cstdint>
 

@@ -1,5 +1,6 @@
 #include "bezierpde/jobs/run_demo.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdarg>

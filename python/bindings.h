@@ -4,6 +4,7 @@
 // casters (Eigen, STL, std::function, numpy).
 #pragma once
 
+#include "bezierpde/core/eigen.h"
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>

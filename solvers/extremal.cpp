@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/extremal.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>

@@ -24,6 +24,7 @@
 //
 // The bases, the conditioning and the measured accuracy (against a 50-digit solve):
 // docs/accuracy.md, "Extremals".
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <memory>
 #include <string>

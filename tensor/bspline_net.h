@@ -4,6 +4,7 @@
 //   x(u,v) = sum_{i<nu} sum_{j<nv} N_{i,p}(u) N_{j,q}(v) P_ij,  P_ij at row i*nv + j,
 //   nu = len(U) - p - 1, nv = len(V) - q - 1; N_{i,p} has support [U_i, U_{i+p+1}] (standard
 //   indexing, docs/errata.md). Domain [U_p, U_nu] x [V_q, V_nv].
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <vector>
 

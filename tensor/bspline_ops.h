@@ -12,6 +12,7 @@
 // [K_i, K_{i+k+1}]; the domain is [K_k, K_n]. Nets follow tensor/bspline_net.h (P_ij at row
 // i*nv + j, i along u). Every operation is exact in exact arithmetic and uses convex
 // combinations only (knot insertion) or de Casteljau steps (blossoming).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <vector>
 

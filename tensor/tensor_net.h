@@ -6,6 +6,7 @@
 //   P_ij is row i*(m+1) + j of the (n+1)(m+1) by 3 point matrix; i runs along u, j along v.
 //   Orientation: P_00 -> P_n0 -> P_nn -> P_0n counter-clockwise seen from +z gives
 //   x_u ^ x_v pointing to +z.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <vector>
 

@@ -1,6 +1,7 @@
 #pragma once
 // Shared by the test programs: reproducible random control points (rows x 3, uniform in
 // [-scale, scale], row by row). The same seed gives the same points in every test.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <random>
 

@@ -10,6 +10,7 @@
 //   Corners: P_{n00} = x(1,0), P_{0n0} = x(0,1), P_{00n} = x(0,0).
 //   Orientation: P_{00n} -> P_{n00} -> P_{0n0} counter-clockwise seen from +z makes x_u ^ x_v
 //   point to +z.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <array>
 #include <vector>

@@ -32,6 +32,7 @@
 //                   interior, δ < 0 exterior); the ring's corners (1,1), ... take the mean of the
 //                   two candidates from their two boundary neighbours (1,0) and (0,1).
 //                   row1 δ = 0.25, row2 δ = 0.5 (interior), row3 δ = −0.25 (exterior).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>

@@ -7,6 +7,7 @@
 // Prints a Markdown table, the generated section "power-basis-accuracy" of docs/accuracy.md and of
 // README.md (scripts/docs.sh). The errors are rounding amplified, whose digits depend on the
 // machine and compiler: they are given as the power of ten above them.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/SVD>
 #include <cmath>
 #include <cstdio>

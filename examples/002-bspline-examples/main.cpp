@@ -4,6 +4,7 @@
 // README of this folder holds its output).
 //
 //   ./build/example_002_bspline_examples
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <chrono>
 #include <cmath>

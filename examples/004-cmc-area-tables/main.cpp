@@ -35,6 +35,7 @@
 // relative first variation of the functional solved (eq. (11) for D_H, A_H for area) or, for
 // mean-curvature, √Φ (its tolerance 1e-6); "iterations" and "seconds" are the solver summary's
 // (all stages included).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>

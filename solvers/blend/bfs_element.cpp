@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/blend/bfs_element.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>

@@ -12,6 +12,7 @@
 // C¹ cubic Hermite spline spaces, i.e. C¹ bicubic splines with double interior knots.
 //
 // A field (3 coordinates) is a num_dofs() by 3 coefficient matrix.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <array>

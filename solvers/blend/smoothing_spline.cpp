@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/blend/smoothing_spline.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #ifdef BPDE_HAVE_CHOLMOD

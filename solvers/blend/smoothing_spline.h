@@ -24,6 +24,7 @@
 //
 // What the discrete spline reproduces (docs/errata.md, smoothing PDE splines): with A = ∅ and f = 0, exactly the data
 // of U ∈ span{1, x, y, xy}; as ε → 0, σ(a_i) → β_i with an error linear in ε.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <functional>
 #include <memory>

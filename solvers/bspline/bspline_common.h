@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers shared by solvers/bspline/bspline_pde.cpp and bspline_extremal.cpp (internal):
 // index sets, gathers and scatters, and timing.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>

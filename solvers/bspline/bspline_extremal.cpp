@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/bspline/bspline_extremal.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 

@@ -18,6 +18,7 @@
 // semi-definite or indefinite on the free points, e.g. Coons with "u-boundaries"), a dense
 // complete orthogonal decomposition returns the minimum-norm solution of the reduced system and
 // the Summary message says so.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>

@@ -26,6 +26,7 @@
 //     points): the member of the solution affine space that minimises the energy whose
 //     Euler–Lagrange operator L is (the EnergySpec's own functional, solvers/bspline/bspline_extremal.h),
 //     flagged by minimum_energy_member.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <vector>
 

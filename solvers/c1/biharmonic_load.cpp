@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/c1/biharmonic_load.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>

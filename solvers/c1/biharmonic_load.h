@@ -16,6 +16,7 @@
 // uniqueness lemma symbolically for n <= 20; bezierpde solves the square Bernstein system
 // ((n-3)^2 unknowns and equations) and reports the residual. How the solve works and how accurate
 // it is: docs/c1.md, "How the C¹ solvers work".
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 
 #include "bezierpde/solvers/c1/c1_requirements.h"

@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/c1/clamped_plate.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>

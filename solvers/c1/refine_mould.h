@@ -7,6 +7,7 @@
 // correction falls below 1e-18 of G, when a correction after the first fails to halve (not
 // contracting: the condition number is beyond ~1e19 and G is kept as it is), or after max_steps.
 // Used by solvers/c1/biharmonic_load.cpp and solvers/c1/tetraharmonic.cpp.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
 #include <vector>

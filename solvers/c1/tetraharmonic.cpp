@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/c1/tetraharmonic.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <algorithm>

@@ -22,6 +22,7 @@
 //     (thread-safe). The data always admit an exact solution (Theorem 1).
 // The problem itself amplifies data rounding, so errors are relative to the solution's size.
 // How each method works, its accuracy and its timings: docs/c1.md, "How the C¹ solvers work".
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <string>
 

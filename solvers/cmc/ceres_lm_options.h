@@ -4,6 +4,7 @@
 // mean curvature): Levenberg–Marquardt with a dense normal-Cholesky step (Eigen), single-threaded,
 // silent, and Ceres's own function, gradient and parameter tolerances set out of the way, because
 // each route stops by its own IterationCallback at the library's convergence test.
+#include "bezierpde/core/eigen.h"
 #include <ceres/ceres.h>
 
 namespace bpde::cmc_detail {

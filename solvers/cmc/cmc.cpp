@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/cmc/cmc.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>

@@ -5,6 +5,7 @@
 // block, so Ceres sees the dense Jacobian as it is (one copy per evaluation) instead of k^2 small
 // 3x3 blocks, and solves the LM step with a dense solver (kLinearSolver below; measured in
 // docs/performance_measurements.md, "Ceres CMC route"). Ceres runs single-threaded here.
+#include "bezierpde/core/eigen.h"
 #include <ceres/ceres.h>
 
 #include <cmath>

@@ -3,6 +3,7 @@
 // critical point, Levenberg–Marquardt on Φ = ∫ ρ (H_x − H)² dA (mean_curvature_least_squares.h):
 // the library's own loop (solver newton, minimise_newton below, over levenberg_marquardt.h) or ceres::Solve with one residual
 // block per node (solver ceres, mean_curvature_ceres.cpp).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>

@@ -5,6 +5,7 @@
 //    Newton polish on (Y, H): [Hess D_H, 2∇V; ∇V^T, 0] (dY, dH) = -(∇D_H, V - V0).
 #include <nlopt.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/LU>
 #include <cmath>
 #include <limits>

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to solvers/cmc/*.cpp: the CMC problem over the free control points, and the correctors.
 // The free unknowns form a vector y of length 3k, y(3a + c) = P(free[a], c).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cstdio>
 #include <memory>

@@ -22,6 +22,7 @@
 // Stopping: an IterationCallback ends the solve when √Φ <= target or Φ stalls (the tests of the
 // newton route, mean_curvature_minimise.h); Ceres's own function, gradient and parameter tolerances
 // are set out of the way, so they do not stop it earlier.
+#include "bezierpde/core/eigen.h"
 #include <ceres/ceres.h>
 
 #include <Eigen/QR>

@@ -6,6 +6,7 @@
 // mean_curvature_ceres.cpp). Both start from P, change only the rows `free`, stop at the same
 // tests (LsStop, levenberg_marquardt.h) and report the same progress stage; measured side by side by the benchmark
 // CmcMeanCurvature/{newton,ceres}/circle/<n> (docs/performance.md).
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
 // Levenberg–Marquardt with geodesic acceleration (levenberg_marquardt.h).
 #include "bezierpde/solvers/optim/levenberg_marquardt.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <limits>
 

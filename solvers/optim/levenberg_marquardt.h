@@ -30,6 +30,7 @@
 // Worked example (the test RosenbrockValley): r(x) = (10(x₁ − x₀²), 1 − x₀) from (−1.2, 1) reaches
 // √Φ ≤ 1e-10 at (1, 1); plain Levenberg–Marquardt follows the curved valley in short steps, the
 // accelerated loop in fewer.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>

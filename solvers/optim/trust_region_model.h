@@ -2,6 +2,7 @@
 // Internal to solvers/cmc/*.cpp: the trust-region subproblem of the area functional's final
 // phase (solvers/cmc/area/soft_mode_phase.cpp, its trust-region part), and Simpson's rule for the
 // change of a function along a step from its gradients.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>

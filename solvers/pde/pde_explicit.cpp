@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/pde/pde_explicit.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>

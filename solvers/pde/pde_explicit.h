@@ -29,6 +29,7 @@
 // u^2 v^2 (u - v)): converged = false, and the Summary says so.
 //
 // Measured errors against exact solutions: docs/pde_accuracy.md.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <string>
 

@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/pde/pde_lu.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>

@@ -30,6 +30,7 @@
 // The solution amplifies boundary data (docs/errata.md, explicit PDE solutions, "Conditioning"),
 // so errors are meaningful relative to the solution's own size. Measured errors against exact
 // solutions and timings: docs/pde_accuracy.md.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <string>
 #include <vector>

@@ -1,6 +1,7 @@
 // Tests of the BFS C¹ bicubic element (solvers/blend/bfs_element.h).
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <random>
 

@@ -1,6 +1,7 @@
 // Tests of the discrete smoothing PDE spline (Pasadas–Rodríguez; solvers/blend/smoothing_spline.h).
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>

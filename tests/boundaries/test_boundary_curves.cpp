@@ -2,6 +2,7 @@
 // factories' typed errors.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>

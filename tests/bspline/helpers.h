@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers of the test_bspline program: random nets, exact polynomial solutions of
 // constant-coefficient PDEs, and nets that represent a polynomial exactly.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 #include <complex>

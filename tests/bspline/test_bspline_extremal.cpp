@@ -2,6 +2,7 @@
 // reproduction and finite differences of an independently assembled energy.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 

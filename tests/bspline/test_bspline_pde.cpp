@@ -2,6 +2,7 @@
 // single- and multi-span nets, incompatible data, degenerate operators, bad input.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 

@@ -1,6 +1,7 @@
 // Clamped plate (Centella et al. §6): paper tables, high-precision references, independent full-space solves.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>

@@ -4,6 +4,7 @@
 // and checks they are of that order.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/LU>
 #include <cmath>
 #include <cstdio>

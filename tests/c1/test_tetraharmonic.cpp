@@ -1,6 +1,7 @@
 // Tetraharmonic surfaces (Centella et al., Theorem 1 and Annex A).
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <cmath>

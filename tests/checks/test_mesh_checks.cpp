@@ -1,6 +1,7 @@
 // Tests of checks/mesh_checks.cpp (CGAL self-intersections, closedness, volumes).
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 
 #include <algorithm>

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cmath>
 

@@ -1,5 +1,6 @@
 #pragma once
 // Shared data builders for the CMC tests.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <Eigen/LU>
 #include <algorithm>

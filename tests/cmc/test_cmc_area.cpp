@@ -2,6 +2,7 @@
 // targets against closed forms.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <cmath>

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <random>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 
 #include "cmc_test_util.h"

@@ -2,6 +2,7 @@
 // convergence with conformal boundary data, bad input.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cstdio>
 

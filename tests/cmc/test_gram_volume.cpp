@@ -2,6 +2,7 @@
 // against exact Bernstein integration, closed forms and independent quadrature.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 
 #include "cmc_test_util.h"

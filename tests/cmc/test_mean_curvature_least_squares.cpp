@@ -4,6 +4,7 @@
 // differences, and the solve against closed-form surfaces.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <array>
 #include <cmath>

@@ -1,6 +1,7 @@
 // core/gram: A += JᵀJ by row blocks against the sum of outer products of the rows, in long double.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cstdlib>
 

@@ -2,6 +2,7 @@
 // and Hessian against finite differences, and the rule choice by measured error.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 

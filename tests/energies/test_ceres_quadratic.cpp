@@ -21,6 +21,7 @@
 // with problem.SetParameterBlockConstant.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <ceres/ceres.h>
 
 #include <Eigen/Dense>

@@ -2,6 +2,7 @@
 // read back by independent readers (mesh_readers.h) and checked against the net's own evaluation.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>

@@ -4,6 +4,7 @@
 // nearest point of a sphere (the constrained step), and bad input.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 #include <limits>

@@ -4,6 +4,7 @@
 // and Simpson's rule for the change of a function along a step against exact polynomials.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>

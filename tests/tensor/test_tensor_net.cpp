@@ -1,6 +1,7 @@
 // tensor/tensor_net and tensor/power_basis against exact polynomials.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <cmath>
 #include <random>

@@ -1,6 +1,7 @@
 // triangular/triangular_net against exact polynomials and direct Bernstein sums.
 #include <gtest/gtest.h>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <cmath>
 #include <random>

@@ -3,6 +3,7 @@
 // "The area functional"), in the vector layout of cmc_problem.h (y(3a + c) = P(free[a], c)).
 #include <functional>
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <memory>
 #include <string>

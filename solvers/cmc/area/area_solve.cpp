@@ -3,6 +3,7 @@
 // mean-curvature-start.
 #include "bezierpde/solvers/cmc/area/area_solve.h"
 
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <cmath>
 #include <limits>

@@ -10,6 +10,7 @@
 // variation" are relative (AreaProblem::residual_at); the V form's residual also holds
 // |V − V0| over the volume's scale (vresidual). Members are explicitly instantiated for
 // TriangularNet and TensorNet in the file that defines them.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <functional>
 #include <memory>

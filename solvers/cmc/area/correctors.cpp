@@ -1,5 +1,6 @@
 // The A_H problem's evaluations and its two Newton correctors (area_problem.h): the regularised
 // Newton corrector on F_ε and the truncated Newton phase on A_H, which ends in the soft-mode phase.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>

@@ -2,6 +2,7 @@
 // critical points of F_ε = A_H + ε(D − A) = (1 − ε)A + εD + 2HV for ε → 0, each stage corrected
 // from the Euler predictor along the ε-path, with a jump to ε = 0 once ε is small. F_ε is well
 // conditioned in the tangential directions for ε > 0, where A_H alone is nearly singular.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,6 @@
 // Regularity of a solved net (area_problem.h: Regularity, regularity, final_regularity) and the
 // normal gap of two nets, the branch test of the continuations.
+#include "bezierpde/core/eigen.h"
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>

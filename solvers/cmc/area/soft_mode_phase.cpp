@@ -57,6 +57,7 @@
 // tolerance on the way down the valley (the tensor catenoid at n = 10, the lowest eigenvalue still
 // −1.1e-6 of the largest at the last step). The V form gains through its final phases at the
 // multiplier, which end here.
+#include "bezierpde/core/eigen.h"
 #include <ceres/ceres.h>
 
 #include <Eigen/Eigenvalues>
