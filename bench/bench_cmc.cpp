@@ -108,6 +108,29 @@ void CircleRoute(benchmark::State& state, CmcFunctionalKind functional, CmcSolve
   state.counters["residual"] = residual;
 }
 void AreaCircle(benchmark::State& s) { CircleRoute(s, CmcFunctionalKind::Area); }
+// The trust-region part of the soft-mode phase on and off where the soft-mode loop stops above the
+// tolerance (the helicoid piece s = 0.3 + 0.7u, t = 1.2v at H = 0, start "dirichlet"): the
+// counters say where each ends (converged 1 with it, numerical-limit at 6.75e-11 without it).
+void HelicoidTrustRegion(benchmark::State& state, bool trust_region) {
+  const int n = static_cast<int>(state.range(0));
+  const TensorNet data = tensor_boundary(n, [](double u, double v) {
+    const double s = 0.3 + 0.7 * u, t = 1.2 * v;
+    return Eigen::Vector3d(s * std::cos(t), s * std::sin(t), t);
+  });
+  CmcOptions o;
+  o.functional = CmcFunctionalKind::Area;
+  o.area_start = AreaStart::Dirichlet;
+  o.area_trust_region = trust_region;
+  for (auto _ : state) {
+    const CmcResult<TensorNet> r = solve_cmc(data, o);
+    benchmark::DoNotOptimize(r.net.points().data());
+    state.counters["converged"] = r.summary.converged ? 1 : 0;
+    state.counters["residual"] = r.summary.residual;
+    state.counters["trust_region_iterations"] = r.routes.phase_count(AreaPhase::TrustRegion);
+  }
+}
+void AreaHelicoid(benchmark::State& s) { HelicoidTrustRegion(s, true); }
+void AreaHelicoidNoTrustRegion(benchmark::State& s) { HelicoidTrustRegion(s, false); }
 // The area functional where its answer folds (tests/cmc/test_cmc_area.cpp,
 // FoldedParametrisationIsReportedAsDegenerate: a tensor boundary whose edge v = 0 retraces itself,
 // H = 0, n = 3). Its rule is refined to q = 64 in vain (the integrand has a kink along the fold),
@@ -220,6 +243,8 @@ BENCHMARK(AreaCeresNoTrustRegion)
     ->DenseRange(4, 10, 2)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaCircle)->Name("CmcArea/circle")->DenseRange(6, 12, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(AreaHelicoid)->Name("CmcArea/helicoid")->Arg(4)->Unit(benchmark::kMillisecond);
+BENCHMARK(AreaHelicoidNoTrustRegion)->Name("CmcArea/helicoid-without-trust-region")->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(AreaFolded)->Name("CmcArea/folded")->Arg(3)->Unit(benchmark::kMillisecond);
 BENCHMARK(MeanCurvatureCircle)
     ->Name("CmcMeanCurvature/newton/circle")

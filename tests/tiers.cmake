@@ -28,7 +28,7 @@ string(JOIN ":" BPDE_SLOW_TESTS_cmc
   CmcArea.VolumeFormReachesTheLargerCapByContinuationInV               # 111 s
   CmcArea.MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit    #  51 s
   CmcArea.RuleIsChosenAgainWhereTheStartNearlyFolds                    #  34 s
-  CmcArea.TrustRegionPartConvergesWhereTheSoftModeLoopStops            #  31 s, switch
+  CmcArea.TrustRegionPartConvergesWhereTheSoftModeLoopStops            #  31 s (with both switch settings)
   CmcArea.VolumeFormReturnsTheCapAndItsH                               #  29 s
   CmcArea.VolumeFormReachesTheLargerCapOffTheOrigin                    #  20 s
   CmcArea.CircleInThreeArcsAtHMinus09                                  #  18 s
@@ -41,7 +41,6 @@ string(JOIN ":" BPDE_SLOW_TESTS_cmc
   CmcArea.MeanCurvatureStartIsNotTriedOnConformalData                  #   7 s (12 s on a busy machine)
   CmcMeanCurvature.RuleCheckKeepsTheParametrisationRegularOnConformalData  # 7 s (36 s on a busy machine)
   CmcArea.MeanCurvatureStartLandsNearerTheSphere                       #   5 s, switch
-  CmcMeanCurvature.GeodesicAccelerationTakesFewerStepsThanPlainLevenbergMarquardt  # 1-2 s, switch
 )
 string(JOIN ":" BPDE_SLOW_TESTS_pde
   PdeAccuracy.Table                                                    #   7 s, the paper's degree table

@@ -770,23 +770,16 @@ TEST(CmcArea, SoftModeStationaryPointIsReportedAsSuch) {
 // by Simpson's rule on the first variation, goes on to the critical point. Measured
 // (without it: numerical-limit at 6.75e-11, 1.16e-10 and 2.57e-11): the helicoid piece at n = 4
 // converges in 5 trust-region steps (6.7e-12), the tensor catenoid at n = 6 in 50 (4.9e-14), at
-// n = 10 in 22 (5.7e-12; both routes). The surfaces stay the degree's.
+// n = 10 in 22 (5.7e-12; both routes). The surfaces stay the degree's. The contrast with the part
+// off is bench/bench_cmc.cpp's CmcArea/helicoid{,-without-trust-region}/4.
 TEST(CmcArea, TrustRegionPartConvergesWhereTheSoftModeLoopStops) {
   const CmcResult<TensorNet> h = solve_cmc(tensor_boundary(4, testing::helicoid), dirichlet_routes(0.0));
-  const CmcResult<TensorNet> h0 =
-      solve_cmc(tensor_boundary(4, testing::helicoid), without_trust_region(dirichlet_routes(0.0)));
-  EXPECT_EQ(h0.summary.status, Status::NumericalLimit) << h0.summary.message;
-  EXPECT_GT(h.summary.iterations, h0.summary.iterations);  // the trust-region steps after its end
   EXPECT_EQ(h.summary.status, Status::Converged) << h.summary.message;
   EXPECT_LE(h.summary.residual, kConvergenceTolerance);
   EXPECT_EQ(testing::kept_route(h.routes), AreaRoute::MinimalSurface) << full_report(h.routes);
   EXPECT_GT(h.routes.phase_count(AreaPhase::TrustRegion), 0) << full_report(h.routes);
-  EXPECT_EQ(h0.routes.phase_count(AreaPhase::TrustRegion), 0) << full_report(h0.routes);
   EXPECT_LE(testing::helicoid_off(h.net), 2e-4);  // measured 7.3e-5 without it (the degree)
   const CmcResult<TensorNet> c6 = solve_cmc(tensor_boundary(6, testing::catenoid_square), dirichlet_routes(0.0));
-  const CmcResult<TensorNet> c60 =
-      solve_cmc(tensor_boundary(6, testing::catenoid_square), without_trust_region(dirichlet_routes(0.0)));
-  EXPECT_EQ(c60.summary.status, Status::NumericalLimit) << c60.summary.message;
   EXPECT_EQ(c6.summary.status, Status::Converged) << c6.summary.message;
   EXPECT_LE(testing::catenoid_off(c6.net), 6e-4);  // 4.0e-4 without it (the degree)
   const CmcResult<TensorNet> c10 = solve_cmc(tensor_boundary(10, testing::catenoid_square), area_options(0.0));

@@ -503,27 +503,20 @@ TEST(CmcMeanCurvature, IterationLimitIsReportedAsSuch) {
 }
 
 // Geodesic acceleration (Transtrum and Sethna; CmcOptions::geodesic_acceleration, the newton
-// solver's default) against plain Levenberg–Marquardt on the circle, where plain LM crawls along
-// the curved valley of Φ: both meet the tolerance, the accelerated loop in at most half the
-// iterations (the summary's, the D_H start's included). Measured: n = 8, H = -0.5: 384 plain, 83
-// accelerated; n = 10, H = -0.9: 136 and 48 (docs/cmc_algorithm.md, "The least squares of the mean curvature").
-TEST(CmcMeanCurvature, GeodesicAccelerationTakesFewerStepsThanPlainLevenbergMarquardt) {
-  for (const auto& [n, H] : {std::pair{8, -0.5}, std::pair{10, -0.9}}) {
-    SCOPED_TRACE(n);
-    const double R = 1 / std::abs(H);
-    const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
-    CmcOptions o = mc_options(H);
-    ASSERT_TRUE(o.geodesic_acceleration);  // the default
-    const CmcResult<TriangularNet> fast = solve_cmc(testing::circle_three_arcs(n), o);
-    o.geodesic_acceleration = false;
-    const CmcResult<TriangularNet> plain = solve_cmc(testing::circle_three_arcs(n), o);
-    ASSERT_EQ(fast.summary.status, Status::Converged) << fast.summary.message;
-    ASSERT_EQ(plain.summary.status, Status::Converged) << plain.summary.message;
-    EXPECT_LE(2 * fast.summary.iterations, plain.summary.iterations)
-        << fast.summary.iterations << " accelerated, " << plain.summary.iterations << " plain";
-    EXPECT_LE(testing::sphere_distance(fast.net, c, R), 1e-7);
-    EXPECT_LE(testing::sphere_distance(plain.net, c, R), 1e-7);
-  }
+// solver's default) off: plain Levenberg–Marquardt still meets the tolerance on the circle, on the
+// same sphere (it crawls along the curved valley of Φ: measured n = 8, H = -0.5: 384 iterations
+// plain, 83 accelerated; the contrast is bench/bench_cmc.cpp's
+// CmcMeanCurvature/{newton,newton-plain}/circle/<n>).
+TEST(CmcMeanCurvature, PlainLevenbergMarquardtConvergesToo) {
+  const double H = -0.5, R = 1 / std::abs(H);
+  const Eigen::Vector3d c(0, 0, -std::sqrt(R * R - 1));
+  CmcOptions o = mc_options(H);
+  ASSERT_TRUE(o.geodesic_acceleration);  // the default
+  o.geodesic_acceleration = false;
+  const CmcResult<TriangularNet> plain = solve_cmc(testing::circle_three_arcs(8), o);
+  ASSERT_EQ(plain.summary.status, Status::Converged) << plain.summary.message;
+  EXPECT_LE(plain.summary.residual, o.mean_curvature_tolerance);
+  EXPECT_LE(testing::sphere_distance(plain.net, c, R), 1e-7);
 }
 
 }  // namespace
