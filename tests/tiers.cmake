@@ -28,7 +28,7 @@ string(JOIN ":" BPDE_SLOW_TESTS_cmc
   CmcArea.VolumeFormReachesTheLargerCapByContinuationInV               # 111 s
   CmcArea.MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit    #  51 s
   CmcArea.RuleIsChosenAgainWhereTheStartNearlyFolds                    #  34 s
-  CmcArea.TrustRegionPartConvergesWhereTheSoftModeLoopStops            #  31 s (with both switch settings)
+  CmcArea.TrustRegionPartConvergesWhereTheSoftModeLoopStops            #  three area solves, n = 4, 6, 10
   CmcArea.VolumeFormReturnsTheCapAndItsH                               #  29 s
   CmcArea.VolumeFormReachesTheLargerCapOffTheOrigin                    #  20 s
   CmcArea.CircleInThreeArcsAtHMinus09                                  #  18 s
