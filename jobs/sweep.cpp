@@ -12,6 +12,7 @@
 
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/atomic_file.h"
 #include "bezierpde/jobs/exit_status.h"
 #include "bezierpde/jobs/run_job.h"
 
@@ -150,18 +151,7 @@ Json base_row(const SweepJob& job) {
   return row;
 }
 
-void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw FileError(tmp + ": cannot write");
-    f << text;
-    if (!f) throw FileError(tmp + ": cannot write");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw FileError(path + ": cannot write (" + ec.message() + ")");
-}
+void write_text_atomically(const std::string& path, const std::string& text) { write_file_atomically(path, text); }
 
 std::string csv_cell(const Json& v) {
   if (v.is_null()) return "";

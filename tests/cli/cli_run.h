@@ -1,9 +1,11 @@
 #pragma once
 // Running the `bpde` binary from the CLI tests (test_cli.cpp, test_hostile_input.cpp): its exit
 // status, stdout and stderr, in a temporary folder of this test process.
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +45,26 @@ inline CmdResult run(const std::string& args) {
   const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
   const int rc = std::system(cmd.c_str());
   // A crash is not an exit status: report it as -signal.
+  const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -(WIFSIGNALED(rc) ? WTERMSIG(rc) : 1000);
+  return {status, slurp(o), slurp(e)};
+}
+
+/// Run `bpde ARGS` like run(), in a child whose files cannot grow beyond `max_file_bytes`
+/// (RLIMIT_FSIZE, with SIGXFSZ ignored so that a write past the limit fails with EFBIG, as on a
+/// full disk). The captured stdout and stderr are cut at the limit too.
+inline CmdResult run_with_file_limit(const std::string& args, rlim_t max_file_bytes) {
+  const fs::path o = tmpdir() / "stdout", e = tmpdir() / "stderr";
+  const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const struct rlimit lim = {max_file_bytes, max_file_bytes};
+    ::setrlimit(RLIMIT_FSIZE, &lim);
+    std::signal(SIGXFSZ, SIG_IGN);
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int rc = 0;
+  if (pid < 0 || ::waitpid(pid, &rc, 0) != pid) return {-1000, "", ""};
   const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -(WIFSIGNALED(rc) ? WTERMSIG(rc) : 1000);
   return {status, slurp(o), slurp(e)};
 }
