@@ -49,16 +49,16 @@ inline CmdResult run(const std::string& args) {
   return {status, slurp(o), slurp(e)};
 }
 
-/// Run `bpde ARGS` like run(), in a child whose files cannot grow beyond `max_file_bytes`
-/// (RLIMIT_FSIZE, with SIGXFSZ ignored so that a write past the limit fails with EFBIG, as on a
-/// full disk). The captured stdout and stderr are cut at the limit too.
-inline CmdResult run_with_file_limit(const std::string& args, rlim_t max_file_bytes) {
+/// Run `bpde ARGS` like run(), in a child with the resource limit `resource` (RLIMIT_FSIZE,
+/// RLIMIT_AS, ...) set to `value`, and SIGXFSZ ignored, so that a write past a file-size limit
+/// fails with EFBIG as on a full disk. The captured stdout and stderr are under the limit too.
+inline CmdResult run_with_limit(const std::string& args, int resource, rlim_t value) {
   const fs::path o = tmpdir() / "stdout", e = tmpdir() / "stderr";
   const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
   const pid_t pid = ::fork();
   if (pid == 0) {
-    const struct rlimit lim = {max_file_bytes, max_file_bytes};
-    ::setrlimit(RLIMIT_FSIZE, &lim);
+    const struct rlimit lim = {value, value};
+    ::setrlimit(static_cast<__rlimit_resource_t>(resource), &lim);
     std::signal(SIGXFSZ, SIG_IGN);
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
@@ -67,6 +67,11 @@ inline CmdResult run_with_file_limit(const std::string& args, rlim_t max_file_by
   if (pid < 0 || ::waitpid(pid, &rc, 0) != pid) return {-1000, "", ""};
   const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -(WIFSIGNALED(rc) ? WTERMSIG(rc) : 1000);
   return {status, slurp(o), slurp(e)};
+}
+
+/// run() with files limited to `max_file_bytes` (RLIMIT_FSIZE): every write past it fails.
+inline CmdResult run_with_file_limit(const std::string& args, rlim_t max_file_bytes) {
+  return run_with_limit(args, RLIMIT_FSIZE, max_file_bytes);
 }
 
 /// Write `text` to tmpdir()/name and return its path.
