@@ -216,6 +216,12 @@ SweepSpec sweep_from_json(const Json& j, const std::string& source, const std::s
     for (auto it = axes.begin(); it != axes.end(); ++it) {
       const std::string where = source + ".axes." + it.key();
       const std::vector<std::string> seg = split_path(it.key());
+      // As deep as the readers take (a deeper path writes a job.json that no reader accepts, and
+      // its recursive conversions, to Python for one, would overflow the stack).
+      if (seg.size() > static_cast<size_t>(kMaxJsonDepth))
+        throw ParseError(source + ".axes: the path \"" + it.key().substr(0, 40) + "...\" has " +
+                         std::to_string(seg.size()) + " segments, more than the limit of " +
+                         std::to_string(kMaxJsonDepth));
       for (const std::string& s : seg)
         if (s.empty()) throw ParseError(where + ": an axis is a dotted path of non-empty keys");
       if (!it.value().is_array() || it.value().empty())
