@@ -9,10 +9,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
 #include <iostream>
+#include <new>
 #include <optional>
 
 #include "app/commands.h"
@@ -42,9 +44,29 @@ void keep_freed_memory() {
 #endif
 }
 
+// Exit 3 with one line where C++ would abort: an exception that reaches a noexcept boundary
+// (nlohmann::json's destructor allocates, so memory running out while a job's JSON is freed
+// ends here) or a thread that could not be joined. Fixed strings only: memory may be gone.
+[[noreturn]] void terminate_as_internal_error() noexcept {
+  const char* line = "internal error: terminated\n";
+  if (const std::exception_ptr e = std::current_exception()) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::bad_alloc&) {
+      line = "internal error: out of memory\n";
+    } catch (...) {
+      line = "internal error: uncaught exception\n";
+    }
+  }
+  std::fflush(stdout);
+  std::fputs(line, stderr);
+  std::_Exit(3);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::set_terminate(terminate_as_internal_error);
   keep_freed_memory();
   bpde::quiet_ceres_log();  // stderr carries bpde's own lines only (ceres_log.h)
   CLI::App app{"bpde: Bézier surfaces from boundary data by energies and PDEs (bezierpde)", "bpde"};

@@ -51,7 +51,9 @@ void print_progress(const SweepProgress& p, bool terminal) {
 }  // namespace
 
 int cmd_sweep(const std::string& sweep_path, const std::string& out_dir, int jobs) {
-  if (jobs < 0) throw ParameterError("--jobs must be >= 0 (0: every core), got " + std::to_string(jobs));
+  if (jobs < 0 || jobs > kMaxSweepThreads)
+    throw ParameterError("--jobs must be 0.." + std::to_string(kMaxSweepThreads) + " (0: every core), got " +
+                         std::to_string(jobs));
   const SweepSpec spec = read_sweep_file(sweep_path);
   const bool terminal = isatty(fileno(stderr)) != 0;
   SweepRunOptions options;

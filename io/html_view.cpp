@@ -9,6 +9,7 @@
 
 #include "bpde_viewer_assets.h"  // generated at build time (CMakeLists.txt): kTemplate, kBundle, kThreeVersion
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/atomic_file.h"
 #include "bezierpde/io/base64.h"
 #include "bezierpde/io/mesh_io.h"
 
@@ -135,11 +136,7 @@ std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFie
 void write_view_html(const std::string& path, const Net& net, const TriangleMesh& mesh, const Json& report,
                      const std::string& title) {
   const std::string page = view_html(net, mesh, surface_fields(net, mesh), report, title);
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw FileError("cannot write file '" + path + "'");
-  out.write(page.data(), static_cast<std::streamsize>(page.size()));
-  out.close();
-  if (!out) throw FileError("error while writing '" + path + "'");
+  write_file_atomically(path, page);
 }
 
 }  // namespace bpde

@@ -10,6 +10,7 @@
 
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/atomic_file.h"
 
 namespace bpde {
 namespace {
@@ -103,10 +104,7 @@ Json read_json_file(const std::string& path) {
 }
 
 void write_json_file(const std::string& path, const Json& j) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw FileError("cannot write file '" + path + "'");
-  out << j.dump(2) << "\n";
-  if (!out) throw FileError("error while writing '" + path + "'");
+  write_file_atomically(path, j.dump(2) + "\n");
 }
 
 namespace json_read {

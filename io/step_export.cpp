@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/atomic_file.h"
 #include "bezierpde/triangular/tensor_form.h"
 
 namespace bpde {
@@ -103,7 +104,11 @@ void write_step(const std::string& path, const Net& net) {
   Interface_Static::SetCVal("write.step.product.name", "bezierpde surface");
   if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone)
     throw InternalError("STEP export: OpenCASCADE could not transfer the face");
-  if (writer.Write(path.c_str()) != IFSelect_RetDone) throw FileError("cannot write file '" + path + "'");
+  // Into a temporary beside the target, renamed onto it only when complete: a failed write (a
+  // full disk, a file-size limit) leaves an existing target as it was.
+  replace_file_atomically(path, [&](const std::string& tmp) {
+    if (writer.Write(tmp.c_str()) != IFSelect_RetDone) throw FileError("cannot write file '" + path + "'");
+  });
 }
 
 StepReadBack read_step(const std::string& path, const Eigen::MatrixX2d& uv) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/atomic_file.h"
 #include "bezierpde/io/base64.h"
 
 namespace bpde {
@@ -116,11 +117,7 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   w.ints("Int32", "offsets", offsets, 1);
   s += "      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
 
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw FileError("cannot write file '" + path + "'");
-  out.write(s.data(), static_cast<std::streamsize>(s.size()));
-  out.close();
-  if (!out) throw FileError("error while writing '" + path + "'");
+  write_file_atomically(path, s);
 }
 
 }  // namespace bpde

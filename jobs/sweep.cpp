@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -12,6 +13,7 @@
 
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/atomic_file.h"
 #include "bezierpde/jobs/exit_status.h"
 #include "bezierpde/jobs/run_job.h"
 
@@ -150,18 +152,7 @@ Json base_row(const SweepJob& job) {
   return row;
 }
 
-void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw FileError(tmp + ": cannot write");
-    f << text;
-    if (!f) throw FileError(tmp + ": cannot write");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw FileError(path + ": cannot write (" + ec.message() + ")");
-}
+void write_text_atomically(const std::string& path, const std::string& text) { write_file_atomically(path, text); }
 
 std::string csv_cell(const Json& v) {
   if (v.is_null()) return "";
@@ -225,6 +216,12 @@ SweepSpec sweep_from_json(const Json& j, const std::string& source, const std::s
     for (auto it = axes.begin(); it != axes.end(); ++it) {
       const std::string where = source + ".axes." + it.key();
       const std::vector<std::string> seg = split_path(it.key());
+      // As deep as the readers take (a deeper path writes a job.json that no reader accepts, and
+      // its recursive conversions, to Python for one, would overflow the stack).
+      if (seg.size() > static_cast<size_t>(kMaxJsonDepth))
+        throw ParseError(source + ".axes: the path \"" + it.key().substr(0, 40) + "...\" has " +
+                         std::to_string(seg.size()) + " segments, more than the limit of " +
+                         std::to_string(kMaxJsonDepth));
       for (const std::string& s : seg)
         if (s.empty()) throw ParseError(where + ": an axis is a dotted path of non-empty keys");
       if (!it.value().is_array() || it.value().empty())
@@ -387,7 +384,9 @@ Json finished_sweep_row(const SweepJob& job, const std::string& dir) {
 }
 
 std::vector<Json> run_sweep(const SweepSpec& spec, const std::string& out_dir, const SweepRunOptions& options) {
-  if (options.jobs < 0) throw ParameterError("jobs: expected >= 0, got " + std::to_string(options.jobs));
+  if (options.jobs < 0 || options.jobs > kMaxSweepThreads)
+    throw ParameterError("jobs: expected 0.." + std::to_string(kMaxSweepThreads) + ", got " +
+                         std::to_string(options.jobs));
   const std::vector<SweepJob> jobs = expand_sweep(spec);
   make_output_dir(out_dir + "/jobs");
   const double t0 = now_seconds();
@@ -410,29 +409,46 @@ std::vector<Json> run_sweep(const SweepSpec& spec, const std::string& out_dir, c
   progress.resumed = resumed;
   if (options.on_progress) options.on_progress(progress);
 
+  // An exception that escapes a job's row (out of memory while building it, a progress callback
+  // that throws) stops the other workers at their next job and is rethrown here once every thread
+  // is joined: never std::terminate from a worker thread.
   std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (;;) {
-      const size_t t = next.fetch_add(1);
-      if (t >= todo.size()) return;
-      const size_t k = todo[t];
-      Json row = run_sweep_job(jobs[k], out_dir + "/jobs/" + jobs[k].id);
+  std::exception_ptr failure;
+  auto worker = [&]() noexcept {
+    try {
+      for (;;) {
+        const size_t t = next.fetch_add(1);
+        if (t >= todo.size()) return;
+        const size_t k = todo[t];
+        Json row = run_sweep_job(jobs[k], out_dir + "/jobs/" + jobs[k].id);
+        std::lock_guard<std::mutex> lock(mutex);
+        rows[k] = std::move(row);
+        ++progress.done;
+        progress.seconds = now_seconds() - t0;
+        progress.row = &rows[k];
+        if (options.on_progress) options.on_progress(progress);
+        progress.row = nullptr;
+      }
+    } catch (...) {
+      next.store(todo.size());
       std::lock_guard<std::mutex> lock(mutex);
-      rows[k] = std::move(row);
-      ++progress.done;
-      progress.seconds = now_seconds() - t0;
-      progress.row = &rows[k];
-      if (options.on_progress) options.on_progress(progress);
-      progress.row = nullptr;
+      if (!failure) failure = std::current_exception();
     }
   };
   unsigned n =
       options.jobs > 0 ? static_cast<unsigned>(options.jobs) : std::max(1u, std::thread::hardware_concurrency());
   n = std::min<unsigned>(n, static_cast<unsigned>(std::max<size_t>(1, todo.size())));
   std::vector<std::thread> pool;
-  for (unsigned i = 1; i < n; ++i) pool.emplace_back(worker);
+  try {
+    pool.reserve(n);
+    for (unsigned i = 1; i < n; ++i) pool.emplace_back(worker);
+  } catch (const std::exception&) {
+    // The system refused another thread (std::system_error: EAGAIN, out of memory for its
+    // stack) or the pool's memory: run with the threads already started.
+  }
   worker();
   for (std::thread& th : pool) th.join();
+  if (failure) std::rethrow_exception(failure);
   write_sweep_tables(out_dir, spec, rows);
   return rows;
 }

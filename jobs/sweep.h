@@ -35,6 +35,8 @@ struct SweepSpec {
 
 /// Largest number of jobs a sweep may expand to (SizeError beyond).
 inline constexpr long kMaxSweepJobs = 100000;
+/// Largest number of worker threads (`--jobs`) a sweep may ask for (ParameterError beyond).
+inline constexpr int kMaxSweepThreads = 1024;
 
 /// One expanded job: its index, its id (folder name, "job-0003"), the axis values (an object
 /// path -> value) and the job JSON. `error` is set when the job could not be built (the boundary
@@ -97,7 +99,7 @@ struct SweepProgress {
 };
 
 struct SweepRunOptions {
-  int jobs = 0;  ///< worker threads; 0: the hardware concurrency. >= 0.
+  int jobs = 0;  ///< worker threads; 0: the hardware concurrency. 0..kMaxSweepThreads.
   bool resume = true;
   /// Called (serialised, from the worker threads) once before the first job and after each job.
   std::function<void(const SweepProgress&)> on_progress;

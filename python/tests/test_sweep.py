@@ -124,3 +124,13 @@ def test_dask_local_cluster_gives_the_commands_rows(cli_sweep, tmp_path):
     assert without_seconds(records(table)) == without_seconds(rows)
     with open(tmp_path / "dask" / "results.csv", encoding="utf-8") as f:
         assert len(list(csv.DictReader(f))) == 8
+
+
+def test_axis_paths_deeper_than_the_readers_are_refused():
+    # 100000 segments used to overflow the stack while the job was converted to Python.
+    for segments in (257, 100000):
+        spec = {"base": {}, "axes": {".".join(["a"] * segments): [1]}}
+        with pytest.raises(bezierpde.ParseError):
+            bezierpde.expand_sweep(spec, ".")
+    jobs, _ = bezierpde.expand_sweep({"base": {}, "axes": {".".join(["a"] * 256): [1]}}, ".")
+    assert len(jobs) == 1 and jobs[0]["error"] == ""

@@ -1,9 +1,11 @@
 #pragma once
 // Running the `bpde` binary from the CLI tests (test_cli.cpp, test_hostile_input.cpp): its exit
 // status, stdout and stderr, in a temporary folder of this test process.
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -45,6 +47,31 @@ inline CmdResult run(const std::string& args) {
   // A crash is not an exit status: report it as -signal.
   const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -(WIFSIGNALED(rc) ? WTERMSIG(rc) : 1000);
   return {status, slurp(o), slurp(e)};
+}
+
+/// Run `bpde ARGS` like run(), in a child with the resource limit `resource` (RLIMIT_FSIZE,
+/// RLIMIT_AS, ...) set to `value`, and SIGXFSZ ignored, so that a write past a file-size limit
+/// fails with EFBIG as on a full disk. The captured stdout and stderr are under the limit too.
+inline CmdResult run_with_limit(const std::string& args, int resource, rlim_t value) {
+  const fs::path o = tmpdir() / "stdout", e = tmpdir() / "stderr";
+  const std::string cmd = std::string(BPDE_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const struct rlimit lim = {value, value};
+    ::setrlimit(static_cast<__rlimit_resource_t>(resource), &lim);
+    std::signal(SIGXFSZ, SIG_IGN);
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int rc = 0;
+  if (pid < 0 || ::waitpid(pid, &rc, 0) != pid) return {-1000, "", ""};
+  const int status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -(WIFSIGNALED(rc) ? WTERMSIG(rc) : 1000);
+  return {status, slurp(o), slurp(e)};
+}
+
+/// run() with files limited to `max_file_bytes` (RLIMIT_FSIZE): every write past it fails.
+inline CmdResult run_with_file_limit(const std::string& args, rlim_t max_file_bytes) {
+  return run_with_limit(args, RLIMIT_FSIZE, max_file_bytes);
 }
 
 /// Write `text` to tmpdir()/name and return its path.

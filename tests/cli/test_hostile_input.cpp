@@ -685,4 +685,12 @@ TEST(HostileInput, BlendConfigsEnergyArgumentsAndSweepsGetTheSameReaderBounds) {
                        " --out " + out.string(),
                    out, "nest deeper");
   expect_bad_input("sweep /dev/zero --out " + out.string(), out, "64 MiB");
+  // an axis path deeper than the readers' nesting limit: refused before anything runs
+  std::string path = "a";
+  for (int i = 0; i < 100000; ++i) path += ".a";
+  const CmdResult deep_axis =
+      run("sweep " + write("sweep_deep_axis.json", R"({"base": {}, "axes": {")" + path + R"(": [1]}})").string() +
+          " --out " + out.string());
+  EXPECT_EQ(deep_axis.status, 2);
+  expect_untouched(out);
 }

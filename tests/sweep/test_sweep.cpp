@@ -110,6 +110,26 @@ TEST(SweepSpec, BadSpecsThrowTypedErrors) {
   EXPECT_THROW(bpde::sweep_from_json(big), bpde::SizeError);
 }
 
+TEST(SweepSpec, AxisPathsAreAsDeepAsTheReadersTake) {
+  const auto path_of = [](int segments) {
+    std::string p = "a";
+    for (int i = 1; i < segments; ++i) p += ".a";
+    return p;
+  };
+  Json spec = Json::parse(R"({"base": {}, "axes": {}})");
+  spec["axes"][path_of(bpde::kMaxJsonDepth)] = Json::array({1});
+  const std::vector<bpde::SweepJob> jobs = bpde::expand_sweep(bpde::sweep_from_json(spec));
+  ASSERT_EQ(jobs.size(), 1u);
+  EXPECT_EQ(jobs[0].error, "");
+  // The expanded job is one a reader takes back: its nesting is at the limit, not past it.
+  EXPECT_NO_THROW(bpde::parse_json(jobs[0].job.dump(), "job"));
+  for (const int segments : {bpde::kMaxJsonDepth + 1, 100000}) {
+    spec["axes"] = Json::object();
+    spec["axes"][path_of(segments)] = Json::array({1});
+    EXPECT_THROW(bpde::sweep_from_json(spec), bpde::ParseError) << segments;
+  }
+}
+
 TEST(SweepSpec, BaseFileRelativeToTheSweepFile) {
   const fs::path d = tmp("basefile");
   fs::create_directories(d);

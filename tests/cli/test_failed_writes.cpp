@@ -1,0 +1,95 @@
+// A failed write leaves the old file as it was (docs/FORMATS.md "Exit codes", docs/robustness.md):
+// `bpde sweep` and `bpde export` rerun over finished outputs in a child whose files cannot grow
+// (RLIMIT_FSIZE, SIGXFSZ ignored: every write fails as on a full disk) report exit 2 and leave the
+// tables and the STEP file byte for byte, with no temporary beside them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "bezierpde/io/atomic_file.h"
+#include "bezierpde/core/errors.h"
+#include "tests/cli/cli_run.h"
+
+namespace fs = std::filesystem;
+using bpde::testing::CmdResult;
+using bpde::testing::run;
+using bpde::testing::run_with_file_limit;
+using bpde::testing::slurp;
+using bpde::testing::tmpdir;
+using bpde::testing::write;
+
+namespace {
+
+const char* kNet = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+                   R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
+
+// The names in `dir` that are not in `expected` (temporaries left behind).
+std::vector<std::string> extra_files(const fs::path& dir, const std::vector<std::string>& expected) {
+  std::vector<std::string> extra;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string n = e.path().filename().string();
+    if (std::find(expected.begin(), expected.end(), n) == expected.end()) extra.push_back(n);
+  }
+  return extra;
+}
+
+}  // namespace
+
+TEST(FailedWrites, SweepTablesSurviveAFullDisk) {
+  const std::string sweep = std::string(R"({"base": {"net": )") + kNet +
+                            R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}},)"
+                            R"( "axes": {"samples": [4, 5, 6]}})";
+  const fs::path spec = write("fw_sweep.json", sweep);
+  for (const int jobs : {1, 4}) {
+    const fs::path out = tmpdir() / ("fw_sweep_out_" + std::to_string(jobs));
+    fs::remove_all(out);
+    const std::string args = "sweep " + spec.string() + " --out " + out.string() + " --jobs " + std::to_string(jobs);
+    CmdResult r = run(args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string csv = slurp(out / "results.csv"), jsonl = slurp(out / "results.jsonl");
+    ASSERT_FALSE(csv.empty());
+    ASSERT_FALSE(jsonl.empty());
+    for (const rlim_t limit : {rlim_t{0}, rlim_t{100}}) {
+      r = run_with_file_limit(args, limit);
+      EXPECT_EQ(r.status, 2) << "jobs " << jobs << ", limit " << limit;
+      EXPECT_EQ(slurp(out / "results.csv"), csv);
+      EXPECT_EQ(slurp(out / "results.jsonl"), jsonl);
+      EXPECT_EQ(extra_files(out, {"results.csv", "results.jsonl", "jobs"}), std::vector<std::string>{});
+    }
+  }
+}
+
+TEST(FailedWrites, StepExportKeepsAnExistingTarget) {
+  const fs::path net = write("fw_net.json", kNet);
+  const fs::path dir = tmpdir() / "fw_step";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path step = dir / "t.step";
+  const std::string old = "the old content of t.step\n";
+  write("fw_step/t.step", old);
+  const CmdResult r = run_with_file_limit("export " + net.string() + " --step " + step.string(), 1024);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(slurp(step), old);
+  EXPECT_EQ(extra_files(dir, {"t.step"}), std::vector<std::string>{});
+  // Without the limit the same command replaces it.
+  ASSERT_EQ(run("export " + net.string() + " --step " + step.string()).status, 0);
+  EXPECT_EQ(slurp(step).rfind("ISO-10303-21;", 0), 0u);
+  EXPECT_EQ(extra_files(dir, {"t.step"}), std::vector<std::string>{});
+}
+
+TEST(FailedWrites, AtomicWriteRefusesADirectoryTargetAndLeavesNoTemporary) {
+  const fs::path dir = tmpdir() / "fw_atomic";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "target");
+  EXPECT_THROW(bpde::write_file_atomically((dir / "target").string(), "x"), bpde::FileError);
+  EXPECT_TRUE(fs::is_directory(dir / "target"));
+  EXPECT_THROW(bpde::write_file_atomically((dir / "missing" / "f").string(), "x"), bpde::FileError);
+  bpde::write_file_atomically((dir / "f").string(), "new");
+  EXPECT_EQ(slurp(dir / "f"), "new");
+  EXPECT_THROW(bpde::replace_file_atomically((dir / "f").string(),
+                                             [](const std::string&) { throw bpde::FileError("no"); }),
+               bpde::FileError);
+  EXPECT_EQ(slurp(dir / "f"), "new");
+  EXPECT_EQ(extra_files(dir, {"target", "f"}), std::vector<std::string>{});
+}
