@@ -44,21 +44,26 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir, const Sol
   Exports exports;
   exports.html = job.export_html;
   exports.step = job.export_step;
-  check_output_dir(out_dir, output_file_names(true, exports));
+  const std::vector<std::string> files = output_file_names(true, exports);
+  check_output_dir(out_dir, files);
   const SolveOutcome out = run_job(job);
   const WrittenResult written = write_job_result(out_dir, job, out);
-  if (!flags.quiet) std::fputs(solve_summary(out, written, job_path, out_dir).c_str(), stdout);
+  if (!flags.quiet) std::fputs(solve_summary(out, written, job_path, out_dir, files).c_str(), stdout);
   return written.exit_code;
 }
 
-int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples, const std::string& mesh_format) {
+int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples, const std::string& mesh_format,
+               bool quiet) {
   check_samples(samples);
   const MeshFormat format = mesh_format_from_string(mesh_format, "--mesh-format");
   const Net net = read_net_input(net_path);
   check_output_dir(out_dir, surface_file_names());
   const TriangleMesh mesh = sampled(net, samples);
-  const ProgressStage stage(job_progress(), "writing files");
-  write_output_files(out_dir, nullptr, net, mesh, format);
+  {
+    const ProgressStage stage(job_progress(), "writing files");
+    write_output_files(out_dir, nullptr, net, mesh, format);
+  }
+  if (!quiet) std::fputs(files_line(out_dir, surface_file_names()).c_str(), stdout);
   return 0;
 }
 
@@ -94,7 +99,7 @@ int cmd_blend(const std::string& config_path, const std::string& out_dir) {
   return write_blend_outcome(out_dir, config, out);
 }
 
-int cmd_view(const std::string& dir, int samples) {
+int cmd_view(const std::string& dir, int samples, bool quiet) {
   check_samples(samples);
   const std::string path = dir + "/result.json";
   const Json result = read_json_file(path);
@@ -104,11 +109,13 @@ int cmd_view(const std::string& dir, int samples) {
   OutputFolder out(dir, {"view.html"});
   write_view_html(out.file("view.html"), net, sample_net(net, samples), report, view_title(net, report));
   out.commit();
+  if (!quiet) std::fputs(files_line(dir, {"view.html"}).c_str(), stdout);
   return 0;
 }
 
-int cmd_export(const std::string& net_path, const std::string& step_path) {
+int cmd_export(const std::string& net_path, const std::string& step_path, bool quiet) {
   write_step(step_path, read_net_file(net_path));
+  if (!quiet) std::fputs(files_line("", {step_path}).c_str(), stdout);
   return 0;
 }
 

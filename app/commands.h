@@ -20,16 +20,17 @@ struct SolveFlags {
 
 /// Solve a job, write DIR and print the summary (jobs/solve_summary.h) unless flags.quiet.
 int cmd_solve(const std::string& job_path, const std::string& out_dir, const SolveFlags& flags = {});
+/// sample, view and export print the files they wrote (files_line, jobs/solve_summary.h) unless quiet.
 int cmd_sample(const std::string& net_path, const std::string& out_dir, int samples,
-               const std::string& mesh_format = "ascii");
+               const std::string& mesh_format = "ascii", bool quiet = false);
 int cmd_energy(const std::string& net_path, const std::string& energy, std::optional<double> H);
 int cmd_check(const std::string& net_path, int samples);
 int cmd_plate(double aspect, int degree, const std::string& method);
 int cmd_blend(const std::string& config_path, const std::string& out_dir);
 /// DIR/view.html for DIR/result.json (its net sampled at `samples`, its report beside it).
-int cmd_view(const std::string& dir, int samples);
+int cmd_view(const std::string& dir, int samples, bool quiet = false);
 /// The exact patch of NET.json as STEP (io/step_export.h).
-int cmd_export(const std::string& net_path, const std::string& step_path);
+int cmd_export(const std::string& net_path, const std::string& step_path, bool quiet = false);
 /// The built-in default job (README's main command).
 int cmd_demo(const std::string& out_dir);
 

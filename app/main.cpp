@@ -96,6 +96,9 @@ int main(int argc, char** argv) {
   sample->add_option("--samples", samples, "Mesh resolution N (default 50)");
   sample->add_option("--mesh-format", mesh_format, "surface.ply/.vtp numbers: ascii (default) or binary (float32)");
   sample->add_flag("--progress", progress, progress_help);
+  bool quiet = false;
+  const char* quiet_help = "Print nothing on success (errors still go to stderr)";
+  sample->add_flag("-q,--quiet", quiet, quiet_help);
 
   std::string energy;
   std::optional<double> H;
@@ -126,11 +129,13 @@ int main(int argc, char** argv) {
   auto* view = app.add_subcommand("view", "Write DIR/view.html (web viewer) for the result.json in DIR");
   view->add_option("dir", in, "DIR holding result.json")->required();
   view->add_option("--samples", samples, "Mesh resolution N (default 50)");
+  view->add_flag("-q,--quiet", quiet, quiet_help);
 
   std::string step_path;
   auto* exp = app.add_subcommand("export", "Write the exact patch of a net for CAD (STEP, through OpenCASCADE)");
   exp->add_option("net", in, "NET.json")->required();
   exp->add_option("--step", step_path, "FILE.step")->required();
+  exp->add_flag("-q,--quiet", quiet, quiet_help);
 
   int sweep_jobs = 0;
   auto* sweep = app.add_subcommand("sweep", "Run a parameter sweep (FORMATS.md \"Sweeps\"): DIR/jobs/*, results.csv");
@@ -168,13 +173,13 @@ int main(int argc, char** argv) {
   try {
     using namespace bpde::app;
     if (*solve) return cmd_solve(in, out, solve_flags);
-    if (*sample) return cmd_sample(in, out, samples, mesh_format);
+    if (*sample) return cmd_sample(in, out, samples, mesh_format, quiet);
     if (*en) return cmd_energy(in, energy, H);
     if (*check) return cmd_check(in, samples);
     if (*plate) return cmd_plate(aspect, degree, method);
     if (*blend) return cmd_blend(in, out);
-    if (*view) return cmd_view(in, samples);
-    if (*exp) return cmd_export(in, step_path);
+    if (*view) return cmd_view(in, samples, quiet);
+    if (*exp) return cmd_export(in, step_path, quiet);
     if (*demo) return cmd_demo(demo_out);
     if (*sweep) return cmd_sweep(in, out, sweep_jobs);
   } catch (...) {

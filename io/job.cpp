@@ -87,13 +87,13 @@ EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_o
                    std::string(allow_operator ? ", operator" : "") + ")");
 }
 
-EnergySpec energy_from_argument(const std::string& arg) {
-  if (!arg.empty() && arg.front() == '{') return energy_from_json(parse_json(arg, "--energy"), "--energy", false);
+EnergySpec energy_from_argument(const std::string& arg, const std::string& name) {
+  if (!arg.empty() && arg.front() == '{') return energy_from_json(parse_json(arg, name), name, false);
   if (arg == "dirichlet") return EnergySpec::dirichlet();
   if (arg == "biharmonic") return EnergySpec::biharmonic();
   if (arg == "laplacian-squared") return EnergySpec::laplacian_squared();
   if (arg == "coons") return EnergySpec::coons();
-  throw ParseError("--energy: unknown energy \"" + arg +
+  throw ParseError(name + ": unknown energy \"" + arg +
                    "\" (a bare name is one of dirichlet, biharmonic, laplacian-squared, coons, cmc; "
                    "others are given as a JSON object such as {\"name\": \"gnorm\", \"rho\": 2, \"t\": 1})");
 }

@@ -56,8 +56,9 @@ struct Job {
 
 /// An ENERGY object (FORMATS.md). `allow_operator`: the "operator" form is accepted (pde only).
 EnergySpec energy_from_json(const Json& j, const std::string& path, bool allow_operator);
-/// The `--energy` argument of `bpde energy`: a bare name or an ENERGY JSON object.
-EnergySpec energy_from_argument(const std::string& arg);
+/// The `--energy` argument of `bpde energy`: a bare name or an ENERGY JSON object. Errors name the
+/// argument as `name` (the Python module passes its own argument's name).
+EnergySpec energy_from_argument(const std::string& arg, const std::string& name = "--energy");
 
 /// Parse a whole job: the net (or the "boundary" form, FORMATS.md "Boundary curves"), the fixed set, the problem (each field strictly, as FORMATS.md
 /// says). Throws InvalidInput subclasses naming the JSON path. Whether the solvers take the

@@ -21,10 +21,11 @@ double finite_energy(double x, const char* what) {
 
 }  // namespace
 
-Json energy_report(const Net& net, const std::string& energy, std::optional<double> H) {
-  if (H && !std::isfinite(*H)) throw NonFiniteError("--H is not finite");
+Json energy_report(const Net& net, const std::string& energy, std::optional<double> H,
+                   const EnergyArgumentNames& names) {
+  if (H && !std::isfinite(*H)) throw NonFiniteError(names.H + " is not finite");
   if (energy == "cmc") {
-    if (!H) throw ParseError("--energy cmc needs --H");
+    if (!H) throw ParseError(names.energy + " cmc needs " + names.H);
     CmcEnergies e;
     if (const auto* t = std::get_if<TensorNet>(&net))
       e = cmc_energies(*t, *H);
@@ -34,7 +35,7 @@ Json energy_report(const Net& net, const std::string& energy, std::optional<doub
       throw UnsupportedProblem("energy cmc needs a triangular or tensor net, not a " + net_kind(net) + " net");
     return Json{{"D", finite_energy(e.D, "D")}, {"V", finite_energy(e.V, "V")}, {"DH", finite_energy(e.DH, "D + 2HV")}};
   }
-  const EnergySpec spec = energy_from_argument(energy);
+  const EnergySpec spec = energy_from_argument(energy, names.energy);
   if (const auto* t = std::get_if<TensorNet>(&net))
     return Json{{"energy", finite_energy(energy_value(*t, spec), "the energy")}};
   if (const auto* t = std::get_if<TriangularNet>(&net)) {

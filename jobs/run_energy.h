@@ -12,6 +12,11 @@ namespace bpde {
 /// JSON object, io/job.h energy_from_argument), or {"D", "V", "DH"} for "cmc" (which needs H).
 /// Throws ParseError (unknown energy, cmc without H), NonFiniteError (H not finite, a value that
 /// overflows), UnsupportedProblem (cmc on a bspline net).
-Json energy_report(const Net& net, const std::string& energy, std::optional<double> H);
+/// Errors name the arguments as `names` says: the command's flags, or the Python arguments.
+struct EnergyArgumentNames {
+  std::string energy = "--energy", H = "--H";
+};
+Json energy_report(const Net& net, const std::string& energy, std::optional<double> H,
+                   const EnergyArgumentNames& names = {});
 
 }  // namespace bpde

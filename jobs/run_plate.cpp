@@ -8,10 +8,10 @@
 
 namespace bpde {
 
-PlateOutcome run_plate(double aspect, int degree, const std::string& method) {
-  if (!std::isfinite(aspect) || !(aspect > 0)) throw ParameterError("--aspect must be a finite number > 0");
+PlateOutcome run_plate(double aspect, int degree, const std::string& method, const PlateArgumentNames& names) {
+  if (!std::isfinite(aspect) || !(aspect > 0)) throw ParameterError(names.aspect + " must be a finite number > 0");
   if (method != "admissible-load" && method != "ritz")
-    throw ParseError("--method must be admissible-load or ritz, got \"" + method + "\"");
+    throw ParseError(names.method + " must be admissible-load or ritz, got \"" + method + "\"");
   ClampedPlateOptions o;
   o.aspect = aspect;
   o.degree = degree;

@@ -18,6 +18,11 @@ struct PlateOutcome {
 /// Solve the plate [0,1] x [0,aspect] of bidegree `degree` by `method` ("admissible-load" or
 /// "ritz"). Throws ParameterError (aspect not a finite number > 0), ParseError (another method)
 /// and the errors of ClampedPlateOptions::validate.
-PlateOutcome run_plate(double aspect, int degree, const std::string& method);
+/// Errors name the arguments as `names` says: the command's flags, or the Python arguments (the
+/// ranges of ClampedPlateOptions::validate name the options, aspect and degree, for both).
+struct PlateArgumentNames {
+  std::string aspect = "--aspect", method = "--method";
+};
+PlateOutcome run_plate(double aspect, int degree, const std::string& method, const PlateArgumentNames& names = {});
 
 }  // namespace bpde

@@ -32,8 +32,17 @@ std::string net_text(const Net& net) {
 
 }  // namespace
 
+std::string files_line(const std::string& dir, const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  if (names.size() != 1) list = "{" + list + "}";
+  std::string s;
+  line(s, "files", dir.empty() ? list : dir + "/" + list);
+  return s;
+}
+
 std::string solve_summary(const SolveOutcome& out, const WrittenResult& written, const std::string& job_path,
-                          const std::string& out_dir) {
+                          const std::string& out_dir, const std::vector<std::string>& files) {
   const SolveFigures& f = out.figures;
   std::string s = "bpde solve: " + job_path + "\n";
   std::string detail;  // "biharmonic, method explicit"
@@ -63,8 +72,7 @@ std::string solve_summary(const SolveOutcome& out, const WrittenResult& written,
                             number(h->mean, "%.6g") + " (away from the corners)"
                       : "none (no sample away from the corners)");
   if (written.check) line(s, "self-intersections", std::to_string(written.check->self_intersections));
-  line(s, "files", out_dir + "/{result.json, surface.obj, surface.ply, net.obj}");
-  return s;
+  return s + files_line(out_dir, files);
 }
 
 }  // namespace bpde

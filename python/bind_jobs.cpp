@@ -77,7 +77,7 @@ void bind_jobs(py::module_& m) {
         Json r;
         {
           py::gil_scoped_release release;
-          r = bpde::energy_report(n, energy, H);
+          r = bpde::energy_report(n, energy, H, {"energy", "H"});
         }
         return from_json(r);
       },
@@ -112,7 +112,7 @@ void bind_jobs(py::module_& m) {
         bpde::PlateOutcome out;
         {
           py::gil_scoped_release release;
-          out = bpde::run_plate(aspect, degree, method);
+          out = bpde::run_plate(aspect, degree, method, {"aspect", "method"});
         }
         return from_json(out.report);
       },

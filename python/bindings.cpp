@@ -99,7 +99,7 @@ bpde::FixedSet parse_fixed(const std::string& s) {
 }
 
 bpde::EnergySpec energy_arg(py::handle h) {
-  if (py::isinstance<py::str>(h)) return bpde::energy_from_argument(h.cast<std::string>());
+  if (py::isinstance<py::str>(h)) return bpde::energy_from_argument(h.cast<std::string>(), "energy");
   return bpde::energy_from_json(to_json(h), "operator", true);
 }
 

@@ -1,19 +1,22 @@
 """Smoothing PDE splines and B-spline extremals from Python: the two-cylinder blend of
 examples/003-blend-cylinders step by step, through the solver entry points (a notebook to copy).
 
-Run from the repository root after building:
+Run after building (from any folder: the example's files are found from this file's place):
     PYTHONPATH=build/python python3 examples/003-python-blend/blend.py
 Each block below is one notebook cell.
 """
 
 import json
+import pathlib
 
 import numpy as np
 
 import bezierpde
 
+EXAMPLES = pathlib.Path(__file__).resolve().parent.parent  # examples/
+
 # %% The blend config of Fig. 2c (nine approximation points, epsilon = 1e-3, a = 10), as `bpde blend` runs it.
-with open("examples/003-blend-cylinders/fig2c.json", encoding="utf-8") as f:
+with open(EXAMPLES / "003-blend-cylinders" / "fig2c.json", encoding="utf-8") as f:
     config = json.load(f)
 net, report = bezierpde.blend(config)
 print(f"bpde blend: J = {report['energy']:.9f}, max data error {report['max_data_error']:.3e}, "

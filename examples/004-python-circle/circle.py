@@ -1,21 +1,24 @@
 """bezierpde from Python, step by step: the circle of triangular CMC Fig. 1 (a notebook to copy).
 
-Run from the repository root after building:
+Run after building (from any folder: the example's files are found from this file's place):
     PYTHONPATH=build/python python3 examples/004-python-circle/circle.py [OUT_DIR]
 Each block below is one notebook cell.
 """
 
 import json
+import pathlib
 import sys
 
 import numpy as np
 
 import bezierpde
 
+EXAMPLES = pathlib.Path(__file__).resolve().parent.parent  # examples/
+
 out_dir = sys.argv[1] if len(sys.argv) > 1 else "out/004-python-circle"
 
 # %% A job is the dict of a JOB.json file: here the circle split into three arcs, degree 4, H = -1.
-with open("examples/004-cmc-circle/n4-b-H-1.json", encoding="utf-8") as f:
+with open(EXAMPLES / "004-cmc-circle" / "n4-b-H-1.json", encoding="utf-8") as f:
     job = json.load(f)
 print("job:", job["problem"], "degree", job["net"]["degree"])
 

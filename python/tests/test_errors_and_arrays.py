@@ -71,6 +71,29 @@ def test_other_bad_input():
         bezierpde.sweep({"base": circle_job(), "axes": {"problem.H": []}})
 
 
+@pytest.mark.parametrize(
+    "call,cls,argument",
+    [
+        (lambda net: bezierpde.energy(net, "cmc"), bezierpde.ParseError, "H"),
+        (lambda net: bezierpde.energy(net, "cmc", H=float("inf")), bezierpde.NonFiniteError, "H"),
+        (lambda net: bezierpde.energy(net, "no-such-energy"), bezierpde.ParseError, "energy"),
+        (lambda net: bezierpde.energy(net, '{"name": 3}'), bezierpde.ParseError, "energy"),
+        (lambda net: bezierpde.plate(1.0, 2, "ritz"), bezierpde.DegreeError, "degree"),
+        (lambda net: bezierpde.plate(1000.0, 8, "ritz"), bezierpde.ParameterError, "aspect"),
+        (lambda net: bezierpde.plate(-1.0, 8, "ritz"), bezierpde.ParameterError, "aspect"),
+        (lambda net: bezierpde.plate(1.0, 8, "magic"), bezierpde.ParseError, "method"),
+        (lambda net: bezierpde.sample(net, samples=0), bezierpde.ParameterError, "samples"),
+        (lambda net: bezierpde.solve_extremal(bezierpde.net_from_dict(net), "no-such-energy", "boundary"),
+         bezierpde.ParseError, "energy"),
+    ],
+)
+def test_errors_name_the_python_argument_not_a_command_flag(call, cls, argument):
+    with pytest.raises(cls) as e:
+        call(circle_job()["net"])
+    text = str(e.value)
+    assert argument in text and "--" not in text, text
+
+
 def test_arrays_shapes_and_views():
     job = circle_job(degree=5)
     net, report = bezierpde.solve(job)

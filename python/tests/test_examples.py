@@ -1,16 +1,20 @@
-"""The Python examples run as a user runs them, and say what their READMEs say."""
+"""The Python examples run as a user runs them, from any folder, and say what their READMEs say."""
 
 import os
 import subprocess
 import sys
+import tempfile
 
 from conftest import SOURCE_DIR
 
 
 def run_example(script, *args):
+    """The example's output, run as a user runs it from a folder of their own: a new temporary
+    folder, not the repository (an example finds its files from its own place)."""
     env = dict(os.environ)
-    p = subprocess.run([sys.executable, os.path.join(SOURCE_DIR, script), *args], capture_output=True, text=True,
-                       cwd=SOURCE_DIR, env=env, timeout=300)
+    with tempfile.TemporaryDirectory() as cwd:
+        p = subprocess.run([sys.executable, os.path.join(os.path.abspath(SOURCE_DIR), script), *args],
+                           capture_output=True, text=True, cwd=cwd, env=env, timeout=300)
     assert p.returncode == 0, p.stderr
     return p.stdout
 

@@ -337,10 +337,10 @@ ClampedPlateResult admissible_load(int n, double a) {
 }  // namespace
 
 void ClampedPlateOptions::validate() const {
-  if (!std::isfinite(aspect)) throw NonFiniteError("plate: --aspect is not a finite number");
+  if (!std::isfinite(aspect)) throw NonFiniteError("plate: aspect is not a finite number");
   if (!(aspect >= 0.01 && aspect <= 100.0))
-    throw ParameterError("plate: --aspect must be in [0.01, 100], got " + std::to_string(aspect));
-  if (degree < 4 || degree > 30) throw DegreeError("plate: --degree must be in 4..30, got " + std::to_string(degree));
+    throw ParameterError("plate: aspect must be in [0.01, 100], got " + std::to_string(aspect));
+  if (degree < 4 || degree > 30) throw DegreeError("plate: degree must be in 4..30, got " + std::to_string(degree));
   if (method != Method::AdmissibleLoad && method != Method::Ritz)
     throw ParameterError("plate: unknown method (use admissible-load or ritz)");
 }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace bpde::testing {
 
@@ -72,6 +73,28 @@ inline CmdResult run_with_limit(const std::string& args, int resource, rlim_t va
 /// run() with files limited to `max_file_bytes` (RLIMIT_FSIZE): every write past it fails.
 inline CmdResult run_with_file_limit(const std::string& args, rlim_t max_file_bytes) {
   return run_with_limit(args, RLIMIT_FSIZE, max_file_bytes);
+}
+
+/// The paths of the `files` line a writing command prints on stdout ("  files  DIR/{a, b}" or
+/// "  files  PATH"; jobs/solve_summary.h files_line); none when there is no such line.
+inline std::vector<fs::path> printed_files(const std::string& out) {
+  const std::string label = "  files ";
+  std::vector<fs::path> paths;
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind(label, 0) != 0) continue;
+    std::string text = line.substr(line.find_first_not_of(' ', label.size()));
+    const std::size_t brace = text.find("/{");
+    if (brace == std::string::npos || text.back() != '}') {
+      paths.emplace_back(text);
+      continue;
+    }
+    const fs::path dir = text.substr(0, brace);
+    std::istringstream names(text.substr(brace + 2, text.size() - brace - 3));
+    for (std::string name; std::getline(names, name, ',');)
+      paths.push_back(dir / name.substr(name.find_first_not_of(' ')));
+  }
+  return paths;
 }
 
 /// Write `text` to tmpdir()/name and return its path.

@@ -187,3 +187,67 @@ TEST(CliUsability, ProgressGoesToStderrWhenForcedAndNothingOtherwise) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
+
+// Every command that writes files prints them, one `files` line, as `bpde solve` does (every file
+// it wrote, no other), and --quiet prints nothing.
+TEST(CliUsability, WritingCommandsPrintTheFilesTheyWroteUnlessQuiet) {
+  using bpde::testing::printed_files;
+  // the names in a folder, and the printed paths' names (each of them a file that exists)
+  auto listing = [](const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  auto printed = [](const CmdResult& r, const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const fs::path& p : printed_files(r.out)) {
+      EXPECT_TRUE(fs::is_regular_file(p)) << p << "\n" << r.out;
+      EXPECT_EQ(p.parent_path(), dir) << p;
+      names.push_back(p.filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  std::string job = slurp(kPdeJob);
+  job = job.substr(0, job.rfind('}')) + R"(, "export": ["step", "html"]})";
+  const fs::path job_path = write("files_job.json", job), solved = tmpdir() / "files_solve";
+  CmdResult r = run("solve " + job_path.string() + " --out " + solved.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(printed(r, solved), listing(solved)) << r.out;
+  EXPECT_EQ(listing(solved).size(), 7u);  // result.json, 3 surfaces, net.obj, surface.step, view.html
+
+  const fs::path sampled = tmpdir() / "files_sample";
+  r = run("sample " + (solved / "result.json").string() + " --samples 5 --out " + sampled.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(printed(r, sampled), listing(sampled)) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+
+  fs::remove(solved / "view.html");
+  r = run("view " + solved.string() + " --samples 5");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(printed(r, solved), std::vector<std::string>{"view.html"}) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+
+  const fs::path net = write("files_net.json", R"({"type": "tensor", "degree": [1, 1], )"
+                                               R"("points": [[0,0,0],[0,1,0],[1,0,0],[1,1,1]]})");
+  const fs::path step = tmpdir() / "files_export" / "net.step";
+  fs::create_directories(step.parent_path());
+  r = run("export " + net.string() + " --step " + step.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(printed(r, step.parent_path()), std::vector<std::string>{"net.step"}) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+
+  // --quiet (and -q): nothing on stdout, the same files written
+  for (const std::string& cmd : {"sample " + net.string() + " --samples 3 --quiet --out " +
+                                     (tmpdir() / "files_quiet").string(),
+                                 "view " + solved.string() + " -q --samples 3",
+                                 "export " + net.string() + " --quiet --step " + (tmpdir() / "quiet.step").string()}) {
+    r = run(cmd);
+    EXPECT_EQ(r.status, 0) << cmd << "\n" << r.err;
+    EXPECT_EQ(r.out, "") << cmd;
+    EXPECT_EQ(r.err, "") << cmd;
+  }
+  EXPECT_EQ(listing(tmpdir() / "files_quiet").size(), 4u);
+  EXPECT_TRUE(fs::is_regular_file(tmpdir() / "quiet.step"));
+}

@@ -2,8 +2,10 @@
 // VTP), by running the binary.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_run.h"
 
@@ -91,7 +93,8 @@ TEST(CliSurfaceOutputs, StepExportFromTheCommandAndFromAJob) {
   const fs::path step = tmpdir() / "net.step";
   CmdResult r = run("export " + net.string() + " --step " + step.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out, "");  // OpenCASCADE's messages stay off stdout
+  EXPECT_EQ(bpde::testing::printed_files(r.out), std::vector<fs::path>{step});
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;  // OpenCASCADE's messages stay off stdout
   const std::string text = slurp(step);
   EXPECT_EQ(text.rfind("ISO-10303-21;", 0), 0u);
   EXPECT_NE(text.find("B_SPLINE_SURFACE"), std::string::npos);
