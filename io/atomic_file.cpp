@@ -20,8 +20,13 @@ namespace fs = std::filesystem;
 std::string temp_path_for(const std::string& path) {
   static std::atomic<unsigned long> counter{0};
   const fs::path p(path);
-  const std::string name = "." + p.filename().string() + ".bpde-tmp-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(counter.fetch_add(1));
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "." + std::string.
+  std::string name(1, '.');
+  name += p.filename().string();
+  name += ".bpde-tmp-";
+  name += std::to_string(::getpid());
+  name += '-';
+  name += std::to_string(counter.fetch_add(1));
   return (p.parent_path() / name).string();
 }
 

@@ -23,7 +23,10 @@ namespace {
 // A sweep of `n` quick jobs (a biquadratic Dirichlet extremal at 2 samples, one corner moved).
 fs::path quick_sweep(const std::string& name, int n) {
   std::string values;
-  for (int k = 0; k < n; ++k) values += (k ? "," : "") + std::to_string(k * 0.001);
+  for (int k = 0; k < n; ++k) {
+    if (k > 0) values += ',';
+    values += std::to_string(k * 0.001);
+  }
   return write(name, R"({"base": {"net": {"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],)"
                      R"([0,1,0],[0.5,0,0],[0,0,0],[0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]},)"
                      R"( "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "samples": 2},)"
