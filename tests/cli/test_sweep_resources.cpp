@@ -70,7 +70,10 @@ TEST(SweepResources, RefusedThreadsAndMemoryAreNotAnAbort) {
   // Larger meshes on 64 threads in the same space: some jobs run out of memory, and memory may run
   // out where C++ cannot throw (a JSON value freed under a noexcept destructor): exit 0 or 3.
   std::string samples;
-  for (int k = 2; k < 66; ++k) samples += (k > 2 ? "," : "") + std::to_string(k);
+  for (int k = 2; k < 66; ++k) {
+    if (k > 2) samples += ',';
+    samples += std::to_string(k);
+  }
   std::string big = slurp(quick_sweep("sr_mem.json", 1));
   big = big.substr(0, big.rfind("\"axes\"")) + R"("axes": {"samples": [)" + samples + "]}}";
   const fs::path out2 = tmpdir() / "sr_mem_out";
