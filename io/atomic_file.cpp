@@ -34,21 +34,9 @@ std::string temp_path_for(const std::string& path) {
   throw FileError("cannot write file '" + path + "' (" + what + ": " + std::strerror(err) + ")");
 }
 
-// fsync and rename `tmp` onto `path`; removes `tmp` and throws FileError on failure.
-void commit(const std::string& tmp, const std::string& path) {
-  const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    fail(path, "open", err);
-  }
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    const int err = errno ? errno : EINVAL;
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    fail(path, "not a regular file", err);
-  }
+// fsync and close `fd` (open on `tmp`), then rename `tmp` onto `path`; removes `tmp` and throws
+// FileError on failure.
+void sync_close_rename(int fd, const std::string& tmp, const std::string& path) {
   if (::fsync(fd) != 0) {
     const int err = errno;
     ::close(fd);
@@ -65,6 +53,24 @@ void commit(const std::string& tmp, const std::string& path) {
     ::unlink(tmp.c_str());
     fail(path, "rename", err);
   }
+}
+
+// fsync and rename `tmp` onto `path`; removes `tmp` and throws FileError on failure.
+void commit(const std::string& tmp, const std::string& path) {
+  const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    fail(path, "open", err);
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    const int err = errno ? errno : EINVAL;
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    fail(path, "not a regular file", err);
+  }
+  sync_close_rename(fd, tmp, path);
 }
 
 }  // namespace
@@ -87,22 +93,7 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
     p += n;
     left -= static_cast<size_t>(n);
   }
-  if (::fsync(fd) != 0) {
-    const int err = errno;
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    fail(path, "fsync", err);
-  }
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    fail(path, "close", err);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    fail(path, "rename", err);
-  }
+  sync_close_rename(fd, tmp, path);
 }
 
 void replace_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write_to) {
