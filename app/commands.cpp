@@ -114,7 +114,7 @@ int cmd_view(const std::string& dir, int samples, bool quiet) {
 }
 
 int cmd_export(const std::string& net_path, const std::string& step_path, bool quiet) {
-  write_step(step_path, read_net_file(net_path));
+  write_step(step_path, read_net_input(net_path));
   if (!quiet) std::fputs(files_line("", {step_path}).c_str(), stdout);
   return 0;
 }

@@ -118,3 +118,17 @@ TEST(CliSurfaceOutputs, StepExportFromTheCommandAndFromAJob) {
   r = run("export " + net.string() + " --step /nonexistent-dir/x.step");
   EXPECT_EQ(r.status, 2) << r.err;
 }
+
+TEST(CliSurfaceOutputs, StepExportReadsTheResultJsonBpdeWrites) {
+  const fs::path out = tmpdir() / "step_from_result";
+  CmdResult r = run("solve " + write("step_result_job.json", std::string(kDirichletJob) + "}").string() + " --out " +
+                    out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const fs::path step = tmpdir() / "from_result.step";
+  fs::remove(step);
+  r = run("export " + (out / "result.json").string() + " --step " + step.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(fs::exists(step));
+  EXPECT_GT(fs::file_size(step), 0u);
+  EXPECT_EQ(slurp(step).rfind("ISO-10303-21;", 0), 0u);
+}
