@@ -142,6 +142,7 @@ int main(int argc, char** argv) {
   sweep->add_option("sweep", in, "SWEEP.json")->required();
   sweep->add_option("--out", out, "Output directory (rerunning skips the jobs already done)")->required();
   sweep->add_option("--jobs", sweep_jobs, "Jobs run at once (default 0: every core)");
+  sweep->add_flag("--progress", progress, "One progress line per job on stderr, also on a terminal (no bar)");
 
   std::string demo_out = "out/demo";
   auto* demo = app.add_subcommand("demo", "Run the built-in default job (the README's main command)");
@@ -165,7 +166,8 @@ int main(int argc, char** argv) {
   // is installed and the library does not format a single progress line.
   std::optional<bpde::app::ProgressLine> line;
   std::optional<bpde::JobProgressScope> scope;
-  if (bpde::app::progress_wanted(progress)) {
+  // A sweep reports per job (app/sweep_command.h): its jobs' stages would interleave.
+  if (!*sweep && bpde::app::progress_wanted(progress)) {
     line.emplace(stderr, ::isatty(STDERR_FILENO) == 1);
     scope.emplace(line->callback());
   }
@@ -181,7 +183,7 @@ int main(int argc, char** argv) {
     if (*view) return cmd_view(in, samples, quiet);
     if (*exp) return cmd_export(in, step_path, quiet);
     if (*demo) return cmd_demo(demo_out);
-    if (*sweep) return cmd_sweep(in, out, sweep_jobs);
+    if (*sweep) return cmd_sweep(in, out, sweep_jobs, progress);
   } catch (...) {
     // InvalidInput: exit 2; out of memory, broken invariants, anything else: exit 3.
     const bpde::ErrorExit x = bpde::error_exit(std::current_exception());

@@ -50,12 +50,12 @@ void print_progress(const SweepProgress& p, bool terminal) {
 
 }  // namespace
 
-int cmd_sweep(const std::string& sweep_path, const std::string& out_dir, int jobs) {
+int cmd_sweep(const std::string& sweep_path, const std::string& out_dir, int jobs, bool lines) {
   if (jobs < 0 || jobs > kMaxSweepThreads)
     throw ParameterError("--jobs must be 0.." + std::to_string(kMaxSweepThreads) + " (0: every core), got " +
                          std::to_string(jobs));
   const SweepSpec spec = read_sweep_file(sweep_path);
-  const bool terminal = isatty(fileno(stderr)) != 0;
+  const bool terminal = !lines && isatty(fileno(stderr)) != 0;
   SweepRunOptions options;
   options.jobs = jobs;
   options.on_progress = [terminal](const SweepProgress& p) { print_progress(p, terminal); };

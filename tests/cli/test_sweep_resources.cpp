@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <regex>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "bezierpde/jobs/sweep.h"
 #include "tests/cli/cli_run.h"
@@ -47,6 +50,42 @@ TEST(SweepResources, JobsAreBounded) {
   const CmdResult r = run("sweep " + spec.string() + " --out " + out.string() + " --jobs " +
                           std::to_string(bpde::kMaxSweepThreads));
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// The rows of DIR/results.jsonl without their wall times.
+std::vector<bpde::Json> rows_without_seconds(const fs::path& dir) {
+  std::vector<bpde::Json> rows;
+  std::istringstream in(slurp(dir / "results.jsonl"));
+  for (std::string line; std::getline(in, line);) {
+    bpde::Json row = bpde::Json::parse(line);
+    row.erase("seconds");
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// `--progress` is accepted as by `solve`: one `sweep: K/N ...` line per job on stderr (FORMATS.md
+// "Sweeps"), the same results as without it.
+TEST(SweepResources, ProgressGivesOneLinePerJob) {
+  const fs::path spec = quick_sweep("sr_progress.json", 3);
+  const fs::path plain = tmpdir() / "sr_progress_plain", with = tmpdir() / "sr_progress_with";
+  fs::remove_all(plain);
+  fs::remove_all(with);
+  ASSERT_EQ(run("sweep " + spec.string() + " --out " + plain.string()).status, 0);
+  const CmdResult r = run("sweep " + spec.string() + " --out " + with.string() + " --progress");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(rows_without_seconds(with), rows_without_seconds(plain));
+  EXPECT_EQ(rows_without_seconds(with).size(), 3u);
+  const std::regex job_line("sweep: [0-9]+/3 .*"), header("sweep: 3 jobs, 0 already done");
+  std::istringstream err(r.err);
+  int job_lines = 0, headers = 0, lines = 0;
+  for (std::string line; std::getline(err, line); ++lines) {
+    job_lines += std::regex_match(line, job_line);
+    headers += std::regex_match(line, header);
+  }
+  EXPECT_EQ(job_lines, 3) << r.err;
+  EXPECT_EQ(headers, 1) << r.err;
+  EXPECT_EQ(lines, 4) << r.err;  // no stage lines of the jobs in between
 }
 
 // 300 threads of 8 MiB stacks do not fit a 1 GiB address space: the pool stops growing where the
