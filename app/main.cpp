@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
 
   std::string step_path;
   auto* exp = app.add_subcommand("export", "Write the exact patch of a net for CAD (STEP, through OpenCASCADE)");
-  exp->add_option("net", in, "NET.json")->required();
+  exp->add_option("net", in, "NET.json (or a result.json of bpde: its net)")->required();
   exp->add_option("--step", step_path, "FILE.step")->required();
   exp->add_flag("-q,--quiet", quiet, quiet_help);
 
