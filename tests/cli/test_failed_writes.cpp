@@ -93,3 +93,25 @@ TEST(FailedWrites, AtomicWriteRefusesADirectoryTargetAndLeavesNoTemporary) {
   EXPECT_EQ(slurp(dir / "f"), "new");
   EXPECT_EQ(extra_files(dir, {"target", "f"}), std::vector<std::string>{});
 }
+
+// A table that cannot be replaced (results.csv is a folder) fails the sweep before any job runs:
+// exit 2, no job folder, no temporary in --out.
+TEST(FailedWrites, SweepChecksItsTablesBeforeRunningJobs) {
+  const std::string sweep = std::string(R"({"base": {"net": )") + kNet +
+                            R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}},)"
+                            R"( "axes": {"samples": [4, 5]}})";
+  const fs::path spec = write("fw_sweep_dir.json", sweep);
+  const fs::path out = tmpdir() / "fw_sweep_csv_dir";
+  fs::remove_all(out);
+  fs::create_directories(out / "results.csv");
+  const CmdResult r = run("sweep " + spec.string() + " --out " + out.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(fs::is_directory(out / "results.csv"));
+  EXPECT_FALSE(fs::exists(out / "jobs"));
+  EXPECT_EQ(extra_files(out, {"results.csv"}), std::vector<std::string>{});
+  EXPECT_EQ(extra_files(out / "results.csv", {}), std::vector<std::string>{});
+  // --out a file: exit 2, the file left as it was.
+  const fs::path file = write("fw_sweep_out_file", "keep\n");
+  EXPECT_EQ(run("sweep " + spec.string() + " --out " + file.string()).status, 2);
+  EXPECT_EQ(slurp(file), "keep\n");
+}
