@@ -1,6 +1,14 @@
 #include "bezierpde/io/output_folder.h"
 
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/syscall.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <mutex>
 
 #include <algorithm>
 #include <atomic>
@@ -45,6 +53,98 @@ bool writable_dir(const fs::path& p) { return ::access(p.c_str(), W_OK | X_OK) =
 std::string unique_staging_name() {
   static std::atomic<unsigned> counter{0};
   return ".bpde-staging-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+
+// SIGINT/SIGTERM while a staging folder exists: the handler removes every registered staging
+// folder (its files and the one `.previous` level, with async-signal-safe calls only), then
+// re-raises the signal with its default action. A folder that is being committed is left alone:
+// its `.previous` may hold DIR's old files. Installed on first use, only over the default action.
+constexpr int kStagingSlots = 64;
+struct StagingSlot {
+  std::atomic<int> state{0};  // 0 free, 1 claimed (being set), 2 staging, 3 committing
+  char path[PATH_MAX + 1];
+};
+StagingSlot g_slots[kStagingSlots];
+
+// Remove the entries of the folder `fd` (plain files; folders one level deep when depth > 0).
+void unlink_entries(int fd, int depth) {
+  alignas(8) char buf[4096];
+  for (;;) {
+    const long n = ::syscall(SYS_getdents64, fd, buf, sizeof buf);
+    if (n <= 0) return;
+    for (long off = 0; off < n;) {
+      struct Dirent {
+        unsigned long long ino;
+        long long off;
+        unsigned short reclen;
+        unsigned char type;
+        char name[1];
+      };
+      const auto* d = reinterpret_cast<const Dirent*>(buf + off);
+      off += d->reclen;
+      const char* name = d->name;
+      if (!std::strcmp(name, ".") || !std::strcmp(name, "..")) continue;
+      if (::unlinkat(fd, name, 0) == 0) continue;
+      if (depth > 0) {
+        const int sub = ::openat(fd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+        if (sub >= 0) {
+          unlink_entries(sub, depth - 1);
+          ::close(sub);
+        }
+        ::unlinkat(fd, name, AT_REMOVEDIR);
+      }
+    }
+  }
+}
+
+extern "C" void remove_staging_on_signal(int sig) {
+  const int saved = errno;
+  for (StagingSlot& slot : g_slots) {
+    if (slot.state.load() != 2) continue;
+    const int fd = ::open(slot.path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd >= 0) {
+      unlink_entries(fd, 1);
+      ::close(fd);
+    }
+    ::rmdir(slot.path);
+  }
+  errno = saved;
+  std::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+void install_staging_handlers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (const int sig : {SIGINT, SIGTERM}) {
+      struct sigaction old {};
+      if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL || (old.sa_flags & SA_SIGINFO)) continue;
+      struct sigaction sa {};
+      sa.sa_handler = remove_staging_on_signal;
+      sigemptyset(&sa.sa_mask);
+      sigaddset(&sa.sa_mask, SIGINT);
+      sigaddset(&sa.sa_mask, SIGTERM);
+      ::sigaction(sig, &sa, nullptr);
+    }
+  });
+}
+
+// The slot of a new staging folder (-1: none free; the folder is then not cleaned on a signal).
+int register_staging(const std::string& path) {
+  install_staging_handlers();
+  if (path.size() > PATH_MAX) return -1;
+  for (int i = 0; i < kStagingSlots; ++i) {
+    int expected = 0;
+    if (!g_slots[i].state.compare_exchange_strong(expected, 1)) continue;
+    std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
+    g_slots[i].state.store(2);
+    return i;
+  }
+  return -1;
+}
+
+void set_staging_state(int slot, int state) {
+  if (slot >= 0) g_slots[slot].state.store(state);
 }
 
 }  // namespace
@@ -96,6 +196,7 @@ void OutputFolder::stage() {
                     (ec ? ec.message() : std::string("a parent is not a directory")));
   }
   const fs::path s = parent / unique_staging_name();
+  slot_ = register_staging(s.string());
   if (!fs::create_directory(s, ec) || ec) {
     abandon();
     throw FileError("cannot create output directory '" + dir_ + "': " + ec.message());
@@ -118,10 +219,19 @@ void OutputFolder::commit() {
   check(dir_, names_);
   const fs::path t(target_), s(staging_);
   std::error_code ec;
+  set_staging_state(slot_, 3);
+  struct Release {  // back to "staging" if the commit throws (abandon() then removes it)
+    OutputFolder& self;
+    ~Release() {
+      if (!self.committed_) set_staging_state(self.slot_, 2);
+    }
+  } release{*this};
   if (!exists_no_follow(t)) {
     fs::rename(s, t, ec);
     if (ec) throw FileError("cannot write output directory '" + dir_ + "': " + ec.message());
     committed_ = true;
+    set_staging_state(slot_, 0);
+    slot_ = -1;
     return;
   }
   // DIR exists: replace its files one by one, keeping the old ones until the last move succeeded.
@@ -164,12 +274,16 @@ void OutputFolder::commit() {
   }
   committed_ = true;
   fs::remove_all(s, ec);  // the replaced files (a leftover folder is harmless)
+  set_staging_state(slot_, 0);
+  slot_ = -1;
 }
 
 void OutputFolder::abandon() noexcept {
   std::error_code ec;
   if (!staging_.empty()) fs::remove_all(staging_, ec);
   staging_.clear();
+  set_staging_state(slot_, 0);
+  slot_ = -1;
   // Only folders this object created, which hold nothing but the staging folder's chain.
   if (!created_.empty()) fs::remove_all(created_, ec);
   created_.clear();

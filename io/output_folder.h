@@ -55,6 +55,7 @@ class OutputFolder {
   std::vector<std::string> names_;
   std::vector<bool> written_;
   bool committed_ = false;
+  int slot_ = -1;  ///< its entry in the table the SIGINT/SIGTERM handler cleans (-1: none)
 };
 
 }  // namespace bpde

@@ -11,6 +11,8 @@
 #include <mutex>
 #include <thread>
 
+#include <unistd.h>
+
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/io/atomic_file.h"
@@ -29,6 +31,23 @@ void make_output_dir(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) throw FileError("cannot create the folder '" + dir + "'");
+}
+
+// Before any job runs: --out, when it exists, is a folder this process can write, and each table
+// (results.csv, results.jsonl) is absent or a file the final rename can replace. A sweep that
+// could not write its tables fails here, with nothing run and nothing left in --out.
+void check_sweep_outputs(const std::string& out_dir) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(out_dir, ec);
+  if (!fs::exists(st)) return;  // created by make_output_dir, which reports a failure
+  if (!fs::is_directory(st)) throw FileError("--out '" + out_dir + "' is not a folder");
+  if (::access(out_dir.c_str(), W_OK | X_OK) != 0) throw FileError("cannot write into the folder '" + out_dir + "'");
+  for (const char* name : {"results.csv", "results.jsonl"}) {
+    const std::string path = out_dir + "/" + name;
+    const fs::file_status t = fs::symlink_status(path, ec);
+    if (fs::exists(t) && !fs::is_regular_file(t) && !fs::is_symlink(t))
+      throw FileError("'" + path + "' exists and is not a file: the sweep cannot replace it");
+  }
 }
 
 std::vector<std::string> split_path(const std::string& path) {
@@ -388,6 +407,7 @@ std::vector<Json> run_sweep(const SweepSpec& spec, const std::string& out_dir, c
     throw ParameterError("jobs: expected 0.." + std::to_string(kMaxSweepThreads) + ", got " +
                          std::to_string(options.jobs));
   const std::vector<SweepJob> jobs = expand_sweep(spec);
+  check_sweep_outputs(out_dir);
   make_output_dir(out_dir + "/jobs");
   const double t0 = now_seconds();
   std::vector<Json> rows(jobs.size());

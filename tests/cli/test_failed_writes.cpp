@@ -4,7 +4,14 @@
 // tables and the STEP file byte for byte, with no temporary beside them.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
+#include <thread>
 #include <string>
 
 #include "bezierpde/io/atomic_file.h"
@@ -92,4 +99,69 @@ TEST(FailedWrites, AtomicWriteRefusesADirectoryTargetAndLeavesNoTemporary) {
                bpde::FileError);
   EXPECT_EQ(slurp(dir / "f"), "new");
   EXPECT_EQ(extra_files(dir, {"target", "f"}), std::vector<std::string>{});
+}
+
+// A table that cannot be replaced (results.csv is a folder) fails the sweep before any job runs:
+// exit 2, no job folder, no temporary in --out.
+TEST(FailedWrites, SweepChecksItsTablesBeforeRunningJobs) {
+  const std::string sweep = std::string(R"({"base": {"net": )") + kNet +
+                            R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}},)"
+                            R"( "axes": {"samples": [4, 5]}})";
+  const fs::path spec = write("fw_sweep_dir.json", sweep);
+  const fs::path out = tmpdir() / "fw_sweep_csv_dir";
+  fs::remove_all(out);
+  fs::create_directories(out / "results.csv");
+  const CmdResult r = run("sweep " + spec.string() + " --out " + out.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(fs::is_directory(out / "results.csv"));
+  EXPECT_FALSE(fs::exists(out / "jobs"));
+  EXPECT_EQ(extra_files(out, {"results.csv"}), std::vector<std::string>{});
+  EXPECT_EQ(extra_files(out / "results.csv", {}), std::vector<std::string>{});
+  // --out a file: exit 2, the file left as it was.
+  const fs::path file = write("fw_sweep_out_file", "keep\n");
+  EXPECT_EQ(run("sweep " + spec.string() + " --out " + file.string()).status, 2);
+  EXPECT_EQ(slurp(file), "keep\n");
+}
+
+// SIGINT or SIGTERM while the files are being written into the staging folder: the process dies
+// of the signal and leaves no `.bpde-staging-*` folder beside DIR (only SIGKILL may leave one).
+TEST(FailedWrites, SignalDuringTheWritePhaseRemovesTheStagingFolder) {
+  const fs::path net = write("fw_signal_net.json", kNet);
+  const auto staging_in = [](const fs::path& dir) {
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().filename().string().rfind(".bpde-staging-", 0) == 0) return true;
+    return false;
+  };
+  for (const int sig : {SIGTERM, SIGINT}) {
+    const fs::path parent = tmpdir() / ("fw_signal_" + std::to_string(sig));
+    fs::remove_all(parent);
+    fs::create_directories(parent);
+    const std::string out = (parent / "out").string();
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, 1);
+      ::dup2(null, 2);
+      // About 160 MB of surface files: the write phase lasts long enough to be caught.
+      ::execl(BPDE_BINARY, "bpde", "sample", net.c_str(), "--out", out.c_str(), "--samples", "600",
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    bool seen = false;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!seen && std::chrono::steady_clock::now() < until) {
+      int st = 0;
+      if (::waitpid(pid, &st, WNOHANG) == pid) break;  // finished before the folder was seen
+      seen = staging_in(parent);
+      if (!seen) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    if (seen) ::kill(pid, sig);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (!seen) GTEST_SKIP() << "the write phase ended before the staging folder was seen";
+    if (WIFSIGNALED(status)) EXPECT_EQ(WTERMSIG(status), sig);
+    EXPECT_FALSE(staging_in(parent));
+    fs::remove_all(parent);
+  }
 }
