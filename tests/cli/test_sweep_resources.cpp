@@ -106,8 +106,10 @@ TEST(SweepResources, RefusedThreadsAndMemoryAreNotAnAbort) {
     const std::string csv = slurp(out / "results.csv");
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 301);
   }
-  // Larger meshes on 64 threads in the same space: some jobs run out of memory, and memory may run
-  // out where C++ cannot throw (a JSON value freed under a noexcept destructor): exit 0 or 3.
+  // Larger meshes on 64 threads in the same space: some jobs run out of memory (their rows say
+  // internal-error and the sweep exits 1, as for any job that did not converge), and memory may run
+  // out where C++ cannot throw (a JSON value freed under a noexcept destructor: exit 3). Which one
+  // happens depends on timing; never a signal.
   std::string samples;
   for (int k = 2; k < 66; ++k) {
     if (k > 2) samples += ',';
@@ -120,5 +122,5 @@ TEST(SweepResources, RefusedThreadsAndMemoryAreNotAnAbort) {
   const CmdResult m = run_with_limit("sweep " + write("sr_mem.json", big).string() + " --out " + out2.string() +
                                          " --jobs 64",
                                      RLIMIT_AS, rlim_t{1} << 30);
-  EXPECT_TRUE(m.status == 0 || m.status == 3) << m.status << "\n" << m.err;
+  EXPECT_TRUE(m.status == 0 || m.status == 1 || m.status == 3) << m.status << "\n" << m.err;
 }
