@@ -101,7 +101,7 @@ TEST(SweepResources, RefusedThreadsAndMemoryAreNotAnAbort) {
   const CmdResult r = run_with_limit("sweep " + spec.string() + " --out " + out.string() + " --jobs " +
                                          std::to_string(bpde::kMaxSweepThreads),
                                      RLIMIT_AS, rlim_t{1} << 30);
-  ASSERT_TRUE(r.status == 0 || r.status == 3) << r.status << "\n" << r.err;
+  ASSERT_TRUE(r.status == 0 || r.status == 1 || r.status == 3) << r.status << "\n" << r.err;  // never a signal
   if (r.status == 0) {
     const std::string csv = slurp(out / "results.csv");
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 301);
