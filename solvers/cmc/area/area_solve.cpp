@@ -125,7 +125,7 @@ bool AreaSolve<Net>::strict_minimum(double H, Eigen::VectorXd* tangent) {
 // mean-curvature-start cost up to 0.3 s. Leaves the net and the rule as they were.
 template <class Net>
 double AreaSolve<Net>::dirichlet_first_variation(const double* V0) {
-  const CmcResult<Net> d = dirichlet_solution(o.H, V0);
+  const CmcResult<Net>& d = dirichlet_solution(o.H, V0);  // the cached start, not a copy
   if (!d.summary.converged) return std::numeric_limits<double>::infinity();
   const Eigen::MatrixX3d P0 = p.base.P;
   const std::shared_ptr<const AreaForm> a0 = p.a;

@@ -17,7 +17,7 @@ namespace bpde::cmc_detail::area_impl {
 // where A's Hessian is singular in every in-plane direction.
 template <class Net>
 AreaOutcome AreaSolve<Net>::from_dirichlet_volume(double V0) {
-  const CmcResult<Net> d = dirichlet_solution(o.H, &V0);
+  const CmcResult<Net>& d = dirichlet_solution(o.H, &V0);  // the cached start, not a copy
   if (!d.summary.converged) return {d.H, false, Status::NoConvergence, "no minimiser of D at V = " + num(V0)};
   p.base.P = d.net.points();
   double H = d.H;
