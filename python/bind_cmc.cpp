@@ -43,6 +43,11 @@ void bind_cmc(py::module_& m) {
       .def_readonly("tried", &bpde::AreaRouteRecord::tried)
       .def_readonly("status", &bpde::AreaRouteRecord::status)
       .def_readonly("first_variation", &bpde::AreaRouteRecord::first_variation, "None where the route failed")
+      .def_readonly("least_squares_residual", &bpde::AreaRouteRecord::least_squares_residual,
+                    "mean-curvature-start: √Φ of its least squares (None otherwise)")
+      .def_readonly("least_squares_converged", &bpde::AreaRouteRecord::least_squares_converged)
+      .def_readonly("start_volume", &bpde::AreaRouteRecord::start_volume,
+                    "smaller-volume-start: the volume V1 its continuation started from (None otherwise)")
       .def_readonly("iterations", &bpde::AreaRouteRecord::iterations)
       .def_readonly("continuation_steps", &bpde::AreaRouteRecord::continuation_steps)
       .def_readonly("seconds", &bpde::AreaRouteRecord::seconds)

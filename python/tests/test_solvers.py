@@ -459,6 +459,10 @@ def test_area_solve_reports_its_routes_as_the_job_does():
     assert 0 <= kept[0]["first_variation"] <= 1e-11
     assert r.routes[0].status == bezierpde.Status.Converged and r.routes[0].tried
     assert r.routes[0].first_variation <= 1e-11
+    # the least squares of mean-curvature-start converged here (√Φ within 1e-6), in both records
+    assert r.routes[0].least_squares_converged and 0 < r.routes[0].least_squares_residual <= 1e-6
+    assert kept[0]["least_squares_residual"] == r.routes[0].least_squares_residual
+    assert kept[0]["start_volume"] is None and r.routes[0].start_volume is None
     assert "mean-curvature-start: converged" in r.routes_report
     assert r.parametrisation["regular"] and r.parametrisation["checked"]
     assert report["parametrisation"]["regular"] and report["parametrisation"]["fold_corner_angle"] is None
