@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerate (or check) the generated sections of the docs from the example programs.
 
-Usage: docs.py [--check] [--full] [--build DIR] [EXAMPLE ...]
+Usage: docs.py [--check] [--full] [--bench | --bench-from FILE] [--build DIR] [EXAMPLE ...]
 
 Every example program (examples/NNN-name/main.cpp, built as build/example_NNN_name) prints its
 tables between marker lines
@@ -17,7 +17,7 @@ differs, when a program prints a section that no doc holds, or when a doc holds 
 program printed. Columns named in `machine-dependent:` (timings) are not compared. The columns
 that ROUNDING below names for a section hold numbers whose last printed digit depends on how the
 build rounds (FMA contraction with -march=native against the portable build,
-docs/performance_measurements.md, section 2): there each number may differ from the documented
+docs/performance_measurements.md, "Kernels"): there each number may differ from the documented
 one by one unit of its last printed digit (1.000001 against 1.000002; -0.0000 against 0.0000), and
 a bound "< 1eK" (examples/common/generated.h, order_bound) by one power of ten; the text around
 the numbers must be the same. Anything more is a difference.
@@ -26,6 +26,14 @@ Heavy tables: sections whose name ends in "-full" are printed only when the prog
 extra arguments of FULL_ARGS (minutes, not for CI). `--full` runs those programs with them and
 rewrites (or, with --check, compares) the "-full" sections too; without it they are left as they
 are and not compared.
+
+Benchmark tables: sections whose name starts with "bench-" (docs/performance.md,
+docs/performance_measurements.md) are printed by scripts/bench_tables.py, which runs bpde_bench
+(Google Benchmark, bench/) for minutes. `--bench` runs it (`--bench-from FILE` takes its saved
+output instead) and rewrites those sections whenever it runs; without either they are left as
+they are, and the check only requires that the docs hold exactly the sections that
+`bench_tables.py --list` names. Their numbers are this machine's timings: nothing in them is
+compared.
 
 Stamp: a doc that holds a line starting with "Stamp:" (the measurement pages,
 docs/*_measurements.md) gets that line rewritten to the commit and the machine whenever this script
@@ -71,7 +79,7 @@ def is_full(name):
 
 
 # The columns of a section whose numbers are rounding-dependent in their last printed digit,
-# measured against a -march=native build (docs/performance_measurements.md, section 2).
+# measured against a -march=native build (docs/performance_measurements.md, "Kernels").
 ROUNDING = {
     "cmc-fig2-jobs": ["H mean"],  # -0.0000 portable, 0.0000 native (H = 0)
     # square n = 16: H min 0.999999 / 1.000000, |H_mean - 1| 3.3e-08 / 3.2e-08 (portable / native)
@@ -209,10 +217,28 @@ def run(example, build, tmp, full=False):
     return blocks(r.stdout.splitlines(keepends=True), program.name)
 
 
+def bench_sections(a, build):
+    """{name: (keys, lines)} printed by bench_tables.py (--bench / --bench-from), else {} and the
+    names it would print."""
+    script = ROOT / "scripts" / "bench_tables.py"
+    names = subprocess.run([sys.executable, str(script), "--list"], check=True, capture_output=True,
+                           text=True).stdout.split()
+    if a.bench_from:
+        text = pathlib.Path(a.bench_from).read_text(encoding="utf-8")
+    elif a.bench:
+        text = subprocess.run([sys.executable, str(script), str(build / "bpde_bench")], check=True,
+                              stdout=subprocess.PIPE, text=True).stdout
+    else:
+        return {}, names
+    return blocks(text.splitlines(keepends=True), script.name), names
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
     ap.add_argument("--full", action="store_true", help="also the heavy (-full) sections of FULL_ARGS (minutes)")
+    ap.add_argument("--bench", action="store_true", help="also run the benchmark tables (scripts/bench_tables.py; minutes)")
+    ap.add_argument("--bench-from", help="the benchmark tables from this saved output of scripts/bench_tables.py")
     ap.add_argument("--build", default=str(ROOT / "build"), help="build folder with the example programs")
     ap.add_argument("examples", nargs="*", help="example folder names (default: all)")
     a = ap.parse_args()
@@ -228,6 +254,10 @@ def main():
                     sys.exit(f"section {name} is printed by {printed[name][0]} and {e}")
                 printed[name] = (e, cols, body)
 
+    bench, bench_names = bench_sections(a, build)
+    for name, (cols, body) in bench.items():
+        printed[name] = ("bench_tables", cols, body)
+
     problems, placed = [], set()
     for doc in docs:
         if not doc.exists():
@@ -241,14 +271,16 @@ def main():
                 name = m.group(1)
                 e, keys, body = printed[name]
                 placed.add(name)
-                same = same_section(held[name][1], body, keys)
-                if not same:
+                same = e != "bench_tables" and same_section(held[name][1], body, keys)
+                if not same and e != "bench_tables":
                     problems.append(f"{doc.relative_to(ROOT)}: section {name} differs from what "
                                     f"example_{e} prints (regenerate: bash scripts/docs.sh)")
                 new.append(line)
                 new.extend(held[name][1] if same else body)  # same up to timings and rounding: left as it is
                 continue
-            if m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
+            if m and m.group(1) in bench_names and not bench:
+                placed.add(m.group(1))  # a benchmark table, not run: left as it is
+            elif m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
                 problems.append(f"{doc.relative_to(ROOT)}: section {m.group(1)} is printed by no example program")
             if name is not None:
                 if line.strip() == END:
@@ -260,6 +292,9 @@ def main():
             new = [stamp_line() if line.startswith(STAMP) else line for line in new]
             doc.write_text("".join(new), encoding="utf-8")
             print(f"docs: rewrote {doc.relative_to(ROOT)}")
+    for name in bench_names:
+        if name not in placed and a.examples == []:
+            problems.append(f"scripts/bench_tables.py prints section {name}, which no doc holds")
     for name, (e, _, _) in printed.items():
         if name not in placed:
             problems.append(f"example_{e} prints section {name}, which no doc holds")
