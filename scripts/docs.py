@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerate (or check) the generated sections of the docs from the example programs.
 
-Usage: docs.py [--check] [--full] [--bench | --bench-from FILE] [--build DIR] [EXAMPLE ...]
+Usage: docs.py [--check] [--full] [--run GEN,...] [--from GEN=FILE ...] [--bench] [--build DIR] [EXAMPLE ...]
 
 Every example program (examples/NNN-name/main.cpp, built as build/example_NNN_name) prints its
 tables between marker lines
@@ -27,13 +27,12 @@ extra arguments of FULL_ARGS (minutes, not for CI). `--full` runs those programs
 rewrites (or, with --check, compares) the "-full" sections too; without it they are left as they
 are and not compared.
 
-Benchmark tables: sections whose name starts with "bench-" (docs/performance.md,
-docs/performance_measurements.md) are printed by scripts/bench_tables.py, which runs bpde_bench
-(Google Benchmark, bench/) for minutes. `--bench` runs it (`--bench-from FILE` takes its saved
-output instead) and rewrites those sections whenever it runs; without either they are left as
-they are, and the check only requires that the docs hold exactly the sections that
-`bench_tables.py --list` names. Their numbers are this machine's timings: nothing in them is
-compared.
+Measurement scripts: sections whose name starts with "GEN-" for a generator GEN of GENERATORS
+below are printed by a script that runs for minutes (benchmarks, Surface Evolver, sweeps), not
+by an example. `--run GEN` runs it (`--bench` is `--run bench`; `--from GEN=FILE` takes a saved
+output of it instead) and rewrites its sections whenever it runs; otherwise they are left as they
+are, and the check only requires that the docs hold exactly the sections that the script's
+`--list` names. Their numbers are this machine's measurements: nothing in them is compared.
 
 Stamp: a doc that holds a line starting with "Stamp:" (the measurement pages,
 docs/*_measurements.md) gets that line rewritten to the commit and the machine whenever this script
@@ -217,31 +216,45 @@ def run(example, build, tmp, full=False):
     return blocks(r.stdout.splitlines(keepends=True), program.name)
 
 
-def bench_sections(a, build):
-    """{name: (keys, lines)} printed by bench_tables.py (--bench / --bench-from), else {} and the
-    names it would print."""
-    script = ROOT / "scripts" / "bench_tables.py"
-    names = subprocess.run([sys.executable, str(script), "--list"], check=True, capture_output=True,
+# Measurement scripts (GEN: the script and its arguments; {build}: the build folder). Each prints
+# sections named "GEN-..." and lists their names with --list.
+GENERATORS = {
+    "bench": ["scripts/bench_tables.py", "{build}/bpde_bench"],
+}
+
+
+def generated_sections(gen, a, build):
+    """({name: (keys, lines)} printed by generator gen when it runs (--run / --from), else {};
+    the names its --list gives)."""
+    script, *args = GENERATORS[gen]
+    names = subprocess.run([sys.executable, str(ROOT / script), "--list"], check=True, capture_output=True,
                            text=True).stdout.split()
-    if a.bench_from:
-        text = pathlib.Path(a.bench_from).read_text(encoding="utf-8")
-    elif a.bench:
-        text = subprocess.run([sys.executable, str(script), str(build / "bpde_bench")], check=True,
-                              stdout=subprocess.PIPE, text=True).stdout
+    saved = dict(f.split("=", 1) for f in a.saved)
+    if gen in saved:
+        text = pathlib.Path(saved[gen]).read_text(encoding="utf-8")
+    elif gen in a.run:
+        cmd = [sys.executable, str(ROOT / script)] + [x.format(build=build) for x in args]
+        text = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True).stdout
     else:
         return {}, names
-    return blocks(text.splitlines(keepends=True), script.name), names
+    return blocks(text.splitlines(keepends=True), script), names
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
     ap.add_argument("--full", action="store_true", help="also the heavy (-full) sections of FULL_ARGS (minutes)")
-    ap.add_argument("--bench", action="store_true", help="also run the benchmark tables (scripts/bench_tables.py; minutes)")
-    ap.add_argument("--bench-from", help="the benchmark tables from this saved output of scripts/bench_tables.py")
+    ap.add_argument("--run", default="", help="comma-separated measurement scripts to run (GENERATORS; minutes)")
+    ap.add_argument("--bench", action="store_true", help="the same as --run bench")
+    ap.add_argument("--from", dest="saved", action="append", default=[], metavar="GEN=FILE",
+                    help="a measurement script's sections from its saved output")
     ap.add_argument("--build", default=str(ROOT / "build"), help="build folder with the example programs")
     ap.add_argument("examples", nargs="*", help="example folder names (default: all)")
     a = ap.parse_args()
+    a.run = set(filter(None, a.run.split(","))) | ({"bench"} if a.bench else set())
+    unknown = (a.run | {f.split("=", 1)[0] for f in a.saved}) - set(GENERATORS)
+    if unknown:
+        sys.exit(f"no measurement script {', '.join(sorted(unknown))} (GENERATORS: {', '.join(GENERATORS)})")
     build = pathlib.Path(a.build)
     examples = a.examples or sorted(p.parent.name for p in (ROOT / "examples").glob("*/main.cpp"))
 
@@ -254,9 +267,14 @@ def main():
                     sys.exit(f"section {name} is printed by {printed[name][0]} and {e}")
                 printed[name] = (e, cols, body)
 
-    bench, bench_names = bench_sections(a, build)
-    for name, (cols, body) in bench.items():
-        printed[name] = ("bench_tables", cols, body)
+    measured, idle = set(), set()  # sections of measurement scripts that ran / did not run
+    for gen in GENERATORS:
+        sections, names = generated_sections(gen, a, build)
+        for name, (cols, body) in sections.items():
+            printed[name] = (GENERATORS[gen][0], cols, body)
+            measured.add(name)
+        if not sections:
+            idle |= set(names)
 
     problems, placed = [], set()
     for doc in docs:
@@ -271,15 +289,15 @@ def main():
                 name = m.group(1)
                 e, keys, body = printed[name]
                 placed.add(name)
-                same = e != "bench_tables" and same_section(held[name][1], body, keys)
-                if not same and e != "bench_tables":
+                same = name not in measured and same_section(held[name][1], body, keys)
+                if not same and name not in measured:
                     problems.append(f"{doc.relative_to(ROOT)}: section {name} differs from what "
                                     f"example_{e} prints (regenerate: bash scripts/docs.sh)")
                 new.append(line)
                 new.extend(held[name][1] if same else body)  # same up to timings and rounding: left as it is
                 continue
-            if m and m.group(1) in bench_names and not bench:
-                placed.add(m.group(1))  # a benchmark table, not run: left as it is
+            if m and m.group(1) in idle:
+                placed.add(m.group(1))  # a measurement script's table, not run: left as it is
             elif m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
                 problems.append(f"{doc.relative_to(ROOT)}: section {m.group(1)} is printed by no example program")
             if name is not None:
@@ -292,12 +310,12 @@ def main():
             new = [stamp_line() if line.startswith(STAMP) else line for line in new]
             doc.write_text("".join(new), encoding="utf-8")
             print(f"docs: rewrote {doc.relative_to(ROOT)}")
-    for name in bench_names:
+    for name in idle:
         if name not in placed and a.examples == []:
-            problems.append(f"scripts/bench_tables.py prints section {name}, which no doc holds")
+            problems.append(f"a measurement script prints section {name}, which no doc holds")
     for name, (e, _, _) in printed.items():
         if name not in placed:
-            problems.append(f"example_{e} prints section {name}, which no doc holds")
+            problems.append(f"{e} prints section {name}, which no doc holds")
     if a.check:
         for p in problems:
             print("FAIL", p)
