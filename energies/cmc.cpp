@@ -156,15 +156,17 @@ MeanCurvatureStats mean_curvature_stats(const TriangleMesh& mesh, SampleLayout l
   const bool use_flags = skip_singular && mesh.regular.size() == expected;
   MeanCurvatureStats s;
   double sum = 0;
-  auto take = [&](Eigen::Index id) {
+  auto take = [&](Eigen::Index id, double u, double v) {
     if (use_flags && !mesh.regular(id)) return;
     const double h = mesh.H(id);
     if (skip_singular && !std::isfinite(h)) return;
-    if (s.count == 0) {
-      s.min = s.max = h;
-    } else {
-      s.min = std::min(s.min, h);
-      s.max = std::max(s.max, h);
+    if (s.count == 0 || h < s.min) {
+      s.min = h;
+      s.at_min = {u, v};
+    }
+    if (s.count == 0 || h > s.max) {
+      s.max = h;
+      s.at_max = {u, v};
     }
     sum += h;
     ++s.count;
@@ -177,7 +179,7 @@ MeanCurvatureStats mean_curvature_stats(const TriangleMesh& mesh, SampleLayout l
         const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
         const double w = 1.0 - u - v;
         if (u > lim || v > lim || w > lim) continue;
-        take(id);
+        take(id, u, v);
       }
   } else {
     const double lim = corner_margin - 1e-12;
@@ -185,7 +187,7 @@ MeanCurvatureStats mean_curvature_stats(const TriangleMesh& mesh, SampleLayout l
       for (int b = 0; b <= N; ++b, ++id) {
         const double u = static_cast<double>(a) / N, v = static_cast<double>(b) / N;
         if (std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim) continue;
-        take(id);
+        take(id, u, v);
       }
   }
   if (s.count > 0) s.mean = sum / s.count;

@@ -19,6 +19,7 @@
 // point indices idx use the entry 3a + c for (idx[a], coordinate c).
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -87,6 +88,9 @@ CmcEnergies cmc_energies(const TensorNet& net, double H);
 struct MeanCurvatureStats {
   double min = 0, max = 0, mean = 0;
   int count = 0;
+  /// The domain point (u, v) of the sample where min (max) is taken (the first such sample in the
+  /// layout's order); {-1, -1} when count is 0.
+  std::array<double, 2> at_min{-1, -1}, at_max{-1, -1};
 };
 /// Both evaluate the net once on the grid (sample_mesh: tabulated Bernstein values and derivatives,
 /// not per-point de Casteljau) and take the statistics of that mesh (below).

@@ -58,7 +58,21 @@ Json check_json(const MeshCheckReport& rep) {
 // (see jobs/run_job.h)
 Json stats_json(const MeanCurvatureStats& st) {
   if (st.count == 0) return nullptr;
-  return {{"min", st.min}, {"max", st.max}, {"mean", st.mean}, {"count", st.count}};
+  return {{"min", st.min},
+          {"max", st.max},
+          {"mean", st.mean},
+          {"count", st.count},
+          {"at_min", {st.at_min[0], st.at_min[1]}},
+          {"at_max", {st.at_max[0], st.at_max[1]}}};
+}
+
+Json certificate_json(const CmcCertificate& c) {
+  return {{"H", c.H},
+          {"mean_curvature_deviation", c.deviation},
+          {"at", {c.at[0], c.at[1]}},
+          {"reference_curvature", c.reference_curvature},
+          {"relative_deviation", c.relative},
+          {"near_constant", c.near_constant()}};
 }
 
 // Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
@@ -458,21 +472,49 @@ Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples)
 
 Json check_report(const TriangleMesh& mesh) { return check_json(mesh_check(mesh)); }
 
-// result.json + surface files for a net and its sampled mesh; the report gains the mean-curvature
-// statistics and the CGAL figures unless the solver already set them.
-WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
-                           const Json& extra, Status status, MeshFormat format, const Exports& exports) {
-  WrittenResult written;
+bool CmcCertificate::near_constant() const { return relative <= kCmcDeviationLimit; }
+
+CmcCertificate cmc_certificate(const MeanCurvatureStats& stats, double H, const TriangleMesh& mesh) {
+  CmcCertificate c;
+  c.H = H;
+  const double below = H - stats.min, above = stats.max - H;
+  c.deviation = std::max(below, above);
+  c.at = below >= above ? stats.at_min : stats.at_max;
+  const double R = 0.5 * (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
+  c.reference_curvature = std::max(std::abs(H), R > 0 ? 1.0 / R : 0.0);
+  c.relative = c.reference_curvature > 0 ? c.deviation / c.reference_curvature : 0.0;
+  return c;
+}
+
+// The report's figures from the sampled mesh, where the solver did not set them.
+Json complete_report(const Net& net, const TriangleMesh& mesh, int samples, Json report, WrittenResult* added) {
+  WrittenResult local;
+  WrittenResult& written = added ? *added : local;
   if (!report.contains("mean_curvature")) {
     const ProgressStage stage(job_progress(), "mean curvature");
     written.mean_curvature = surface_mean_curvature_stats(net, mesh, samples);
     report["mean_curvature"] = stats_json(*written.mean_curvature);
+  }
+  // A CMC result says how far it is from constant mean curvature (its mesh's samples, its H).
+  if (written.mean_curvature && written.mean_curvature->count > 0 && report.value("problem", "") == "cmc" &&
+      report.contains("H") && report["H"].is_number()) {
+    written.certificate = cmc_certificate(*written.mean_curvature, report["H"].get<double>(), mesh);
+    report["certificate"] = certificate_json(*written.certificate);
   }
   if (!report.contains("check")) {
     const ProgressStage stage(job_progress(), "checking (CGAL)");
     written.check = mesh_check(mesh);
     report["check"] = check_json(*written.check);
   }
+  return report;
+}
+
+// result.json + surface files for a net and its sampled mesh; the report completed
+// (complete_report) unless the solver already set its figures.
+WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
+                           const Json& extra, Status status, MeshFormat format, const Exports& exports) {
+  WrittenResult written;
+  report = complete_report(net, mesh, samples, std::move(report), &written);
   const ProgressStage stage(job_progress(), "writing files");
   written.result = {{"net", net_to_json(net)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) written.result[it.key()] = it.value();

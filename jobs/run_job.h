@@ -9,6 +9,7 @@
 // One table (jobs/run_job.cpp) maps each problem kind and net kind to the solver that runs it and
 // to that solver's requirements (solvers/requirements.h, declared next to each solver's Options).
 // The same table validates a job when it is read and dispatches it when it runs.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -105,6 +106,28 @@ void check_output_dir(const std::string& dir, const std::vector<std::string>& na
 void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh,
                         MeshFormat format = MeshFormat::Ascii, const Exports& exports = {});
 
+/// How far a CMC result is from what was asked (report.certificate, FORMATS.md): the largest
+/// |H(x) − H| over the report's samples away from the corners (the samples of
+/// mean_curvature_stats), where it is, and that deviation relative to the reference curvature
+/// max(|H|, 1/R), R the radius of the sampled surface's bounding sphere (half its bounding-box
+/// diagonal), so that a minimal surface (H = 0) is measured against its own size. A result whose
+/// relative deviation exceeds kCmcDeviationLimit is not presented as a CMC surface: the summary
+/// says so.
+struct CmcCertificate {
+  double H = 0;                       ///< the H of the result (asked in the H form, found in the V form)
+  double deviation = 0;               ///< max |H(x) − H| over the samples
+  std::array<double, 2> at{-1, -1};   ///< the domain point (u, v) of that sample
+  double reference_curvature = 0;     ///< max(|H|, 1/R)
+  double relative = 0;                ///< deviation / reference_curvature
+  bool near_constant() const;         ///< relative <= kCmcDeviationLimit
+};
+/// 5 %: far beyond the discretisation error of a converged area solve (1e-4 and below at degree
+/// 10 on the reference boundaries, docs/cmc.md), and beyond what the D_H approximations of the
+/// paper's figures reach at the degrees they use.
+inline constexpr double kCmcDeviationLimit = 0.05;
+/// The certificate of a CMC result from its mesh statistics (count > 0) and its H.
+CmcCertificate cmc_certificate(const MeanCurvatureStats& stats, double H, const TriangleMesh& mesh);
+
 /// What was written: the whole result.json object, the exit code, and the figures write_result
 /// added to the report (empty where the report had them already).
 struct WrittenResult {
@@ -112,11 +135,17 @@ struct WrittenResult {
   int exit_code = 0;
   std::optional<MeanCurvatureStats> mean_curvature;  ///< count 0: no sample away from the corners
   std::optional<MeshCheckReport> check;
+  std::optional<CmcCertificate> certificate;  ///< CMC results with samples away from the corners
 };
 
+/// The report as result.json holds it: `report` with `mean_curvature`, `check` (unless already
+/// present) and, for a cmc result, its `certificate`, from the sampled `mesh` of `net` (`samples`
+/// per side). The figures it computed go into `added` when given.
+Json complete_report(const Net& net, const TriangleMesh& mesh, int samples, Json report, WrittenResult* added = nullptr);
+
 /// Write DIR/result.json and surface.obj, surface.ply, surface.vtp, net.obj (write_output_files:
-/// all or nothing; PLY and VTP in `format`). The report gains `mean_curvature` and `check` unless
-/// already present. The exit code is exit_code(status).
+/// all or nothing; PLY and VTP in `format`). The report is completed by complete_report. The exit
+/// code is exit_code(status).
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
                            const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii,
                            const Exports& exports = {});

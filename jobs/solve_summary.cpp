@@ -71,6 +71,16 @@ std::string solve_summary(const SolveOutcome& out, const WrittenResult& written,
          h->count > 0 ? "min " + number(h->min, "%.6g") + ", max " + number(h->max, "%.6g") + ", mean " +
                             number(h->mean, "%.6g") + " (away from the corners)"
                       : "none (no sample away from the corners)");
+  if (const auto& c = written.certificate) {
+    const std::string where = "(u, v) = (" + number(c->at[0], "%.3g") + ", " + number(c->at[1], "%.3g") + ")";
+    const std::string off = "|H(x) - H| up to " + number(c->deviation, "%.3g") + " at " + where + ", " +
+                            number(100 * c->relative, "%.3g") + " % of the reference curvature";
+    line(s, "certificate",
+         c->near_constant() ? off
+                            : "NOT a constant-mean-curvature surface: " + off + " (more than " +
+                                  number(100 * kCmcDeviationLimit, "%g") +
+                                  " %); a critical point of the discrete problem, not a CMC surface at this degree");
+  }
   if (written.check) line(s, "self-intersections", std::to_string(written.check->self_intersections));
   return s + files_line(out_dir, files);
 }

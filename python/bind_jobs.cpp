@@ -22,10 +22,7 @@ Json solve_result(const Json& job_json, const std::optional<std::string>& out) {
   const bpde::SolveOutcome outcome = bpde::run_job(job);
   if (out) return bpde::write_job_result(*out, job, outcome).result;
   const bpde::TriangleMesh mesh = bpde::sample_net(outcome.net, job.samples);
-  Json report = outcome.report;
-  if (!report.contains("mean_curvature"))
-    report["mean_curvature"] = bpde::mean_curvature_stats(outcome.net, mesh, job.samples);
-  if (!report.contains("check")) report["check"] = bpde::check_report(mesh);
+  const Json report = bpde::complete_report(outcome.net, mesh, job.samples, outcome.report);
   Json result = {{"net", bpde::net_to_json(outcome.net)}, {"report", report}};
   for (auto it = outcome.extra.begin(); it != outcome.extra.end(); ++it) result[it.key()] = it.value();
   return result;
@@ -129,11 +126,8 @@ void bind_jobs(py::module_& m) {
             bpde::write_blend_outcome(*out, c, o);
             result = bpde::read_json_file(*out + "/result.json");
           } else {
-            Json report = o.report;
             const bpde::Net net(o.net);
-            if (!report.contains("mean_curvature"))
-              report["mean_curvature"] = bpde::mean_curvature_stats(net, o.mesh, c.samples);
-            if (!report.contains("check")) report["check"] = bpde::check_report(o.mesh);
+            const Json report = bpde::complete_report(net, o.mesh, c.samples, o.report);
             result = {{"net", bpde::net_to_json(net)}, {"report", report}};
           }
         }

@@ -481,6 +481,46 @@ TEST(Cli, CmcAreaJobReportsTheAreaFunctional) {
   bad(job(R"({"kind": "cmc", "V": 1, "functional": "area", "solver": "nlopt"})"), "nlopt");
 }
 
+// Every cmc result carries its certificate (FORMATS.md, report.certificate): the largest |H(x) − H|
+// over the report's samples, where, and relative to max(|H|, 1/R). The Fig. 1 circle at H = −0.5
+// (the exact surface: the cap of the sphere of radius 2, height h = 2 − √3): the area functional at
+// degree 8 is a CMC surface to 1e-4; the paper's D_H approximation at degree 6 is not (its mean
+// curvature leaves H next to the corners), and says so.
+TEST(Cli, CmcResultsCarryTheirCertificate) {
+  auto solve = [](const std::string& name, const std::string& functional, int degree) {
+    const std::string job = R"({"boundary": {"type": "triangular", "degree": )" + std::to_string(degree) +
+                            R"(, "builder": "circle-three-arcs"}, "problem": {"kind": "cmc", "H": -0.5, "functional": ")" +
+                            functional + R"("}})";
+    const fs::path out = tmpdir() / name;
+    const CmdResult r = run("solve " + write(name + ".json", job).string() + " --out " + out.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    return bpde::read_json_file((out / "result.json").string())["report"];
+  };
+  const double h = 2 - std::sqrt(3.0), R = 0.5 * std::sqrt(8 + h * h);  // half the cap's box diagonal
+  for (const auto& [functional, degree] : {std::pair<std::string, int>{"area", 8}, {"dirichlet", 6}}) {
+    const bpde::Json rep = solve("cert-" + functional, functional, degree);
+    ASSERT_TRUE(rep.contains("certificate")) << rep.dump();
+    const bpde::Json& c = rep["certificate"];
+    const bpde::Json& mc = rep["mean_curvature"];
+    const double H = -0.5, lo = mc["min"].get<double>(), hi = mc["max"].get<double>();
+    const double dev = c["mean_curvature_deviation"].get<double>();
+    EXPECT_DOUBLE_EQ(c["H"].get<double>(), H);
+    EXPECT_DOUBLE_EQ(dev, std::max(H - lo, hi - H));
+    EXPECT_EQ(c["at"], H - lo >= hi - H ? mc["at_min"] : mc["at_max"]);
+    const double u = c["at"][0].get<double>(), v = c["at"][1].get<double>();
+    EXPECT_TRUE(u >= 0 && v >= 0 && u + v <= 1 + 1e-12) << u << ", " << v;
+    EXPECT_NEAR(c["reference_curvature"].get<double>(), 1 / R, 2e-3);  // 1/R > |H| here
+    EXPECT_NEAR(c["relative_deviation"].get<double>(), dev / c["reference_curvature"].get<double>(), 1e-15);
+    if (functional == "area") {
+      EXPECT_LT(dev, 1e-4);
+      EXPECT_TRUE(c["near_constant"].get<bool>());
+    } else {
+      EXPECT_GT(c["relative_deviation"].get<double>(), 0.05);
+      EXPECT_FALSE(c["near_constant"].get<bool>());
+    }
+  }
+}
+
 // The mean-curvature functional as a job (FORMATS.md, "functional": "mean-curvature"): the Fig. 1
 // circle from the boundary builder; converged at degree 10 (exit 0), not at degree 6 with the
 // default tolerance (exit 1, result.json written with converged false), and the bad input.
