@@ -27,10 +27,9 @@ void bind_extremal(py::module_& m) {
       .def_readonly("summary", &bpde::TriangularExtremalResult::summary);
   m.def(
       "solve_extremal",
-      [](const bpde::TensorNet& data, py::handle energy, const std::string& fixed,
-         const bpde::ExtremalOptions& options) {
+      [](const bpde::TensorNet& data, py::handle energy, const Text& fixed, const bpde::ExtremalOptions& options) {
         const bpde::EnergySpec spec = energy_arg(energy);
-        const bpde::FixedSet f = parse_fixed(fixed);
+        const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
         py::gil_scoped_release release;
         return bpde::solve_extremal(data, spec, f, options);
       },
@@ -40,10 +39,9 @@ void bind_extremal(py::module_& m) {
       "TriangularNet. `energy` is a name or an ENERGY dict.");
   m.def(
       "solve_extremal",
-      [](const bpde::TriangularNet& data, py::handle energy, const std::string& fixed,
-         const bpde::ExtremalOptions& options) {
+      [](const bpde::TriangularNet& data, py::handle energy, const Text& fixed, const bpde::ExtremalOptions& options) {
         const bpde::EnergySpec spec = energy_arg(energy);
-        const bpde::FixedSet f = parse_fixed(fixed);
+        const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
         py::gil_scoped_release release;
         return bpde::solve_extremal(data, spec, f, options);
       },
@@ -51,9 +49,9 @@ void bind_extremal(py::module_& m) {
   py::class_<bpde::ExtremalSolver>(
       m, "ExtremalSolver",
       "A factored extremal problem (solvers/extremal.h): X_free = mould @ X_fixed, one product per boundary.")
-      .def(py::init([](py::handle energy, int n, int m, const std::string& fixed, const bpde::ExtremalOptions& o) {
+      .def(py::init([](py::handle energy, int n, int m, const Text& fixed, const bpde::ExtremalOptions& o) {
              const bpde::EnergySpec spec = energy_arg(energy);
-             const bpde::FixedSet f = parse_fixed(fixed);
+             const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
              py::gil_scoped_release release;
              return bpde::ExtremalSolver(spec, n, m, f, o);
            }),

@@ -20,7 +20,8 @@ void bind_pde(py::module_& m) {
           [](const bpde::PdeLuOptions& o) {
             return o.formulation == bpde::PdeLuOptions::Formulation::Bernstein ? "bernstein" : "anti-diagonal";
           },
-          [](bpde::PdeLuOptions& o, const std::string& s) {
+          [](bpde::PdeLuOptions& o, const Text& t) {
+            const std::string s = text(t, "formulation");
             if (s == "bernstein")
               o.formulation = bpde::PdeLuOptions::Formulation::Bernstein;
             else if (s == "anti-diagonal")
@@ -58,7 +59,10 @@ void bind_pde(py::module_& m) {
           [](const bpde::TetraharmonicOptions& o) {
             return o.method == bpde::TetraharmonicOptions::Method::Explicit ? "explicit" : "lu";
           },
-          [](bpde::TetraharmonicOptions& o, const std::string& s) { o.method = bpde::parse_tetraharmonic_method(s); });
+          [](bpde::TetraharmonicOptions& o, const Text& t) {
+            const std::string s = text(t, "method");
+            o.method = bpde::parse_tetraharmonic_method(s);
+          });
   m.def(
       "solve_tetraharmonic",
       [](const bpde::TensorNet& data, const bpde::TetraharmonicOptions& options) {
@@ -77,7 +81,10 @@ void bind_pde(py::module_& m) {
           [](const bpde::ClampedPlateOptions& o) {
             return o.method == bpde::ClampedPlateOptions::Method::AdmissibleLoad ? "admissible-load" : "ritz";
           },
-          [](bpde::ClampedPlateOptions& o, const std::string& s) { o.method = bpde::parse_plate_method(s); });
+          [](bpde::ClampedPlateOptions& o, const Text& t) {
+            const std::string s = text(t, "method");
+            o.method = bpde::parse_plate_method(s);
+          });
   py::class_<bpde::ClampedPlateResult>(m, "ClampedPlateResult")
       .def_readonly("center_deflection", &bpde::ClampedPlateResult::center_deflection)
       .def_readonly("energy", &bpde::ClampedPlateResult::energy)
