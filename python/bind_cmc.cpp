@@ -5,6 +5,21 @@
 
 namespace bpde::python {
 
+namespace {
+
+// solve_cmc within the limits of a cmc job (its degrees), interruptible by Ctrl-C, the GIL released.
+template <class NetT>
+bpde::CmcResult<NetT> cmc(const bpde::NetShape& shape, const NetT& data, const bpde::CmcOptions& options) {
+  check_limits(bpde::cmc_requirements(options.functional, options.V.has_value()), shape, options.fixed,
+               bpde::to_string(options.solver), "solve_cmc");
+  bpde::CmcOptions o = options;
+  o.progress = interruptible(options.progress);
+  py::gil_scoped_release release;
+  return bpde::solve_cmc(data, o);
+}
+
+}  // namespace
+
 void bind_cmc(py::module_& m) {
   py::class_<bpde::CmcOptions>(m, "CmcOptions")
       .def(py::init<>())
@@ -128,14 +143,18 @@ void bind_cmc(py::module_& m) {
   cmc_result("CmcResultTensor", bpde::CmcResult<bpde::TensorNet>{});
   m.def(
       "solve_cmc",
-      [](const bpde::TriangularNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },
-      py::arg("data"), py::arg("options"), py::call_guard<py::gil_scoped_release>(),
+      [](const bpde::TriangularNet& data, const bpde::CmcOptions& options) {
+        return cmc({bpde::NetKind::Triangular, data.n(), data.n()}, data, options);
+      },
+      py::arg("data"), py::arg("options"),
       "The cmc problem of solvers/cmc/cmc.h (options.functional: the critical point of D + 2HV, of A + 2HV, "
       "or the least squares of the mean curvature) -> CmcResult (net, H, D, V, DH, A, energy, functional, summary).");
   m.def(
       "solve_cmc",
-      [](const bpde::TensorNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },
-      py::arg("data"), py::arg("options"), py::call_guard<py::gil_scoped_release>());
+      [](const bpde::TensorNet& data, const bpde::CmcOptions& options) {
+        return cmc({bpde::NetKind::Tensor, data.n(), data.m()}, data, options);
+      },
+      py::arg("data"), py::arg("options"));
 }
 
 }  // namespace bpde::python

@@ -42,6 +42,8 @@ void bind_extremal(py::module_& m) {
       [](const bpde::TriangularNet& data, py::handle energy, const Text& fixed, const bpde::ExtremalOptions& options) {
         const bpde::EnergySpec spec = energy_arg(energy);
         const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
+        check_limits(bpde::extremal_requirements(), {bpde::NetKind::Triangular, data.n(), data.n()}, f, "",
+                     "solve_extremal");
         py::gil_scoped_release release;
         return bpde::solve_extremal(data, spec, f, options);
       },

@@ -48,6 +48,7 @@ void bind_jobs(py::module_& m) {
         Json result;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           result = solve_result(j, out);
         }
         return from_json(result);
@@ -63,6 +64,7 @@ void bind_jobs(py::module_& m) {
         bpde::TriangleMesh mesh;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           mesh = bpde::sample_net(n, samples);
           if (out) {
             bpde::write_output_files(*out, nullptr, n, mesh);  // as `bpde sample`: all or nothing
@@ -93,6 +95,7 @@ void bind_jobs(py::module_& m) {
         Json r;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           r = bpde::check_report(bpde::sample_net(n, samples));
         }
         return from_json(r);
@@ -134,6 +137,7 @@ void bind_jobs(py::module_& m) {
         Json result;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           const bpde::BlendOutcome o = bpde::run_blend(c);
           if (out) {
             bpde::write_blend_outcome(*out, c, o);

@@ -66,10 +66,13 @@ void bind_pde(py::module_& m) {
   m.def(
       "solve_tetraharmonic",
       [](const bpde::TensorNet& data, const bpde::TetraharmonicOptions& options) {
+        check_limits(bpde::tetraharmonic_requirements(), {bpde::NetKind::Tensor, data.n(), data.m()},
+                     bpde::FixedSet::BoundaryAdjacent, "", "solve_tetraharmonic");
+        py::gil_scoped_release release;
         bpde::TetraharmonicResult r = bpde::solve_tetraharmonic(data, options);
         return std::make_pair(std::move(r.net), r.summary);
       },
-      py::arg("data"), py::arg("options") = bpde::TetraharmonicOptions(), py::call_guard<py::gil_scoped_release>(),
+      py::arg("data"), py::arg("options") = bpde::TetraharmonicOptions(),
       "Tetraharmonic C1 surface (C1 methods, Theorem 1) -> (TensorNet, Summary).");
 
   py::class_<bpde::ClampedPlateOptions>(m, "ClampedPlateOptions")

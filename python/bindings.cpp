@@ -1,7 +1,9 @@
 // The conversions shared by the binding files (bindings.h).
 #include "bindings.h"
 
+#include <chrono>
 #include <cmath>
+#include <memory>
 #include <variant>
 
 #include "bezierpde/io/job.h"
@@ -139,6 +141,25 @@ bpde::FixedSet parse_fixed(const std::string& s) {
 bpde::EnergySpec energy_arg(py::handle h) {
   if (py::isinstance<py::str>(h)) return bpde::energy_from_argument(text(h, "energy"), "energy");
   return bpde::energy_from_json(to_json(h, "energy"), "operator", true);
+}
+
+bpde::ProgressFn interruptible(bpde::ProgressFn inner) {
+  using Clock = std::chrono::steady_clock;
+  auto last = std::make_shared<Clock::time_point>(Clock::now());
+  return [inner = std::move(inner), last](std::string_view stage, double done, double total) {
+    const Clock::time_point now = Clock::now();
+    if (now - *last >= std::chrono::milliseconds(50)) {
+      *last = now;
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+    if (inner) inner(stage, done, total);
+  };
+}
+
+void check_limits(const bpde::SolverRequirements& r, const bpde::NetShape& shape, bpde::FixedSet fixed,
+                  const std::string& method, const std::string& where) {
+  bpde::check_requirements(r, shape, fixed, method, where);
 }
 
 }  // namespace bpde::python

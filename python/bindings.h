@@ -19,8 +19,11 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/fixed_set.h"
 #include "bezierpde/core/mesh.h"
+#include "bezierpde/core/progress.h"
 #include "bezierpde/energies/energy_spec.h"
 #include "bezierpde/io/json_io.h"
+#include "bezierpde/jobs/job_progress.h"
+#include "bezierpde/solvers/requirements.h"
 
 namespace bpde::python {
 
@@ -46,6 +49,31 @@ void bind_sweep(py::module_& m);     // sweeps (jobs/sweep.h)
 // kMaxJsonDepth levels).
 Json to_json(py::handle h, const std::string& what, int depth = 0);
 py::object from_json(const Json& j);
+
+// ------------------------------------------------------------------ Ctrl-C and the limits
+// A progress callback (core/progress.h) that lets Ctrl-C stop long C++ work called from Python
+// with the GIL released: at most every 50 ms it takes the GIL and runs Python's signal handlers
+// (PyErr_CheckSignals, which acts on the main thread only); when one raises (KeyboardInterrupt),
+// the exception leaves the solver as py::error_already_set and reaches the caller as that Python
+// exception. `inner` (the progress a caller installed) is called as before.
+bpde::ProgressFn interruptible(bpde::ProgressFn inner = {});
+
+// Installs interruptible(the current job progress) for the jobs run on this thread while it lives
+// (jobs/job_progress.h): the cmc continuation and the other long stages check for signals.
+class InterruptibleJobs {
+ public:
+  InterruptibleJobs() : scope_(interruptible(bpde::job_progress())) {}
+
+ private:
+  bpde::JobProgressScope scope_;
+};
+
+// The limits of FORMATS.md "Input limits" that a job checks before it runs (the degrees of the
+// solver's requirements), checked for a solver entry point called directly: the same typed
+// errors (DegreeError, UnsupportedProblem) as the command's exit 2, the message starting with
+// `where` (the Python function's name).
+void check_limits(const bpde::SolverRequirements& r, const bpde::NetShape& shape, bpde::FixedSet fixed,
+                  const std::string& method, const std::string& where);
 
 // ------------------------------------------------------------------ numpy arrays owning Eigen storage
 template <class M>
