@@ -26,6 +26,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import textwrap
 
 import numpy as np
 
@@ -47,6 +48,8 @@ CMAP = "coolwarm"
 TITLE, LABEL, TICK, LEGEND = 11, 11, 10, 9
 #: Pixels at the right of a surface figure for its shared colour bar with its ticks and label.
 BAR_PIXELS = 150
+#: Resolution of the rasterized surfaces inside the SVGs (dots per inch).
+SVG_DPI = DPI
 
 # SVG output that depends on the figure only (no random ids, no date): regenerated files diff cleanly.
 plt.rcParams["svg.hashsalt"] = "bezierpde"
@@ -183,10 +186,16 @@ def _box(ax, V):
     ax.set_box_aspect(tuple(r / r.max()))
 
 
+def _wrapped(title, width_px):
+    """`title` broken into lines that fit `width_px` at the TITLE size (about 0.55 em a character)."""
+    chars = max(10, int(width_px / (0.55 * TITLE * DPI / 72.0)))
+    return "\n".join(textwrap.wrap(title, chars)) if title else title
+
+
 def _axes3d(fig, rows, cols, k, panel):
     ax = fig.add_subplot(rows, cols, k, projection="3d")
     ax.view_init(elev=panel.elev, azim=panel.azim)
-    ax.set_title(panel.title, fontsize=TITLE, pad=0)
+    ax.set_title(_wrapped(panel.title, fig.bbox.width / cols * 0.95), fontsize=TITLE, pad=0)
     ax.set_facecolor((1, 1, 1, 0))  # transparent: a neighbour's colour bar labels stay visible
     ax.set_axis_off()  # the shape, as the papers draw it; axes and ticks only clutter a small picture
     return ax
@@ -256,7 +265,10 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
             _net(ax, V, F, Pn, segs, net_rings(p.net))
     shared = shared and not nets_only
     bar = 1.0 - (BAR_PIXELS - 10.0 if shared else 10.0) / w  # the colour bar, its ticks and label at the right
-    fig.subplots_adjust(left=0.0, right=bar, bottom=0.02, top=0.90 if suptitle else 0.96, wspace=0.02, hspace=0.12)
+    # room above the first row for its titles (wrapped onto several lines) and the suptitle
+    lines = max([1] + [ax.get_title().count("\n") + 1 for ax in fig.axes[:cols * (2 if net_row else 1)]])
+    top_px = lines * 1.3 * TITLE * DPI / 72.0 + 6.0 + (1.6 * (TITLE + 1) * DPI / 72.0 if suptitle else 0.0)
+    fig.subplots_adjust(left=0.0, right=bar, bottom=0.02, top=1.0 - top_px / h, wspace=0.02, hspace=0.12)
     if shared:
         cax = fig.add_axes([bar + 15.0 / w, 0.25, 12.0 / w, 0.5])
         cb = fig.colorbar(plt.cm.ScalarMappable(norm=mcolors.Normalize(*clim), cmap=cmap), cax=cax,
@@ -311,11 +323,11 @@ def plot(path, series, xlabel="degree n", ylabel="", title="", logy=False, logx=
 def save(fig, path):
     """Saves and closes `fig` as a PNG (a palette image of at most 256 colours when Pillow is
     installed, to keep the committed files small) and as an SVG beside it (the same name with
-    .svg: text and lines as vectors, artists marked rasterized as images at 2 x DPI). Returns the
+    .svg: text and lines as vectors, artists marked rasterized as images at SVG_DPI). Returns the
     PNG's (width, height) in pixels."""
     path = pathlib.Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path.with_suffix(".svg"), dpi=2 * DPI, format="svg", metadata={"Date": None})
+    fig.savefig(path.with_suffix(".svg"), dpi=SVG_DPI, format="svg", metadata={"Date": None})
     fig.savefig(path, dpi=DPI)
     plt.close(fig)
     try:

@@ -125,7 +125,8 @@ def test_surface_panels_share_one_readable_colour_scale(monkeypatch, tmp_path):
 
     path = tmp_path / "panels.png"
     seen = _captured_figure(monkeypatch, lambda fg: fg.surfaces(
-        path, [fg.Panel(bowl(c), f"c = {c}") for c in (0.5, 1.0, 2.0)], size=(780, 520)))
+        path, [fg.Panel(bowl(c), f"c = {c}: a bowl z = c (x² + y²) over the unit square") for c in (0.5, 1.0, 2.0)],
+        size=(780, 520)))
     colour_bars = [ax for ax in seen["axes"] if ax.name != "3d"]
     assert len(colour_bars) == 1  # one scale for the three panels
     lo, hi = colour_bars[0].get_ylim()
@@ -136,7 +137,15 @@ def test_surface_panels_share_one_readable_colour_scale(monkeypatch, tmp_path):
         assert text.get_fontsize() >= 9, (text.get_text(), text.get_fontsize())
         # nothing clipped at the figure's edges (the colour bar's label "mean curvature H" included)
         assert box.x0 >= fig_box.x0 - 1 and box.x1 <= fig_box.x1 + 1, (text.get_text(), box, fig_box)
+        assert box.y0 >= fig_box.y0 - 1 and box.y1 <= fig_box.y1 + 1, (text.get_text(), box, fig_box)
     assert any("H" in t.get_text() for t, _ in seen["texts"])
+    # no two texts overlap (long panel titles are wrapped to their panel's width)
+    boxes = [box for _, box in seen["texts"]]
+    for i in range(len(boxes)):
+        for j in range(i + 1, len(boxes)):
+            a, b = boxes[i], boxes[j]
+            overlap = min(a.x1, b.x1) - max(a.x0, b.x0) > 1 and min(a.y1, b.y1) - max(a.y0, b.y0) > 1
+            assert not overlap, (seen["texts"][i][0].get_text(), seen["texts"][j][0].get_text())
     svg = path.with_suffix(".svg")
     assert svg.exists()
     head = svg.read_text(encoding="utf-8")
