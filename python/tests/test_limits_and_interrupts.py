@@ -92,7 +92,8 @@ def interrupt_after(seconds):
     ids=["solve", "solve_cmc"],
 )
 def test_ctrl_c_stops_a_long_solve(call):
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    # Python's own handler, whatever the test runner inherited (a background job may ignore SIGINT)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = interrupt_after(1.0)
     t = time.monotonic()
     try:
@@ -100,6 +101,7 @@ def test_ctrl_c_stops_a_long_solve(call):
             call()  # a solve that ends before the signal fails here (no KeyboardInterrupt)
     finally:
         timer.cancel()
-    assert time.monotonic() - t < 6.0
+        signal.signal(signal.SIGINT, previous)
+    assert time.monotonic() - t < 10.0
     # the module is usable afterwards
     assert bezierpde.solve(circle_job(6))[1]["converged"]
