@@ -59,7 +59,16 @@ void bind_extremal(py::module_& m) {
            }),
            py::arg("energy"), py::arg("n"), py::arg("m"), py::arg("fixed") = "boundary",
            py::arg("options") = bpde::ExtremalOptions(), "Tensor nets of degree (n, m).")
-      .def(py::init([](const Eigen::MatrixXd& Q, std::vector<int> fixed, const bpde::ExtremalOptions& o) {
+      .def(py::init([](py::handle gram, std::vector<int> fixed, const bpde::ExtremalOptions& o) {
+             // A 2-d array (SizeError naming `gram` otherwise, as points_arg does for N x 3).
+             using Array = py::array_t<double, py::array::f_style | py::array::forcecast>;
+             const Array a = Array::ensure(gram);
+             if (!a) throw bpde::ParseError("gram: expected an array of numbers");
+             if (a.ndim() != 2)  // (a non-square one is the solver's SizeError)
+               throw bpde::SizeError("gram: expected an array of shape (N, N), got shape " +
+                                     py::repr(a.attr("shape")).cast<std::string>());
+             const Eigen::MatrixXd Q = Eigen::Map<const Eigen::MatrixXd>(a.data(), a.shape(0), a.shape(1));
+             require_finite(Q, "gram");
              py::gil_scoped_release release;
              return bpde::ExtremalSolver(Q, std::move(fixed), o);
            }),

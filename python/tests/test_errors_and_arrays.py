@@ -148,6 +148,8 @@ SURROGATE = "\ud800"  # a lone surrogate: a str that UTF-8 cannot hold
         (lambda: bezierpde.check_mesh(np.zeros((3, 2)), [[0, 1, 2]]), bezierpde.SizeError, "V"),
         (lambda: bezierpde.check_mesh(np.eye(3), [[0, 1]]), bezierpde.SizeError, "F"),
         (lambda: bezierpde.check_mesh(np.eye(3), [[0, 1, 3]]), bezierpde.ParameterError, "F"),
+        (lambda: bezierpde.ExtremalSolver(np.ones(4), [0]), bezierpde.SizeError, "gram"),
+        (lambda: bezierpde.ExtremalSolver(np.diag([1.0, np.nan]), [0]), bezierpde.NonFiniteError, "gram"),
         # strings that are not valid Unicode (a lone surrogate) or not strings at all
         (lambda: bezierpde.net_from_dict({"type": SURROGATE}), bezierpde.ParseError, "net"),
         (lambda: bezierpde.net_from_dict({SURROGATE: 1}), bezierpde.ParseError, "net"),
