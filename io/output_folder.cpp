@@ -195,7 +195,11 @@ void OutputFolder::stage() {
     throw FileError("cannot create output directory '" + dir_ + "': " +
                     (ec ? ec.message() : std::string("a parent is not a directory")));
   }
-  const fs::path s = parent / unique_staging_name();
+  // Beside DIR when its parent is writable; inside an existing DIR otherwise (a user who may write
+  // DIR but not its parent, as with `--out ~`). Both keep every rename on DIR's file system.
+  const fs::path t(target_);
+  const fs::path home = !writable_dir(parent) && is_dir(t) ? t : parent;
+  const fs::path s = home / unique_staging_name();
   slot_ = register_staging(s.string());
   if (!fs::create_directory(s, ec) || ec) {
     abandon();

@@ -8,7 +8,8 @@
 //   out.commit();                                            // DIR gets both files, or neither
 //
 // The files are written into a staging folder beside DIR (in DIR's parent, so that every rename
-// stays on one file system) named `.bpde-staging-<pid>-<k>`. commit() then
+// stays on one file system) named `.bpde-staging-<pid>-<k>`; when DIR exists and its parent is not
+// writable (`--out ~` of an ordinary user), inside DIR instead. commit() then
 // - renames the staging folder to DIR when DIR does not exist (one atomic rename);
 // - when DIR exists, moves each staged file onto DIR/<name> by rename (each replacement atomic),
 //   after checking that DIR is a writable directory and no DIR/<name> is a directory. The files

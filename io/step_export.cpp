@@ -21,7 +21,10 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
+#include <cstdio>
+#include <cstdlib>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "bezierpde/core/errors.h"
@@ -58,14 +61,57 @@ void split_knots(const std::vector<double>& K, std::vector<double>& knots, std::
   }
 }
 
+// The shortest decimal that reads back as x.
+std::string shortest(double x) {
+  char buf[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
+  return buf;
+}
+
+// OpenCASCADE takes interior knots of multiplicity <= degree; a bspline net may hold an interior
+// knot of multiplicity degree + 1 (FORMATS.md "bspline"), where the surface may jump. With
+// K[k] = ... = K[k+deg] = t interior, the row of poles k-1 is the surface at t- and row k the
+// surface at t+. Where the two rows are equal (bit for bit) the surface is continuous there and
+// dropping one copy of t and row k is exact (the same surface); otherwise UnsupportedProblem
+// (exit 2): one face cannot hold the jump. rows[i][j]: the poles with index i in this direction.
+void lower_full_multiplicity(std::vector<double>& K, std::vector<std::vector<gp_Pnt>>& rows, int deg,
+                             const char* direction) {
+  const auto same = [](const gp_Pnt& a, const gp_Pnt& b) { return a.X() == b.X() && a.Y() == b.Y() && a.Z() == b.Z(); };
+  for (size_t k = 1; k + static_cast<size_t>(deg) + 1 < K.size(); ++k) {
+    if (K[k] == K[k - 1] || K[k + static_cast<size_t>(deg)] != K[k]) continue;  // not the start of a run of deg + 1
+    bool continuous = true;
+    for (size_t j = 0; j < rows[k].size(); ++j) continuous = continuous && same(rows[k - 1][j], rows[k][j]);
+    if (!continuous)
+      throw UnsupportedProblem(std::string("STEP export: the bspline surface is discontinuous at the ") + direction +
+                               " knot " + shortest(K[k]) +
+                               " (multiplicity degree + 1 and different control points on either side); a STEP "
+                               "face holds a continuous surface");
+    K.erase(K.begin() + static_cast<std::ptrdiff_t>(k));
+    rows.erase(rows.begin() + static_cast<std::ptrdiff_t>(k));
+  }
+}
+
 Handle(Geom_Surface) bspline(const BSplineNet& b) {
-  TColgp_Array2OfPnt poles(1, b.nu(), 1, b.nv());
+  std::vector<std::vector<gp_Pnt>> rows(b.nu(), std::vector<gp_Pnt>(b.nv()));  // [i][j]
   for (int i = 0; i < b.nu(); ++i)
-    for (int j = 0; j < b.nv(); ++j) poles.SetValue(i + 1, j + 1, pnt(b.points(), b.index(i, j)));
+    for (int j = 0; j < b.nv(); ++j) rows[i][j] = pnt(b.points(), b.index(i, j));
+  std::vector<double> U = b.knots_u(), V = b.knots_v();
+  lower_full_multiplicity(U, rows, b.p(), "u");
+  std::vector<std::vector<gp_Pnt>> cols(rows.empty() ? 0 : rows[0].size(), std::vector<gp_Pnt>(rows.size()));
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < rows[i].size(); ++j) cols[j][i] = rows[i][j];
+  lower_full_multiplicity(V, cols, b.q(), "v");
+  const int nu = static_cast<int>(rows.size()), nv = static_cast<int>(cols.size());
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) poles.SetValue(i + 1, j + 1, cols[j][i]);
   std::vector<double> ku, kv;
   std::vector<int> mu, mv;
-  split_knots(b.knots_u(), ku, mu);
-  split_knots(b.knots_v(), kv, mv);
+  split_knots(U, ku, mu);
+  split_knots(V, kv, mv);
   TColStd_Array1OfReal UK(1, static_cast<int>(ku.size())), VK(1, static_cast<int>(kv.size()));
   TColStd_Array1OfInteger UM(1, static_cast<int>(mu.size())), VM(1, static_cast<int>(mv.size()));
   for (size_t k = 0; k < ku.size(); ++k)

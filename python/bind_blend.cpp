@@ -28,7 +28,8 @@ void bind_blend(py::module_& m) {
       "their data (m x 3), an optional load f(x, y) -> 3 numbers.");
   spline_problem.def(py::init<>())
       .def_static(
-          "from_config", [](py::handle config) { return bpde::blend_config_from_json(to_json(config)).problem; },
+          "from_config",
+          [](py::handle config) { return bpde::blend_config_from_json(to_json(config, "config")).problem; },
           py::arg("config"), "The problem of a blend CONFIG dict (FORMATS.md; \"edges\" or \"surfaces\").")
       .def_readwrite("k", &bpde::SmoothingSplineProblem::k, "Intervals in x (8).")
       .def_readwrite("l", &bpde::SmoothingSplineProblem::l, "Intervals in y (4).")
@@ -55,7 +56,8 @@ void bind_blend(py::module_& m) {
           [](const bpde::SmoothingSplineOptions& o) {
             return o.method == bpde::SmoothingSplineOptions::Method::kElimination ? "elimination" : "kkt-lu";
           },
-          [](bpde::SmoothingSplineOptions& o, const std::string& s) {
+          [](bpde::SmoothingSplineOptions& o, const Text& t) {
+            const std::string s = text(t, "method");
             if (s == "elimination")
               o.method = bpde::SmoothingSplineOptions::Method::kElimination;
             else if (s == "kkt-lu")

@@ -15,7 +15,10 @@ void bind_bspline(py::module_& m) {
       .def(py::init<>())
       .def_property(
           "fixed", [](const bpde::BSplineExtremalOptions& o) { return bpde::to_string(o.fixed); },
-          [](bpde::BSplineExtremalOptions& o, const std::string& s) { o.fixed = parse_fixed(s); },
+          [](bpde::BSplineExtremalOptions& o, const Text& t) {
+            const std::string s = text(t, "fixed");
+            o.fixed = parse_fixed(s);
+          },
           "\"boundary\" (default), \"boundary+adjacent\" or \"u-boundaries\".")
       .def_readwrite("tolerance", &bpde::BSplineExtremalOptions::tolerance,
                      "Relative residual above which the solve fails, in (0, 1) (1e-11).")
@@ -42,7 +45,10 @@ void bind_bspline(py::module_& m) {
       .def(py::init<>())
       .def_property(
           "fixed", [](const bpde::BSplinePdeOptions& o) { return bpde::to_string(o.fixed); },
-          [](bpde::BSplinePdeOptions& o, const std::string& s) { o.fixed = parse_fixed(s); },
+          [](bpde::BSplinePdeOptions& o, const Text& t) {
+            const std::string s = text(t, "fixed");
+            o.fixed = parse_fixed(s);
+          },
           "\"boundary\" (default), \"boundary+adjacent\" or \"u-boundaries\" (second order only).")
       .def_readwrite("rank_tolerance", &bpde::BSplinePdeOptions::rank_tolerance, "In (0, 1) (1e-10).")
       .def_readwrite("consistency_tolerance", &bpde::BSplinePdeOptions::consistency_tolerance, "In (0, 1) (1e-10).")

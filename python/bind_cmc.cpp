@@ -5,6 +5,21 @@
 
 namespace bpde::python {
 
+namespace {
+
+// solve_cmc within the limits of a cmc job (its degrees), interruptible by Ctrl-C, the GIL released.
+template <class NetT>
+bpde::CmcResult<NetT> cmc(const bpde::NetShape& shape, const NetT& data, const bpde::CmcOptions& options) {
+  check_limits(bpde::cmc_requirements(options.functional, options.V.has_value()), shape, options.fixed,
+               bpde::to_string(options.solver), "solve_cmc");
+  bpde::CmcOptions o = options;
+  o.progress = interruptible(options.progress);
+  py::gil_scoped_release release;
+  return bpde::solve_cmc(data, o);
+}
+
+}  // namespace
+
 void bind_cmc(py::module_& m) {
   py::class_<bpde::CmcOptions>(m, "CmcOptions")
       .def(py::init<>())
@@ -12,13 +27,22 @@ void bind_cmc(py::module_& m) {
       .def_readwrite("V", &bpde::CmcOptions::V)
       .def_property(
           "solver", [](const bpde::CmcOptions& o) { return bpde::to_string(o.solver); },
-          [](bpde::CmcOptions& o, const std::string& s) { o.solver = bpde::parse_cmc_solver(s); })
+          [](bpde::CmcOptions& o, const Text& t) {
+            const std::string s = text(t, "solver");
+            o.solver = bpde::parse_cmc_solver(s);
+          })
       .def_property(
           "fixed", [](const bpde::CmcOptions& o) { return bpde::to_string(o.fixed); },
-          [](bpde::CmcOptions& o, const std::string& s) { o.fixed = parse_fixed(s); })
+          [](bpde::CmcOptions& o, const Text& t) {
+            const std::string s = text(t, "fixed");
+            o.fixed = parse_fixed(s);
+          })
       .def_property(
           "functional", [](const bpde::CmcOptions& o) { return bpde::to_string(o.functional); },
-          [](bpde::CmcOptions& o, const std::string& s) { o.functional = bpde::parse_cmc_functional(s); },
+          [](bpde::CmcOptions& o, const Text& t) {
+            const std::string s = text(t, "functional");
+            o.functional = bpde::parse_cmc_functional(s);
+          },
           "\"dirichlet\" (default), \"area\" or \"mean-curvature\" (solvers/cmc/cmc.h).")
       .def_readwrite("tolerance", &bpde::CmcOptions::tolerance)
       .def_readwrite("mean_curvature_tolerance", &bpde::CmcOptions::mean_curvature_tolerance)
@@ -26,7 +50,10 @@ void bind_cmc(py::module_& m) {
       .def_readwrite("geodesic_acceleration", &bpde::CmcOptions::geodesic_acceleration)
       .def_property(
           "area_start", [](const bpde::CmcOptions& o) { return bpde::to_string(o.area_start); },
-          [](bpde::CmcOptions& o, const std::string& s) { o.area_start = bpde::parse_area_start(s); },
+          [](bpde::CmcOptions& o, const Text& t) {
+            const std::string s = text(t, "area_start");
+            o.area_start = bpde::parse_area_start(s);
+          },
           "area functional: \"mean-curvature\" (default: the route mean-curvature-start first, the "
           "least-squares mean-curvature surface, not tried where the D_H solution is already within 1e-6 of "
           "a critical point of A_H, as on conformal data), \"dirichlet\" (from the D_H solution) or "
@@ -51,13 +78,14 @@ void bind_cmc(py::module_& m) {
       .def_readonly("iterations", &bpde::AreaRouteRecord::iterations)
       .def_readonly("continuation_steps", &bpde::AreaRouteRecord::continuation_steps)
       .def_readonly("seconds", &bpde::AreaRouteRecord::seconds)
-      .def_property_readonly("phases",
-                             [](const bpde::AreaRouteRecord& r) {
-                               py::dict d;
-                               for (const bpde::AreaPhaseRecord& ph : r.phases) d[bpde::to_string(ph.phase)] = ph.count;
-                               return d;
-                             },
-                             "iterations of each final phase run, by name")
+      .def_property_readonly(
+          "phases",
+          [](const bpde::AreaRouteRecord& r) {
+            py::dict d;
+            for (const bpde::AreaPhaseRecord& ph : r.phases) d[bpde::to_string(ph.phase)] = ph.count;
+            return d;
+          },
+          "iterations of each final phase run, by name")
       .def_property_readonly("soft_mode_end",
                              [](const bpde::AreaRouteRecord& r) { return bpde::to_string(r.soft_mode_end); })
       .def_readonly("kept", &bpde::AreaRouteRecord::kept)
@@ -115,14 +143,18 @@ void bind_cmc(py::module_& m) {
   cmc_result("CmcResultTensor", bpde::CmcResult<bpde::TensorNet>{});
   m.def(
       "solve_cmc",
-      [](const bpde::TriangularNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },
-      py::arg("data"), py::arg("options"), py::call_guard<py::gil_scoped_release>(),
+      [](const bpde::TriangularNet& data, const bpde::CmcOptions& options) {
+        return cmc({bpde::NetKind::Triangular, data.n(), data.n()}, data, options);
+      },
+      py::arg("data"), py::arg("options"),
       "The cmc problem of solvers/cmc/cmc.h (options.functional: the critical point of D + 2HV, of A + 2HV, "
       "or the least squares of the mean curvature) -> CmcResult (net, H, D, V, DH, A, energy, functional, summary).");
   m.def(
       "solve_cmc",
-      [](const bpde::TensorNet& data, const bpde::CmcOptions& options) { return bpde::solve_cmc(data, options); },
-      py::arg("data"), py::arg("options"), py::call_guard<py::gil_scoped_release>());
+      [](const bpde::TensorNet& data, const bpde::CmcOptions& options) {
+        return cmc({bpde::NetKind::Tensor, data.n(), data.m()}, data, options);
+      },
+      py::arg("data"), py::arg("options"));
 }
 
 }  // namespace bpde::python

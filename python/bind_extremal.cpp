@@ -27,10 +27,9 @@ void bind_extremal(py::module_& m) {
       .def_readonly("summary", &bpde::TriangularExtremalResult::summary);
   m.def(
       "solve_extremal",
-      [](const bpde::TensorNet& data, py::handle energy, const std::string& fixed,
-         const bpde::ExtremalOptions& options) {
+      [](const bpde::TensorNet& data, py::handle energy, const Text& fixed, const bpde::ExtremalOptions& options) {
         const bpde::EnergySpec spec = energy_arg(energy);
-        const bpde::FixedSet f = parse_fixed(fixed);
+        const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
         py::gil_scoped_release release;
         return bpde::solve_extremal(data, spec, f, options);
       },
@@ -40,10 +39,11 @@ void bind_extremal(py::module_& m) {
       "TriangularNet. `energy` is a name or an ENERGY dict.");
   m.def(
       "solve_extremal",
-      [](const bpde::TriangularNet& data, py::handle energy, const std::string& fixed,
-         const bpde::ExtremalOptions& options) {
+      [](const bpde::TriangularNet& data, py::handle energy, const Text& fixed, const bpde::ExtremalOptions& options) {
         const bpde::EnergySpec spec = energy_arg(energy);
-        const bpde::FixedSet f = parse_fixed(fixed);
+        const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
+        check_limits(bpde::extremal_requirements(), {bpde::NetKind::Triangular, data.n(), data.n()}, f, "",
+                     "solve_extremal");
         py::gil_scoped_release release;
         return bpde::solve_extremal(data, spec, f, options);
       },
@@ -51,15 +51,24 @@ void bind_extremal(py::module_& m) {
   py::class_<bpde::ExtremalSolver>(
       m, "ExtremalSolver",
       "A factored extremal problem (solvers/extremal.h): X_free = mould @ X_fixed, one product per boundary.")
-      .def(py::init([](py::handle energy, int n, int m, const std::string& fixed, const bpde::ExtremalOptions& o) {
+      .def(py::init([](py::handle energy, int n, int m, const Text& fixed, const bpde::ExtremalOptions& o) {
              const bpde::EnergySpec spec = energy_arg(energy);
-             const bpde::FixedSet f = parse_fixed(fixed);
+             const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
              py::gil_scoped_release release;
              return bpde::ExtremalSolver(spec, n, m, f, o);
            }),
            py::arg("energy"), py::arg("n"), py::arg("m"), py::arg("fixed") = "boundary",
            py::arg("options") = bpde::ExtremalOptions(), "Tensor nets of degree (n, m).")
-      .def(py::init([](const Eigen::MatrixXd& Q, std::vector<int> fixed, const bpde::ExtremalOptions& o) {
+      .def(py::init([](py::handle gram, std::vector<int> fixed, const bpde::ExtremalOptions& o) {
+             // A 2-d array (SizeError naming `gram` otherwise, as points_arg does for N x 3).
+             using Array = py::array_t<double, py::array::f_style | py::array::forcecast>;
+             const Array a = Array::ensure(gram);
+             if (!a) throw bpde::ParseError("gram: expected an array of numbers");
+             if (a.ndim() != 2)  // (a non-square one is the solver's SizeError)
+               throw bpde::SizeError("gram: expected an array of shape (N, N), got shape " +
+                                     py::repr(a.attr("shape")).cast<std::string>());
+             const Eigen::MatrixXd Q = Eigen::Map<const Eigen::MatrixXd>(a.data(), a.shape(0), a.shape(1));
+             require_finite(Q, "gram");
              py::gil_scoped_release release;
              return bpde::ExtremalSolver(Q, std::move(fixed), o);
            }),

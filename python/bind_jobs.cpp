@@ -39,11 +39,13 @@ void check_samples(int samples) {
 void bind_jobs(py::module_& m) {
   m.def(
       "solve_result",
-      [](py::handle job, std::optional<std::string> out) {
-        const Json j = to_json(job);
+      [](py::handle job, const std::optional<Text>& out_arg) {
+        const std::optional<std::string> out = path_text(out_arg, "out");
+        const Json j = to_json(job, "job");
         Json result;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           result = solve_result(j, out);
         }
         return from_json(result);
@@ -52,12 +54,14 @@ void bind_jobs(py::module_& m) {
       "result.json of `bpde solve` for a JOB dict (written to `out` with the surface files when given).");
   m.def(
       "sample",
-      [](py::handle net, int samples, std::optional<std::string> out) {
+      [](py::handle net, int samples, const std::optional<Text>& out_arg) {
+        const std::optional<std::string> out = path_text(out_arg, "out");
         const bpde::Net n = net_arg(net);
         check_samples(samples);
         bpde::TriangleMesh mesh;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           mesh = bpde::sample_net(n, samples);
           if (out) {
             bpde::write_output_files(*out, nullptr, n, mesh);  // as `bpde sample`: all or nothing
@@ -69,8 +73,9 @@ void bind_jobs(py::module_& m) {
       "(V, F, H) of `bpde sample`: vertices (V x 3 float64), triangles (F x 3 int32), mean curvature per vertex.");
   m.def(
       "energy",
-      [](py::handle net, const std::string& energy, std::optional<double> H) {
+      [](py::handle net, const Text& energy_arg, std::optional<double> H) {
         const bpde::Net n = net_arg(net);
+        const std::string energy = text(energy_arg, "energy");
         Json r;
         {
           py::gil_scoped_release release;
@@ -87,6 +92,7 @@ void bind_jobs(py::module_& m) {
         Json r;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           r = bpde::check_report(bpde::sample_net(n, samples));
         }
         return from_json(r);
@@ -94,7 +100,12 @@ void bind_jobs(py::module_& m) {
       py::arg("net"), py::arg("samples") = 50, "What `bpde check` prints, as a dict (CGAL figures).");
   m.def(
       "check_mesh",
-      [](const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
+      [](py::handle V_arg, py::handle F_arg) {
+        const Eigen::MatrixX3d V = points_arg<3>(V_arg, "V");
+        require_finite(V, "V");
+        const Eigen::MatrixX3i F = points_arg<3, int>(F_arg, "F");
+        if (F.size() > 0 && (F.minCoeff() < 0 || F.maxCoeff() >= V.rows()))
+          throw bpde::ParameterError("F: vertex indices must be in 0.." + std::to_string(V.rows() - 1));
         Json r;
         {
           py::gil_scoped_release release;
@@ -105,7 +116,8 @@ void bind_jobs(py::module_& m) {
       py::arg("V"), py::arg("F"), "The CGAL figures of a mesh given as arrays.");
   m.def(
       "plate",
-      [](double aspect, int degree, const std::string& method) {
+      [](double aspect, int degree, const Text& method_arg) {
+        const std::string method = text(method_arg, "method");
         bpde::PlateOutcome out;
         {
           py::gil_scoped_release release;
@@ -116,11 +128,13 @@ void bind_jobs(py::module_& m) {
       py::arg("aspect"), py::arg("degree"), py::arg("method"), "What `bpde plate` prints, as a dict.");
   m.def(
       "blend_result",
-      [](py::handle config, std::optional<std::string> out) {
-        const bpde::BlendConfig c = bpde::blend_config_from_json(to_json(config));
+      [](py::handle config, const std::optional<Text>& out_arg) {
+        const std::optional<std::string> out = path_text(out_arg, "out");
+        const bpde::BlendConfig c = bpde::blend_config_from_json(to_json(config, "config"));
         Json result;
         {
           py::gil_scoped_release release;
+          InterruptibleJobs ctrl_c;
           const bpde::BlendOutcome o = bpde::run_blend(c);
           if (out) {
             bpde::write_blend_outcome(*out, c, o);

@@ -5,12 +5,13 @@ namespace bpde::python {
 
 namespace {
 
+// The `points` setter: the net's row count (SizeError) and finite values (NonFiniteError), as the
+// constructors check them; the net is unchanged when either check fails.
 template <class NetT>
-void set_points(NetT& net, const Eigen::Ref<const Eigen::MatrixX3d>& P) {
-  if (P.rows() != net.points().rows())
-    throw bpde::SizeError("points: expected " + std::to_string(net.points().rows()) + " x 3, got " +
-                          std::to_string(P.rows()) + " x 3");
-  net.points() = P;
+void set_points(NetT& net, py::handle points) {
+  Eigen::MatrixX3d P = points_arg<3>(points, "points", net.points().rows());
+  require_finite(P, "points");
+  net.points() = std::move(P);
 }
 
 }  // namespace
@@ -18,13 +19,14 @@ void set_points(NetT& net, const Eigen::Ref<const Eigen::MatrixX3d>& P) {
 void bind_nets(py::module_& m) {
   py::class_<bpde::TensorNet>(m, "TensorNet", "Tensor Bézier net of degree (n, m); points row i*(m+1)+j, N x 3.")
       .def(py::init<int, int>(), py::arg("n"), py::arg("m"))
-      .def(py::init<int, int, Eigen::MatrixX3d>(), py::arg("n"), py::arg("m"), py::arg("points"))
+      .def(py::init(
+               [](int n, int m, py::handle points) { return bpde::TensorNet(n, m, points_arg<3>(points, "points")); }),
+           py::arg("n"), py::arg("m"), py::arg("points"))
       .def_property_readonly("n", &bpde::TensorNet::n)
       .def_property_readonly("m", &bpde::TensorNet::m)
       .def_property(
           "points", [](bpde::TensorNet& n) -> Eigen::MatrixX3d& { return n.points(); },
-          [](bpde::TensorNet& n, const Eigen::Ref<const Eigen::MatrixX3d>& P) { set_points(n, P); },
-          py::return_value_policy::reference_internal)
+          [](bpde::TensorNet& n, py::handle P) { set_points(n, P); }, py::return_value_policy::reference_internal)
       .def("evaluate", &bpde::TensorNet::evaluate, py::arg("u"), py::arg("v"))
       .def("to_dict", [](const bpde::TensorNet& n) { return from_json(bpde::net_to_json(n)); })
       .def("__repr__", [](const bpde::TensorNet& n) {
@@ -33,12 +35,12 @@ void bind_nets(py::module_& m) {
   py::class_<bpde::TriangularNet>(m, "TriangularNet",
                                   "Triangular Bézier net of degree n; points P_{n00} first, P_{00n} last, N x 3.")
       .def(py::init<int>(), py::arg("n"))
-      .def(py::init<int, Eigen::MatrixX3d>(), py::arg("n"), py::arg("points"))
+      .def(py::init([](int n, py::handle points) { return bpde::TriangularNet(n, points_arg<3>(points, "points")); }),
+           py::arg("n"), py::arg("points"))
       .def_property_readonly("n", &bpde::TriangularNet::n)
       .def_property(
           "points", [](bpde::TriangularNet& n) -> Eigen::MatrixX3d& { return n.points(); },
-          [](bpde::TriangularNet& n, const Eigen::Ref<const Eigen::MatrixX3d>& P) { set_points(n, P); },
-          py::return_value_policy::reference_internal)
+          [](bpde::TriangularNet& n, py::handle P) { set_points(n, P); }, py::return_value_policy::reference_internal)
       .def("evaluate", &bpde::TriangularNet::evaluate, py::arg("u"), py::arg("v"))
       .def("to_dict", [](const bpde::TriangularNet& n) { return from_json(bpde::net_to_json(n)); })
       .def("__repr__", [](const bpde::TriangularNet& n) { return "TriangularNet(n=" + std::to_string(n.n()) + ")"; });
@@ -58,8 +60,7 @@ void bind_nets(py::module_& m) {
       .def_property_readonly("knots_v", &bpde::BSplineNet::knots_v)
       .def_property(
           "points", [](bpde::BSplineNet& n) -> Eigen::MatrixX3d& { return n.points(); },
-          [](bpde::BSplineNet& n, const Eigen::Ref<const Eigen::MatrixX3d>& P) { set_points(n, P); },
-          py::return_value_policy::reference_internal)
+          [](bpde::BSplineNet& n, py::handle P) { set_points(n, P); }, py::return_value_policy::reference_internal)
       .def("evaluate", &bpde::BSplineNet::evaluate, py::arg("u"), py::arg("v"), "A point; (u, v) in the knot domain.")
       .def("derivative", &bpde::BSplineNet::derivative, py::arg("u"), py::arg("v"), py::arg("du"), py::arg("dv"))
       .def("to_dict", [](const bpde::BSplineNet& n) { return from_json(bpde::net_to_json(n)); })

@@ -20,7 +20,8 @@ void bind_pde(py::module_& m) {
           [](const bpde::PdeLuOptions& o) {
             return o.formulation == bpde::PdeLuOptions::Formulation::Bernstein ? "bernstein" : "anti-diagonal";
           },
-          [](bpde::PdeLuOptions& o, const std::string& s) {
+          [](bpde::PdeLuOptions& o, const Text& t) {
+            const std::string s = text(t, "formulation");
             if (s == "bernstein")
               o.formulation = bpde::PdeLuOptions::Formulation::Bernstein;
             else if (s == "anti-diagonal")
@@ -58,14 +59,20 @@ void bind_pde(py::module_& m) {
           [](const bpde::TetraharmonicOptions& o) {
             return o.method == bpde::TetraharmonicOptions::Method::Explicit ? "explicit" : "lu";
           },
-          [](bpde::TetraharmonicOptions& o, const std::string& s) { o.method = bpde::parse_tetraharmonic_method(s); });
+          [](bpde::TetraharmonicOptions& o, const Text& t) {
+            const std::string s = text(t, "method");
+            o.method = bpde::parse_tetraharmonic_method(s);
+          });
   m.def(
       "solve_tetraharmonic",
       [](const bpde::TensorNet& data, const bpde::TetraharmonicOptions& options) {
+        check_limits(bpde::tetraharmonic_requirements(), {bpde::NetKind::Tensor, data.n(), data.m()},
+                     bpde::FixedSet::BoundaryAdjacent, "", "solve_tetraharmonic");
+        py::gil_scoped_release release;
         bpde::TetraharmonicResult r = bpde::solve_tetraharmonic(data, options);
         return std::make_pair(std::move(r.net), r.summary);
       },
-      py::arg("data"), py::arg("options") = bpde::TetraharmonicOptions(), py::call_guard<py::gil_scoped_release>(),
+      py::arg("data"), py::arg("options") = bpde::TetraharmonicOptions(),
       "Tetraharmonic C1 surface (C1 methods, Theorem 1) -> (TensorNet, Summary).");
 
   py::class_<bpde::ClampedPlateOptions>(m, "ClampedPlateOptions")
@@ -77,7 +84,10 @@ void bind_pde(py::module_& m) {
           [](const bpde::ClampedPlateOptions& o) {
             return o.method == bpde::ClampedPlateOptions::Method::AdmissibleLoad ? "admissible-load" : "ritz";
           },
-          [](bpde::ClampedPlateOptions& o, const std::string& s) { o.method = bpde::parse_plate_method(s); });
+          [](bpde::ClampedPlateOptions& o, const Text& t) {
+            const std::string s = text(t, "method");
+            o.method = bpde::parse_plate_method(s);
+          });
   py::class_<bpde::ClampedPlateResult>(m, "ClampedPlateResult")
       .def_readonly("center_deflection", &bpde::ClampedPlateResult::center_deflection)
       .def_readonly("energy", &bpde::ClampedPlateResult::energy)

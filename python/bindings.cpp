@@ -1,48 +1,83 @@
 // The conversions shared by the binding files (bindings.h).
 #include "bindings.h"
 
+#include <chrono>
 #include <cmath>
+#include <memory>
 #include <variant>
 
 #include "bezierpde/io/job.h"
 
 namespace bpde::python {
 
-Json to_json(py::handle h, int depth) {
+std::string text(py::handle h, const std::string& what) {
+  if (!PyUnicode_Check(h.ptr()))
+    throw bpde::ParseError(what + ": expected a str, got " +
+                           py::str(h.get_type().attr("__name__")).cast<std::string>());
+  Py_ssize_t size = 0;
+  const char* data = PyUnicode_AsUTF8AndSize(h.ptr(), &size);
+  if (!data) {
+    PyErr_Clear();
+    throw bpde::ParseError(what + ": a str that is not valid Unicode text (it holds a lone surrogate)");
+  }
+  return std::string(data, static_cast<size_t>(size));
+}
+
+std::string path_text(const Text& t, const std::string& what) {
+  if (PyUnicode_Check(t.value.ptr())) return text(t.value, what);
+  PyObject* p = PyOS_FSPath(t.value.ptr());  // os.fspath: str or bytes of an os.PathLike
+  if (!p) {
+    PyErr_Clear();
+    throw bpde::ParseError(what + ": expected a str or os.PathLike path, got " +
+                           py::str(t.value.get_type().attr("__name__")).cast<std::string>());
+  }
+  const py::object path = py::reinterpret_steal<py::object>(p);
+  return text(path, what);
+}
+
+void require_finite(const Eigen::Ref<const Eigen::MatrixXd>& P, const std::string& what) {
+  for (Eigen::Index r = 0; r < P.rows(); ++r)
+    for (Eigen::Index c = 0; c < P.cols(); ++c)
+      if (!std::isfinite(P(r, c)))
+        throw bpde::NonFiniteError(what + ": row " + std::to_string(r) + " column " + std::to_string(c) +
+                                   " is not finite");
+}
+
+Json to_json(py::handle h, const std::string& what, int depth) {
   if (depth > bpde::kMaxJsonDepth)
-    throw bpde::SizeError("JSON input nested deeper than " + std::to_string(bpde::kMaxJsonDepth) + " levels");
+    throw bpde::SizeError(what + ": nested deeper than " + std::to_string(bpde::kMaxJsonDepth) + " levels");
   if (h.is_none()) return nullptr;
   if (py::isinstance<py::bool_>(h)) return h.cast<bool>();
   if (py::isinstance<py::int_>(h)) {
     try {
       return h.cast<long long>();
     } catch (const py::cast_error&) {
-      throw bpde::ParseError("integer out of range: " + py::str(h).cast<std::string>());
+      throw bpde::ParseError(what + ": integer out of range: " + py::str(h).cast<std::string>());
     }
   }
   if (py::isinstance<py::float_>(h)) {
     const double x = h.cast<double>();
-    if (!std::isfinite(x)) throw bpde::NonFiniteError("a number is not finite (JSON has no NaN or infinity)");
+    if (!std::isfinite(x)) throw bpde::NonFiniteError(what + ": a number is not finite (JSON has no NaN or infinity)");
     return x;
   }
-  if (py::isinstance<py::str>(h)) return h.cast<std::string>();
+  if (py::isinstance<py::str>(h)) return text(h, what);
   if (py::isinstance<py::dict>(h)) {
     Json j = Json::object();
     for (auto item : h.cast<py::dict>()) {
-      if (!py::isinstance<py::str>(item.first)) throw bpde::ParseError("a JSON object key must be a str");
-      j[item.first.cast<std::string>()] = to_json(item.second, depth + 1);
+      if (!py::isinstance<py::str>(item.first)) throw bpde::ParseError(what + ": a JSON object key must be a str");
+      j[text(item.first, what + " (a key)")] = to_json(item.second, what, depth + 1);
     }
     return j;
   }
   if (py::isinstance<py::list>(h) || py::isinstance<py::tuple>(h)) {
     Json j = Json::array();
-    for (auto v : h) j.push_back(to_json(v, depth + 1));
+    for (auto v : h) j.push_back(to_json(v, what, depth + 1));
     return j;
   }
   // numpy scalars and arrays: through their Python values.
-  if (py::hasattr(h, "tolist")) return to_json(h.attr("tolist")(), depth + 1);
-  throw bpde::ParseError("cannot convert a Python " + py::str(h.get_type().attr("__name__")).cast<std::string>() +
-                         " to JSON");
+  if (py::hasattr(h, "tolist")) return to_json(h.attr("tolist")(), what, depth + 1);
+  throw bpde::ParseError(what + ": cannot convert a Python " +
+                         py::str(h.get_type().attr("__name__")).cast<std::string>() + " to JSON");
 }
 
 py::object from_json(const Json& j) {
@@ -79,10 +114,15 @@ py::tuple mesh_tuple(bpde::TriangleMesh&& mesh) {
 }
 
 bpde::Net net_arg(py::handle h) {
-  if (py::isinstance<bpde::TensorNet>(h)) return h.cast<bpde::TensorNet>();
-  if (py::isinstance<bpde::TriangularNet>(h)) return h.cast<bpde::TriangularNet>();
-  if (py::isinstance<bpde::BSplineNet>(h)) return h.cast<bpde::BSplineNet>();
-  const Json j = to_json(h);
+  // A net object's points may have been written through its `points` view: checked here.
+  const auto checked = [](auto net) {
+    require_finite(net.points(), "net.points");
+    return bpde::Net(std::move(net));
+  };
+  if (py::isinstance<bpde::TensorNet>(h)) return checked(h.cast<bpde::TensorNet>());
+  if (py::isinstance<bpde::TriangularNet>(h)) return checked(h.cast<bpde::TriangularNet>());
+  if (py::isinstance<bpde::BSplineNet>(h)) return checked(h.cast<bpde::BSplineNet>());
+  const Json j = to_json(h, "net");
   return bpde::net_from_json(j, "net");
 }
 
@@ -99,8 +139,27 @@ bpde::FixedSet parse_fixed(const std::string& s) {
 }
 
 bpde::EnergySpec energy_arg(py::handle h) {
-  if (py::isinstance<py::str>(h)) return bpde::energy_from_argument(h.cast<std::string>(), "energy");
-  return bpde::energy_from_json(to_json(h), "operator", true);
+  if (py::isinstance<py::str>(h)) return bpde::energy_from_argument(text(h, "energy"), "energy");
+  return bpde::energy_from_json(to_json(h, "energy"), "operator", true);
+}
+
+bpde::ProgressFn interruptible(bpde::ProgressFn inner) {
+  using Clock = std::chrono::steady_clock;
+  auto last = std::make_shared<Clock::time_point>(Clock::now());
+  return [inner = std::move(inner), last](std::string_view stage, double done, double total) {
+    const Clock::time_point now = Clock::now();
+    if (now - *last >= std::chrono::milliseconds(50)) {
+      *last = now;
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+    if (inner) inner(stage, done, total);
+  };
+}
+
+void check_limits(const bpde::SolverRequirements& r, const bpde::NetShape& shape, bpde::FixedSet fixed,
+                  const std::string& method, const std::string& where) {
+  bpde::check_requirements(r, shape, fixed, method, where);
 }
 
 }  // namespace bpde::python

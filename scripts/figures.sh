@@ -2,7 +2,8 @@
 # Regenerate the PNG figures of the example READMEs: runs examples/<EXAMPLE>/figures.py (every
 # example, or the ones named) with the Python module of ./build (bezierpde.figures, matplotlib's
 # headless Agg backend), after building the module, the command, the benchmarks and the example
-# programs whose tables the figures plot. Each script writes its PNGs beside its README.
+# programs whose tables the figures plot. Each script writes its PNGs, and an SVG beside each,
+# beside its README.
 # Usage: bash scripts/figures.sh [EXAMPLE ...]      e.g. bash scripts/figures.sh 004-cmc-circle
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -35,7 +35,7 @@ def main():
             top.append(pair[0])
             bottom.append(pair[1])
         panels = top + bottom
-        fg.wrote(out / f"{file}.png", fg.surfaces(out / f"{file}.png", panels, cols=4, net_row=False, shared=False,
+        fg.wrote(out / f"{file}.png", fg.surfaces(out / f"{file}.png", panels, cols=4, net_row=False,
                                                   size=(800, 460)))
         fg.wrote(out / f"{file}-nets.png", fg.surfaces(out / f"{file}-nets.png", panels, cols=4, nets_only=True,
                                                        size=(800, 460)))

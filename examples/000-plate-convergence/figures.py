@@ -37,7 +37,7 @@ def main():
     out = fg.out_dir(default=HERE)
     panels = [fg.Panel(scaled(plate(1.0, 11, m).net, 0.3), f"{m}, n = 11 (z × {0.3 / plate(1.0, 11, m).center_deflection:.0f})")
               for m in ("admissible-load", "ritz")]
-    fg.wrote(out / "plate.png", fg.surfaces(out / "plate.png", panels, shared=False))
+    fg.wrote(out / "plate.png", fg.surfaces(out / "plate.png", panels))
     # Fig. X: the load of the admissible-load plate, n = 7, 9, 11, 15, one scale and one range
     loads = []
     for n in (7, 9, 11, 15):

@@ -81,10 +81,10 @@ def main():
     panels = [fg.Panel(fig1, "Fig. 1, biharmonic"), fg.Panel(fig1, "Fig. 1, second view", elev=55, azim=30),
               fg.Panel(job_net("fig2-modified-a2-0.1"), "Fig. 2, modified a² = 0.1"),
               fg.Panel(job_net("fig2-modified-a2-1.5"), "Fig. 2, modified a² = 1.5")]
-    fg.wrote(out / "fig1-2.png", fg.surfaces(out / "fig1-2.png", panels, shared=False))
+    fg.wrote(out / "fig1-2.png", fg.surfaces(out / "fig1-2.png", panels))
     panels = [fg.Panel(job_net(f"fig{f}-gnorm-t-{t}"), f"Fig. {f}, G-norm t = {label}")
               for f, t, label in ((3, "pi2", "π/2"), (4, "pi3", "π/3"), (4, "pi4", "π/4"), (4, "pi8", "π/8"))]
-    fg.wrote(out / "fig3-4.png", fg.surfaces(out / "fig3-4.png", panels, shared=False))
+    fg.wrote(out / "fig3-4.png", fg.surfaces(out / "fig3-4.png", panels))
 
     degrees = list(range(4, 21))
     err = accuracy(degrees)

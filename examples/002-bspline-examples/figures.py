@@ -44,7 +44,7 @@ def main():
     for problem, title in PROBLEMS:
         net, report = bezierpde.solve({"net": ring_net(), "fixed": "boundary", "problem": problem})
         panels.append(fg.Panel(net, title + ("" if report["converged"] else " (not converged)"), elev=30, azim=-120))
-    fg.wrote(out / "section5.png", fg.surfaces(out / "section5.png", panels, shared=False))
+    fg.wrote(out / "section5.png", fg.surfaces(out / "section5.png", panels))
 
 
 

@@ -26,7 +26,7 @@ def main():
         panels.append(fg.Panel(net, f"{name}: {title}", elev=25, azim=-50, samples=40))
     # one colour scale per surface: fig2a's H spans [-929, 198], the others stay within [-20, 110]
     for file, kw in [("fig2-surfaces.png", {}), ("fig2-nets.png", {"nets_only": True})]:
-        fg.wrote(out / file, fg.surfaces(out / file, panels, cols=2, net_row=False, shared=False,
+        fg.wrote(out / file, fg.surfaces(out / file, panels, cols=2, net_row=False,
                                          size=(640, 560), **kw))
 
 

@@ -28,7 +28,7 @@ def main():
     panels = [fg.Panel(net, f"blend (Fig. 2c), J = {report['energy']:.4f}", elev=25, azim=-50, samples=40),
               fg.Panel(extremal.net, "biharmonic B-spline extremal, same ring", elev=25, azim=-50, samples=40)]
     fg.wrote(out / "blend-extremal.png",
-             fg.surfaces(out / "blend-extremal.png", panels, net_row=False, shared=False, size=(720, 360)))
+             fg.surfaces(out / "blend-extremal.png", panels, net_row=False, size=(720, 360)))
     errors = []
     for eps in EPSILONS:
         config["epsilon"] = eps

@@ -42,7 +42,7 @@ def main():
     for name, H in (("n6-a-H-2", "−2"), ("n6-b-H-1.5", "−1.5"), ("n6-c-H-1", "−1")):
         net, report = bezierpde.solve(fg.load_json(HERE / f"{name}.json"))
         panels.append(fg.Panel(net, f"Fig. 4: n = 6, H = {H}", elev=40, azim=-75))
-    fg.wrote(out / "fig4.png", fg.surfaces(out / "fig4.png", panels, shared=False))
+    fg.wrote(out / "fig4.png", fg.surfaces(out / "fig4.png", panels))
 
     with tempfile.TemporaryDirectory() as tmp:
         tables = fg.example_tables("004-cmc-c1-triangle", HERE, tmp + "/out")

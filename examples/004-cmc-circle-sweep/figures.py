@@ -34,7 +34,7 @@ def main():
                    ylabel="|H| at the fold", hlines=[(1.0, "exact: the hemisphere, |H| = 1")],
                    title="circle in three arcs: the fold against the degree")
     fg.wrote(out / "fold-vs-degree.png", size)
-    fg.wrote(out / "surfaces.png", fg.surfaces(out / "surfaces.png", panels, cols=3, net_row=False, shared=False,
+    fg.wrote(out / "surfaces.png", fg.surfaces(out / "surfaces.png", panels, cols=3, net_row=False,
                                                size=(780, 520)))
     fg.wrote(out / "nets.png", fg.surfaces(out / "nets.png", panels, cols=3, nets_only=True, size=(780, 520)))
 

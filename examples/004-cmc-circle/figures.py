@@ -24,7 +24,7 @@ def main():
     for name, H in (("n4-a-H-1.5", "−1.5"), ("n4-b-H-1", "−1"), ("n4-c-H-0.5", "−0.5")):
         net, report = bezierpde.solve(fg.load_json(HERE / f"{name}.json"))
         panels.append(fg.Panel(net, f"n = 4, H = {H}", elev=20))
-    fg.wrote(out / "fig1.png", fg.surfaces(out / "fig1.png", panels, shared=False))
+    fg.wrote(out / "fig1.png", fg.surfaces(out / "fig1.png", panels))
 
     curves, folds = [], []
     for n in (4, 6, 8, 12):

@@ -26,7 +26,7 @@ def main():
         net, report = bezierpde.solve(fg.load_json(HERE / f"{name}.json"))
         panels.append(fg.Panel(net, title if report["converged"] else title + " (not converged)", elev=25))
     for file, kw in (("fig2-surfaces.png", {}), ("fig2-nets.png", {"nets_only": True})):
-        fg.wrote(out / file, fg.surfaces(out / file, panels, cols=3, net_row=False, shared=False,
+        fg.wrote(out / file, fg.surfaces(out / file, panels, cols=3, net_row=False,
                                          size=(780, 520), **kw))
 
 

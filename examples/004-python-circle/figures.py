@@ -30,7 +30,7 @@ def main():
     panels = [fg.Panel(net, f"solve: H = −1, V = {report['volume']:.4f}", elev=20),
               fg.Panel(fold.net, f"solve_cmc: stopped at the fold, H = {fold.H:.4f}", elev=20),
               fg.Panel(lifted.net, "boundary lifted by 0.1, H = 0", elev=20)]
-    fg.wrote(out / "steps.png", fg.surfaces(out / "steps.png", panels, shared=False))
+    fg.wrote(out / "steps.png", fg.surfaces(out / "steps.png", panels))
     h = fold.H
     Hs, Vs = fg.branch(job, np.concatenate([np.linspace(0, 0.97 * h, 15), h * np.array([0.985, 0.995, 0.999])]))
     V_fold = fg.energy_volume(fold.net, h)

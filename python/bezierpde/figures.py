@@ -10,8 +10,12 @@ module; ``bash scripts/figures.sh [EXAMPLE ...]`` runs them and writes the PNGs 
     >>> figures.plot("conv.png", [figures.Series("ritz", degrees, errors)], logy=True)
 
 The mean-curvature colour scale leaves out outliers (colour_range: Tukey's fences), such as the
-huge |H| at corners where x_u ∥ x_v. Pictures are kept small (at most 800 x 600 pixels, a palette of at most 256 colours when Pillow is
-present) so that they can be committed.
+huge |H| at corners where x_u ∥ x_v; the panels of one figure share one scale (one colour bar), so
+that their colours compare. Text is set at sizes that stay readable where the READMEs show the
+pictures at their pixel size (titles and labels 11 pt, ticks 10 pt at 100 dpi). Pictures are kept
+small (at most 800 x 600 pixels, a palette of at most 256 colours when Pillow is present) so that
+they can be committed; each PNG gets an SVG beside it (text and lines as vectors, the shaded
+surfaces as embedded images) for papers.
 """
 
 import dataclasses
@@ -22,6 +26,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import textwrap
 
 import numpy as np
 
@@ -39,6 +44,19 @@ from . import _core  # noqa: E402
 MAX_SIZE = (800, 600)
 DPI = 100
 CMAP = "coolwarm"
+#: Font sizes (points): panel and plot titles, axis and colour-bar labels, tick labels, legends.
+TITLE, LABEL, TICK, LEGEND = 11, 11, 10, 9
+#: Pixels at the right of a surface figure for its shared colour bar with its ticks and label.
+BAR_PIXELS = 150
+#: Resolution of the rasterized surfaces inside the SVGs (dots per inch).
+SVG_DPI = DPI
+
+# SVG output that depends on the figure only (no random ids, no date): regenerated files diff cleanly.
+plt.rcParams["svg.hashsalt"] = "bezierpde"
+plt.rcParams["axes.labelsize"] = LABEL
+plt.rcParams["xtick.labelsize"] = TICK
+plt.rcParams["ytick.labelsize"] = TICK
+plt.rcParams["legend.fontsize"] = LEGEND
 
 
 @dataclasses.dataclass
@@ -168,10 +186,16 @@ def _box(ax, V):
     ax.set_box_aspect(tuple(r / r.max()))
 
 
+def _wrapped(title, width_px):
+    """`title` broken into lines that fit `width_px` at the TITLE size (about 0.55 em a character)."""
+    chars = max(10, int(width_px / (0.55 * TITLE * DPI / 72.0)))
+    return "\n".join(textwrap.wrap(title, chars)) if title else title
+
+
 def _axes3d(fig, rows, cols, k, panel):
     ax = fig.add_subplot(rows, cols, k, projection="3d")
     ax.view_init(elev=panel.elev, azim=panel.azim)
-    ax.set_title(panel.title, fontsize=8, pad=0)
+    ax.set_title(_wrapped(panel.title, fig.bbox.width / cols * 0.95), fontsize=TITLE, pad=0)
     ax.set_facecolor((1, 1, 1, 0))  # transparent: a neighbour's colour bar labels stay visible
     ax.set_axis_off()  # the shape, as the papers draw it; axes and ticks only clutter a small picture
     return ax
@@ -190,9 +214,10 @@ def _mesh(panel):
 
 def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size=None, shared=True, nets_only=False,
              colour_by="H", colour_label=None):
-    """Writes `path` (PNG): one column per Panel; the first row the surface coloured by mean
-    curvature H (one colour bar, range `clim` or colour_range of every panel's H; with
-    shared=False one bar per panel, for surfaces of different H), the second row (when net_row)
+    """Writes `path` (PNG, and an SVG beside it): one column per Panel; the first row the surface
+    coloured by mean curvature H (one colour bar, range `clim` or colour_range of every panel's H,
+    so that the panels compare; shared=False: one bar per panel, only for panels whose colours
+    show different quantities), the second row (when net_row)
     the control net over the surface in grey. nets_only: the control nets alone (no colour bar).
     colour_by="z" colours by height instead (a load or a deflection plotted as a graph).
 
@@ -211,7 +236,8 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
     cols = cols or min(len(panels), 4)
     blocks = math.ceil(len(panels) / cols)
     rows = blocks * (2 if net_row else 1)
-    w, h = size or (min(MAX_SIZE[0], (210 if shared else 250) * cols + (150 if shared else 20)), min(MAX_SIZE[1], (230 if net_row else 300) * rows + 40))
+    w, h = size or (min(MAX_SIZE[0], (210 if shared else 250) * cols + (BAR_PIXELS if shared else 20)),
+                    min(MAX_SIZE[1], (230 if net_row else 300) * rows + 40))
     fig = plt.figure(figsize=(w / DPI, h / DPI), dpi=DPI)
     for k, (p, (V, F, H)) in enumerate(zip(panels, meshes)):
         block, col = divmod(k, cols)
@@ -227,26 +253,30 @@ def surfaces(path, panels, suptitle="", cols=None, clim=None, net_row=True, size
         Hf = np.where(np.isfinite(H), H, np.nan)[F].mean(axis=1)
         rgba = cmap(norm(np.nan_to_num(Hf, nan=0.5 * (lim[0] + lim[1]))))
         rgba[:, :3] *= _shade(V, F)[:, None]
-        ax.add_collection3d(Poly3DCollection(V[F], facecolors=rgba, edgecolors="none", linewidths=0))
+        ax.add_collection3d(Poly3DCollection(V[F], facecolors=rgba, edgecolors="none", linewidths=0, rasterized=True))
         _box(ax, V)
         if not shared:
             cb = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.55, pad=0.0, aspect=15,
                               format=mticker.ScalarFormatter(useOffset=False), ticks=mticker.MaxNLocator(4))
-            cb.ax.tick_params(labelsize=6)
-            cb.set_label(label.split()[-1], fontsize=7)
+            cb.ax.tick_params(labelsize=TICK)
+            cb.ax.set_title(label.split()[-1], fontsize=LABEL)  # above the bar: never clipped at the right
         if net_row:
             ax = _axes3d(fig, rows, cols, (row + 1) * cols + col + 1, dataclasses.replace(p, title="control net"))
             _net(ax, V, F, Pn, segs, net_rings(p.net))
     shared = shared and not nets_only
-    bar = 1.0 - (110.0 if shared else 10.0) / w  # the colour bar and its labels take the last 110 pixels
-    fig.subplots_adjust(left=0.0, right=bar, bottom=0.02, top=0.90 if suptitle else 0.96, wspace=0.02, hspace=0.12)
+    bar = 1.0 - (BAR_PIXELS - 10.0 if shared else 10.0) / w  # the colour bar, its ticks and label at the right
+    # room above the first row for its titles (wrapped onto several lines) and the suptitle
+    lines = max([1] + [ax.get_title().count("\n") + 1 for ax in fig.axes[:cols * (2 if net_row else 1)]])
+    top_px = lines * 1.3 * TITLE * DPI / 72.0 + 6.0 + (1.6 * (TITLE + 1) * DPI / 72.0 if suptitle else 0.0)
+    fig.subplots_adjust(left=0.0, right=bar, bottom=0.02, top=1.0 - top_px / h, wspace=0.02, hspace=0.12)
     if shared:
         cax = fig.add_axes([bar + 15.0 / w, 0.25, 12.0 / w, 0.5])
-        cb = fig.colorbar(plt.cm.ScalarMappable(norm=mcolors.Normalize(*clim), cmap=cmap), cax=cax)
-        cb.set_label(label, fontsize=8)
-        cb.ax.tick_params(labelsize=7)
+        cb = fig.colorbar(plt.cm.ScalarMappable(norm=mcolors.Normalize(*clim), cmap=cmap), cax=cax,
+                          format=mticker.ScalarFormatter(useOffset=False), ticks=mticker.MaxNLocator(5))
+        cb.set_label(label, fontsize=LABEL)
+        cb.ax.tick_params(labelsize=TICK)
     if suptitle:
-        fig.suptitle(suptitle, fontsize=10)
+        fig.suptitle(suptitle, fontsize=TITLE + 1)
     return save(fig, path)
 
 
@@ -255,7 +285,7 @@ def _net(ax, V, F, Pn, segs, rings):
     boundary dark, adjacent ring lighter, interior points white."""
     grey = np.tile([0.82, 0.82, 0.85, 0.35], (len(F), 1))
     grey[:, :3] *= _shade(V, F)[:, None]
-    ax.add_collection3d(Poly3DCollection(V[F], facecolors=grey, edgecolors="none", linewidths=0))
+    ax.add_collection3d(Poly3DCollection(V[F], facecolors=grey, edgecolors="none", linewidths=0, rasterized=True))
     ax.add_collection3d(Line3DCollection(segs, colors="k", linewidths=0.6))
     for ring, colour in ((0, "k"), (1, "0.55"), (2, "w")):
         Q = Pn[rings == ring]
@@ -266,7 +296,7 @@ def _net(ax, V, F, Pn, segs, rings):
 
 def plot(path, series, xlabel="degree n", ylabel="", title="", logy=False, logx=False, hlines=(), size=(560, 400),
          legend_loc="best"):
-    """Writes `path` (PNG): the Series as lines; `hlines`: (y, label) reference lines. Returns
+    """Writes `path` (PNG, and an SVG beside it): the Series as lines; `hlines`: (y, label) reference lines. Returns
     (width, height). Non-positive values are left out of a log axis."""
     fig, ax = plt.subplots(figsize=(size[0] / DPI, size[1] / DPI), dpi=DPI)
     for s in series:
@@ -282,19 +312,22 @@ def plot(path, series, xlabel="degree n", ylabel="", title="", logy=False, logx=
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     if title:
-        ax.set_title(title, fontsize=10)
+        ax.set_title(title, fontsize=TITLE)
     ax.grid(True, which="both" if logy else "major", alpha=0.3)
     if series or hlines:
-        ax.legend(fontsize=7, loc=legend_loc)
+        ax.legend(fontsize=LEGEND, loc=legend_loc)
     fig.tight_layout()
     return save(fig, path)
 
 
 def save(fig, path):
     """Saves and closes `fig` as a PNG (a palette image of at most 256 colours when Pillow is
-    installed, to keep the committed files small). Returns (width, height) in pixels."""
+    installed, to keep the committed files small) and as an SVG beside it (the same name with
+    .svg: text and lines as vectors, artists marked rasterized as images at SVG_DPI). Returns the
+    PNG's (width, height) in pixels."""
     path = pathlib.Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path.with_suffix(".svg"), dpi=SVG_DPI, format="svg", metadata={"Date": None})
     fig.savefig(path, dpi=DPI)
     plt.close(fig)
     try:
@@ -364,9 +397,9 @@ def fold_diagram(path, curves, title="", folds=(), size=(560, 420)):
     ax.set_xlabel("V (enclosed volume ⅓∫⟨x_u∧x_v, x⟩)")
     ax.set_ylabel("H")
     if title:
-        ax.set_title(title, fontsize=10)
+        ax.set_title(title, fontsize=TITLE)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=LEGEND)
     fig.tight_layout()
     return save(fig, path)
 
@@ -473,4 +506,7 @@ def out_dir(argv=None, default=None):
 
 
 def wrote(path, size):
-    print(f"wrote {path} ({size[0]} x {size[1]}, {os.path.getsize(path) // 1024} kB)")
+    path = pathlib.Path(path)
+    svg = path.with_suffix(".svg")
+    also = f", and {svg.name} ({os.path.getsize(svg) // 1024} kB)" if svg.exists() else ""
+    print(f"wrote {path} ({size[0]} x {size[1]}, {os.path.getsize(path) // 1024} kB){also}")

@@ -5,7 +5,6 @@ every job runs through the same C++ function as the command's thread pool
 (``run_sweep_job``), so a row here equals the command's row (but for ``seconds``).
 """
 
-import json
 import os
 import tempfile
 
@@ -31,17 +30,23 @@ def sweep(spec, client=None, out=None, jobs=None, resume=True, base_dir=None):
     spec     a SWEEP dict, or the path of a SWEEP.json file (its "base" file relative to it).
     client   a ``dask.distributed.Client``: the jobs run on its workers (each job's folder is
              written by the worker that runs it, so ``out`` must be a folder they all see);
-             None: local processes (``jobs`` of them, default every core).
+             None: local processes (``jobs`` of them: 1..1024 as ``bpde sweep --jobs``; None or 0:
+             one per core).
     out      the output folder (jobs/<id>/ per job, results.csv, results.jsonl), as
              ``bpde sweep --out``; default a new temporary folder. Jobs already done there are
              skipped when ``resume``.
     Returns a pandas DataFrame with the columns of results.csv when pandas is installed, else a
-    list of row dicts. Bad specs raise ``bezierpde.InvalidInput``; failed jobs are rows.
+    list of row dicts. Bad specs raise ``bezierpde.InvalidInput`` (a spec file is read as ``bpde
+    sweep`` reads it: a key given twice is a ``ParseError``); failed jobs are rows.
     """
+    if jobs is not None:
+        if isinstance(jobs, bool) or not isinstance(jobs, int):
+            raise _core.ParameterError(f"jobs: expected an int, got {type(jobs).__name__}")
+        if not 0 <= jobs <= _core.MAX_SWEEP_THREADS:
+            raise _core.ParameterError(f"jobs: expected 0..{_core.MAX_SWEEP_THREADS} (0: one per core), got {jobs}")
     if isinstance(spec, (str, os.PathLike)):
         path = os.fspath(spec)
-        with open(path, encoding="utf-8") as f:
-            spec = json.load(f)
+        spec = _core.read_json_file(path)
         if base_dir is None:
             base_dir = os.path.dirname(path) or "."
     if base_dir is None:

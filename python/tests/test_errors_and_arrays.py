@@ -1,5 +1,7 @@
 """The exception hierarchy (core/errors.h mirrored), array shapes and views, the GIL."""
 
+import json
+
 import numpy as np
 import pytest
 
@@ -128,3 +130,85 @@ def test_the_gil_is_released_during_solves():
     inside, seconds = ticks_during(lambda: converged.append(bezierpde.solve(job)[1]["converged"]))
     assert converged == [True]
     assert inside >= 3, (inside, seconds)
+
+
+SURROGATE = "\ud800"  # a lone surrogate: a str that UTF-8 cannot hold
+
+
+@pytest.mark.parametrize(
+    "call,cls,argument",
+    [
+        # wrong array shapes: SizeError naming the argument, never pybind11's TypeError
+        (lambda: bezierpde.TensorNet(2, 2, np.zeros((9, 2))), bezierpde.SizeError, "points"),
+        (lambda: bezierpde.TriangularNet(2, np.zeros((6, 4))), bezierpde.SizeError, "points"),
+        (lambda: bezierpde.TriangularNet(2, [[1.0, 2.0]]), bezierpde.SizeError, "points"),
+        (lambda: bezierpde.TriangularNet(2, np.zeros(18)), bezierpde.SizeError, "points"),
+        (lambda: bezierpde.TriangularNet(2, [["a", "b", "c"]] * 6), bezierpde.ParseError, "points"),
+        (lambda: setattr(bezierpde.TriangularNet(2), "points", np.zeros((6, 2))), bezierpde.SizeError, "points"),
+        (lambda: bezierpde.check_mesh(np.zeros((3, 2)), [[0, 1, 2]]), bezierpde.SizeError, "V"),
+        (lambda: bezierpde.check_mesh(np.eye(3), [[0, 1]]), bezierpde.SizeError, "F"),
+        (lambda: bezierpde.check_mesh(np.eye(3), [[0, 1, 3]]), bezierpde.ParameterError, "F"),
+        (lambda: bezierpde.ExtremalSolver(np.ones(4), [0]), bezierpde.SizeError, "gram"),
+        (lambda: bezierpde.ExtremalSolver(np.diag([1.0, np.nan]), [0]), bezierpde.NonFiniteError, "gram"),
+        # strings that are not valid Unicode (a lone surrogate) or not strings at all
+        (lambda: bezierpde.net_from_dict({"type": SURROGATE}), bezierpde.ParseError, "net"),
+        (lambda: bezierpde.net_from_dict({SURROGATE: 1}), bezierpde.ParseError, "net"),
+        (lambda: bezierpde.energy(bezierpde.TriangularNet(2), SURROGATE), bezierpde.ParseError, "energy"),
+        (lambda: bezierpde.solve_extremal(bezierpde.TriangularNet(4), "dirichlet", SURROGATE),
+         bezierpde.ParseError, "fixed"),
+        (lambda: bezierpde.solve_extremal(bezierpde.TriangularNet(4), "dirichlet", 3), bezierpde.ParseError, "fixed"),
+        (lambda: setattr(bezierpde.CmcOptions(), "solver", SURROGATE), bezierpde.ParseError, "solver"),
+        (lambda: bezierpde.plate(1.0, 8, SURROGATE), bezierpde.ParseError, "method"),
+        (lambda: bezierpde.sample(bezierpde.TriangularNet(2), 3, SURROGATE), bezierpde.ParseError, "out"),
+        (lambda: bezierpde.expand_sweep({"base": {}, "axes": {SURROGATE: [1]}}), bezierpde.ParseError, "spec"),
+        # the sweep's process count, as `bpde sweep --jobs`
+        (lambda: bezierpde.sweep({"base": circle_job(), "axes": {"problem.H": [-1.0]}}, jobs=1025),
+         bezierpde.ParameterError, "jobs"),
+        (lambda: bezierpde.sweep({"base": circle_job(), "axes": {"problem.H": [-1.0]}}, jobs=-1),
+         bezierpde.ParameterError, "jobs"),
+    ],
+)
+def test_bad_arguments_raise_the_documented_typed_exception(call, cls, argument):
+    with pytest.raises(cls) as e:
+        call()
+    assert isinstance(e.value, bezierpde.InvalidInput) and isinstance(e.value, ValueError)
+    assert str(e.value).startswith(argument), str(e.value)
+
+
+def test_nan_points_are_refused_by_the_setter_and_by_every_command():
+    net = bezierpde.TriangularNet(4)
+    good = np.arange(45, dtype=float).reshape(15, 3)
+    net.points = good
+    bad = good.copy()
+    bad[7, 1] = np.nan
+    with pytest.raises(bezierpde.NonFiniteError) as e:
+        net.points = bad
+    assert str(e.value).startswith("points") and "row 7 column 1" in str(e.value)
+    assert np.array_equal(net.points, good)  # unchanged by the refused assignment
+    bad[7, 1] = np.inf
+    with pytest.raises(bezierpde.NonFiniteError):
+        bezierpde.TriangularNet(4, bad)
+    # a NaN written through the `points` view reaches no result: every command refuses the net
+    net.points[3, 2] = np.nan
+    for call in (lambda: bezierpde.sample(net, samples=4), lambda: bezierpde.check(net, samples=4),
+                 lambda: bezierpde.energy(net, "dirichlet")):
+        with pytest.raises(bezierpde.NonFiniteError) as e:
+            call()
+        assert "row 3 column 2" in str(e.value)
+
+
+def test_a_sweep_file_is_read_as_bpde_reads_it(tmp_path):
+    # A key given twice: json.load keeps the last, `bpde sweep` and bezierpde.sweep refuse the file.
+    path = tmp_path / "sweep.json"
+    base = json.dumps(circle_job())
+    path.write_text('{"base": %s, "axes": {"problem.H": [-1.0]}, "axes": {"problem.H": [-2.0]}}' % base)
+    with pytest.raises(bezierpde.ParseError):
+        bezierpde.sweep(str(path), out=str(tmp_path / "out"))
+    with pytest.raises(bezierpde.ParseError):
+        bezierpde.sweep(path, out=str(tmp_path / "out"))
+    assert not (tmp_path / "out").exists()
+    path.write_text('{"base": %s, "axes": {"problem.H": [-2.0]}}' % base)  # the same spec, once
+    table = bezierpde.sweep(str(path), out=str(tmp_path / "out"), jobs=1)
+    assert len(table) == 1
+    with pytest.raises(bezierpde.FileError):
+        bezierpde.sweep(str(tmp_path / "missing.json"))

@@ -93,3 +93,72 @@ def test_tables_of_a_generated_section():
     rows = figures.parse_tables(text)["t"]["tables"][0]
     assert rows == [{"n": "4", "err | x": "< 1e-13"}]
     assert figures.number(rows[0]["err | x"]) == 1e-13 and figures.number("−1.5 reached") == -1.5
+
+
+def _captured_figure(monkeypatch, draw):
+    """The matplotlib figure that `draw` saves through figures.save, drawn, and the paths saved."""
+    from bezierpde import figures
+
+    seen = {}
+    original = figures.save
+
+    def capture(fig, path):
+        fig.canvas.draw()
+        seen["texts"] = [(t, t.get_window_extent()) for t in fig.findobj(matplotlib.text.Text)
+                         if t.get_visible() and t.get_text()]
+        seen["bbox"] = fig.bbox
+        seen["axes"] = list(fig.axes)
+        return original(fig, path)
+
+    monkeypatch.setattr(figures, "save", capture)
+    draw(figures)
+    return seen
+
+
+def test_surface_panels_share_one_readable_colour_scale(monkeypatch, tmp_path):
+    import numpy as np
+    import bezierpde
+
+    def bowl(c):  # a graph z = c (x^2 + y^2): mean curvature about 2c at the centre, different per panel
+        return {"type": "tensor", "degree": [2, 2],
+                "points": [[i / 2, j / 2, c * ((i / 2 - 0.5) ** 2 + (j / 2 - 0.5) ** 2)] for i in range(3) for j in range(3)]}
+
+    path = tmp_path / "panels.png"
+    seen = _captured_figure(monkeypatch, lambda fg: fg.surfaces(
+        path, [fg.Panel(bowl(c), f"c = {c}: a bowl z = c (x² + y²) over the unit square") for c in (0.5, 1.0, 2.0)],
+        size=(780, 520)))
+    colour_bars = [ax for ax in seen["axes"] if ax.name != "3d"]
+    assert len(colour_bars) == 1  # one scale for the three panels
+    lo, hi = colour_bars[0].get_ylim()
+    H = np.concatenate([bezierpde.sample(bowl(c), samples=24)[2] for c in (0.5, 2.0)])
+    assert lo <= np.percentile(H, 30) and np.percentile(H, 70) <= hi  # it spans the panels' H, not one panel's
+    fig_box = seen["bbox"]
+    for text, box in seen["texts"]:
+        assert text.get_fontsize() >= 9, (text.get_text(), text.get_fontsize())
+        # nothing clipped at the figure's edges (the colour bar's label "mean curvature H" included)
+        assert box.x0 >= fig_box.x0 - 1 and box.x1 <= fig_box.x1 + 1, (text.get_text(), box, fig_box)
+        assert box.y0 >= fig_box.y0 - 1 and box.y1 <= fig_box.y1 + 1, (text.get_text(), box, fig_box)
+    assert any("H" in t.get_text() for t, _ in seen["texts"])
+    # no two texts overlap (long panel titles are wrapped to their panel's width)
+    boxes = [box for _, box in seen["texts"]]
+    for i in range(len(boxes)):
+        for j in range(i + 1, len(boxes)):
+            a, b = boxes[i], boxes[j]
+            overlap = min(a.x1, b.x1) - max(a.x0, b.x0) > 1 and min(a.y1, b.y1) - max(a.y0, b.y0) > 1
+            assert not overlap, (seen["texts"][i][0].get_text(), seen["texts"][j][0].get_text())
+    svg = path.with_suffix(".svg")
+    assert svg.exists()
+    head = svg.read_text(encoding="utf-8")
+    assert "<svg" in head and "c = 0.5" in head  # the titles are text in the SVG
+    assert svg.stat().st_size < 1_500_000
+
+
+def test_plots_write_an_svg_beside_the_png(monkeypatch, tmp_path):
+    path = tmp_path / "plot.png"
+    seen = _captured_figure(monkeypatch, lambda fg: fg.plot(
+        path, [fg.Series("ritz", [4, 6, 8], [1e-3, 1e-6, 1e-9])], ylabel="error", logy=True, size=(560, 400)))
+    assert all(t.get_fontsize() >= 9 for t, _ in seen["texts"])
+    import xml.etree.ElementTree as ET
+
+    root = ET.parse(path.with_suffix(".svg")).getroot()
+    assert root.tag.endswith("svg") and root.get("width", "").startswith("403")  # 560 px = 403.2 pt

@@ -119,6 +119,28 @@ TEST(CliSurfaceOutputs, StepExportFromTheCommandAndFromAJob) {
   EXPECT_EQ(r.status, 2) << r.err;
 }
 
+TEST(CliSurfaceOutputs, StepExportOfAKnotOfFullMultiplicity) {
+  // u knot 0.5 of multiplicity degree + 1 = 2, which the reader takes and OpenCASCADE does not:
+  // exported where the surface is continuous (rows 1 and 2 equal), exit 2 where it jumps, the
+  // existing file kept. Never exit 3.
+  const std::string head = R"({"type": "bspline", "degree": [1, 1], "knots": [[0, 0, 0.5, 0.5, 1, 1], [0, 0, 1, 1]],)";
+  const fs::path continuous = write("full_mult_c0.json", head + R"( "points": [[0,0,0],[0,1,0],[0.5,0,0],[0.5,1,0],)"
+                                                                R"([0.5,0,0],[0.5,1,0],[1,0,1],[1,1,1]]})");
+  const fs::path jump = write("full_mult_jump.json", head + R"( "points": [[0,0,0],[0,1,0],[0.5,0,0],[0.5,1,0],)"
+                                                            R"([0.5,0,1],[0.5,1,1],[1,0,1],[1,1,1]]})");
+  const fs::path step = tmpdir() / "full_mult.step";
+  fs::remove(step);
+  CmdResult r = run("export " + continuous.string() + " --step " + step.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string text = slurp(step);
+  EXPECT_NE(text.find("B_SPLINE_SURFACE"), std::string::npos);
+  r = run("export " + jump.string() + " --step " + step.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(slurp(step), text);
+  // sample and check take both nets
+  EXPECT_EQ(run("check " + jump.string()).status, 0);
+}
+
 TEST(CliSurfaceOutputs, StepExportReadsTheResultJsonBpdeWrites) {
   const fs::path out = tmpdir() / "step_from_result";
   CmdResult r = run("solve " + write("step_result_job.json", std::string(kDirichletJob) + "}").string() + " --out " +

@@ -2,6 +2,7 @@
 #include "bezierpde/io/output_folder.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -154,4 +155,56 @@ TEST(OutputFolder, TrailingSeparatorNamesTheSameFolder) {
     out.commit();
   }
   EXPECT_EQ(slurp(dir / "x.txt"), "X");
+}
+
+// A user who may write DIR but not its parent (`--out ~` of an ordinary user): the files are
+// staged inside DIR, and DIR gets them, or keeps its old ones when the run fails. Run in a child
+// process as that user: as root, the child drops to nobody (uid 65534), which owns DIR only; as
+// an ordinary user, the parent is made read-only.
+TEST(OutputFolder, WritableFolderInAReadOnlyParentIsWrittenInPlace) {
+  const fs::path parent = scratch("readonly_parent");
+  const fs::path dir = parent / "u";
+  fs::create_directories(dir);
+  put((dir / "x.txt").string(), "old X");
+  put((dir / "keep.txt").string(), "keep");
+  const bool root = ::geteuid() == 0;
+  constexpr uid_t kNobody = 65534;
+  if (root) {
+    ASSERT_EQ(::chown(dir.c_str(), kNobody, kNobody), 0);
+    ASSERT_EQ(::chown((dir / "x.txt").c_str(), kNobody, kNobody), 0);
+  } else {
+    fs::permissions(parent, fs::perms::owner_read | fs::perms::owner_exec);
+  }
+  // 0: committed; 1: abandoned as asked; 10 + k: step k failed.
+  const auto as_user = [&](bool commit) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      if (root && (::setgid(kNobody) != 0 || ::setuid(kNobody) != 0)) ::_exit(10);
+      if (::access(parent.c_str(), W_OK) == 0) ::_exit(11);  // the parent must be read-only to us
+      try {
+        OutputFolder out(dir.string(), {"x.txt", "y.txt"});
+        put(out.file("x.txt"), "new X");
+        put(out.file("y.txt"), "Y");
+        if (!commit) ::_exit(has_staging(dir) && !has_staging(parent) ? 1 : 12);
+        out.commit();
+      } catch (const std::exception&) {
+        ::_exit(13);
+      }
+      ::_exit(0);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  // (the abandoned child _exits without its destructor: its staging folder stays, as after SIGKILL)
+  EXPECT_EQ(as_user(false), 1);
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().rfind(".bpde-staging", 0) == 0) fs::remove_all(e.path());
+  EXPECT_EQ(as_user(true), 0);
+  if (!root) fs::permissions(parent, fs::perms::owner_all);
+  EXPECT_EQ(slurp(dir / "x.txt"), "new X");
+  EXPECT_EQ(slurp(dir / "y.txt"), "Y");
+  EXPECT_EQ(slurp(dir / "keep.txt"), "keep");
+  EXPECT_FALSE(has_staging(dir));
+  EXPECT_FALSE(has_staging(parent));
 }

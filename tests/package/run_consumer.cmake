@@ -4,7 +4,8 @@
 # prefix with find_package(bezierpde 0.2 CONFIG REQUIRED), build it and run it.
 #
 #   cmake -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK_DIR=... -DCXX_COMPILER=... [-DLAUNCHER=...]
-#         -DGENERATOR=... [-DSHARED=ON|OFF] [-DSANITIZE=address,undefined] -P tests/package/run_consumer.cmake
+#         -DGENERATOR=... [-DSHARED=ON|OFF] [-DSANITIZE=address,undefined]
+#         [-DPYTHON=<interpreter> -DPYTHON_SITE=<site-packages relative to the prefix>] -P tests/package/run_consumer.cmake
 #
 # With SHARED (the build's BUILD_SHARED_LIBS) the installed lib/ must hold the libbpde_*.so files and
 # the consumer's programs and the installed bpde must load every libbpde_*.so from the prefix (ldd),
@@ -162,7 +163,34 @@ run(${consumer}/build/nets_only)
 # The installed command runs too.
 run(${prefix}/bin/bpde solve ${run_dir}/job.json --out ${run_dir}/installed-bpde)
 
-# 4. Shared or static, as built: what the programs load (ldd) and where from (their RUNPATH).
+# 4. The Python module (-DPYTHON=<interpreter> -DPYTHON_SITE=<site-packages relative to the
+#    prefix>, when the build has it): installed into the prefix's site-packages, it imports from
+#    there alone (PYTHONPATH=<prefix>/<site>, from a folder outside the build tree) and runs.
+set(python_core "")
+if(PYTHON)
+  set(site ${prefix}/${PYTHON_SITE})
+  file(GLOB python_core ${site}/bezierpde/_core*.so)
+  if(NOT EXISTS ${site}/bezierpde/__init__.py OR NOT EXISTS ${site}/bezierpde/sweep.py OR NOT python_core)
+    message(FATAL_ERROR "the Python package is not installed in ${site}/bezierpde")
+  endif()
+  set(ENV{PYTHONPATH} ${site})
+  unset(ENV{LD_LIBRARY_PATH})
+  execute_process(
+    COMMAND ${PYTHON} -c
+            "import os, bezierpde\n\
+where = os.path.realpath(bezierpde.__file__)\n\
+assert where.startswith(os.path.realpath('${site}') + os.sep), where\n\
+V, F, H = bezierpde.sample(bezierpde.TriangularNet(2), samples=4)\n\
+assert V.shape == (15, 3) and F.shape == (16, 3), (V.shape, F.shape)\n\
+print('imported', bezierpde.__version__, 'from', where)"
+    WORKING_DIRECTORY ${run_dir} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "the installed Python module does not import from ${site}:\n${out}\n${err}")
+  endif()
+  unset(ENV{PYTHONPATH})
+endif()
+
+# 5. Shared or static, as built: what the programs load (ldd) and where from (their RUNPATH).
 find_program(LDD ldd)
 find_program(READELF readelf)
 if(NOT LDD OR NOT READELF)
@@ -170,7 +198,7 @@ if(NOT LDD OR NOT READELF)
 endif()
 # The run paths alone decide (an LD_LIBRARY_PATH of the caller's would take precedence over RUNPATH).
 unset(ENV{LD_LIBRARY_PATH})
-set(programs ${consumer}/build/app ${consumer}/build/nets_only ${prefix}/bin/bpde)
+set(programs ${consumer}/build/app ${consumer}/build/nets_only ${prefix}/bin/bpde ${python_core})
 set(libdir "")
 if(SHARED)
   foreach(dir lib lib64 lib/x86_64-linux-gnu)
@@ -222,7 +250,7 @@ foreach(program ${programs})
     if(count EQUAL 0)
       message(FATAL_ERROR "BUILD_SHARED_LIBS: ${program} loads no libbpde_*.so:\n${last_output}")
     endif()
-    if(program MATCHES "(app|bpde|libbpde_jobs\\.so)$" AND count LESS 7)
+    if(program MATCHES "(app|bpde|libbpde_jobs\\.so|_core[^/]*\\.so)$" AND count LESS 7)
       message(FATAL_ERROR "BUILD_SHARED_LIBS: ${program} loads only ${count} libbpde_*.so:\n${last_output}")
     endif()
   endif()
@@ -243,5 +271,8 @@ if(SHARED)
   set(kind "shared libraries loaded from the prefix")
 else()
   set(kind "static")
+endif()
+if(PYTHON)
+  set(kind "${kind}; the Python module imported from ${PYTHON_SITE}")
 endif()
 message(STATUS "package test (${kind}): installed, consumer built from README snippets (${names}) and run")

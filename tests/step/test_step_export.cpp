@@ -127,6 +127,36 @@ TEST(StepExport, BSplineNetReadsBackWithItsKnots) {
   EXPECT_LT(relative_error(r, uv, [&](double u, double v) { return b.evaluate(u, v); }), 1e-12);
 }
 
+TEST(StepExport, BSplineKnotOfFullMultiplicityIsLoweredWhereTheSurfaceIsContinuous) {
+  // Interior knots of multiplicity degree + 1 (0.5 in u at degree 1, 0.3 in v at degree 2), which
+  // OpenCASCADE refuses: where the control points on either side are equal, the knot is written
+  // once less and the surface reads back the same.
+  const std::vector<double> U = {0, 0, 0.5, 0.5, 1, 1}, V = {0, 0, 0, 0.3, 0.3, 0.3, 1, 1, 1};
+  const int nu = 4, nv = 6;
+  Eigen::MatrixX3d P = random_points(nu * nv, 21);
+  for (int j = 0; j < nv; ++j) P.row(2 * nv + j) = P.row(1 * nv + j);  // rows u = 1, 2 equal
+  for (int i = 0; i < nu; ++i) P.row(i * nv + 3) = P.row(i * nv + 2);  // columns v = 2, 3 equal
+  const BSplineNet b(1, 2, U, V, P);
+  const fs::path p = scratch("bspline_full_multiplicity.step");
+  write_step(p.string(), Net(b));
+  const Eigen::MatrixX2d uv = grid(0, 1, 0, 1, 20);  // holds u = 0.5 and v = 0.3 on either side
+  const StepReadBack r = read_step(p.string(), uv);
+  EXPECT_EQ(r.faces, 1);
+  EXPECT_EQ(r.surface, "bspline");
+  EXPECT_EQ(r.u_degree, 1);
+  EXPECT_EQ(r.v_degree, 2);
+  EXPECT_LT(relative_error(r, uv, [&](double u, double v) { return b.evaluate(u, v); }), 1e-12);
+  // the surface jumps where the control points differ: one face cannot hold it (exit 2)
+  P.row(2 * nv + 4) += Eigen::RowVector3d(0, 0, 1);
+  const fs::path q = scratch("bspline_jump.step");
+  fs::remove(q);
+  EXPECT_THROW(write_step(q.string(), Net(BSplineNet(1, 2, U, V, P))), UnsupportedProblem);
+  EXPECT_FALSE(fs::exists(q));
+  Eigen::MatrixX3d Q = random_points(nu * nv, 22);
+  for (int j = 0; j < nv; ++j) Q.row(2 * nv + j) = Q.row(1 * nv + j);  // continuous in u, a jump in v
+  EXPECT_THROW(write_step(q.string(), Net(BSplineNet(1, 2, U, V, Q))), UnsupportedProblem);
+}
+
 TEST(StepExport, TriangularNetReadsBackAsTheDegenerateTensorPatch) {
   for (int n : {1, 4, 7}) {
     const TriangularNet t = random_triangular(n, 100u + n);
