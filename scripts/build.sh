@@ -13,7 +13,18 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 JOBS=${BPDE_JOBS:-$(nproc)}
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DBPDE_NATIVE=${BPDE_NATIVE:-ON} -DBUILD_SHARED_LIBS=${BPDE_SHARED_LIBS:-ON} ${BPDE_CMAKE_ARGS:-} >/dev/null
+# The Python module's interpreter (python/CMakeLists.txt, README "Python"): Python_EXECUTABLE from
+# the environment when set; else the python3 on PATH when it imports numpy; else the system's
+# /usr/bin/python3, which install_deps.sh gave numpy (a pyenv or venv python3 without numpy has no
+# way to get it here: no PyPI), said in one line. CMake itself, configured by hand, fails instead.
+PY_ARGS=()
+if [ -n "${Python_EXECUTABLE:-}" ]; then
+  PY_ARGS=(-DPython_EXECUTABLE="$Python_EXECUTABLE")
+elif ! python3 -c 'import numpy' >/dev/null 2>&1 && /usr/bin/python3 -c 'import numpy' >/dev/null 2>&1; then
+  echo "build.sh: $(command -v python3 || echo python3) cannot import numpy; the Python module is built for /usr/bin/python3 (run it with /usr/bin/python3, or set Python_EXECUTABLE)" >&2
+  PY_ARGS=(-DPython_EXECUTABLE=/usr/bin/python3)
+fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DBPDE_NATIVE=${BPDE_NATIVE:-ON} -DBUILD_SHARED_LIBS=${BPDE_SHARED_LIBS:-ON} "${PY_ARGS[@]}" ${BPDE_CMAKE_ARGS:-} >/dev/null
 if [ $# -gt 0 ]; then
   cmake --build build -j "$JOBS" --target "$@"
 else
