@@ -46,6 +46,7 @@ int cmd_solve(const std::string& job_path, const std::string& out_dir, const Sol
   exports.step = job.export_step;
   const std::vector<std::string> files = output_file_names(true, exports);
   check_output_dir(out_dir, files);
+  if (exports.step) step_plugin_path();  // a missing STEP plugin fails before the solve, not after it
   const SolveOutcome out = run_job(job);
   const WrittenResult written = write_job_result(out_dir, job, out);
   if (!flags.quiet) std::fputs(solve_summary(out, written, job_path, out_dir, files).c_str(), stdout);

@@ -296,37 +296,35 @@ std::pair<int, long long> count_self_intersections(const std::vector<Tri>& tris,
 // ------------------------------------------------------------------ topology
 using Edge = std::pair<int, int>;
 
-/// Directed-edge multiplicities of the soup, keyed by (a << 32) | b: sorted unique keys and their
-/// counts (one sort instead of a node per edge in a hash map).
+/// Directed-edge multiplicities of the soup, one entry per undirected edge {a < b}: how many
+/// triangles run a -> b (forward) and b -> a (backward). One sort of keys (a << 32 | b) << 1 | dir,
+/// and no lookup of reverse edges afterwards.
 struct EdgeMap {
-  std::vector<std::uint64_t> keys;
-  std::vector<int> counts;
-  static std::uint64_t key(int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-  }
-  int find(int a, int b) const {
-    const std::uint64_t k = key(a, b);
-    auto it = std::lower_bound(keys.begin(), keys.end(), k);
-    return (it != keys.end() && *it == k) ? counts[static_cast<std::size_t>(it - keys.begin())] : 0;
-  }
-  template <class F>
-  void for_each(F f) const {
-    for (std::size_t e = 0; e < keys.size(); ++e)
-      f(static_cast<int>(keys[e] >> 32), static_cast<int>(keys[e] & 0xffffffffu), counts[e]);
-  }
+  struct Entry {
+    int a, b;          ///< a < b
+    int forward = 0;   ///< multiplicity of a -> b
+    int backward = 0;  ///< multiplicity of b -> a
+  };
+  std::vector<Entry> edges;
 };
 
 EdgeMap directed_edges(const std::vector<Tri>& tris) {
   std::vector<std::uint64_t> all;
   all.reserve(tris.size() * 3);
   for (const auto& t : tris)
-    for (int k = 0; k < 3; ++k) all.push_back(EdgeMap::key(t[k], t[(k + 1) % 3]));
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      const auto lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
+      all.push_back(((static_cast<std::uint64_t>(lo) << 32 | hi) << 1) | (a > b ? 1u : 0u));
+    }
   std::sort(all.begin(), all.end());
   EdgeMap e;
+  e.edges.reserve(all.size() / 2 + 1);
   for (std::size_t s = 0, f = 0; s < all.size(); s = f) {
-    for (f = s + 1; f < all.size() && all[f] == all[s];) ++f;
-    e.keys.push_back(all[s]);
-    e.counts.push_back(static_cast<int>(f - s));
+    const std::uint64_t undirected = all[s] >> 1;
+    EdgeMap::Entry entry{static_cast<int>(undirected >> 32), static_cast<int>(undirected & 0xffffffffu)};
+    for (f = s; f < all.size() && (all[f] >> 1) == undirected; ++f) ++((all[f] & 1u) ? entry.backward : entry.forward);
+    e.edges.push_back(entry);
   }
   return e;
 }
@@ -335,11 +333,8 @@ EdgeMap directed_edges(const std::vector<Tri>& tris) {
 /// link is one cycle.
 bool is_closed_manifold(const std::vector<Tri>& tris, const EdgeMap& de, int num_vertices) {
   if (tris.empty()) return false;
-  bool ok = true;
-  de.for_each([&](int a, int b, int m) {
-    if (m != 1 || de.find(b, a) != 1) ok = false;
-  });
-  if (!ok) return false;
+  for (const auto& e : de.edges)
+    if (e.forward != 1 || e.backward != 1) return false;
   // vertex links: at vertex a of triangle (a, b, c), the link edge b -> c (CSR by vertex).
   std::vector<int> start(num_vertices + 1, 0);
   for (const auto& t : tris)
@@ -386,14 +381,14 @@ std::optional<double> capped_volume(const std::vector<Tri>& tris, const EdgeMap&
   // Boundary: directed edges a -> b whose reverse is missing. Interior edges must pair up.
   std::unordered_map<int, int> out;  // boundary successor
   bool ok = true;
-  de.for_each([&](int a, int b, int m) {
-    const int rev = de.find(b, a);
-    if (m == 1 && rev == 0) {
-      if (!out.emplace(a, b).second) ok = false;  // pinched boundary vertex
-    } else if (m != 1 || rev != 1) {
+  for (const auto& e : de.edges) {
+    if (e.forward + e.backward == 1) {  // one direction, once: a boundary edge
+      const auto [from, to] = e.forward ? std::pair{e.a, e.b} : std::pair{e.b, e.a};
+      if (!out.emplace(from, to).second) ok = false;  // pinched boundary vertex
+    } else if (e.forward != 1 || e.backward != 1) {
       ok = false;  // non-manifold or inconsistently oriented edge
     }
-  });
+  }
   if (!ok || out.empty()) return std::nullopt;  // (empty: closed as a chain, not a manifold)
   // deterministic loop order (the sum does not depend on it beyond rounding)
   std::vector<int> starts;

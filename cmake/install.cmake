@@ -26,6 +26,8 @@ install(TARGETS bpde_core bpde_solvers bpde_cmc bpde_io bpde_view bpde_step bpde
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS bpde RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+# The STEP plugin (io/step_export.h) in <prefix>/<libdir>, where the library looks for it.
+install(TARGETS bpde_step_plugin LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime)
 
 install(EXPORT bezierpdeTargets NAMESPACE bezierpde:: DESTINATION ${BPDE_INSTALL_CMAKEDIR}
         COMPONENT development)

@@ -12,7 +12,7 @@
 // It costs about 10 % on the CLI tests (docs/robustness.md, "Recorded runs").
 //
 // The suppressions are OpenCASCADE's own process-lifetime state, allocated once and never freed,
-// reached through io/step_export.cpp: the STEP controller that the first STEPControl_Writer
+// reached through io/step_plugin.cpp (the STEP plugin): the STEP controller that the first STEPControl_Writer
 // registers (STEPControl_Controller::Init: the editors, static parameters and work session, 136
 // blocks), and the default placement that the first transfer caches
 // (STEPConstruct_ContextTool::GetDefaultAxis, 2 blocks). Measured with OpenCASCADE 7.6 (Debian 12):

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -45,6 +46,10 @@ class LineBuffer {
     buf_ += s;
     return *this;
   }
+  LineBuffer& text(std::string_view s) {
+    buf_ += s;
+    return *this;
+  }
   LineBuffer& num(double x) {
     char tmp[32];
     const auto r = std::to_chars(tmp, tmp + sizeof tmp, x);
@@ -77,23 +82,51 @@ class LineBuffer {
   std::string buf_;
 };
 
-void write_vertices(LineBuffer& out, const Eigen::MatrixX3d& V) {
+void write_vertices(LineBuffer& out, const Eigen::MatrixX3d& V, const SharedNumberText* text = nullptr) {
   for (Eigen::Index r = 0; r < V.rows(); ++r) {
-    out.text("v ").num(V(r, 0)).sp().num(V(r, 1)).sp().num(V(r, 2));
+    if (text)
+      out.text("v ").text(text->vertex(r, 0)).sp().text(text->vertex(r, 1)).sp().text(text->vertex(r, 2));
+    else
+      out.text("v ").num(V(r, 0)).sp().num(V(r, 1)).sp().num(V(r, 2));
     out.end_line();
   }
 }
 
+// A SharedNumberText that is not of this mesh is a caller's bug.
+const SharedNumberText* checked(const SharedNumberText* text, const TriangleMesh& mesh, const char* where) {
+  if (text && text->vertices() != mesh.V.rows())
+    throw InternalError(std::string(where) + ": the shared number text is not of this mesh");
+  return text;
+}
+
 }  // namespace
 
-void write_obj(const std::string& path, const TriangleMesh& mesh) {
+SharedNumberText::SharedNumberText(const TriangleMesh& mesh, const SurfaceFields& fields) : vertices_(mesh.V.rows()) {
+  if (fields.H.size() != vertices_) throw InternalError("SharedNumberText: fields do not match the mesh");
+  const auto count = static_cast<std::size_t>(4 * vertices_);
+  chars_.reserve(count * 20);
+  begin_.reserve(count + 1);
+  auto add = [&](double x) {
+    char tmp[32];
+    const auto r = std::to_chars(tmp, tmp + sizeof tmp, x);
+    begin_.push_back(chars_.size());
+    chars_.append(tmp, r.ptr);
+  };
+  for (Eigen::Index r = 0; r < vertices_; ++r)
+    for (int c = 0; c < 3; ++c) add(mesh.V(r, c));
+  for (Eigen::Index r = 0; r < vertices_; ++r) add(fields.H(r));
+  begin_.push_back(chars_.size());
+}
+
+void write_obj(const std::string& path, const TriangleMesh& mesh, const SharedNumberText* text) {
+  text = checked(text, mesh, "write_obj");
   File out(path);
   {
     LineBuffer b(out.f);
     b.text("# bezierpde surface: ").num(static_cast<long>(mesh.V.rows())).text(" vertices, ");
     b.num(static_cast<long>(mesh.F.rows())).text(" triangles");
     b.end_line();
-    write_vertices(b, mesh.V);
+    write_vertices(b, mesh.V, text);
     for (Eigen::Index r = 0; r < mesh.F.rows(); ++r) {
       b.text("f ").num(mesh.F(r, 0) + 1).sp().num(mesh.F(r, 1) + 1).sp().num(mesh.F(r, 2) + 1);
       b.end_line();
@@ -121,7 +154,9 @@ void put_le(std::vector<char>& buf, T value) {
 
 }  // namespace
 
-void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format) {
+void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format,
+               const SharedNumberText* text) {
+  text = checked(text, mesh, "write_ply");
   const bool binary = format == MeshFormat::Binary;
   const char* type = binary ? "float" : "double";
   File out(path);
@@ -148,7 +183,14 @@ void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   } else {
     LineBuffer b(out.f);
     for (Eigen::Index r = 0; r < mesh.V.rows(); ++r) {
-      b.num(mesh.V(r, 0)).sp().num(mesh.V(r, 1)).sp().num(mesh.V(r, 2)).sp().num(fields.H(r)).sp();
+      if (text)
+        b.text(text->vertex(r, 0)).sp().text(text->vertex(r, 1)).sp().text(text->vertex(r, 2)).sp();
+      else
+        b.num(mesh.V(r, 0)).sp().num(mesh.V(r, 1)).sp().num(mesh.V(r, 2)).sp();
+      if (text)
+        b.text(text->mean_curvature(r)).sp();
+      else
+        b.num(fields.H(r)).sp();
       b.num(static_cast<int>(fields.regular(r)));
       b.end_line();
     }
@@ -212,9 +254,12 @@ TriangleMesh sample_net(const Net& net, int samples) {
 
 void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh, MeshFormat format) {
   const SurfaceFields fields = surface_fields(net, mesh);
-  write_obj(dir + "/surface.obj", mesh);
-  write_ply(dir + "/surface.ply", mesh, fields, format);
-  write_vtp(dir + "/surface.vtp", mesh, fields, format);
+  std::optional<SharedNumberText> text;  // in ASCII, coordinates and H formatted once for the three files
+  if (format == MeshFormat::Ascii) text.emplace(mesh, fields);
+  const SharedNumberText* shared = text ? &*text : nullptr;
+  write_obj(dir + "/surface.obj", mesh, shared);
+  write_ply(dir + "/surface.ply", mesh, fields, format, shared);
+  write_vtp(dir + "/surface.vtp", mesh, fields, format, shared);
   write_net_obj(dir + "/net.obj", net);
 }
 

@@ -3,7 +3,9 @@
 // the shortest decimal that reads back to the same double (std::to_chars), so files are exact; or
 // binary little-endian float32) and VTK XML PolyData (io/vtp_io.h).
 #include <array>
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bezierpde/core/mesh.h"
@@ -12,8 +14,30 @@
 
 namespace bpde {
 
+/// The decimal text (std::to_chars: the shortest that reads back to the same double) of the numbers
+/// the ASCII surface files share: the vertex coordinates, row by row, and the mean curvature per
+/// vertex (fields.H). Formatted once for write_obj, write_ply and write_vtp, which copy it instead
+/// of formatting each number again; the files are the same bytes either way.
+class SharedNumberText {
+ public:
+  SharedNumberText(const TriangleMesh& mesh, const SurfaceFields& fields);
+  std::string_view vertex(Eigen::Index r, int c) const { return at(3 * r + c); }
+  std::string_view mean_curvature(Eigen::Index r) const { return at(3 * vertices_ + r); }
+  Eigen::Index vertices() const { return vertices_; }
+
+ private:
+  std::string_view at(Eigen::Index i) const {
+    const auto k = static_cast<std::size_t>(i);
+    return {chars_.data() + begin_[k], begin_[k + 1] - begin_[k]};
+  }
+  Eigen::Index vertices_ = 0;
+  std::string chars_;
+  std::vector<std::size_t> begin_;  // number i is chars_[begin_[i], begin_[i + 1])
+};
+
 /// `v x y z` per vertex (in mesh order) and `f a b c` per triangle (1-based). Throws FileError.
-void write_obj(const std::string& path, const TriangleMesh& mesh);
+/// `text`, if given, is the SharedNumberText of the same mesh.
+void write_obj(const std::string& path, const TriangleMesh& mesh, const SharedNumberText* text = nullptr);
 /// How surface.ply (and surface.vtp) store numbers: `ascii` (doubles, shortest round trip) or
 /// `binary` (PLY binary_little_endian with float32 x, y, z, mean_curvature; VTP base64 float32).
 enum class MeshFormat { Ascii, Binary };
@@ -24,7 +48,7 @@ MeshFormat mesh_format_from_string(const std::string& s, const std::string& wher
 /// neighbours, never the blown-up value) and `uchar regular` (fields.regular) per vertex, and the
 /// triangles as `list uchar int vertex_indices`. Throws FileError.
 void write_ply(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields,
-               MeshFormat format = MeshFormat::Ascii);
+               MeshFormat format = MeshFormat::Ascii, const SharedNumberText* text = nullptr);
 /// The segments of the control net (pairs of point indices, net order) joining neighbours along
 /// each parameter direction (three directions for triangular nets).
 std::vector<std::array<int, 2>> net_segments(const Net& net);

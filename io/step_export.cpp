@@ -1,64 +1,82 @@
-// The one OpenCASCADE translation unit (io/step_export.h).
+// STEP export through the plugin bpde_step_plugin.so (io/step_plugin.h), opened on first use.
 #include "bezierpde/io/step_export.h"
 
-#include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRep_Tool.hxx>
-#include <GeomAbs_SurfaceType.hxx>
-#include <GeomAdaptor_Surface.hxx>
-#include <Geom_BSplineSurface.hxx>
-#include <Geom_BezierSurface.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <Interface_Static.hxx>
-#include <Message.hxx>
-#include <Message_Messenger.hxx>
-#include <Message_PrinterOStream.hxx>
-#include <STEPControl_Reader.hxx>
-#include <STEPControl_Writer.hxx>
-#include <Standard_Failure.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array2OfPnt.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Face.hxx>
+#include <dlfcn.h>
+
+#include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <mutex>
-#include <string>
 #include <vector>
 
 #include "bezierpde/core/errors.h"
 #include "bezierpde/io/atomic_file.h"
+#include "bezierpde/io/step_plugin.h"
 #include "bezierpde/triangular/tensor_form.h"
+
+#ifndef BPDE_STEP_PLUGIN_NAME
+#define BPDE_STEP_PLUGIN_NAME "bpde_step_plugin.so"
+#endif
 
 namespace bpde {
 namespace {
 
-// OpenCASCADE reports on stdout by default; bpde's stdout carries JSON only.
-void silence_opencascade() {
-  static std::once_flag once;
-  std::call_once(once, [] { Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream)); });
+namespace fs = std::filesystem;
+
+struct Plugin {
+  std::string path;
+  bpde_step_write_fn write = nullptr;
+  bpde_step_read_fn read = nullptr;
+  std::string error;  // why it could not be loaded (then write/read are null)
+};
+
+// The folder of the binary that holds this code: libbpde_step.so in a shared build, else the
+// executable or shared object that linked the static library.
+fs::path own_folder() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&step_plugin_candidates), &info) == 0 || info.dli_fname == nullptr) return {};
+  std::error_code ec;
+  const fs::path self = fs::canonical(fs::path(info.dli_fname), ec);
+  return ec ? fs::path(info.dli_fname).parent_path() : self.parent_path();
 }
 
-gp_Pnt pnt(const Eigen::MatrixX3d& P, int row) { return gp_Pnt(P(row, 0), P(row, 1), P(row, 2)); }
-
-Handle(Geom_Surface) bezier(const TensorNet& t) {
-  TColgp_Array2OfPnt poles(1, t.n() + 1, 1, t.m() + 1);
-  for (int i = 0; i <= t.n(); ++i)
-    for (int j = 0; j <= t.m(); ++j) poles.SetValue(i + 1, j + 1, pnt(t.points(), t.index(i, j)));
-  return new Geom_BezierSurface(poles);
-}
-
-// Distinct knots and multiplicities of a full knot vector.
-void split_knots(const std::vector<double>& K, std::vector<double>& knots, std::vector<int>& mults) {
-  for (double k : K) {
-    if (!knots.empty() && k == knots.back()) {
-      ++mults.back();
-    } else {
-      knots.push_back(k);
-      mults.push_back(1);
+Plugin load() {
+  Plugin p;
+  std::string tried;
+  for (const std::string& candidate : step_plugin_candidates()) {
+    std::error_code ec;
+    if (!fs::is_regular_file(candidate, ec)) {
+      tried += (tried.empty() ? "" : ", ") + candidate;
+      continue;
     }
+    void* handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      const char* why = dlerror();
+      p.error = "STEP export: cannot load " + candidate + ": " + (why ? why : "dlopen failed");
+      return p;
+    }
+    const auto abi = reinterpret_cast<bpde_step_abi_fn>(dlsym(handle, "bpde_step_plugin_abi"));
+    p.write = reinterpret_cast<bpde_step_write_fn>(dlsym(handle, "bpde_step_plugin_write"));
+    p.read = reinterpret_cast<bpde_step_read_fn>(dlsym(handle, "bpde_step_plugin_read"));
+    if (!abi || !p.write || !p.read || abi() != BPDE_STEP_PLUGIN_ABI) {
+      p.write = nullptr, p.read = nullptr;
+      p.error = "STEP export: " + candidate + " is not a STEP plugin of this build";
+      return p;
+    }
+    p.path = candidate;
+    return p;
   }
+  p.error = "STEP export: the plugin " BPDE_STEP_PLUGIN_NAME " is not installed (looked for " + tried + ")";
+  return p;
+}
+
+const Plugin& plugin() {
+  static std::once_flag once;
+  static Plugin p;
+  std::call_once(once, [] { p = load(); });
+  if (!p.write) throw StepPluginError(p.error);
+  return p;
 }
 
 // The shortest decimal that reads back as x.
@@ -71,20 +89,19 @@ std::string shortest(double x) {
   return buf;
 }
 
+using Pole = std::array<double, 3>;
+
 // OpenCASCADE takes interior knots of multiplicity <= degree; a bspline net may hold an interior
 // knot of multiplicity degree + 1 (FORMATS.md "bspline"), where the surface may jump. With
 // K[k] = ... = K[k+deg] = t interior, the row of poles k-1 is the surface at t- and row k the
 // surface at t+. Where the two rows are equal (bit for bit) the surface is continuous there and
 // dropping one copy of t and row k is exact (the same surface); otherwise UnsupportedProblem
 // (exit 2): one face cannot hold the jump. rows[i][j]: the poles with index i in this direction.
-void lower_full_multiplicity(std::vector<double>& K, std::vector<std::vector<gp_Pnt>>& rows, int deg,
+void lower_full_multiplicity(std::vector<double>& K, std::vector<std::vector<Pole>>& rows, int deg,
                              const char* direction) {
-  const auto same = [](const gp_Pnt& a, const gp_Pnt& b) { return a.X() == b.X() && a.Y() == b.Y() && a.Z() == b.Z(); };
   for (size_t k = 1; k + static_cast<size_t>(deg) + 1 < K.size(); ++k) {
     if (K[k] == K[k - 1] || K[k + static_cast<size_t>(deg)] != K[k]) continue;  // not the start of a run of deg + 1
-    bool continuous = true;
-    for (size_t j = 0; j < rows[k].size(); ++j) continuous = continuous && same(rows[k - 1][j], rows[k][j]);
-    if (!continuous)
+    if (rows[k - 1] != rows[k])
       throw UnsupportedProblem(std::string("STEP export: the bspline surface is discontinuous at the ") + direction +
                                " knot " + shortest(K[k]) +
                                " (multiplicity degree + 1 and different control points on either side); a STEP "
@@ -94,93 +111,118 @@ void lower_full_multiplicity(std::vector<double>& K, std::vector<std::vector<gp_
   }
 }
 
-Handle(Geom_Surface) bspline(const BSplineNet& b) {
-  std::vector<std::vector<gp_Pnt>> rows(b.nu(), std::vector<gp_Pnt>(b.nv()));  // [i][j]
-  for (int i = 0; i < b.nu(); ++i)
-    for (int j = 0; j < b.nv(); ++j) rows[i][j] = pnt(b.points(), b.index(i, j));
-  std::vector<double> U = b.knots_u(), V = b.knots_v();
-  lower_full_multiplicity(U, rows, b.p(), "u");
-  std::vector<std::vector<gp_Pnt>> cols(rows.empty() ? 0 : rows[0].size(), std::vector<gp_Pnt>(rows.size()));
+std::vector<std::vector<Pole>> transposed(const std::vector<std::vector<Pole>>& rows) {
+  std::vector<std::vector<Pole>> cols(rows.empty() ? 0 : rows[0].size(), std::vector<Pole>(rows.size()));
   for (size_t i = 0; i < rows.size(); ++i)
     for (size_t j = 0; j < rows[i].size(); ++j) cols[j][i] = rows[i][j];
-  lower_full_multiplicity(V, cols, b.q(), "v");
-  const int nu = static_cast<int>(rows.size()), nv = static_cast<int>(cols.size());
-  TColgp_Array2OfPnt poles(1, nu, 1, nv);
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) poles.SetValue(i + 1, j + 1, cols[j][i]);
-  std::vector<double> ku, kv;
-  std::vector<int> mu, mv;
-  split_knots(U, ku, mu);
-  split_knots(V, kv, mv);
-  TColStd_Array1OfReal UK(1, static_cast<int>(ku.size())), VK(1, static_cast<int>(kv.size()));
-  TColStd_Array1OfInteger UM(1, static_cast<int>(mu.size())), VM(1, static_cast<int>(mv.size()));
-  for (size_t k = 0; k < ku.size(); ++k)
-    UK.SetValue(static_cast<int>(k) + 1, ku[k]), UM.SetValue(static_cast<int>(k) + 1, mu[k]);
-  for (size_t k = 0; k < kv.size(); ++k)
-    VK.SetValue(static_cast<int>(k) + 1, kv[k]), VM.SetValue(static_cast<int>(k) + 1, mv[k]);
-  return new Geom_BSplineSurface(poles, UK, VK, UM, VM, b.p(), b.q());
+  return cols;
 }
 
-Handle(Geom_Surface) surface_of(const Net& net) {
-  if (const auto* t = std::get_if<TensorNet>(&net)) return bezier(*t);
-  if (const auto* b = std::get_if<BSplineNet>(&net)) return bspline(*b);
-  const auto& tri = std::get<TriangularNet>(net);
-  return bezier(tensor_form(tri));
+// The poles and knots of `net` as the plugin takes them; the vectors own the arrays.
+struct Surface {
+  bpde_step_surface s{};
+  std::vector<double> poles, ku, kv;
+};
+
+Surface surface_of(const Net& net) {
+  Surface out;
+  auto fill = [&](int nu, int nv, auto&& point) {
+    out.s.nu = nu, out.s.nv = nv;
+    out.poles.resize(static_cast<size_t>(nu) * nv * 3);
+    for (int i = 0; i < nu; ++i)
+      for (int j = 0; j < nv; ++j)
+        for (int c = 0; c < 3; ++c) out.poles[3 * (static_cast<size_t>(i) * nv + j) + c] = point(i, j, c);
+  };
+  if (const auto* b = std::get_if<BSplineNet>(&net)) {
+    out.s.kind = BPDE_STEP_BSPLINE;
+    std::vector<std::vector<Pole>> rows(b->nu(), std::vector<Pole>(b->nv()));  // [i][j]
+    for (int i = 0; i < b->nu(); ++i)
+      for (int j = 0; j < b->nv(); ++j)
+        for (int c = 0; c < 3; ++c) rows[i][j][c] = b->points()(b->index(i, j), c);
+    out.ku = b->knots_u(), out.kv = b->knots_v();
+    lower_full_multiplicity(out.ku, rows, b->p(), "u");
+    std::vector<std::vector<Pole>> cols = transposed(rows);
+    lower_full_multiplicity(out.kv, cols, b->q(), "v");
+    rows = transposed(cols);
+    fill(static_cast<int>(rows.size()), rows.empty() ? 0 : static_cast<int>(rows[0].size()),
+         [&](int i, int j, int c) { return rows[i][j][c]; });
+    out.s.p = b->p(), out.s.q = b->q();
+    out.s.knots_u = out.ku.data(), out.s.knots_v = out.kv.data();
+  } else {
+    const TensorNet t = std::holds_alternative<TensorNet>(net) ? std::get<TensorNet>(net)
+                                                               : tensor_form(std::get<TriangularNet>(net));
+    out.s.kind = BPDE_STEP_BEZIER;
+    fill(t.n() + 1, t.m() + 1, [&](int i, int j, int c) { return t.points()(t.index(i, j), c); });
+  }
+  out.s.poles = out.poles.data();
+  return out;
 }
 
 }  // namespace
 
+std::vector<std::string> step_plugin_candidates() {
+  if (const char* env = std::getenv("BPDE_STEP_PLUGIN"); env && *env) return {env};
+  std::vector<std::string> out;
+  auto add = [&](const fs::path& folder) {
+    if (folder.empty()) return;
+    const std::string p = (folder / BPDE_STEP_PLUGIN_NAME).lexically_normal().string();
+    for (const std::string& q : out)
+      if (q == p) return;
+    out.push_back(p);
+  };
+  const fs::path own = own_folder();
+  add(own);
+#ifdef BPDE_STEP_PLUGIN_INSTALL_LIBDIR
+  if (!own.empty()) add(own.parent_path() / BPDE_STEP_PLUGIN_INSTALL_LIBDIR);
+#endif
+#ifdef BPDE_STEP_PLUGIN_INSTALL_DIR
+  add(BPDE_STEP_PLUGIN_INSTALL_DIR);
+#endif
+#ifdef BPDE_STEP_PLUGIN_BUILD_DIR
+  add(BPDE_STEP_PLUGIN_BUILD_DIR);
+#endif
+  return out;
+}
+
+std::string step_plugin_path() { return plugin().path; }
+
 void write_step(const std::string& path, const Net& net) {
   check_step_degree(net, "write_step");
-  silence_opencascade();
-  TopoDS_Face face;
-  try {
-    const Handle(Geom_Surface) s = surface_of(net);
-    double u0, u1, v0, v1;
-    s->Bounds(u0, u1, v0, v1);
-    BRepBuilderAPI_MakeFace make(s, u0, u1, v0, v1, 1e-7);
-    if (!make.IsDone())
-      throw InternalError("STEP export: OpenCASCADE could not make a face of the " + net_kind(net) + " net");
-    face = make.Face();
-  } catch (const Standard_Failure& e) {
-    throw InternalError(std::string("STEP export: OpenCASCADE refused the surface: ") + e.GetMessageString());
-  }
-  STEPControl_Writer writer;
-  Interface_Static::SetCVal("write.step.schema", "AP214IS");
-  Interface_Static::SetCVal("write.step.product.name", "bezierpde surface");
-  if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone)
-    throw InternalError("STEP export: OpenCASCADE could not transfer the face");
+  const Plugin& p = plugin();
+  const Surface s = surface_of(net);
   // Into a temporary beside the target, renamed onto it only when complete: a failed write (a
   // full disk, a file-size limit) leaves an existing target as it was.
   replace_file_atomically(path, [&](const std::string& tmp) {
-    if (writer.Write(tmp.c_str()) != IFSelect_RetDone) throw FileError("cannot write file '" + path + "'");
+    char message[512] = {0};
+    switch (p.write(&s.s, tmp.c_str(), message, sizeof message)) {
+      case BPDE_STEP_OK:
+        return;
+      case BPDE_STEP_FILE:
+        throw FileError("cannot write file '" + path + "'");
+      default:
+        throw InternalError("STEP export: " + std::string(message) + " (" + net_kind(net) + " net)");
+    }
   });
 }
 
 StepReadBack read_step(const std::string& path, const Eigen::MatrixX2d& uv) {
-  silence_opencascade();
-  STEPControl_Reader reader;
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw FileError("cannot read STEP file '" + path + "'");
-  reader.TransferRoots();
-  const TopoDS_Shape shape = reader.OneShape();
+  const Plugin& p = plugin();
+  const Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> pairs = uv;
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> points(uv.rows(), 3);
+  points.setZero();
+  bpde_step_readback r{};
+  char message[512] = {0};
+  const int status = p.read(path.c_str(), pairs.data(), static_cast<long>(uv.rows()), &r, points.data(), message,
+                            sizeof message);
+  if (status == BPDE_STEP_FILE) throw FileError("cannot read STEP file '" + path + "'");
+  if (status != BPDE_STEP_OK) throw InternalError("STEP read: " + std::string(message));
   StepReadBack out;
-  out.points.resize(uv.rows(), 3);
-  TopoDS_Face first;
-  for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
-    if (out.faces++ == 0) first = TopoDS::Face(ex.Current());
-  }
-  if (out.faces == 0) return out;
-  const Handle(Geom_Surface) s = BRep_Tool::Surface(first);
-  s->Bounds(out.u0, out.u1, out.v0, out.v1);
-  const GeomAdaptor_Surface a(s);
-  out.surface = a.GetType() == GeomAbs_BezierSurface    ? "bezier"
-                : a.GetType() == GeomAbs_BSplineSurface ? "bspline"
-                                                        : "other";
-  if (out.surface != "other") out.u_degree = a.UDegree(), out.v_degree = a.VDegree();
-  for (Eigen::Index k = 0; k < uv.rows(); ++k) {
-    const gp_Pnt p = s->Value(uv(k, 0), uv(k, 1));
-    out.points.row(k) << p.X(), p.Y(), p.Z();
-  }
+  out.faces = r.faces;
+  out.points = points;
+  if (r.faces == 0) return out;
+  out.surface = r.surface == 0 ? "bezier" : r.surface == 1 ? "bspline" : "other";
+  out.u_degree = r.u_degree, out.v_degree = r.v_degree;
+  out.u0 = r.u0, out.u1 = r.u1, out.v0 = r.v0, out.v1 = r.v1;
   return out;
 }
 

@@ -1,7 +1,18 @@
 #pragma once
 // STEP (ISO 10303-21, AP214) export of the exact patch of a net through OpenCASCADE, and the
-// reader the tests use to check it. io/step_export.cpp is the one translation unit that includes
-// OpenCASCADE (target bpde_step), like checks/ for CGAL; this header speaks Eigen only.
+// reader the tests use to check it. This header speaks Eigen only; OpenCASCADE lives in the plugin
+// bpde_step_plugin.so (io/step_plugin.cpp, the one translation unit that includes it), which the
+// first call of write_step, read_step or step_plugin_path opens with dlopen: a process that writes
+// no STEP file never loads OpenCASCADE. Where the plugin is looked for, in this order (the first
+// file that exists is loaded, the others are not tried):
+//  1. the environment variable BPDE_STEP_PLUGIN, if set and not empty: that file only;
+//  2. the folder of the binary that holds this library's code (libbpde_step.so of a shared build,
+//     else the program or shared object that linked the static library);
+//  3. that folder's ../<libdir> (an installed bpde in <prefix>/bin beside <prefix>/<libdir>);
+//  4. the install prefix's library folder, <prefix>/<libdir>, as configured at build time;
+//  5. the build tree's folder of the plugin, as built.
+// A plugin that is missing, cannot be loaded or belongs to another build is a StepPluginError
+// (below; an InternalError, the command's exit status 3), raised by the call that needs it.
 //
 // One face, bounded by the surface's natural parameter range:
 //  - tensor nets: a Geom_BezierSurface with poles P_ij (i along u, j along v) on [0,1]^2;
@@ -17,11 +28,20 @@
 #include <string>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "bezierpde/core/errors.h"
 #include "bezierpde/io/json_io.h"
 
 namespace bpde {
+
+/// The STEP plugin cannot be found, loaded or is not of this build: a part of the installation is
+/// missing, not the input's fault. An InternalError (exit status 3), typed so that a caller can
+/// tell it from a broken invariant.
+class StepPluginError : public InternalError {
+ public:
+  using InternalError::InternalError;
+};
 
 /// OpenCASCADE's largest Bézier/B-spline degree (Geom_BezierSurface::MaxDegree()).
 inline constexpr int kMaxStepDegree = 25;
@@ -46,8 +66,15 @@ inline void check_step_degree(const Net& net, const std::string& where) {
 }
 
 /// Write `net` to `path`. Throws DegreeError above kMaxStepDegree, FileError if the file cannot
-/// be written, InternalError if OpenCASCADE refuses the surface.
+/// be written, StepPluginError without the plugin, InternalError if OpenCASCADE refuses the surface.
 void write_step(const std::string& path, const Net& net);
+
+/// The paths where the STEP plugin is looked for, in the order above.
+std::vector<std::string> step_plugin_candidates();
+
+/// Loads the STEP plugin (once per process) and returns the path it was loaded from. Throws
+/// StepPluginError if it is missing: a job that exports STEP calls it before it solves.
+std::string step_plugin_path();
 
 /// What a STEP file holds, as OpenCASCADE reads it back: its faces, and for the first face the
 /// kind and degrees of its surface, the parameter bounds and the surface's points at `uv`.
@@ -58,7 +85,8 @@ struct StepReadBack {
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   Eigen::MatrixX3d points;  ///< one row per row of uv
 };
-/// Read `path` with STEPControl_Reader. Throws FileError if it cannot be read.
+/// Read `path` with STEPControl_Reader. Throws FileError if it cannot be read, StepPluginError
+/// without the plugin.
 StepReadBack read_step(const std::string& path, const Eigen::MatrixX2d& uv);
 
 }  // namespace bpde

@@ -33,6 +33,17 @@ class ArrayWriter {
     close();
   }
 
+  // The same text as reals() of the values that `text(k)` formats (SharedNumberText).
+  template <class Text>
+  void texts(const char* name, size_t count, int components, Text text) {
+    open("Float64", name, components);
+    for (size_t k = 0; k < count; ++k) {
+      out_ += text(k);
+      separator(k, components);
+    }
+    close();
+  }
+
   template <class Int>
   void ints(const char* type, const char* name, const std::vector<Int>& values, int components) {
     open(type, name, components);
@@ -64,8 +75,9 @@ class ArrayWriter {
     char buf[32];
     const auto r = std::to_chars(buf, buf + sizeof buf, value);
     out_.append(buf, r.ptr);
-    out_ += (k + 1) % (static_cast<size_t>(components) * 4) == 0 ? '\n' : ' ';
+    separator(k, components);
   }
+  void separator(size_t k, int components) { out_ += (k + 1) % (static_cast<size_t>(components) * 4) == 0 ? '\n' : ' '; }
   void payload(const void* data, size_t bytes) {
     std::vector<char> block(sizeof(std::uint64_t) + bytes);
     const std::uint64_t n = bytes;
@@ -80,11 +92,14 @@ class ArrayWriter {
 
 }  // namespace
 
-void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format) {
+void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format,
+               const SharedNumberText* text) {
   const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
   if (fields.H.size() != nv || fields.K.size() != nv || fields.normal.rows() != nv || fields.uv.rows() != nv ||
       fields.regular.size() != nv)
     throw InternalError("write_vtp: fields do not match the mesh");
+  if (text && text->vertices() != nv) throw InternalError("write_vtp: the shared number text is not of this mesh");
+  const bool shared = text && format == MeshFormat::Ascii;
   using RowMat3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
   using RowMat2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
   const RowMat3 points = mesh.V, normals = fields.normal;
@@ -106,12 +121,20 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   ArrayWriter w(s, format == MeshFormat::Binary);
   s += "      <PointData Scalars=\"mean_curvature\" Normals=\"Normals\" TCoords=\"uv\">\n";
   w.reals("Normals", normals.data(), static_cast<size_t>(nv) * 3, 3);
-  w.reals("mean_curvature", fields.H.data(), static_cast<size_t>(nv), 1);
+  if (shared)
+    w.texts("mean_curvature", static_cast<size_t>(nv), 1, [&](size_t k) { return text->mean_curvature(static_cast<Eigen::Index>(k)); });
+  else
+    w.reals("mean_curvature", fields.H.data(), static_cast<size_t>(nv), 1);
   w.reals("gaussian_curvature", fields.K.data(), static_cast<size_t>(nv), 1);
   w.reals("uv", uv.data(), static_cast<size_t>(nv) * 2, 2);
   w.ints("UInt8", "regular", regular, 1);
   s += "      </PointData>\n      <Points>\n";
-  w.reals("Points", points.data(), static_cast<size_t>(nv) * 3, 3);
+  if (shared)
+    w.texts("Points", static_cast<size_t>(nv) * 3, 3, [&](size_t k) {
+      return text->vertex(static_cast<Eigen::Index>(k / 3), static_cast<int>(k % 3));
+    });
+  else
+    w.reals("Points", points.data(), static_cast<size_t>(nv) * 3, 3);
   s += "      </Points>\n      <Polys>\n";
   w.ints("Int32", "connectivity", connectivity, 1);
   w.ints("Int32", "offsets", offsets, 1);

@@ -19,7 +19,8 @@
 namespace bpde {
 
 /// Write `mesh` with `fields` (surface_fields of the same mesh) to `path`. Throws FileError.
+/// `text`, if given, is the SharedNumberText of the same mesh and fields (io/mesh_io.h).
 void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields,
-               MeshFormat format = MeshFormat::Ascii);
+               MeshFormat format = MeshFormat::Ascii, const SharedNumberText* text = nullptr);
 
 }  // namespace bpde

@@ -445,9 +445,13 @@ void write_output_files(const std::string& dir, const Json* result, const Net& n
   OutputFolder out(dir, output_file_names(result != nullptr, exports));
   if (result) write_json_file(out.file("result.json"), *result);
   const SurfaceFields fields = surface_fields(net, mesh);
-  write_obj(out.file("surface.obj"), mesh);
-  write_ply(out.file("surface.ply"), mesh, fields, format);
-  write_vtp(out.file("surface.vtp"), mesh, fields, format);
+  // in ASCII, the vertex coordinates and H are formatted once for the three files
+  std::optional<SharedNumberText> text;
+  if (format == MeshFormat::Ascii) text.emplace(mesh, fields);
+  const SharedNumberText* shared = text ? &*text : nullptr;
+  write_obj(out.file("surface.obj"), mesh, shared);
+  write_ply(out.file("surface.ply"), mesh, fields, format, shared);
+  write_vtp(out.file("surface.vtp"), mesh, fields, format, shared);
   write_net_obj(out.file("net.obj"), net);
   const Json report = result && result->contains("report") ? (*result)["report"] : Json::object();
   if (exports.step) write_step(out.file("surface.step"), net);

@@ -5,7 +5,8 @@ Usage: bench_tables.py [--list] [--min-time S] [--quick] [--only SECTION,...] BP
 
 Runs the routes of bpde_bench (Google Benchmark, bench/) that the performance pages rest on, each
 family once in one process (`--benchmark_format=json`), the Table 1 report (`--table1`) and the
-scaling table (scripts/scaling.py: one process per size), and prints every table between the
+scaling table (scripts/scaling.py: one process per size) and the start-up table (scripts/startup.py
+on the `bpde` beside BPDE_BENCH), and prints every table between the
 markers of scripts/docs.py:
 
     <!-- generated: bench-NAME; machine-dependent: COL, ... -->
@@ -158,7 +159,7 @@ FAMILIES = [
       ("triangular: de Casteljau / basis", "Sample/triangular-casteljau", "Sample/triangular-basis")]),
 ]
 
-SECTIONS = ["goals"] + [f[0] for f in FAMILIES] + ["kernel-peak", "table1", "scaling"]
+SECTIONS = ["goals"] + [f[0] for f in FAMILIES] + ["kernel-peak", "table1", "scaling", "startup"]
 
 
 def family_sections(runs):
@@ -202,6 +203,23 @@ def scaling(bench):
     return [l for l in out if l.startswith("|") or not l.strip()]
 
 
+def startup(bench, runs):
+    """scripts/startup.py on the bpde beside bpde_bench: [{command, min_ms, median_ms,
+    ratio_to_true, relocations}]."""
+    bpde = pathlib.Path(bench).parent / "bpde"
+    out = subprocess.run([sys.executable, str(ROOT / "scripts" / "startup.py"), str(bpde), "--runs", str(runs),
+                          "--json"], check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def startup_table(rows):
+    lines = ["| command | min CPU ms | median CPU ms | min / `/bin/true` | loader relocations |", "|---|---|---|---|---|"]
+    for r in rows:
+        ratio = fmt(r["ratio_to_true"]) if r["ratio_to_true"] else "–"
+        lines.append(f"| `{r['command']}` | {fmt(r['min_ms'])} | {fmt(r['median_ms'])} | {ratio} | {r['relocations']} |")
+    return lines
+
+
 def ratio(run, a, b, n):
     x, y = run.get(a, n), run.get(b, n)
     return x / y if x is not None and y else None
@@ -211,7 +229,7 @@ def verdict(ok):
     return "–" if ok is None else ("met" if ok else "not met")
 
 
-def goals(runs, t1_verdicts, scale_lines):
+def goals(runs, t1_verdicts, scale_lines, start_rows):
     """The goals of docs/performance.md, each with its measure in this run and its verdict."""
     rows = []
 
@@ -247,6 +265,9 @@ def goals(runs, t1_verdicts, scale_lines):
     r = ratio(runs["cmc"], "Cmc/newton", "Cmc/dirichlet", 10)
     add("one D_H solve at degree 10 in the time of ≤ 50 Dirichlet solves", f"newton / dirichlet {fmt(r)}",
         None if r is None else r <= 50)
+    version = next((r for r in start_rows if r["command"] == "bpde --version"), None)
+    add("`bpde --version` in at most 5 ms of CPU (the process floor)",
+        f"{fmt(version['min_ms'])} ms" if version else "–", None if version is None else version["min_ms"] <= 5)
     lines = ["| goal | measured | status |", "|---|---|---|"] + rows
     return section("goals", lines, ["measured", "status"])
 
@@ -278,13 +299,17 @@ def main():
     t1, t1_verdicts = table1(a.bench, min_time) if "table1" in only else ([], [])
     print("bench: scaling", file=sys.stderr, flush=True)
     scale = [] if a.quick or "scaling" not in only else scaling(a.bench)
+    print("bench: startup", file=sys.stderr, flush=True)
+    start = startup(a.bench, 5 if a.quick else 30) if "startup" in only else []
     cpu = next((l.partition(":")[2].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "")
-    out = goals(runs, t1_verdicts, scale) + [""] + family_sections(runs)
+    out = goals(runs, t1_verdicts, scale, start) + [""] + family_sections(runs)
     out += section("kernel-peak", kernel_peak(runs["kernel-peak"]), ["GFLOP/s", "share of the peak"]) + [""]
     t1_cols = [c.strip() for c in t1[0].strip("|").split("|")][2:] if t1 else []
     out += section("table1", (t1 + [""] + ["- " + v for v in t1_verdicts]) if t1 else ["(not run)"], t1_cols) + [""]
     scale_cols = ["CPU ms", "peak MB", "time ~ size^", "memory above the smallest run ~ size^"]
-    out += section("scaling", scale or ["(not run)"], scale_cols)
+    out += section("scaling", scale or ["(not run)"], scale_cols) + [""]
+    out += section("startup", startup_table(start) if start else ["(not run)"],
+                   ["min CPU ms", "median CPU ms", "min / `/bin/true`", "loader relocations"])
     print("\n".join(out))
     print(f"bench: done on {cpu}", file=sys.stderr)
     return 0

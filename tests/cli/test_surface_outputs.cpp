@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -139,6 +140,50 @@ TEST(CliSurfaceOutputs, StepExportOfAKnotOfFullMultiplicity) {
   EXPECT_EQ(slurp(step), text);
   // sample and check take both nets
   EXPECT_EQ(run("check " + jump.string()).status, 0);
+}
+
+TEST(CliSurfaceOutputs, StepExportWithoutThePluginExitsThreeAndLeavesNoFile) {
+  // OpenCASCADE lives in the STEP plugin (io/step_export.h), opened on the first STEP file only:
+  // BPDE_STEP_PLUGIN points the search at a missing file, then at a file that is no plugin.
+  const fs::path net = write("noplugin_net.json", kTensor);
+  const char* net2 = R"({"type": "tensor", "degree": [2, 2], "points": [[0,0,0],[0,0.5,0],[0,1,0],[0.5,0,0],[0,0,0],)"
+                     R"([0.5,1,0],[1,0,0],[1,0.5,0.5],[1,1,1]]})";
+  const std::string job = std::string(R"({"net": )") + net2 +
+                          R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "export": ["step"]})";
+  const fs::path job_file = write("noplugin_job.json", job);
+  for (const fs::path& plugin : {tmpdir() / "no_such_plugin.so", net}) {
+    ASSERT_EQ(setenv("BPDE_STEP_PLUGIN", plugin.c_str(), 1), 0);
+    const fs::path step = tmpdir() / "noplugin.step", out = tmpdir() / "noplugin_out";
+    fs::remove(step);
+    fs::remove_all(out);
+    CmdResult r = run("export " + net.string() + " --step " + step.string());
+    EXPECT_EQ(r.status, 3) << r.err;
+    EXPECT_FALSE(fs::exists(step));
+    r = run("solve " + job_file.string() + " --out " + out.string());
+    EXPECT_EQ(r.status, 3) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    // a job without STEP export does not need the plugin
+    r = run("solve " + write("noplugin_job2.json", std::string(R"({"net": )") + net2 +
+                                                       R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}})")
+                               .string() +
+            " --out " + out.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    fs::remove_all(out);
+  }
+  ASSERT_EQ(unsetenv("BPDE_STEP_PLUGIN"), 0);
+}
+
+TEST(CliSurfaceOutputs, OnlyAStepExportLoadsOpenCascade) {
+  // the dynamic loader's list of the objects it opens (LD_DEBUG=files), for --version and export
+  const fs::path net = write("occ_net.json", kTensor);
+  ASSERT_EQ(setenv("LD_DEBUG", "files", 1), 0);
+  const CmdResult version = run("--version");
+  const CmdResult exported = run("export " + net.string() + " --step " + (tmpdir() / "occ.step").string());
+  ASSERT_EQ(unsetenv("LD_DEBUG"), 0);
+  ASSERT_EQ(version.status, 0);
+  ASSERT_EQ(exported.status, 0) << exported.err;
+  EXPECT_EQ(version.err.find("libTKernel"), std::string::npos);
+  EXPECT_NE(exported.err.find("libTKernel"), std::string::npos);  // the check above can fail
 }
 
 TEST(CliSurfaceOutputs, StepExportReadsTheResultJsonBpdeWrites) {

@@ -7,9 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "bezierpde/core/differential_geometry.h"
+#include "bezierpde/core/errors.h"
 #include "bezierpde/io/mesh_io.h"
 #include "bezierpde/io/surface_fields.h"
 #include "bezierpde/io/vtp_io.h"
@@ -277,4 +281,33 @@ TEST(SurfaceFiles, WrittenBesideObjAndPlyInEitherFormat) {
   }
   EXPECT_EQ(mesh_format_from_string("binary", "x"), MeshFormat::Binary);
   EXPECT_THROW(mesh_format_from_string("BINARY", "x"), ParseError);
+}
+
+TEST(SurfaceFiles, SharedNumberTextWritesTheSameBytes) {
+  // the vertex coordinates and H formatted once (SharedNumberText) give the files each writer
+  // formats on its own, byte for byte, in both formats; and a text of another mesh is refused
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const Net& net : {demo_net(), Net(wavy_tensor()), Net(wavy_bspline())}) {
+    const TriangleMesh mesh = sample_net(net, 9);
+    const SurfaceFields f = surface_fields(net, mesh);
+    const SharedNumberText text(mesh, f);
+    write_obj(scratch("own.obj").string(), mesh);
+    write_obj(scratch("shared.obj").string(), mesh, &text);
+    EXPECT_EQ(slurp(scratch("own.obj")), slurp(scratch("shared.obj")));
+    EXPECT_NE(slurp(scratch("own.obj")).find("v "), std::string::npos);
+    for (MeshFormat format : {MeshFormat::Ascii, MeshFormat::Binary}) {
+      write_ply(scratch("own.ply").string(), mesh, f, format);
+      write_ply(scratch("shared.ply").string(), mesh, f, format, &text);
+      EXPECT_EQ(slurp(scratch("own.ply")), slurp(scratch("shared.ply")));
+      write_vtp(scratch("own.vtp").string(), mesh, f, format);
+      write_vtp(scratch("shared.vtp").string(), mesh, f, format, &text);
+      EXPECT_EQ(slurp(scratch("own.vtp")), slurp(scratch("shared.vtp")));
+    }
+  }
+  const TriangleMesh a = sample_net(Net(wavy_tensor()), 9), b = sample_net(Net(wavy_tensor()), 5);
+  const SharedNumberText text_b(b, surface_fields(Net(wavy_tensor()), b));
+  EXPECT_THROW(write_obj(scratch("bad.obj").string(), a, &text_b), InternalError);
 }

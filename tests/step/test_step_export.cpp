@@ -3,7 +3,9 @@
 // tensor form (triangular/tensor_form.h) against closed forms.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 
@@ -195,4 +197,17 @@ TEST(StepExport, KeepsTwelveDigitsAtAnyScale) {
     const StepReadBack r = read_step(p.string(), uv);
     EXPECT_LT(relative_error(r, uv, [&](double u, double v) { return t.evaluate(u, v); }), 1e-12) << scale;
   }
+}
+
+TEST(StepExport, PluginIsFoundBesideTheLibraryOrWhereTheEnvironmentSays) {
+  const std::vector<std::string> candidates = step_plugin_candidates();
+  ASSERT_FALSE(candidates.empty());
+  const std::string loaded = step_plugin_path();
+  EXPECT_TRUE(fs::is_regular_file(loaded));
+  EXPECT_NE(std::find(candidates.begin(), candidates.end(), loaded), candidates.end());
+  // the environment variable replaces the search (the loaded plugin stays loaded)
+  ASSERT_EQ(setenv("BPDE_STEP_PLUGIN", "/nonexistent/plugin.so", 1), 0);
+  EXPECT_EQ(step_plugin_candidates(), std::vector<std::string>{"/nonexistent/plugin.so"});
+  ASSERT_EQ(unsetenv("BPDE_STEP_PLUGIN"), 0);
+  EXPECT_EQ(step_plugin_candidates(), candidates);
 }
