@@ -1,0 +1,137 @@
+// The progress line of `bpde` (app/progress_line.h) driven with a test clock: the four forms of
+// the line, an estimate of the time left only for a stage of known length from kEtaFromFraction
+// on (elapsed × (1 − f) / f), the redraw rate into a file, and a stage's clock kept while other
+// stages report in between. And the lines `bpde solve --progress` writes: only those forms, the
+// percentages of a stage never falling, every stage ended.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/progress_line.h"
+#include "tests/cli/cli_run.h"
+
+namespace bpde::app {
+namespace {
+
+using Clock = ProgressLine::Clock;
+using std::chrono::milliseconds;
+
+// The whole lines a ProgressLine writes into a file, after `drive` ran on it.
+template <class F>
+std::vector<std::string> lines_of(F drive) {
+  std::FILE* f = std::tmpfile();
+  {
+    ProgressLine line(f, false);
+    drive(line);
+  }
+  std::rewind(f);
+  std::vector<std::string> out;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, f)) {
+    std::string s(buf);
+    if (!s.empty() && s.back() == '\n') s.pop_back();
+    out.push_back(s);
+  }
+  std::fclose(f);
+  return out;
+}
+
+TEST(ProgressLine, TextShowsAnEstimateOnlyForAKnownFractionFromTheThreshold) {
+  EXPECT_EQ(progress_text("sampling", 0, 0, 3.2), "bpde: sampling, 3 s elapsed");   // unknown length
+  EXPECT_EQ(progress_text("sampling", 5, 0, 3.2), "bpde: sampling, 3 s elapsed");   // still unknown
+  EXPECT_EQ(progress_text("sampling", 0, 10, 3.2), "bpde: sampling, 3 s elapsed");  // nothing done yet
+  EXPECT_EQ(progress_text("checking", 0.02, 1, 4), "bpde: checking 2%, 4 s elapsed");  // below the threshold
+  // 25% after 10 s: 30 s left; 50% after 10 s: 10 s left
+  EXPECT_EQ(progress_text("checking", 1, 4, 10), "bpde: checking 25%, 10 s elapsed, ~30 s left");
+  EXPECT_EQ(progress_text("cmc continuation", 0.75, 1.5, 10), "bpde: cmc continuation 50%, 10 s elapsed, ~10 s left");
+  EXPECT_EQ(progress_text("writing files", 8, 8, 7.25), "bpde: writing files done in 7.2 s");
+  // at the threshold the estimate appears
+  const std::string at = progress_text("x", kEtaFromFraction, 1, 1);
+  EXPECT_NE(at.find("left"), std::string::npos) << at;
+  EXPECT_EQ(progress_text("x", 0.999 * kEtaFromFraction, 1, 1).find("left"), std::string::npos);
+}
+
+TEST(ProgressLine, IntoAFileOneLinePerStageStartEndAndSecond) {
+  const Clock::time_point t0 = Clock::now();
+  const std::vector<std::string> lines = lines_of([&](ProgressLine& p) {
+    p.update("checking", 0, 1, t0);
+    for (int k = 1; k <= 30; ++k) p.update("checking", k / 40.0, 1, t0 + milliseconds(100 * k));  // 3 s, 10 a second
+    p.update("checking", 1, 1, t0 + milliseconds(4000));
+  });
+  // the start, one line a second (at 1, 2 and 3 s), the end
+  ASSERT_EQ(lines.size(), 5u) << ::testing::PrintToString(lines);
+  EXPECT_EQ(lines[0], "bpde: checking, 0 s elapsed");
+  EXPECT_EQ(lines[1], "bpde: checking 25%, 1 s elapsed, ~3 s left");  // 10/40 after 1 s
+  EXPECT_EQ(lines[2], "bpde: checking 50%, 2 s elapsed, ~2 s left");
+  EXPECT_EQ(lines[3], "bpde: checking 75%, 3 s elapsed, ~1 s left");
+  EXPECT_EQ(lines[4], "bpde: checking done in 4.0 s");
+}
+
+TEST(ProgressLine, AStageKeepsItsClockWhileAnotherReportsInBetween) {
+  const Clock::time_point t0 = Clock::now();
+  const std::vector<std::string> lines = lines_of([&](ProgressLine& p) {
+    p.update("cmc area", 0, 1, t0);
+    p.update("cmc least squares", 0, 1, t0 + milliseconds(2000));
+    p.update("cmc least squares", 1, 1, t0 + milliseconds(6000));
+    p.update("cmc area", 0.5, 1, t0 + milliseconds(8000));  // 8 s into "cmc area", not 0
+    p.update("cmc area", 1, 1, t0 + milliseconds(9000));
+    p.update("cmc area", 0, 1, t0 + milliseconds(9500));  // again after its end: a new clock (not drawn:
+    p.update("cmc area", 1, 1, t0 + milliseconds(10000));  // the same stage, within a second)
+  });
+  ASSERT_EQ(lines.size(), 6u) << ::testing::PrintToString(lines);
+  EXPECT_EQ(lines[2], "bpde: cmc least squares done in 4.0 s");
+  EXPECT_EQ(lines[3], "bpde: cmc area 50%, 8 s elapsed, ~8 s left");
+  EXPECT_EQ(lines[4], "bpde: cmc area done in 9.0 s");
+  EXPECT_EQ(lines[5], "bpde: cmc area done in 0.5 s");
+}
+
+TEST(ProgressLine, TheCommandWritesOnlyTheFormsAndEndsEveryStage) {
+  const std::string job = std::string(BPDE_SOURCE_DIR) + "/examples/004-cmc-circle/circle_area.json";
+  const bpde::testing::CmdResult r =
+      bpde::testing::run("solve " + job + " --out " + (bpde::testing::tmpdir() / "progress_forms").string() +
+                         " -q --progress --samples 200");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::regex form(
+      "bpde: (.+?)(?:, ([0-9]+) s elapsed| ([0-9]+)%, ([0-9]+) s elapsed(?:, ~([0-9]+) s left)?| done in [0-9]+\\.[0-9] s)");
+  std::map<std::string, int> percent;  // per stage, the last percentage shown since its start
+  std::map<std::string, bool> open;    // stages started and not ended
+  std::istringstream lines(r.err);
+  std::string line;
+  int count = 0;
+  while (std::getline(lines, line)) {
+    ++count;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_match(line, m, form)) << line;
+    const std::string stage = m[1];
+    if (line.find(" done in ") != std::string::npos) {
+      open[stage] = false;
+      percent.erase(stage);
+      continue;
+    }
+    open[stage] = true;
+    if (m[3].matched) {
+      const int p = std::stoi(m[3]);
+      EXPECT_GE(p, percent[stage]) << line;
+      percent[stage] = p;
+      // an estimate only from kEtaFromFraction on
+      if (m[5].matched) {
+        EXPECT_GE(p, static_cast<int>(100 * kEtaFromFraction) - 1) << line;
+      }
+    }
+  }
+  EXPECT_GE(count, 8);
+  for (const char* stage : {"sampling", "checking (CGAL)", "writing files", "cmc area"}) {
+    EXPECT_TRUE(open.count(stage)) << stage;
+  }
+  for (const auto& [stage, running] : open) {
+    EXPECT_FALSE(running) << stage << " never ended\n" << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace bpde::app
