@@ -30,8 +30,8 @@ void check_samples(int samples) {
 
 // sample_net with its progress stage.
 TriangleMesh sampled(const Net& net, int samples) {
-  const ProgressStage stage(job_progress(), "sampling");
-  return sample_net(net, samples);
+  const ProgressStage stage(job_progress(), kSamplingStage);
+  return sample_net(net, samples, job_progress());
 }
 
 }  // namespace
@@ -60,7 +60,7 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
   check_output_dir(out_dir, surface_file_names());
   const TriangleMesh mesh = sampled(net, samples);
   {
-    const ProgressStage stage(job_progress(), "writing files");
+    const ProgressStage stage(job_progress(), kWritingFilesStage);
     write_output_files(out_dir, nullptr, net, mesh, format);
   }
   if (!quiet) std::fputs(files_line(out_dir, surface_file_names()).c_str(), stdout);
@@ -79,7 +79,7 @@ int cmd_check(const std::string& net_path, int samples) {
   const TriangleMesh mesh = sampled(net, samples);
   Json report;
   {
-    const ProgressStage stage(job_progress(), "checking (CGAL)");
+    const ProgressStage stage(job_progress(), kMeshCheckStage);
     report = check_report(mesh);
   }
   std::cout << report.dump() << "\n";

@@ -46,7 +46,9 @@ MeshCheckReport mesh_check(const TriangleMesh& mesh) {
   std::vector<int> F(static_cast<size_t>(mesh.F.rows()) * 3);
   for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
     for (int c = 0; c < 3; ++c) F[static_cast<size_t>(3 * r + c)] = mesh.F(r, c);
-  return check_mesh(V, F);
+  MeshCheckOptions options;
+  options.progress = job_progress();
+  return check_mesh(V, F, options);
 }
 
 Json check_json(const MeshCheckReport& rep) {
@@ -428,16 +430,27 @@ void check_output_dir(const std::string& dir, const std::vector<std::string>& na
 
 void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh,
                         MeshFormat format, const Exports& exports) {
-  OutputFolder out(dir, output_file_names(result != nullptr, exports));
-  if (result) write_json_file(out.file("result.json"), *result);
+  const std::vector<std::string> names = output_file_names(result != nullptr, exports);
+  OutputFolder out(dir, names);
+  // Progress: one step per file and one for the fields, out of one more (the commit, which the
+  // caller's end of the stage reports).
+  const double steps = static_cast<double>(names.size()) + 2;
+  double done = 0;
+  auto wrote = [&] { bpde::report(job_progress(), kWritingFilesStage, ++done, steps); };
+  if (result) write_json_file(out.file("result.json"), *result), wrote();
   const SurfaceFields fields = surface_fields(net, mesh);
+  wrote();
   write_obj(out.file("surface.obj"), mesh);
+  wrote();
   write_ply(out.file("surface.ply"), mesh, fields, format);
+  wrote();
   write_vtp(out.file("surface.vtp"), mesh, fields, format);
+  wrote();
   write_net_obj(out.file("net.obj"), net);
+  wrote();
   const Json report = result && result->contains("report") ? (*result)["report"] : Json::object();
-  if (exports.step) write_step(out.file("surface.step"), net);
-  if (exports.html) write_view_html(out.file("view.html"), net, mesh, report, view_title(net, report));
+  if (exports.step) write_step(out.file("surface.step"), net), wrote();
+  if (exports.html) write_view_html(out.file("view.html"), net, mesh, report, view_title(net, report)), wrote();
   out.commit();
 }
 
@@ -469,11 +482,11 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
     report["mean_curvature"] = stats_json(*written.mean_curvature);
   }
   if (!report.contains("check")) {
-    const ProgressStage stage(job_progress(), "checking (CGAL)");
+    const ProgressStage stage(job_progress(), kMeshCheckStage);
     written.check = mesh_check(mesh);
     report["check"] = check_json(*written.check);
   }
-  const ProgressStage stage(job_progress(), "writing files");
+  const ProgressStage stage(job_progress(), kWritingFilesStage);
   written.result = {{"net", net_to_json(net)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) written.result[it.key()] = it.value();
   write_output_files(dir, &written.result, net, mesh, format, exports);
@@ -483,8 +496,8 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
 
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out) {
   const TriangleMesh mesh = [&] {
-    const ProgressStage stage(job_progress(), "sampling");
-    return sample_net(out.net, job.samples);
+    const ProgressStage stage(job_progress(), kSamplingStage);
+    return sample_net(out.net, job.samples, job_progress());
   }();
   Exports exports;
   exports.html = job.export_html;

@@ -6,7 +6,11 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -130,6 +134,51 @@ TEST(MeshChecks, SampledSphereIsClosedAndConvergesToTheBallVolume) {
   // second-order convergence: error ratio ~ 4
   const double ratio = (exact - v32) / (exact - v64);
   EXPECT_NEAR(ratio, 4.0, 0.1);
+}
+
+// MeshCheckOptions::progress: the stage kMeshCheckStage with total 1, fractions in [0, 1) that
+// never fall, from 0, with many steps through the pairs' tests on a sampled surface (the grid broad
+// phase), and the same report as without a callback. The CGAL broad phase reports its start and end
+// only. (BPDE_PRINT_CHECK_PROGRESS=N prints the times of the reports at N, which the phases'
+// fractions in checks/mesh_checks.cpp were set from.)
+TEST(MeshChecks, ProgressReportsRisingFractionsThroughTheStage) {
+  const char* print = std::getenv("BPDE_PRINT_CHECK_PROGRESS");
+  const int n = print ? std::atoi(print) : 120;
+  Soup s;
+  add_grid(s, n, 2 * n, 0, kPi, 0, 2 * kPi, sphere);
+  for (BroadPhase phase : {BroadPhase::kGrid, BroadPhase::kCgalBoxes}) {
+    std::vector<double> done;
+    std::vector<double> at;
+    const auto t0 = std::chrono::steady_clock::now();
+    MeshCheckOptions o;
+    o.broad_phase = phase;
+    o.progress = [&](std::string_view stage, double d, double total) {
+      EXPECT_EQ(std::string(stage), std::string(kMeshCheckStage));
+      EXPECT_EQ(total, 1.0);
+      done.push_back(d);
+      at.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    };
+    const MeshCheckReport r = check_mesh(s.v, s.t, o);
+    if (print) {
+      for (size_t k = 0; k < done.size(); ++k) std::printf("%.3f %.4f\n", done[k], at[k]);
+      std::printf("end %.4f\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    ASSERT_FALSE(done.empty());
+    EXPECT_EQ(done.front(), 0.0);
+    for (size_t k = 1; k < done.size(); ++k) EXPECT_GE(done[k], done[k - 1]);
+    EXPECT_LT(done.back(), 1.0);  // the caller ends the stage
+    EXPECT_GE(done.back(), 0.9);
+    if (phase == BroadPhase::kGrid) {
+      EXPECT_GE(done.size(), 50u);  // about a hundred steps through the cells
+    } else {
+      EXPECT_LE(done.size(), 6u);
+    }
+    const MeshCheckReport quiet = check_mesh(s.v, s.t, MeshCheckOptions{phase});
+    EXPECT_EQ(r.self_intersections, quiet.self_intersections);
+    EXPECT_EQ(r.box_pairs, quiet.box_pairs);
+    EXPECT_EQ(r.closed, quiet.closed);
+    EXPECT_TRUE(r.closed);
+  }
 }
 
 TEST(MeshChecks, SampledTorusWithTwoSeamsIsClosed) {
