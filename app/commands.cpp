@@ -107,7 +107,7 @@ int cmd_view(const std::string& dir, int samples, bool quiet) {
   const Net net = net_from_json(json_read::field(result, path, "net"), path + ".net");
   const Json report = result.contains("report") ? result["report"] : Json::object();
   OutputFolder out(dir, {"view.html"});
-  write_view_html(out.file("view.html"), net, sample_net(net, samples), report, view_title(net, report));
+  write_view_html(out.file("view.html"), net, sampled(net, samples), report, view_title(net, report));
   out.commit();
   if (!quiet) std::fputs(files_line(dir, {"view.html"}).c_str(), stdout);
   return 0;

@@ -5,6 +5,7 @@
 // percentages of a stage never falling, every stage ended.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <regex>
@@ -90,24 +91,22 @@ TEST(ProgressLine, AStageKeepsItsClockWhileAnotherReportsInBetween) {
   EXPECT_EQ(lines[5], "bpde: cmc area done in 0.5 s");
 }
 
-TEST(ProgressLine, TheCommandWritesOnlyTheFormsAndEndsEveryStage) {
-  const std::string job = std::string(BPDE_SOURCE_DIR) + "/examples/004-cmc-circle/circle_area.json";
-  const bpde::testing::CmdResult r =
-      bpde::testing::run("solve " + job + " --out " + (bpde::testing::tmpdir() / "progress_forms").string() +
-                         " -q --progress --samples 200");
-  ASSERT_EQ(r.status, 0) << r.err;
+// The stages in `err` (the lines of `bpde ... --progress`), each line one of the four forms, the
+// percentages of a stage never falling from its start to its end, and each stage ended.
+std::vector<std::string> checked_stages(const std::string& err) {
   const std::regex form(
       "bpde: (.+?)(?:, ([0-9]+) s elapsed| ([0-9]+)%, ([0-9]+) s elapsed(?:, ~([0-9]+) s left)?| done in [0-9]+\\.[0-9] s)");
   std::map<std::string, int> percent;  // per stage, the last percentage shown since its start
   std::map<std::string, bool> open;    // stages started and not ended
-  std::istringstream lines(r.err);
+  std::vector<std::string> stages;
+  std::istringstream lines(err);
   std::string line;
-  int count = 0;
   while (std::getline(lines, line)) {
-    ++count;
     std::smatch m;
-    ASSERT_TRUE(std::regex_match(line, m, form)) << line;
+    EXPECT_TRUE(std::regex_match(line, m, form)) << line;
+    if (m.empty()) continue;
     const std::string stage = m[1];
+    if (!open.count(stage)) stages.push_back(stage);
     if (line.find(" done in ") != std::string::npos) {
       open[stage] = false;
       percent.erase(stage);
@@ -124,12 +123,36 @@ TEST(ProgressLine, TheCommandWritesOnlyTheFormsAndEndsEveryStage) {
       }
     }
   }
-  EXPECT_GE(count, 8);
-  for (const char* stage : {"sampling", "checking (CGAL)", "writing files", "cmc area"}) {
-    EXPECT_TRUE(open.count(stage)) << stage;
-  }
   for (const auto& [stage, running] : open) {
-    EXPECT_FALSE(running) << stage << " never ended\n" << r.err;
+    EXPECT_FALSE(running) << stage << " never ended\n" << err;
+  }
+  return stages;
+}
+
+bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+TEST(ProgressLine, TheCommandsWriteOnlyTheFormsAndEndEveryStage) {
+  using bpde::testing::run;
+  using bpde::testing::tmpdir;
+  const std::string src = BPDE_SOURCE_DIR;
+  const std::string solved = (tmpdir() / "progress_forms").string();
+  const bpde::testing::CmdResult r =
+      run("solve " + src + "/examples/004-cmc-circle/circle_area.json --out " + solved + " -q --progress --samples 200");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> stages = checked_stages(r.err);
+  for (const char* stage : {"cmc area", "sampling", "mean curvature", "checking (CGAL)", "writing files"}) {
+    EXPECT_TRUE(has(stages, stage)) << stage << "\n" << r.err;
+  }
+  // view and blend sample with progress too
+  const bpde::testing::CmdResult v = run("view " + solved + " -q --progress");
+  ASSERT_EQ(v.status, 0) << v.err;
+  EXPECT_TRUE(has(checked_stages(v.err), "sampling")) << v.err;
+  const bpde::testing::CmdResult b = run("blend " + src + "/examples/003-blend-cylinders/fig2a.json --out " +
+                                         (tmpdir() / "progress_blend").string() + " --progress");
+  ASSERT_EQ(b.status, 0) << b.err;
+  const std::vector<std::string> blend = checked_stages(b.err);
+  for (const char* stage : {"sampling", "checking (CGAL)", "writing files"}) {
+    EXPECT_TRUE(has(blend, stage)) << stage << "\n" << b.err;
   }
 }
 
