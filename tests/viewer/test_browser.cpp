@@ -184,6 +184,10 @@ TEST(Browser, ReportListsAreTablesTheSidePanelDoesNotOverflowAndTheLegendHasTick
     many.push_back({{"name", "job-" + std::to_string(k)}, {"value", 0.1 * k}, {"nothing", nullptr},
                     {"note", k == 3 ? std::string(120, 'x') : std::string("short")}, {"sub", {{"a", k}, {"b", true}}}});
   report["many"] = many;
+  // a long list of scalars: cut at 240 characters in its cell
+  bpde::Json numbers = bpde::Json::array();
+  for (int k = 0; k < 200; ++k) numbers.push_back(0.125 * k);
+  report["numbers"] = numbers;
   { std::ofstream(dir / "result.json") << result.dump(); }
   ASSERT_EQ(run("view " + dir.string() + " --samples 10 -q").status, 0);
 
@@ -218,6 +222,11 @@ TEST(Browser, ReportListsAreTablesTheSidePanelDoesNotOverflowAndTheLegendHasTick
   for (int c : mt.cells) EXPECT_EQ(c, 5);
   // no raw JSON of a list in the page's tables
   EXPECT_EQ(html.find("<td>[{"), std::string::npos);
+  const size_t numbers_at = html.find("<th>numbers</th><td title=\"[0, 0.125");
+  ASSERT_NE(numbers_at, std::string::npos);
+  const size_t cell = html.find("\">", numbers_at) + 2, cell_end = html.find("</td>", cell);
+  EXPECT_EQ(html.substr(cell_end - 3, 3), "…");
+  EXPECT_LE(cell_end - cell, 240u + 3u);
 
   // nothing in the side panel is wider than the panel, and it does not scroll sideways
   ASSERT_TRUE(std::regex_search(html, m, std::regex("data-wide=\"([0-9]+)\" data-wide-names=\"([^\"]*)\" data-scroll=\"(-?[0-9]+)\"")))

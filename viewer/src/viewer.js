@@ -144,7 +144,9 @@ function listTable(key, list) {
 }
 
 // The report beside the surface: its scalars (and the fields of its objects, as key.field) in
-// one two-column table, then each list of objects as its own table below it.
+// one two-column table, then each list of objects as its own table below it. Values longer than
+// LONG_VALUE characters (a list of points) are cut there, whole on hover.
+const LONG_VALUE = 240;
 function reportTable(report) {
   const table = document.getElementById('bpde-report');
   const lists = document.getElementById('bpde-lists');
@@ -152,7 +154,7 @@ function reportTable(report) {
     const tr = document.createElement('tr');
     const a = document.createElement('th'), b = document.createElement('td');
     breakableName(a, k);
-    b.textContent = v;
+    b.textContent = v.length > LONG_VALUE ? v.slice(0, LONG_VALUE) + '…' : v;
     b.title = v;
     tr.append(a, b);
     table.append(tr);
