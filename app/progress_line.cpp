@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace bpde::app {
 
@@ -12,13 +13,14 @@ std::string progress_text(std::string_view stage, double done, double total, dou
   const std::string name(stage);
   char line[320];
   const double f = total > 0 ? std::clamp(done / total, 0.0, 1.0) : 0.0;
+  const double percent = std::floor(100 * f + 1e-9);  // 100% only when done
   if (total > 0 && done >= total)
     std::snprintf(line, sizeof line, "bpde: %s done in %.1f s", name.c_str(), elapsed);
   else if (f >= kEtaFromFraction)
-    std::snprintf(line, sizeof line, "bpde: %s %.0f%%, %.0f s elapsed, ~%.0f s left", name.c_str(), 100 * f, elapsed,
+    std::snprintf(line, sizeof line, "bpde: %s %.0f%%, %.0f s elapsed, ~%.0f s left", name.c_str(), percent, elapsed,
                   elapsed * (1 - f) / f);
   else if (f > 0)
-    std::snprintf(line, sizeof line, "bpde: %s %.0f%%, %.0f s elapsed", name.c_str(), 100 * f, elapsed);
+    std::snprintf(line, sizeof line, "bpde: %s %.0f%%, %.0f s elapsed", name.c_str(), percent, elapsed);
   else
     std::snprintf(line, sizeof line, "bpde: %s, %.0f s elapsed", name.c_str(), elapsed);
   return line;

@@ -55,6 +55,8 @@ TEST(ProgressLine, TextShowsAnEstimateOnlyForAKnownFractionFromTheThreshold) {
   const std::string at = progress_text("x", kEtaFromFraction, 1, 1);
   EXPECT_NE(at.find("left"), std::string::npos) << at;
   EXPECT_EQ(progress_text("x", 0.999 * kEtaFromFraction, 1, 1).find("left"), std::string::npos);
+  // the percentage is rounded down: 100% only at the end
+  EXPECT_EQ(progress_text("x", 0.998, 1, 10), "bpde: x 99%, 10 s elapsed, ~0 s left");
 }
 
 TEST(ProgressLine, IntoAFileOneLinePerStageStartEndAndSecond) {
