@@ -30,8 +30,8 @@ void check_samples(int samples) {
 
 // sample_net with its progress stage.
 TriangleMesh sampled(const Net& net, int samples) {
-  const ProgressStage stage(job_progress(), "sampling");
-  return sample_net(net, samples);
+  const ProgressStage stage(job_progress(), kSamplingStage);
+  return sample_net(net, samples, job_progress());
 }
 
 }  // namespace
@@ -61,7 +61,7 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
   check_output_dir(out_dir, surface_file_names());
   const TriangleMesh mesh = sampled(net, samples);
   {
-    const ProgressStage stage(job_progress(), "writing files");
+    const ProgressStage stage(job_progress(), kWritingFilesStage);
     write_output_files(out_dir, nullptr, net, mesh, format);
   }
   if (!quiet) std::fputs(files_line(out_dir, surface_file_names()).c_str(), stdout);
@@ -80,7 +80,7 @@ int cmd_check(const std::string& net_path, int samples) {
   const TriangleMesh mesh = sampled(net, samples);
   Json report;
   {
-    const ProgressStage stage(job_progress(), "checking (CGAL)");
+    const ProgressStage stage(job_progress(), kMeshCheckStage);
     report = check_report(mesh);
   }
   std::cout << report.dump() << "\n";
@@ -108,7 +108,7 @@ int cmd_view(const std::string& dir, int samples, bool quiet) {
   const Net net = net_from_json(json_read::field(result, path, "net"), path + ".net");
   const Json report = result.contains("report") ? result["report"] : Json::object();
   OutputFolder out(dir, {"view.html"});
-  write_view_html(out.file("view.html"), net, sample_net(net, samples), report, view_title(net, report));
+  write_view_html(out.file("view.html"), net, sampled(net, samples), report, view_title(net, report));
   out.commit();
   if (!quiet) std::fputs(files_line(dir, {"view.html"}).c_str(), stdout);
   return 0;

@@ -130,6 +130,7 @@ int main(int argc, char** argv) {
   view->add_option("dir", in, "DIR holding result.json")->required();
   view->add_option("--samples", samples, "Mesh resolution N (default 50)");
   view->add_flag("-q,--quiet", quiet, quiet_help);
+  view->add_flag("--progress", progress, progress_help);
 
   std::string step_path;
   auto* exp = app.add_subcommand("export", "Write the exact patch of a net for CAD (STEP, through OpenCASCADE)");

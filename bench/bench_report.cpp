@@ -92,7 +92,9 @@ void CheckJob(benchmark::State& state, const std::string& kind, bpde::BroadPhase
   for (Eigen::Index r = 0; r < mesh.F.rows(); ++r)
     for (int c = 0; c < 3; ++c) F.push_back(mesh.F(r, c));
   MeshCheckReport rep;
-  for (auto _ : state) benchmark::DoNotOptimize(rep = check_mesh(V, F, MeshCheckOptions{broad_phase}));
+  MeshCheckOptions options;
+  options.broad_phase = broad_phase;
+  for (auto _ : state) benchmark::DoNotOptimize(rep = check_mesh(V, F, options));
   state.counters["box_pairs"] = static_cast<double>(rep.box_pairs);
   state.counters["self_intersections"] = rep.self_intersections;
 }

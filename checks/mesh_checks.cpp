@@ -61,8 +61,10 @@ int find_root(std::vector<int>& parent, int i) {
 /// Union of the points closer than tol (spatial hash). Only points inside the box [lo, hi]
 /// (the referenced vertices' bounding box) take part; the others stay alone. Returns for each
 /// input vertex the index of its representative (the smallest index of its cluster).
+/// `step(fraction)` is called as the points are done (every 1/50 of them).
+template <class Step>
 std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double tol, const Eigen::Vector3d& lo,
-                                  const Eigen::Vector3d& hi) {
+                                  const Eigen::Vector3d& hi, Step step) {
   const int n = static_cast<int>(p.size());
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
@@ -87,7 +89,9 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
   grid.reserve(static_cast<std::size_t>(n) * 2);
   std::vector<int> next_in_cell(n, -1);
   const double tol2 = tol * tol;
+  const int every = std::max(1, n / 50);
   for (int i = 0; i < n; ++i) {
+    if (i % every == 0 && i > 0) step(static_cast<double>(i) / n);
     if ((p[i].array() < lo.array()).any() || (p[i].array() > hi.array()).any()) continue;
     std::array<std::int64_t, 3> c{0, 0, 0}, side{0, 0, 0};
     if (cell > 0)
@@ -201,8 +205,10 @@ void overlapping_pairs_cgal(const std::vector<Bbox>& bb, F f) {
 /// boxes meet (floor((x - origin) / h) is monotone in x), so exactly once. Returns false without
 /// calling f when the grid would not pay (a few boxes spanning many cells, or crowded cells): the
 /// caller then takes overlapping_pairs_cgal.
-template <class F>
-bool overlapping_pairs_grid(const std::vector<Bbox>& bb, F f) {
+// `step(fraction)` is called once the boxes are listed (0) and as the cells are done (about every
+// 1/100 of the listings).
+template <class F, class Step>
+bool overlapping_pairs_grid(const std::vector<Bbox>& bb, F f, Step step) {
   const std::size_t nb = bb.size();
   if (nb < 2) return true;
   double lo[3] = {bb[0].xmin(), bb[0].ymin(), bb[0].zmin()}, ext = 0;
@@ -263,8 +269,15 @@ bool overlapping_pairs_grid(const std::vector<Bbox>& bb, F f) {
     pair_tests += static_cast<std::int64_t>(e - s) * static_cast<std::int64_t>(e - s - 1) / 2;
   }
   if (pair_tests > 64 * static_cast<std::int64_t>(nb)) return false;
+  const std::size_t every = std::max<std::size_t>(1, list.size() / 100);
+  std::size_t next_step = every;
+  step(0.0);  // listed
   for (std::size_t s = 0, e = 0; s < list.size(); s = e) {
     for (e = s + 1; e < list.size() && list[e].first == list[s].first;) ++e;
+    if (e >= next_step) {
+      step(static_cast<double>(e) / static_cast<double>(list.size()));
+      next_step = e + every;
+    }
     const std::int64_t here = list[s].first;
     for (std::size_t p = s; p < e; ++p)
       for (std::size_t q = p + 1; q < e; ++q) {
@@ -278,9 +291,11 @@ bool overlapping_pairs_grid(const std::vector<Bbox>& bb, F f) {
   return true;
 }
 
-/// Number of intersecting pairs (clamped to int) and of box pairs tested.
+/// Number of intersecting pairs (clamped to int) and of box pairs tested. `step(fraction)` as in
+/// overlapping_pairs_grid (not called by the CGAL broad phase).
+template <class Step>
 std::pair<int, long long> count_self_intersections(const std::vector<Tri>& tris, const std::vector<Point>& P,
-                                                   BroadPhase broad_phase) {
+                                                   BroadPhase broad_phase, Step step) {
   std::vector<Bbox> bb;
   bb.reserve(tris.size());
   for (const auto& t : tris) bb.push_back(P[t[0]].bbox() + P[t[1]].bbox() + P[t[2]].bbox());
@@ -289,7 +304,7 @@ std::pair<int, long long> count_self_intersections(const std::vector<Tri>& tris,
     ++pairs;
     if (faces_intersect(tris[static_cast<std::size_t>(a)], tris[static_cast<std::size_t>(b)], P)) ++count;
   };
-  if (broad_phase == BroadPhase::kCgalBoxes || !overlapping_pairs_grid(bb, test)) overlapping_pairs_cgal(bb, test);
+  if (broad_phase == BroadPhase::kCgalBoxes || !overlapping_pairs_grid(bb, test, step)) overlapping_pairs_cgal(bb, test);
   return {static_cast<int>(std::min<long long>(count, std::numeric_limits<int>::max())), pairs};
 }
 
@@ -453,6 +468,12 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
       throw SizeError("mesh check: triangle " + std::to_string(i / 3) + " index " + std::to_string(triangles[i]) +
                       " is out of range [0, " + std::to_string(nv) + ")");
 
+  // Progress: the fractions at the ends of the phases, after their times on a sampled sphere of
+  // 2.6e6 triangles (measured, 12 s: the merge of coincident vertices 31%, the triangles 6%, the
+  // grid's listing 13%, the exact tests of the pairs 31%, the closedness 18%, the capped volume 1%).
+  constexpr double kMergeFrom = 0.02, kMerged = 0.31, kPairsFrom = 0.37, kListed = 0.5, kPairsTo = 0.81, kClosed = 0.99;
+  auto progress = [&options](double f) { bpde::report(options.progress, kMeshCheckStage, f, 1.0); };
+  progress(0.0);
   MeshCheckReport report;
   const std::size_t nf = triangles.size() / 3;
   std::vector<Eigen::Vector3d> X(nv);
@@ -480,7 +501,9 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
   if (!std::isfinite(diag))
     throw NonFiniteError("mesh check: the vertex coordinates overflow (bounding box not finite)");
 
-  const std::vector<int> rep = merge_coincident(X, 1e-10 * diag, lo, hi);
+  progress(kMergeFrom);
+  const std::vector<int> rep =
+      merge_coincident(X, 1e-10 * diag, lo, hi, [&](double f) { progress(kMergeFrom + f * (kMerged - kMergeFrom)); });
   // compact the representatives
   std::vector<int> newid(nv, -1);
   int nm = 0;
@@ -493,6 +516,7 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
       Y.push_back(X[i]);
     }
   report.merged_vertices = nm;
+  progress(kMerged);
 
   std::vector<Tri> tris;
   tris.reserve(nf);
@@ -505,9 +529,13 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
     tris.push_back(t);
   }
 
-  std::tie(report.self_intersections, report.box_pairs) = count_self_intersections(tris, P, options.broad_phase);
+  progress(kPairsFrom);
+  std::tie(report.self_intersections, report.box_pairs) = count_self_intersections(
+      tris, P, options.broad_phase, [&](double f) { progress(kListed + f * (kPairsTo - kListed)); });
+  progress(kPairsTo);
   const auto de = directed_edges(tris);
   report.closed = is_closed_manifold(tris, de, nm);
+  progress(kClosed);
   report.volume = capped_volume(tris, de, Y, o, report.closed);
   if (report.volume && !std::isfinite(*report.volume))
     throw NonFiniteError("mesh check: the enclosed volume overflows (coordinates too large)");

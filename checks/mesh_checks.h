@@ -7,7 +7,10 @@
 //   triangles: 3*#F vertex indices, counter-clockwise in the parameter plane (so the geometric
 //              normal agrees with x_u ^ x_v).
 #include <optional>
+#include <string_view>
 #include <vector>
+
+#include "bezierpde/core/progress.h"
 
 namespace bpde {
 
@@ -40,8 +43,16 @@ enum class BroadPhase {
   kCgalBoxes,  ///< CGAL::box_self_intersection_d (the reference)
 };
 
+/// The progress stage of check_mesh (core/progress.h).
+inline constexpr std::string_view kMeshCheckStage = "checking (CGAL)";
+
 struct MeshCheckOptions {
   BroadPhase broad_phase = BroadPhase::kGrid;
+  /// Called with kMeshCheckStage and the fraction done (total 1), never falling, from 0 up to
+  /// before 1 (the caller ends the stage): after the merge of coincident vertices, through the
+  /// exact tests of the self-intersections (by the grid's cells done; the CGAL broad phase reports
+  /// only its start and end) and after the closedness. Null: no reports.
+  ProgressFn progress;
 };
 
 /// Run the checks. Throws SizeError (from core/errors.h) for arrays whose length is not a

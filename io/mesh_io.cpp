@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/sample_progress.h"
 #include "bezierpde/io/vtp_io.h"
 
 namespace bpde {
@@ -248,8 +249,8 @@ void write_net_obj(const std::string& path, const Net& net) {
   out.close();
 }
 
-TriangleMesh sample_net(const Net& net, int samples) {
-  return std::visit([samples](const auto& n) { return sample_mesh(n, samples); }, net);
+TriangleMesh sample_net(const Net& net, int samples, const ProgressFn& progress) {
+  return std::visit([&](const auto& n) { return sample_mesh(n, samples, progress); }, net);
 }
 
 void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh, MeshFormat format) {

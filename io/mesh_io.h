@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bezierpde/core/mesh.h"
+#include "bezierpde/core/progress.h"
 #include "bezierpde/io/json_io.h"
 #include "bezierpde/io/surface_fields.h"
 
@@ -56,8 +57,10 @@ std::vector<std::array<int, 2>> net_segments(const Net& net);
 /// neighbours along each parameter direction (three directions for triangular nets).
 void write_net_obj(const std::string& path, const Net& net);
 
-/// Sample any net: surface.obj, surface.ply, surface.vtp and net.obj into `dir` (which must exist).
-TriangleMesh sample_net(const Net& net, int samples);
+/// Sample any net (the sample_mesh of its type), reporting the stage kSamplingStage to `progress`
+/// (core/sample_progress.h; the caller ends the stage).
+TriangleMesh sample_net(const Net& net, int samples, const ProgressFn& progress = {});
+/// surface.obj, surface.ply, surface.vtp and net.obj into `dir` (which must exist).
 void write_surface_files(const std::string& dir, const Net& net, const TriangleMesh& mesh,
                          MeshFormat format = MeshFormat::Ascii);
 

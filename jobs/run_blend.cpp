@@ -1,5 +1,9 @@
 #include "bezierpde/jobs/run_blend.h"
 
+#include <utility>
+
+#include "bezierpde/core/sample_progress.h"
+#include "bezierpde/jobs/job_progress.h"
 #include "bezierpde/jobs/run_job.h"
 #include "bezierpde/solvers/blend/smoothing_spline.h"
 
@@ -7,8 +11,14 @@ namespace bpde {
 
 BlendOutcome run_blend(const BlendConfig& config) {
   const SmoothingSplineResult r = solve_smoothing_spline(config.problem);
-  BlendOutcome out{r.spline.to_bspline_net(), r.spline.sample(config.samples), Json::object(),
-                   checked_status(r.summary)};
+  BSplineNet net = r.spline.to_bspline_net();
+  TriangleMesh mesh;
+  {
+    // the spline's own sample() (the same mesh: the spline is exactly this net), with progress
+    const ProgressStage stage(job_progress(), kSamplingStage);
+    mesh = sample_mesh(net, config.samples, job_progress());
+  }
+  BlendOutcome out{std::move(net), std::move(mesh), Json::object(), checked_status(r.summary)};
   out.report = {{"problem", "blend"},
                 {"energy", r.functional},
                 {"data_misfit", r.data_misfit},

@@ -6,6 +6,7 @@
 
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/sample_progress.h"
 
 namespace bpde {
 namespace {
@@ -244,13 +245,17 @@ std::vector<int> BSplineNet::free_indices(FixedSet fixed) const {
   return complement_indices(fixed_indices(fixed), size());
 }
 
-TriangleMesh sample_mesh(const BSplineNet& net, int N) {
+TriangleMesh sample_mesh(const BSplineNet& net, int N) { return sample_mesh(net, N, ProgressFn{}); }
+
+TriangleMesh sample_mesh(const BSplineNet& net, int N, const ProgressFn& progress) {
   if (N < 1) throw ParameterError("sample_mesh: samples must be >= 1");
   Eigen::VectorXd tu(N + 1), tv(N + 1);
   for (int a = 0; a <= N; ++a) {
     tu(a) = net.u_min() + (net.u_max() - net.u_min()) * a / N;
     tv(a) = net.v_min() + (net.v_max() - net.v_min()) * a / N;
   }
+  int evaluations = 0;
+  report(progress, kSamplingStage, 0.0, 1.0);
   auto grid = [&](int du, int dv) {
     const Eigen::MatrixXd Bu = BSplineNet::basis_table(net.p(), net.knots_u(), tu, du);
     const Eigen::MatrixXd Bv = BSplineNet::basis_table(net.q(), net.knots_v(), tv, dv);
@@ -261,6 +266,7 @@ TriangleMesh sample_mesh(const BSplineNet& net, int N) {
                                                                  Eigen::OuterStride<>(net.nv()));
       Eigen::Map<RowMat>(out.col(c).data(), N + 1, N + 1) = Bu * (Pc * Bv.transpose());
     }
+    report(progress, kSamplingStage, sampling_fraction(++evaluations), 1.0);
     return out;
   };
   TriangleMesh mesh;
@@ -274,6 +280,7 @@ TriangleMesh sample_mesh(const BSplineNet& net, int N) {
         return net.geometry(u + h * (cu - u), v + h * (cv - v));
       },
       &mesh.regular);
+  report(progress, kSamplingStage, 0.95, 1.0);
   mesh.F = grid_triangles(N);
   return mesh;
 }

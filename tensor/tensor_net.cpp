@@ -8,6 +8,7 @@
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/row_major_product.h"
+#include "bezierpde/core/sample_progress.h"
 
 namespace bpde {
 namespace {
@@ -177,15 +178,22 @@ std::vector<int> TensorNet::free_indices(FixedSet fixed) const {
   return complement_indices(fixed_indices(fixed), size());
 }
 
-TriangleMesh sample_mesh(const TensorNet& net, int N) {
+TriangleMesh sample_mesh(const TensorNet& net, int N) { return sample_mesh(net, N, ProgressFn{}); }
+
+TriangleMesh sample_mesh(const TensorNet& net, int N, const ProgressFn& progress) {
   if (N < 1) throw ParameterError("sample_mesh: samples must be >= 1");
   Eigen::VectorXd t(N + 1);
   for (int a = 0; a <= N; ++a) t(a) = static_cast<double>(a) / N;
+  int evaluations = 0;
+  auto grid = [&](int du, int dv) {
+    if (evaluations == 0) report(progress, kSamplingStage, 0.0, 1.0);
+    Eigen::MatrixX3d X = net.evaluate_grid(t, t, du, dv);
+    report(progress, kSamplingStage, sampling_fraction(++evaluations), 1.0);
+    return X;
+  };
   TriangleMesh mesh;
-  mesh.V = net.evaluate_grid(t, t);
-  const Eigen::MatrixX3d Xu = net.evaluate_grid(t, t, 1, 0), Xv = net.evaluate_grid(t, t, 0, 1),
-                         Xuu = net.evaluate_grid(t, t, 2, 0), Xuv = net.evaluate_grid(t, t, 1, 1),
-                         Xvv = net.evaluate_grid(t, t, 0, 2);
+  mesh.V = grid(0, 0);
+  const Eigen::MatrixX3d Xu = grid(1, 0), Xv = grid(0, 1), Xuu = grid(2, 0), Xuv = grid(1, 1), Xvv = grid(0, 2);
   mesh.H = sampled_mean_curvature(
       mesh.V, Xu, Xv, Xuu, Xuv, Xvv,
       [&](Eigen::Index k, double h) {
@@ -193,6 +201,7 @@ TriangleMesh sample_mesh(const TensorNet& net, int N) {
         return net.geometry(u + h * (0.5 - u), v + h * (0.5 - v));
       },
       &mesh.regular);
+  report(progress, kSamplingStage, 0.95, 1.0);
   mesh.F = grid_triangles(N);
   return mesh;
 }

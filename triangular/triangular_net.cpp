@@ -7,6 +7,7 @@
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/binomial.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/sample_progress.h"
 
 namespace bpde {
 namespace {
@@ -184,14 +185,22 @@ Eigen::MatrixX2d triangular_sample_parameters(int N) {
   return uv;
 }
 
-TriangleMesh sample_mesh(const TriangularNet& net, int N) {
+TriangleMesh sample_mesh(const TriangularNet& net, int N) { return sample_mesh(net, N, ProgressFn{}); }
+
+TriangleMesh sample_mesh(const TriangularNet& net, int N, const ProgressFn& progress) {
   const Eigen::MatrixX2d uv = triangular_sample_parameters(N);
   const int n = net.n();
   TriangleMesh mesh;
+  report(progress, kSamplingStage, 0.0, 1.0);
   mesh.V = net.evaluate_many(uv);
+  int evaluations = 1;
+  report(progress, kSamplingStage, sampling_fraction(evaluations), 1.0);
   auto deriv_values = [&](int du, int dv) -> Eigen::MatrixX3d {
-    if (du + dv > n) return Eigen::MatrixX3d::Zero(uv.rows(), 3);
-    return TriangularNet::basis_matrix(n - du - dv, uv) * net.derivative_points(du, dv);
+    Eigen::MatrixX3d X = du + dv > n ? Eigen::MatrixX3d::Zero(uv.rows(), 3)
+                                     : Eigen::MatrixX3d(TriangularNet::basis_matrix(n - du - dv, uv) *
+                                                        net.derivative_points(du, dv));
+    report(progress, kSamplingStage, sampling_fraction(++evaluations), 1.0);
+    return X;
   };
   const Eigen::MatrixX3d Xu = deriv_values(1, 0), Xv = deriv_values(0, 1), Xuu = deriv_values(2, 0),
                          Xuv = deriv_values(1, 1), Xvv = deriv_values(0, 2);
@@ -202,6 +211,7 @@ TriangleMesh sample_mesh(const TriangularNet& net, int N) {
         return net.geometry(u + h * (1.0 / 3 - u), v + h * (1.0 / 3 - v));
       },
       &mesh.regular);
+  report(progress, kSamplingStage, 0.95, 1.0);
   auto vid = [N](int a, int b) { return a * (N + 1) - a * (a - 1) / 2 + b; };
   mesh.F.resize(N * N, 3);
   int f = 0;

@@ -6,7 +6,11 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -130,6 +134,52 @@ TEST(MeshChecks, SampledSphereIsClosedAndConvergesToTheBallVolume) {
   // second-order convergence: error ratio ~ 4
   const double ratio = (exact - v32) / (exact - v64);
   EXPECT_NEAR(ratio, 4.0, 0.1);
+}
+
+// MeshCheckOptions::progress: the stage kMeshCheckStage with total 1, fractions in [0, 1) that
+// never fall, from 0, with many steps through the pairs' tests on a sampled surface (the grid broad
+// phase), and the same report as without a callback. The CGAL broad phase reports no steps of its
+// own. (BPDE_PRINT_CHECK_PROGRESS=N prints the times of the reports at N, which the phases'
+// fractions in checks/mesh_checks.cpp were set from.)
+TEST(MeshChecks, ProgressReportsRisingFractionsThroughTheStage) {
+  const char* print = std::getenv("BPDE_PRINT_CHECK_PROGRESS");
+  const int n = print ? std::atoi(print) : 120;
+  Soup s;
+  add_grid(s, n, 2 * n, 0, kPi, 0, 2 * kPi, sphere);
+  std::vector<size_t> reports;  // per broad phase
+  for (BroadPhase phase : {BroadPhase::kGrid, BroadPhase::kCgalBoxes}) {
+    std::vector<double> done;
+    std::vector<double> at;
+    const auto t0 = std::chrono::steady_clock::now();
+    MeshCheckOptions o;
+    o.broad_phase = phase;
+    o.progress = [&](std::string_view stage, double d, double total) {
+      EXPECT_EQ(std::string(stage), std::string(kMeshCheckStage));
+      EXPECT_EQ(total, 1.0);
+      done.push_back(d);
+      at.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    };
+    const MeshCheckReport r = check_mesh(s.v, s.t, o);
+    if (print) {
+      for (size_t k = 0; k < done.size(); ++k) std::printf("%.3f %.4f\n", done[k], at[k]);
+      std::printf("end %.4f\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    ASSERT_FALSE(done.empty());
+    EXPECT_EQ(done.front(), 0.0);
+    for (size_t k = 1; k < done.size(); ++k) EXPECT_GE(done[k], done[k - 1]);
+    EXPECT_LT(done.back(), 1.0);  // the caller ends the stage
+    EXPECT_GE(done.back(), 0.9);
+    reports.push_back(done.size());
+    MeshCheckOptions without;
+    without.broad_phase = phase;
+    const MeshCheckReport quiet = check_mesh(s.v, s.t, without);
+    EXPECT_EQ(r.self_intersections, quiet.self_intersections);
+    EXPECT_EQ(r.box_pairs, quiet.box_pairs);
+    EXPECT_EQ(r.closed, quiet.closed);
+    EXPECT_TRUE(r.closed);
+  }
+  EXPECT_GE(reports[0], 40u);               // the merge's steps
+  EXPECT_GE(reports[0], reports[1] + 50u);  // and about a hundred through the grid's cells
 }
 
 TEST(MeshChecks, SampledTorusWithTwoSeamsIsClosed) {
@@ -314,7 +364,9 @@ TEST(MeshChecks, GridBroadPhaseFindsTheSamePairsAsCgal) {
   add_grid(ball, 24, 48, 0, kPi, 0, 2 * kPi, sphere);
   for (const Soup* s : {&soup, &ribbon, &ball}) {
     const auto grid = check_mesh(s->v, s->t);
-    const auto cgal = check_mesh(s->v, s->t, MeshCheckOptions{BroadPhase::kCgalBoxes});
+    MeshCheckOptions reference;
+    reference.broad_phase = BroadPhase::kCgalBoxes;
+    const auto cgal = check_mesh(s->v, s->t, reference);
     EXPECT_EQ(grid.box_pairs, cgal.box_pairs);
     EXPECT_EQ(grid.self_intersections, cgal.self_intersections);
     EXPECT_EQ(grid.closed, cgal.closed);

@@ -141,5 +141,44 @@ TEST(CmcProgress, AreaSolvesTheDirichletStartOnce) {
   EXPECT_EQ(ended, 1);
 }
 
+// The continuation routes of the area solve report their own stage: the way to the target, |H|
+// reached out of |H| (h-continuation) or V − V_s out of V_0 − V_s (v-continuation), from 0, never
+// falling, in [0, 1], ending once at 1; and "cmc area" reports no fraction while they run. The
+// circle from the minimal surface ("start": "minimal-surface"), at H = −0.5 and at the volume of
+// that cap (n = 6 and 8, one and two steps: measured).
+TEST(CmcProgress, AreaContinuationRoutesReportTheirWayToTheTarget) {
+  for (bool volume : {false, true}) {
+    SCOPED_TRACE(volume ? "v-continuation" : "h-continuation");
+    CmcOptions o = testing::cmc_options(CmcFunctionalKind::Area, -0.5);
+    o.area_start = AreaStart::MinimalSurface;
+    const std::string route_stage = volume ? "cmc area v-continuation" : "cmc area h-continuation";
+    if (volume) {
+      const double R = 2.0, h = R - std::sqrt(R * R - 1);
+      o.V = std::acos(-1.0) * h * h * (3 * R - h) / 3;
+      o.H = 0.0;
+    }
+    std::vector<double> way;
+    std::vector<std::string> stages;
+    o.progress = [&](std::string_view stage, double d, double total) {
+      if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
+      if (stage != route_stage) return;
+      EXPECT_DOUBLE_EQ(total, 1.0);
+      EXPECT_TRUE(d >= 0 && d <= 1) << d;
+      way.push_back(d);
+    };
+    const auto r = solve_cmc(testing::circle_three_arcs(volume ? 8 : 6), o);
+    ASSERT_TRUE(r.summary.converged) << r.summary.message;
+    ASSERT_GE(r.continuation_steps, 1);
+    ASSERT_GE(way.size(), 2u);
+    EXPECT_EQ(way.front(), 0.0);
+    EXPECT_EQ(way.back(), 1.0);
+    EXPECT_EQ(std::count(way.begin(), way.end(), 1.0), 1);
+    for (size_t i = 1; i < way.size(); ++i) EXPECT_GE(way[i], way[i - 1]);
+    // the route's stage runs once, between the solve's own reports
+    EXPECT_EQ(std::count(stages.begin(), stages.end(), route_stage), 1) << ::testing::PrintToString(stages);
+    EXPECT_EQ(stages.back(), "cmc area");
+  }
+}
+
 }  // namespace
 }  // namespace bpde

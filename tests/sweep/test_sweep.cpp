@@ -164,13 +164,16 @@ TEST(SweepRun, RowsThreadsResume) {
   const fs::path a = tmp("one-thread"), b = tmp("two-threads");
   bpde::SweepRunOptions one;
   one.jobs = 1;
-  int calls = 0;
-  one.on_progress = [&calls](const bpde::SweepProgress& p) {
+  int calls = 0, last_done = -1;
+  one.on_progress = [&calls, &last_done](const bpde::SweepProgress& p) {
     ++calls;
     EXPECT_EQ(p.total, 6);
+    EXPECT_EQ(p.done, last_done + 1);  // jobs done of jobs: 0, 1, ..., 6
+    last_done = p.done;
   };
   const std::vector<Json> rows = bpde::run_sweep(spec, a.string(), one);
   EXPECT_EQ(calls, 7);  // once before, once per job
+  EXPECT_EQ(last_done, 6);
   ASSERT_EQ(rows.size(), 6u);
   // Degree 1: the cmc requirements refuse it -> exit 2 row, no result.json.
   EXPECT_EQ(rows[0]["status"], "invalid-input");
@@ -196,7 +199,11 @@ TEST(SweepRun, RowsThreadsResume) {
   // Two threads: the same rows (but wall times), in index order.
   bpde::SweepRunOptions two;
   two.jobs = 2;
+  std::vector<int> done2;  // serialised: never falling, also from two threads
+  two.on_progress = [&done2](const bpde::SweepProgress& p) { done2.push_back(p.done); };
   const std::vector<Json> rows2 = bpde::run_sweep(spec, b.string(), two);
+  ASSERT_EQ(done2.size(), 7u);
+  for (size_t k = 0; k < done2.size(); ++k) EXPECT_EQ(done2[k], static_cast<int>(k));
   for (size_t k = 0; k < rows.size(); ++k) EXPECT_EQ(without_seconds(rows2[k]), without_seconds(rows[k])) << k;
 
   // Resume: nothing reruns (the rows, seconds included, are the stored ones) unless its job changed.

@@ -38,35 +38,166 @@ function formatNumber(v) {
   return Math.abs(v) >= 1e-3 && Math.abs(v) < 1e6 ? v.toPrecision(8) : v.toExponential(6);
 }
 
+// A number in `digits` significant digits, without trailing zeros (the list tables, the legend).
+function shortNumber(v, digits) {
+  if (typeof v !== 'number') return v === null ? '' : String(v);
+  if (Number.isInteger(v) && Math.abs(v) < 1e9) return String(v);
+  const a = Math.abs(v);
+  const text = a >= 1e-3 && a < 1e6 ? v.toPrecision(digits) : v.toExponential(digits - 1);
+  return text.replace(/(\.\d*?)0+(e|$)/, '$1$2').replace(/\.(e|$)/, '$1');
+}
+
+const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+const isListOfObjects = (v) => Array.isArray(v) && v.length > 0 && v.every(isObject);
+
+// A scalar, an array of scalars or an object as one line of text.
+function valueText(v) {
+  if (Array.isArray(v)) return '[' + v.map((x) => (isObject(x) || Array.isArray(x) ? JSON.stringify(x) : formatNumber(x))).join(', ') + ']';
+  if (isObject(v)) return Object.keys(v).length ? JSON.stringify(v) : '–';
+  if (v === null) return '–';
+  return formatNumber(v);
+}
+
+// A field name that may break after its underscores and dots.
+function breakableName(cell, name) {
+  name.split(/(?<=[_.])/).forEach((part, i) => {
+    if (i) cell.append(document.createElement('wbr'));
+    cell.append(part);
+  });
+}
+
+// A list of objects (such as boundary_fit or routes) as a small table. Nested objects are
+// flattened one level (key.field) and fields null in every object are left out. Up to
+// LIST_COLUMNS objects: one column per object, headed by the object's name (its first field whose
+// of NAME_FIELDS whose values are distinct numbers or strings) or its index, the fields down
+// the side; longer lists: one row per object, one column per field, long values cut with an
+// ellipsis (whole on hover). The table's data-layout says which ("columns" or "rows").
+const LIST_COLUMNS = 4;
+const NAME_FIELDS = ['name', 'route', 'edge', 'job', 'id'];
+function listTable(key, list) {
+  const objects = list.map((o) => {
+    const flat = {};
+    for (const [k, v] of Object.entries(o)) {
+      if (isObject(v) && Object.keys(v).length) for (const [k2, v2] of Object.entries(v)) flat[k + '.' + k2] = v2;
+      else flat[k] = v;
+    }
+    return flat;
+  });
+  const present = (v) => v !== null && v !== undefined && !(isObject(v) && !Object.keys(v).length);
+  const fields = [];
+  for (const o of objects)
+    for (const k of Object.keys(o))
+      if (!fields.includes(k) && objects.some((x) => present(x[k]))) fields.push(k);
+  const cell = (tag, text, title) => {
+    const c = document.createElement(tag);
+    c.textContent = text;
+    c.title = title;
+    return c;
+  };
+  const short = (v) => (typeof v === 'number' ? shortNumber(v, 4) : v === undefined ? '' : valueText(v));
+  const full = (v) => (v === undefined ? '' : valueText(v));
+
+  const box = document.createElement('div');
+  box.className = 'bpde-list';
+  box.append(cell('div', `${key} (${list.length})`, key));
+  box.firstChild.className = 'bpde-caption';
+  const table = document.createElement('table');
+  table.className = 'bpde-list-table';
+  table.dataset.key = key;
+  const head = document.createElement('tr');
+  if (objects.length <= LIST_COLUMNS) {
+    table.dataset.layout = 'columns';
+    const scalar = (v) => typeof v === 'string' || typeof v === 'number';
+    const name = NAME_FIELDS.find(
+        (k) => objects.every((o) => scalar(o[k])) && new Set(objects.map((o) => o[k])).size === objects.length);
+    const corner = document.createElement('th');
+    breakableName(corner, name ?? '#');
+    head.append(corner);
+    objects.forEach((o, i) => head.append(cell('th', name ? String(o[name]) : String(i), name ? `${name}: ${o[name]}` : '')));
+    table.append(head);
+    for (const k of fields) {
+      if (k === name) continue;
+      const tr = document.createElement('tr');
+      const th = document.createElement('th');
+      breakableName(th, k);
+      tr.append(th);
+      for (const o of objects) tr.append(cell('td', short(o[k]), `${k}: ${full(o[k])}`));
+      table.append(tr);
+    }
+  } else {
+    table.dataset.layout = 'rows';
+    for (const k of fields) {
+      const th = document.createElement('th');
+      breakableName(th, k);
+      th.title = k;
+      head.append(th);
+    }
+    table.append(head);
+    for (const o of objects) {
+      const tr = document.createElement('tr');
+      for (const k of fields) tr.append(cell('td', short(o[k]), `${k}: ${full(o[k])}`));
+      table.append(tr);
+    }
+  }
+  box.append(table);
+  return box;
+}
+
+// The report beside the surface: its scalars (and the fields of its objects, as key.field) in
+// one two-column table, then each list of objects as its own table below it. Values longer than
+// LONG_VALUE characters (a list of points) are cut there, whole on hover.
+const LONG_VALUE = 240;
 function reportTable(report) {
   const table = document.getElementById('bpde-report');
+  const lists = document.getElementById('bpde-lists');
   const row = (k, v) => {
     const tr = document.createElement('tr');
     const a = document.createElement('th'), b = document.createElement('td');
-    a.textContent = k;
-    b.textContent = v;
+    breakableName(a, k);
+    b.textContent = v.length > LONG_VALUE ? v.slice(0, LONG_VALUE) + '…' : v;
+    b.title = v;
     tr.append(a, b);
     table.append(tr);
   };
+  const entry = (k, v) => {
+    if (isListOfObjects(v)) lists.append(listTable(k, v));
+    else row(k, valueText(v));
+  };
   for (const [k, v] of Object.entries(report)) {
-    if (v !== null && typeof v === 'object' && !Array.isArray(v)) {
-      for (const [k2, v2] of Object.entries(v)) row(k + '.' + k2, formatNumber(v2));
+    if (isObject(v) && Object.keys(v).length) {
+      for (const [k2, v2] of Object.entries(v)) entry(k + '.' + k2, v2);
     } else {
-      row(k, Array.isArray(v) ? JSON.stringify(v) : formatNumber(v));
+      entry(k, v);
     }
   }
 }
 
+// The colour bar, vertical (hi at the top), with LEGEND_TICKS evenly spaced values; each tick's
+// label carries its exact value in data-value.
+const LEGEND_TICKS = 5;
 function legend(lo, hi) {
   const c = document.getElementById('bpde-legend');
   const g = c.getContext('2d');
-  for (let x = 0; x < c.width; ++x) {
-    const [r, gr, b] = colour(x / (c.width - 1));
+  for (let y = 0; y < c.height; ++y) {
+    const [r, gr, b] = colour(1 - y / (c.height - 1));
     g.fillStyle = `rgb(${255 * r},${255 * gr},${255 * b})`;
-    g.fillRect(x, 0, 1, c.height);
+    g.fillRect(0, y, c.width, 1);
   }
-  document.getElementById('bpde-lo').textContent = formatNumber(lo);
-  document.getElementById('bpde-hi').textContent = formatNumber(hi);
+  const ticks = document.getElementById('bpde-ticks');
+  const step = (hi - lo) / (LEGEND_TICKS - 1);
+  const scale = Math.max(Math.abs(lo), Math.abs(hi));
+  // enough digits that neighbouring ticks differ
+  const digits = Math.min(10, Math.max(3, Math.ceil(Math.log10(step > 0 ? scale / step : 1)) + 2));
+  for (let k = 0; k < LEGEND_TICKS; ++k) {
+    let v = k === LEGEND_TICKS - 1 ? hi : lo + k * step;
+    if (Math.abs(v) < 1e-9 * Math.abs(step)) v = 0;
+    const tick = document.createElement('div');
+    tick.className = 'bpde-tick';
+    tick.dataset.value = String(v);
+    tick.style.top = `${100 * (1 - k / (LEGEND_TICKS - 1))}%`;
+    tick.textContent = shortNumber(v, digits);
+    ticks.append(tick);
+  }
 }
 
 function main() {

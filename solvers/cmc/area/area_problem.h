@@ -5,8 +5,10 @@
 
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bezierpde/core/progress.h"
@@ -15,6 +17,12 @@
 
 namespace bpde::cmc_detail {
 
+/// The progress stages of the area solve: the solve (the decades of the Dirichlet regulariser
+/// removed) and its continuation routes (the way along H, or along V, to the target).
+inline constexpr std::string_view kAreaStage = "cmc area";
+inline constexpr std::string_view kAreaHContinuationStage = "cmc area h-continuation";
+inline constexpr std::string_view kAreaVContinuationStage = "cmc area v-continuation";
+
 struct AreaProblem {
   CmcProblem base;                    ///< the Dirichlet Gram and V, the free points and P
   std::shared_ptr<const AreaForm> a;  ///< the quadrature rule in use
@@ -22,10 +30,12 @@ struct AreaProblem {
   /// The weight of the Dirichlet regulariser: the functional is F_ε = A_H + ε(D - A)
   /// = (1-ε)A + εD + 2HV (ε = 1: the paper's D_H; ε = 0: A_H).
   double eps = 0.0;
-  /// Progress (core/progress.h): every residual_at reports the stage "cmc area" again at
-  /// `progress_done`, the fraction last reported, so that a progress line keeps showing the time
-  /// through the final phases (two minutes and more on hard cases, of no known length); null: none.
+  /// Progress (core/progress.h): every residual_at reports `progress_stage` ("cmc area", or a
+  /// continuation route's stage while it runs: RouteProgress) again at `progress_done`, the
+  /// fraction last reported, so that a progress line keeps showing the time through the final
+  /// phases (two minutes and more on hard cases, of no known length); null: none.
   const ProgressFn* progress = nullptr;
+  std::string_view progress_stage = kAreaStage;
   double progress_done = 0.0;
   /// The rule chosen again at the current net where the rule in use missed its tolerance at the
   /// net where it was chosen (AreaSolve::finish, final_phases.cpp); true when `a` changed. Called by
@@ -50,6 +60,46 @@ struct AreaProblem {
   double residual(double H, Eigen::VectorXd* g = nullptr) const { return residual_at(H, eps, g); }
   /// The same with another ε (ε = 0: the first variation of A_H).
   double residual_at(double H, double e, Eigen::VectorXd* g = nullptr) const;
+};
+
+/// A continuation route's progress stage while it lives: reports `stage` at 0, then the fraction
+/// of the way to the target at each accepted step (at()), and 1 once the target is reached
+/// (reached()); the problem's residual evaluations report the route's stage in between. The
+/// stage and fraction before are restored at the end.
+class RouteProgress {
+ public:
+  RouteProgress(AreaProblem& p, std::string_view stage) : p_(p), stage_(p.progress_stage), done_(p.progress_done) {
+    p_.progress_stage = stage;
+    p_.progress_done = 0.0;
+    tell();
+  }
+  ~RouteProgress() {
+    p_.progress_stage = stage_;
+    p_.progress_done = done_;
+  }
+  RouteProgress(const RouteProgress&) = delete;
+  RouteProgress& operator=(const RouteProgress&) = delete;
+  /// `fraction` of the way done (kept below 1 until reached(), never falling).
+  void at(double fraction) {
+    if (!(fraction >= 0)) return;
+    p_.progress_done = std::max(p_.progress_done, std::min(fraction, 0.999));
+    tell();
+  }
+  /// The target is reached: the stage ends (reported once) and the stage before is back.
+  void reached() {
+    p_.progress_done = 1.0;
+    tell();
+    p_.progress_stage = stage_;
+    p_.progress_done = done_;
+  }
+
+ private:
+  void tell() const {
+    if (p_.progress) report(*p_.progress, p_.progress_stage, p_.progress_done, 1.0);
+  }
+  AreaProblem& p_;
+  std::string_view stage_;
+  double done_;
 };
 
 /// The regularised Newton corrector of F_ε at fixed H from problem.P (cmc.h). theta carries the

@@ -45,7 +45,7 @@ Eigen::MatrixXd AreaProblem::hessian(double H) const {
 }
 
 double AreaProblem::residual_at(double H, double e, Eigen::VectorXd* g) const {
-  if (progress) report(*progress, "cmc area", progress_done, 1);
+  if (progress) report(*progress, progress_stage, progress_done, 1);
   Eigen::MatrixX3d G, S;
   a->gradient_rows_and_scale(base.P, base.free, &G, &S);
   if (e != 0.0) {

@@ -306,7 +306,7 @@ CmcResult<Net> solve(const Net& data, const CmcOptions& o) {
     s.rule_check(d.out);
     fill(res, s, d.out, data, o);
   }
-  report(o.progress, "cmc area", 1, 1);
+  report(o.progress, kAreaStage, 1, 1);
   return res;
 }
 

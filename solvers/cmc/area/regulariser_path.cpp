@@ -30,7 +30,7 @@ bool AreaSolve<Net>::homotopy(double& H, const StageFn& stage, std::string& note
   }
   // Progress (stage "cmc area"): the decades of ε removed, out of kProgressDecades; 1 at the end.
   p.progress_done = 0.0;
-  report(o.progress, "cmc area", 0, 1);
+  report(o.progress, kAreaStage, 0, 1);
   while (true) {
     if (p.residual_at(H, 0.0) <= o.tolerance || eps == 0.0) break;
     double next = eps * ratio;
@@ -44,7 +44,7 @@ bool AreaSolve<Net>::homotopy(double& H, const StageFn& stage, std::string& note
       ratio = std::max(ratio * ratio, kSmallestEpsilonRatio);
       p.progress_done =
           std::max(p.progress_done, eps > 0.0 ? std::min(0.999, std::log10(1.0 / eps) / kProgressDecades) : 0.999);
-      report(o.progress, "cmc area", p.progress_done, 1);
+      report(o.progress, kAreaStage, p.progress_done, 1);
       if (eps <= kJumpFromEpsilon && p.residual_at(H, 0.0) > o.tolerance && jump(H, eps, V0)) {
         eps = 0.0;
         break;

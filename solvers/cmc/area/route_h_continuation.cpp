@@ -32,6 +32,7 @@ AreaOutcome AreaSolve<Net>::continuation(const Eigen::MatrixX3d& start, const st
   double change_at_y = rule_change;
   StepController control(Ht, first_step(Ht, p.P(), fixed_idx), o);
   std::string rejected;  // why the last step was rejected, for the fold message
+  RouteProgress route_progress(p, kAreaHContinuationStage);  // the way from H = 0 to Ht
   while (!control.reached_target()) {
     if (!control.attempt())
       return {control.h(), false, Status::NoConvergence,
@@ -72,6 +73,7 @@ AreaOutcome AreaSolve<Net>::continuation(const Eigen::MatrixX3d& start, const st
       if (!last) tangent = next;
       ++steps;
       control.accept(step, st.iterations);
+      route_progress.at(std::abs(control.h()) / std::abs(Ht));
     } else {
       p.set(y);
       p.a = rule_at_y;
@@ -82,6 +84,7 @@ AreaOutcome AreaSolve<Net>::continuation(const Eigen::MatrixX3d& start, const st
                     " (at the last step tried, " + rejected + ")"};
     }
   }
+  route_progress.reached();
   correct(Ht, o.tolerance);
   return {Ht, true, Status::Converged,
           "A_H continued from H = 0 to H = " + num(Ht) + " in " + std::to_string(steps) + " step(s)"};

@@ -65,6 +65,7 @@ AreaOutcome AreaSolve<Net>::continue_volume(double Vs, double H, double V0, int&
   const double target = V0 - Vs;
   StepController control(target, target, o);
   std::string rejected;  // why the last step was rejected, for the message
+  RouteProgress route_progress(p, kAreaVContinuationStage);  // the way from Vs to V0
   while (!control.reached_target()) {
     if (!control.attempt())
       return {H, false, Status::NoConvergence,
@@ -87,6 +88,7 @@ AreaOutcome AreaSolve<Net>::continue_volume(double Vs, double H, double V0, int&
       H = Hn;
       ++steps;
       control.accept(step, st.iterations);
+      route_progress.at(control.h() / target);
     } else {
       p.set(y);  // dY, dH are still the tangent at y (tangent() writes only when it succeeds)
       if (!control.reject(step))
@@ -95,6 +97,7 @@ AreaOutcome AreaSolve<Net>::continue_volume(double Vs, double H, double V0, int&
                     " (at the last step tried, " + rejected + ")"};
     }
   }
+  route_progress.reached();
   return {H, true, Status::Converged,
           "V continued from V = " + num(Vs) + " in " + std::to_string(steps) + " step(s)"};
 }
