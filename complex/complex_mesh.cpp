@@ -17,26 +17,6 @@ namespace bpde {
 
 namespace {
 
-/// Edge e and sample s along it (patch direction) of local sample vertex (a, b), or e = -1 inside.
-struct EdgeSample {
-  int e = -1, s = 0;
-};
-
-EdgeSample triangular_edge_sample(int N, int a, int b) {
-  if (b == 0) return {0, a};
-  if (a + b == N) return {1, b};
-  if (a == 0) return {2, N - b};
-  return {};
-}
-
-EdgeSample tensor_edge_sample(int N, int a, int b) {
-  if (b == 0) return {0, a};
-  if (a == N) return {1, b};
-  if (b == N) return {2, N - a};
-  if (a == 0) return {3, N - b};
-  return {};
-}
-
 /// (patch, local edge) -> (complex edge, reversed).
 std::map<std::pair<int, int>, std::pair<int, bool>> side_index(const std::vector<ComplexEdge>& edges) {
   std::map<std::pair<int, int>, std::pair<int, bool>> m;
@@ -94,7 +74,8 @@ ComplexMesh sample_complex(const PatchComplex& c, int N) {
     std::vector<int> global(m.V.rows());
     for (int r = 0; r < m.V.rows(); ++r) {
       const auto [a, b] = ab[r];
-      const EdgeSample es = kind == PatchKind::triangular ? triangular_edge_sample(N, a, b) : tensor_edge_sample(N, a, b);
+      const auto [edge_of, s_of] = patch_lattice_edge(kind, N, a, b);
+      const struct { int e, s; } es{edge_of, s_of};
       int key_vertex = -1;
       if (es.e >= 0) {
         const std::vector<int> local = patch_edge_local_rows(kind, n, es.e);

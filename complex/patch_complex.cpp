@@ -82,6 +82,20 @@ Eigen::Vector2d patch_edge_parameter(PatchKind kind, int e, double t) {
                 : Eigen::Vector2d(0, 1 - t);
 }
 
+std::pair<int, int> patch_lattice_edge(PatchKind kind, int D, int a, int b) {
+  if (kind == PatchKind::triangular) {
+    if (b == 0) return {0, a};
+    if (a + b == D) return {1, b};
+    if (a == 0) return {2, D - b};
+    return {-1, 0};
+  }
+  if (b == 0) return {0, a};
+  if (a == D) return {1, b};
+  if (b == D) return {2, D - a};
+  if (a == 0) return {3, D - b};
+  return {-1, 0};
+}
+
 void validate(const PatchComplex& c) {
   if (c.patches.empty()) throw SizeError("a complex needs at least one patch");
   if (c.patches.size() > static_cast<std::size_t>(kMaxComplexPatches))

@@ -23,6 +23,7 @@
 //     Two patches that share an edge list its rows in opposite directions (consistent orientation).
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace bpde {
@@ -60,6 +61,13 @@ inline int patch_edge_count(PatchKind kind) { return kind == PatchKind::triangul
 std::vector<int> patch_edge_local_rows(PatchKind kind, int n, int e);
 /// The (u,v) of edge parameter t on edge e (header).
 Eigen::Vector2d patch_edge_parameter(PatchKind kind, int e, double t);
+
+/// The edge of a patch that the lattice point (a, b) of resolution D lies on: (u, v) = (a/D, b/D)
+/// (triangular: a + b <= D), and its position s in 0..D along that edge in the edge's direction;
+/// {-1, 0} for a point inside. A corner belongs to the edge it starts (s = 0) except the corners
+/// (1,0) of edge 0 and (0,1) of edge 1 (triangular) / (1,0), (1,1), (0,1) likewise (tensor), which
+/// are reported as the end (s = D) of the edge before.
+std::pair<int, int> patch_lattice_edge(PatchKind kind, int D, int a, int b);
 
 /// Checks the invariants and throws the typed errors of core/errors.h: SizeError (no patches,
 /// more than kMaxComplexPatches, a point list of the wrong length, a row outside 0..#points-1),
