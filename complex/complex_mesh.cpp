@@ -64,6 +64,7 @@ ComplexMesh sample_complex(const PatchComplex& c, int N) {
   std::map<std::tuple<int, int, int>, int> welded;  // (0, corner row, 0) or (1, edge, s) -> vertex
   std::vector<Eigen::Vector3d> V;
   std::vector<double> H;
+  std::vector<std::pair<int, Eigen::Vector2d>> source;
   std::vector<unsigned char> regular;
   std::vector<Eigen::Vector3i> F;
   std::vector<int> patch_of;
@@ -95,6 +96,7 @@ ComplexMesh sample_complex(const PatchComplex& c, int N) {
         global[r] = static_cast<int>(V.size());
         V.push_back(m.V.row(r).transpose());
         H.push_back(m.H(r));
+        source.emplace_back(p, Eigen::Vector2d(double(a) / N, double(b) / N));
         regular.push_back(m.regular.size() ? m.regular(r) : 1);
       }
     }
@@ -107,7 +109,11 @@ ComplexMesh sample_complex(const PatchComplex& c, int N) {
   out.mesh.V.resize(V.size(), 3);
   out.mesh.H.resize(V.size());
   out.mesh.regular.resize(V.size());
+  out.vertex_patch.resize(V.size());
+  out.uv.resize(V.size(), 2);
   for (std::size_t k = 0; k < V.size(); ++k) {
+    out.vertex_patch(k) = source[k].first;
+    out.uv.row(k) = source[k].second.transpose();
     out.mesh.V.row(k) = V[k].transpose();
     out.mesh.H(k) = H[k];
     out.mesh.regular(k) = regular[k];

@@ -21,6 +21,8 @@ namespace bpde {
 struct ComplexMesh {
   TriangleMesh mesh;
   Eigen::VectorXi patch;  ///< per triangle of mesh.F: the patch it samples
+  Eigen::VectorXi vertex_patch;  ///< per vertex: the first patch that sampled it
+  Eigen::MatrixX2d uv;           ///< per vertex: its parameters (u, v) in that patch
 };
 
 /// The welded mesh of the complex at N samples per patch edge (1..kMaxSamples: ParameterError

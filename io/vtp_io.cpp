@@ -80,11 +80,13 @@ class ArrayWriter {
 
 }  // namespace
 
-void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format) {
+void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format,
+               const std::vector<std::int32_t>* patch) {
   const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
   if (fields.H.size() != nv || fields.K.size() != nv || fields.normal.rows() != nv || fields.uv.rows() != nv ||
       fields.regular.size() != nv)
     throw InternalError("write_vtp: fields do not match the mesh");
+  if (patch && static_cast<Eigen::Index>(patch->size()) != nf) throw InternalError("write_vtp: patch ids do not match the mesh");
   using RowMat3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
   using RowMat2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
   const RowMat3 points = mesh.V, normals = fields.normal;
@@ -110,7 +112,13 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   w.reals("gaussian_curvature", fields.K.data(), static_cast<size_t>(nv), 1);
   w.reals("uv", uv.data(), static_cast<size_t>(nv) * 2, 2);
   w.ints("UInt8", "regular", regular, 1);
-  s += "      </PointData>\n      <Points>\n";
+  s += "      </PointData>\n";
+  if (patch) {
+    s += "      <CellData Scalars=\"patch\">\n";
+    w.ints("Int32", "patch", *patch, 1);
+    s += "      </CellData>\n";
+  }
+  s += "      <Points>\n";
   w.reals("Points", points.data(), static_cast<size_t>(nv) * 3, 3);
   s += "      </Points>\n      <Polys>\n";
   w.ints("Int32", "connectivity", connectivity, 1);
