@@ -57,6 +57,11 @@ struct PatchNets {
 
 ComplexMesh sample_complex(const PatchComplex& c, int N) {
   if (N < 1 || N > kMaxSamples) throw ParameterError(samples_limit_message("samples", N));
+  const long long vertices = static_cast<long long>(c.patches.size()) * (N + 1) * (N + 1);
+  if (vertices > kMaxComplexSampleVertices)
+    throw ParameterError("samples: " + std::to_string(c.patches.size()) + " patches at " + std::to_string(N) +
+                         " samples are " + std::to_string(vertices) + " vertices, more than " +
+                         std::to_string(kMaxComplexSampleVertices) + " (fewer samples, or less refinement)");
   validate(c);
   const std::vector<ComplexEdge> edges = complex_edges(c);
   const auto sides = side_index(edges);

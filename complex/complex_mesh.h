@@ -18,6 +18,10 @@
 
 namespace bpde {
 
+/// Most vertices of a sampled complex before welding, #patches · (N+1)² (ParameterError beyond):
+/// the memory of a single net's largest mesh (core/mesh.h kMaxSamples).
+inline constexpr long long kMaxComplexSampleVertices = static_cast<long long>(kMaxSamples + 1) * (kMaxSamples + 1);
+
 struct ComplexMesh {
   TriangleMesh mesh;
   Eigen::VectorXi patch;  ///< per triangle of mesh.F: the patch it samples
@@ -25,8 +29,9 @@ struct ComplexMesh {
   Eigen::MatrixX2d uv;           ///< per vertex: its parameters (u, v) in that patch
 };
 
-/// The welded mesh of the complex at N samples per patch edge (1..kMaxSamples: ParameterError
-/// otherwise). Validates the complex (validate()).
+/// The welded mesh of the complex at N samples per patch edge (1..kMaxSamples, and at most
+/// kMaxComplexSampleVertices samples over all patches: ParameterError otherwise). Validates the
+/// complex (validate()).
 ComplexMesh sample_complex(const PatchComplex& c, int N);
 
 /// The largest angle in degrees between the two patches' unit normals across every interior edge,

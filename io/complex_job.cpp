@@ -135,6 +135,11 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
     throw SizeError(path + ": " + std::to_string(data.coarse.complex.patches.size()) + " patches refined " +
                     std::to_string(data.refine) + " times are " + std::to_string(patches) + ", more than " +
                     std::to_string(kMaxComplexPatches));
+  const long long per_patch = static_cast<long long>(data.coarse.complex.patches.front().points.size());
+  if (patches * per_patch * per_patch > kMaxComplexGramEntries)
+    throw SizeError(path + ": " + std::to_string(patches) + " patches of degree " + std::to_string(n) + " need " +
+                    std::to_string(patches * per_patch * per_patch) + " Gram entries, more than " +
+                    std::to_string(kMaxComplexGramEntries) + " (a lower degree or less refinement)");
   data.complex = data.coarse.complex;
   for (int r = 0; r < data.refine; ++r) data.complex = refine_h(data.complex);
   return data;

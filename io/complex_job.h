@@ -25,8 +25,8 @@ bool is_complex_boundary(const Json& job);
 
 /// The "boundary" object of a complex job (path e.g. "job.boundary"). Throws ParseError (unknown
 /// fields, wrong types), DegreeError (degree outside 1..kMaxComplexExtremalDegree), SizeError
-/// (refine outside 0..kMaxComplexRefine, more than kMaxComplexPatches patches after refinement,
-/// loops), LoopNotClosedError, CurvesOutOfOrderError, LayoutMismatchError, ParameterError and the
+/// (refine outside 0..kMaxComplexRefine, more than kMaxComplexPatches patches after refinement or
+/// more than kMaxComplexGramEntries Gram entries (solvers/complex/complex_extremal.h), loops), LoopNotClosedError, CurvesOutOfOrderError, LayoutMismatchError, ParameterError and the
 /// fits' errors, each message starting with its JSON path.
 ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMethod default_fit);
 

@@ -1,5 +1,8 @@
 #include "bezierpde/io/job.h"
 
+#include "bezierpde/complex/complex_mesh.h"
+#include "bezierpde/solvers/complex/complex_extremal.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -215,6 +218,12 @@ void check_complex_job(const Job& job, const std::string& source) {
                              to_string(job.problem.kind) + "\"");
   if (job.fixed != FixedSet::Boundary)
     throw UnsupportedProblem(source + ".fixed: a complex boundary takes fixed \"boundary\" (C0 data) only");
+  const PatchComplex& c = job.complex->complex;
+  const long long vertices = static_cast<long long>(c.patches.size()) * (job.samples + 1) * (job.samples + 1);
+  if (vertices > kMaxComplexSampleVertices)
+    throw ParameterError(source + ".samples: " + std::to_string(c.patches.size()) + " patches at " +
+                         std::to_string(job.samples) + " samples are " + std::to_string(vertices) +
+                         " mesh vertices, more than " + std::to_string(kMaxComplexSampleVertices));
   if (job.export_step || job.export_html)
     throw UnsupportedProblem(source + ".export: a complex is written as meshes and result.json; "
                              "\"step\" and \"html\" take a single net");

@@ -66,8 +66,19 @@ double rcond_estimate(const SpMat& A, const Factor& factor) {
 
 }  // namespace
 
+long long complex_gram_entries(const PatchComplex& c) {
+  if (c.patches.empty()) return 0;
+  const long long k = static_cast<long long>(c.patches.front().points.size());
+  return static_cast<long long>(c.patches.size()) * k * k;
+}
+
 SpMat complex_gram(const PatchComplex& c, const EnergySpec& energy) {
   validate(c);
+  if (complex_gram_entries(c) > kMaxComplexGramEntries)
+    throw SizeError("a complex of " + std::to_string(c.patches.size()) + " patches of " +
+                    std::to_string(c.patches.front().points.size()) + " points has " +
+                    std::to_string(complex_gram_entries(c)) + " Gram entries, more than " +
+                    std::to_string(kMaxComplexGramEntries));
   const Eigen::MatrixXd Q = patch_gram(c.patches.front(), energy);  // one kind and degree
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(c.patches.size() * Q.size());

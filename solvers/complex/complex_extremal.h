@@ -40,6 +40,14 @@ namespace bpde {
 /// degree, as for the single triangular patch (solvers/extremal.h, kMaxTriangularExtremalDegree).
 inline constexpr int kMaxComplexExtremalDegree = 20;
 
+/// Most entries of the per-patch Gram matrices together (#patches · (points per patch)²; SizeError
+/// beyond): the assembly holds them all at once, 16 bytes each (320 MB at the limit). A 256-patch
+/// tensor complex of degree 4 has 1.6·10⁵, 4096 triangular patches of degree 8 8.2·10⁶.
+inline constexpr long long kMaxComplexGramEntries = 20'000'000;
+
+/// #patches · (points per patch)² of c (the Gram entries of its assembly).
+long long complex_gram_entries(const PatchComplex& c);
+
 struct ComplexExtremalOptions {
   double singular_tolerance = 1e-13;  ///< in [0, 1): ParameterError otherwise
 };
@@ -57,7 +65,7 @@ Eigen::SparseMatrix<double> complex_gram(const PatchComplex& c, const EnergySpec
 double complex_energy(const PatchComplex& c, const EnergySpec& energy);
 
 /// The extremal above. Throws the errors of validate(c); DegreeError beyond
-/// kMaxComplexExtremalDegree; ParameterError for a singular or indefinite K_ff (naming why) or bad options. A complex with no
+/// kMaxComplexExtremalDegree; SizeError beyond kMaxComplexGramEntries; ParameterError for a singular or indefinite K_ff (naming why) or bad options. A complex with no
 /// free rows is returned as it is (converged).
 ComplexExtremal solve_complex_extremal(const PatchComplex& c, const EnergySpec& energy,
                                        const ComplexExtremalOptions& options = {});

@@ -139,6 +139,8 @@ TEST(ComplexJobs, BadInputExitsTwoWithOneLineAndNoFiles) {
   expect_refused("refine_past_limit", job(R"(, "refine": 6)", pentagon));
   expect_refused("too_many_patches", job(R"(, "refine": 5)", pentagon));  // 5 · 4⁵ = 5120 > 4096
   expect_refused("degree_past_limit", job("", pentagon).replace(job("", pentagon).find("\"degree\": 4"), 11, "\"degree\": 21"));
+  expect_refused("gram_past_limit", job(R"(, "refine": 4)", pentagon).replace(job("", pentagon).find("\"degree\": 4"), 11, "\"degree\": 20"));
+  expect_refused("samples_past_limit", job(R"(, "refine": 3)", pentagon, kDirichlet + R"(, "samples": 1000)"));
   expect_refused("open_loop", job("", R"([{"type": "segment", "from": [0,0,0], "to": [1,0,0]},
                                          {"type": "segment", "from": [1,0,0], "to": [0,1,0]}])"));
   expect_refused("out_of_order", job("", R"([{"type": "segment", "from": [0,0,0], "to": [1,0,0]},
