@@ -157,3 +157,26 @@ TEST(ComplexJobs, BadInputExitsTwoWithOneLineAndNoFiles) {
                      R"([{"type": "segment", "from": [0,0,0], "to": [1,0,0]}, {"type": "segment", "from": [1,0,0], "to": [0,1,0]},
                          {"type": "segment", "from": [0,1,0], "to": [0,0,0]}])"));
 }
+
+TEST(ComplexJobs, SweepOverDegreeAndRefinement) {
+  const std::string base = R"({"boundary": {"type": "complex", "patch": "triangular", "degree": 3, "loops": [)" +
+                           polygon_loop(5) + "]}, " + kDirichlet + R"(, "samples": 4})";
+  const fs::path sweep = write("complex_sweep.json", R"({"base": )" + base +
+                                                         R"(, "axes": {"boundary.degree": [3, 5], "boundary.refine": [0, 1]}})");
+  const fs::path out = tmpdir() / "complex_sweep_out";
+  const CmdResult r = run("sweep " + sweep.string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<double> energy;
+  for (int k = 0; k < 4; ++k) {
+    char id[16];
+    std::snprintf(id, sizeof id, "job-%04d", k);
+    const Json res = bpde::read_json_file((out / "jobs" / id / "result.json").string());
+    EXPECT_EQ(res["net"]["type"], "complex");
+    energy.push_back(res["report"]["energy"].get<double>());
+  }
+  // rows: (3, 0), (3, 1), (5, 0), (5, 1): the spaces of a row's refinement and of the higher degree
+  // (with the same exact segment boundary) contain the coarser ones, so the minimum falls
+  EXPECT_LT(energy[1], energy[0]);
+  EXPECT_LT(energy[2], energy[0]);
+  EXPECT_LT(energy[3], energy[2]);
+}
