@@ -194,6 +194,81 @@ BoundaryCurve BoundaryCurve::function(std::function<Eigen::Vector3d(double)> f, 
   return BoundaryCurve(Function{std::move(f)}, std::move(kind));
 }
 
+BoundaryCurve BoundaryCurve::circle(const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double radius,
+                                    const std::optional<Eigen::Vector3d>& reference) {
+  BoundaryCurve c = arc(center, normal, radius, 0.0, 2 * std::numbers::pi, reference);
+  Arc& a = std::get<Arc>(c.data_);
+  a.from = c.evaluate(0.0);
+  a.to = a.from;
+  c.kind_ = "circle";
+  return c;
+}
+
+BoundaryCurve BoundaryCurve::closed_samples(Eigen::MatrixX3d points, SampleParameters parameters) {
+  if (points.rows() < 2) throw SizeError("samples: at least 2 points, got " + std::to_string(points.rows()));
+  Eigen::MatrixX3d closed(points.rows() + 1, 3);
+  closed << points, points.row(0);
+  return samples(std::move(closed), parameters);
+}
+
+BoundaryCurve BoundaryCurve::closed_samples(Eigen::MatrixX3d points, const std::vector<double>& params) {
+  if (points.rows() < 2) throw SizeError("samples: at least 2 points, got " + std::to_string(points.rows()));
+  Eigen::MatrixX3d closed(points.rows() + 1, 3);
+  closed << points, points.row(0);
+  return samples(std::move(closed), params);
+}
+
+BoundaryCurve BoundaryCurve::piece(double t0, double t1) const {
+  if (!(t0 >= 0 && t0 < t1 && t1 <= 1)) throw ParameterError("a curve piece needs 0 <= t0 < t1 <= 1");
+  if (const auto* b = std::get_if<Bezier>(&data_)) {
+    // blossom rows (t0^(k-i), t1^i) by de Casteljau on the control points
+    const int k = static_cast<int>(b->points.rows()) - 1;
+    Eigen::MatrixX3d P(k + 1, 3);
+    for (int i = 0; i <= k; ++i) {
+      Eigen::MatrixX3d Q = b->points;
+      for (int d = k; d >= 1; --d) {
+        const double t = (k - d) < k - i ? t0 : t1;
+        for (int j = 0; j < d; ++j) Q.row(j) = (1 - t) * Q.row(j) + t * Q.row(j + 1);
+      }
+      P.row(i) = Q.row(0);
+    }
+    if (t0 == 0) P.row(0) = b->points.row(0);
+    if (t1 == 1) P.row(k) = b->points.row(k);
+    return BoundaryCurve(Bezier{P}, kind_ == "segment" ? "segment" : "bezier");
+  }
+  if (const auto* a = std::get_if<Arc>(&data_)) {
+    Arc p = *a;
+    p.angle0 = a->angle0 + t0 * (a->angle1 - a->angle0);
+    p.angle1 = t1 == 1 ? a->angle1 : a->angle0 + t1 * (a->angle1 - a->angle0);
+    p.from = t0 == 0 ? a->from : std::nullopt;
+    p.to = t1 == 1 ? a->to : std::nullopt;
+    return BoundaryCurve(p, a->helix ? "helix" : "arc");
+  }
+  if (const auto* s = std::get_if<Samples>(&data_)) {
+    std::vector<Eigen::Vector3d> pts{evaluate(t0)};
+    std::vector<double> par{0.0};
+    for (Eigen::Index i = 0; i < s->params.size(); ++i)
+      if (s->params(i) > t0 && s->params(i) < t1) {
+        pts.push_back(s->points.row(i).transpose());
+        par.push_back((s->params(i) - t0) / (t1 - t0));
+      }
+    pts.push_back(evaluate(t1));
+    par.push_back(1.0);
+    Samples q;
+    q.points.resize(static_cast<Eigen::Index>(pts.size()), 3);
+    q.params.resize(static_cast<Eigen::Index>(par.size()));
+    for (size_t i = 0; i < pts.size(); ++i) {
+      q.points.row(static_cast<Eigen::Index>(i)) = pts[i].transpose();
+      q.params(static_cast<Eigen::Index>(i)) = par[i];
+    }
+    q.chord_length = s->chord_length;
+    q.correct = s->correct;
+    return BoundaryCurve(q, "samples");
+  }
+  const BoundaryCurve whole = *this;
+  return BoundaryCurve(Function{[whole, t0, t1](double t) { return whole.evaluate(t0 + t * (t1 - t0)); }}, kind_);
+}
+
 Eigen::Vector3d BoundaryCurve::evaluate(double t) const {
   t = std::clamp(t, 0.0, 1.0);
   if (const auto* b = std::get_if<Bezier>(&data_)) {

@@ -25,6 +25,11 @@
 //            given point is that point exactly.
 //   helix    the arc about the axis N through `center`, rising by `pitch` per turn:
 //            c(t) = center + r (cos a e1 + sin a e2) + (pitch a / 2π) N.
+//   circle   the whole circle: the arc of angles 0 to 2π (reference as for arcs), c(1) = c(0)
+//            exactly (a closed curve: the only curve of a loop, or one of several).
+//   closed samples  samples whose last point is followed by the first again: the first point is
+//            appended, so c(1) = c(0) exactly (chord-length or given parameters as above; given
+//            parameters then need one more entry, the parameter of the closing point).
 //   function any c(t) given as a C++ callable (the named reference boundaries; not a JSON form).
 //
 // The factories validate their input with the typed exceptions of core/errors.h (messages without
@@ -93,6 +98,22 @@ class BoundaryCurve {
                              double angle1, double pitch,
                              const std::optional<Eigen::Vector3d>& reference = std::nullopt);
   static BoundaryCurve function(std::function<Eigen::Vector3d(double)> f, std::string kind = "function");
+  /// The whole circle (kind "circle"): ParameterError for radius <= 0 or a zero normal.
+  static BoundaryCurve circle(const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double radius,
+                              const std::optional<Eigen::Vector3d>& reference = std::nullopt);
+  /// Samples of a closed curve: the first point is appended as the last (above).
+  static BoundaryCurve closed_samples(Eigen::MatrixX3d points,
+                                      SampleParameters parameters = SampleParameters::Corrected);
+  static BoundaryCurve closed_samples(Eigen::MatrixX3d points, const std::vector<double>& params);
+
+  /// The piece t in [t0, t1] (0 <= t0 < t1 <= 1) as a curve of its own, parametrised by
+  /// s = (t - t0)/(t1 - t0) in [0,1] and of the same form where the form allows: a Bézier curve by
+  /// exact subdivision (de Casteljau), an arc, helix or circle by its angle range (kind "arc" or
+  /// "helix"; c(0), c(1) exact where t0 = 0, t1 = 1), samples by the samples inside with the
+  /// curve's points at t0 and t1 as the ends (their parameters mapped; chord-length samples stay
+  /// chord-length and corrected alike), anything else as a function of the same kind.
+  /// ParameterError unless 0 <= t0 < t1 <= 1.
+  BoundaryCurve piece(double t0, double t1) const;
 
   /// "bezier", "bspline", "samples", "segment", "arc", "helix" or the function's kind.
   const std::string& kind() const { return kind_; }

@@ -113,8 +113,24 @@ BoundaryCurve curve_from_json(const Json& j, const std::string& path) {
     return at(path, [&] { return BoundaryCurve::bspline(p, std::move(K), std::move(P)); });
   }
   if (type == "samples") {
-    check_keys(j, path, {"type", "points", "parameters"});
+    check_keys(j, path, {"type", "points", "parameters", "closed"});
     Eigen::MatrixX3d P = points(field(j, path, "points"), path + ".points");
+    if (j.contains("closed") && !j["closed"].is_boolean())
+      throw ParseError(path + ".closed: expected true or false");
+    if (j.contains("closed") && j["closed"].get<bool>()) {
+      if (j.contains("parameters") && !j["parameters"].is_string()) {
+        const std::vector<double> t = numbers(j["parameters"], path + ".parameters");
+        return at(path, [&] { return BoundaryCurve::closed_samples(std::move(P), t); });
+      }
+      const bool kept = j.contains("parameters");  // "chord-length": checked below for the open form
+      if (kept && j["parameters"].get<std::string>() != "chord-length")
+        throw ParseError(path + ".parameters: unknown parameters \"" + j["parameters"].get<std::string>() +
+                         "\" (expected an array of numbers, or \"chord-length\")");
+      return at(path, [&] {
+        return BoundaryCurve::closed_samples(std::move(P), kept ? BoundaryCurve::SampleParameters::ChordLength
+                                                                : BoundaryCurve::SampleParameters::Corrected);
+      });
+    }
     if (j.contains("parameters")) {
       if (j["parameters"].is_string()) {
         if (j["parameters"].get<std::string>() != "chord-length")
@@ -157,8 +173,16 @@ BoundaryCurve curve_from_json(const Json& j, const std::string& path) {
     const double pitch = number(field(j, path, "pitch"), path + ".pitch");
     return at(path, [&] { return BoundaryCurve::helix(c, n, r, a[0], a[1], pitch, ref); });
   }
+  if (type == "circle") {
+    check_keys(j, path, {"type", "center", "normal", "radius", "reference"});
+    const Eigen::Vector3d c = vec3(field(j, path, "center"), path + ".center");
+    const Eigen::Vector3d n = vec3(field(j, path, "normal"), path + ".normal");
+    const double r = number(field(j, path, "radius"), path + ".radius");
+    const std::optional<Eigen::Vector3d> ref = optional_vec3(j, path, "reference");
+    return at(path, [&] { return BoundaryCurve::circle(c, n, r, ref); });
+  }
   throw ParseError(path + ".type: unknown curve type \"" + type +
-                   "\" (expected bezier, bspline, samples, segment, arc or helix)");
+                   "\" (expected bezier, bspline, samples, segment, arc, helix or circle)");
 }
 
 BoundaryNet boundary_from_json(const Json& j, const std::string& path, FitMethod default_fit) {

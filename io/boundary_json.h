@@ -18,7 +18,7 @@ struct BoundaryNet {
   bool c1 = false;
 };
 
-/// One CURVE object (bezier, bspline, samples, segment, arc, helix). Throws the typed exceptions
+/// One CURVE object (bezier, bspline, samples (also closed), segment, arc, helix, circle). Throws the typed exceptions
 /// of core/errors.h with messages starting with `path`: ParseError (unknown type or field, wrong
 /// JSON type), SizeError, DegreeError, NonFiniteError, ParameterError.
 BoundaryCurve curve_from_json(const Json& j, const std::string& path);

@@ -1,5 +1,8 @@
 #include "bezierpde/io/job.h"
 
+#include "bezierpde/complex/complex_mesh.h"
+#include "bezierpde/solvers/complex/complex_extremal.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -207,6 +210,25 @@ FitMethod default_boundary_fit(const Json& j) {
   return f == "area" || f == "mean-curvature" ? FitMethod::Geometric : FitMethod::Interpolation;
 }
 
+// What a complex job takes (FORMATS.md "Patch complexes"): the extremal problem, C⁰ data, no
+// STEP or view.html export.
+void check_complex_job(const Job& job, const std::string& source) {
+  if (job.problem.kind != ProblemKind::Extremal)
+    throw UnsupportedProblem(source + ".problem: a complex boundary takes problem \"extremal\", not \"" +
+                             to_string(job.problem.kind) + "\"");
+  if (job.fixed != FixedSet::Boundary)
+    throw UnsupportedProblem(source + ".fixed: a complex boundary takes fixed \"boundary\" (C0 data) only");
+  const PatchComplex& c = job.complex->complex;
+  const long long vertices = static_cast<long long>(c.patches.size()) * (job.samples + 1) * (job.samples + 1);
+  if (vertices > kMaxComplexSampleVertices)
+    throw ParameterError(source + ".samples: " + std::to_string(c.patches.size()) + " patches at " +
+                         std::to_string(job.samples) + " samples are " + std::to_string(vertices) +
+                         " mesh vertices, more than " + std::to_string(kMaxComplexSampleVertices));
+  if (job.export_step || job.export_html)
+    throw UnsupportedProblem(source + ".export: a complex is written as meshes and result.json; "
+                             "\"step\" and \"html\" take a single net");
+}
+
 }  // namespace
 
 Job parse_job(const Json& j, const std::string& source) {
@@ -216,10 +238,18 @@ Job parse_job(const Json& j, const std::string& source) {
     throw ParseError(source + ": a job gives exactly one of \"net\" and \"boundary\"");
   Job job;
   std::optional<BoundaryNet> b;
-  if (j.contains("net"))
+  if (j.contains("net")) {
     job.net = net_from_json(j["net"], source + ".net");
-  else
+  } else if (is_complex_boundary(j)) {
+    job.complex = std::make_shared<const ComplexJobData>(
+        complex_from_json(j["boundary"], source + ".boundary", default_boundary_fit(j)));
+    const PatchComplex& c = job.complex->complex;
+    if (c.patches.front().kind == PatchKind::triangular) job.net = triangular_net(c, 0);
+    else job.net = tensor_net(c, 0);
+    job.boundary_fit = boundary_fit_to_json(job.complex->coarse.fits);
+  } else {
     b = boundary_from_json(j["boundary"], source + ".boundary", default_boundary_fit(j));
+  }
   if (j.contains("fixed")) job.fixed = fixed_from_string(string(j["fixed"], source + ".fixed"), source + ".fixed");
   if (b) {
     if (job.fixed == FixedSet::BoundaryAdjacent && !b->c1)
@@ -254,6 +284,7 @@ Job parse_job(const Json& j, const std::string& source) {
         throw ParseError(where + "[" + std::to_string(k) + "]: unknown export \"" + e + "\" (expected step or html)");
     }
   }
+  if (job.complex) check_complex_job(job, source);
   return job;
 }
 

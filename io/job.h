@@ -2,12 +2,14 @@
 // Jobs of `bpde solve` (FORMATS.md "Jobs"): the file format. The job layer (jobs/run_job.h) adds
 // the validation against the solvers' requirements, so that bad input (exit 2) is rejected before
 // anything runs and never leaves files behind.
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "bezierpde/core/fixed_set.h"
 #include "bezierpde/core/mesh.h"
 #include "bezierpde/energies/energy_spec.h"
+#include "bezierpde/io/complex_job.h"
 #include "bezierpde/io/json_io.h"
 #include "bezierpde/io/mesh_io.h"
 #include "bezierpde/solvers/cmc/cmc.h"
@@ -50,6 +52,9 @@ struct Job {
   MeshFormat mesh_format = MeshFormat::Ascii;
   bool export_step = false;
   bool export_html = false;
+  /// A job whose boundary is a patch complex (FORMATS.md "Patch complexes"): the complex, built
+  /// and refined when the job is read; `net` is then its first patch (for messages only).
+  std::shared_ptr<const ComplexJobData> complex;
 };
 
 // kMaxSamples (core/mesh.h): the largest accepted `samples`, bounded by the memory it needs.

@@ -93,13 +93,14 @@ class ArrayWriter {
 }  // namespace
 
 void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format,
-               const SharedNumberText* text) {
+               const SharedNumberText* text, const std::vector<std::int32_t>* patch) {
   const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
   if (fields.H.size() != nv || fields.K.size() != nv || fields.normal.rows() != nv || fields.uv.rows() != nv ||
       fields.regular.size() != nv)
     throw InternalError("write_vtp: fields do not match the mesh");
   if (text && text->vertices() != nv) throw InternalError("write_vtp: the shared number text is not of this mesh");
   const bool shared = text && format == MeshFormat::Ascii;
+  if (patch && static_cast<Eigen::Index>(patch->size()) != nf) throw InternalError("write_vtp: patch ids do not match the mesh");
   using RowMat3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
   using RowMat2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
   const RowMat3 points = mesh.V, normals = fields.normal;
@@ -128,7 +129,13 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   w.reals("gaussian_curvature", fields.K.data(), static_cast<size_t>(nv), 1);
   w.reals("uv", uv.data(), static_cast<size_t>(nv) * 2, 2);
   w.ints("UInt8", "regular", regular, 1);
-  s += "      </PointData>\n      <Points>\n";
+  s += "      </PointData>\n";
+  if (patch) {
+    s += "      <CellData Scalars=\"patch\">\n";
+    w.ints("Int32", "patch", *patch, 1);
+    s += "      </CellData>\n";
+  }
+  s += "      <Points>\n";
   if (shared)
     w.texts("Points", static_cast<size_t>(nv) * 3, 3, [&](size_t k) {
       return text->vertex(static_cast<Eigen::Index>(k / 3), static_cast<int>(k % 3));

@@ -10,7 +10,9 @@
 // MeshFormat::Ascii writes Float64 values with 17 significant digits and Int32 indices in ASCII;
 // MeshFormat::Binary writes Float32 values and Int32 indices inline as base64 (format="binary",
 // header_type="UInt64": each array is preceded by its byte count as a little-endian UInt64).
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "bezierpde/core/mesh.h"
 #include "bezierpde/io/mesh_io.h"
@@ -20,7 +22,10 @@ namespace bpde {
 
 /// Write `mesh` with `fields` (surface_fields of the same mesh) to `path`. Throws FileError.
 /// `text`, if given, is the SharedNumberText of the same mesh and fields (io/mesh_io.h).
+/// `patch` (a patch complex's mesh, complex/complex_mesh.h): one patch id per triangle, written
+/// as the Int32 CellData array "patch" (the active cell scalars).
 void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields,
-               MeshFormat format = MeshFormat::Ascii, const SharedNumberText* text = nullptr);
+               MeshFormat format = MeshFormat::Ascii, const SharedNumberText* text = nullptr,
+               const std::vector<std::int32_t>* patch = nullptr);
 
 }  // namespace bpde

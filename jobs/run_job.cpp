@@ -24,6 +24,7 @@
 #include "bezierpde/io/vtp_io.h"
 #include "bezierpde/jobs/exports.h"
 #include "bezierpde/jobs/job_progress.h"
+#include "bezierpde/jobs/run_complex.h"
 #include "bezierpde/solvers/bspline/bspline_extremal.h"
 #include "bezierpde/solvers/bspline/bspline_pde.h"
 #include "bezierpde/solvers/c1/biharmonic_load.h"
@@ -396,7 +397,9 @@ NetShape net_shape(const Net& net) {
   return {NetKind::BSpline, b.p(), b.q()};
 }
 
-void validate_job(const Job& job, const std::string& where) { checked_solver(job, where); }
+void validate_job(const Job& job, const std::string& where) {
+  if (!job.complex) checked_solver(job, where);  // a complex job is checked when it is read
+}
 
 Job job_from_json(const Json& j, const std::string& source) {
   Job job = parse_job(j, source);
@@ -416,7 +419,7 @@ Status checked_status(const Summary& s) {
 }
 
 SolveOutcome run_job(const Job& job) {
-  SolveOutcome out = checked_solver(job, "job").run(job);
+  SolveOutcome out = job.complex ? run_complex_job(job) : checked_solver(job, "job").run(job);
   out.report.update(figures_report(out.figures));
   if (!job.boundary_fit.is_null()) out.report["boundary_fit"] = job.boundary_fit;
   return out;
@@ -547,6 +550,7 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
 }
 
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out) {
+  if (out.complex && job.complex) return write_complex_result(dir, job, out);
   const TriangleMesh mesh = [&] {
     const ProgressStage stage(job_progress(), kSamplingStage);
     return sample_net(out.net, job.samples, job_progress());

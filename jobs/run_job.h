@@ -10,6 +10,7 @@
 // to that solver's requirements (solvers/requirements.h, declared next to each solver's Options).
 // The same table validates a job when it is read and dispatches it when it runs.
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,8 @@ struct SolveOutcome {
   /// status == Status::Converged (the exit code follows it).
   bool converged = true;
   Status status = Status::Converged;
+  /// A complex job (Job::complex): the solved complex; `net` is then its first patch.
+  std::shared_ptr<const PatchComplex> complex;
 };
 
 /// The status of a solver's Summary, checked against its contract (solvers/summary.h): a

@@ -51,7 +51,11 @@ std::string solve_summary(const SolveOutcome& out, const WrittenResult& written,
   if (!f.method.empty()) add("method " + f.method);
   if (!f.solver.empty()) add("solver " + f.solver);
   line(s, "problem",
-       to_string(f.problem) + (detail.empty() ? "" : " (" + detail + ")") + " on a " + net_text(out.net));
+       to_string(f.problem) + (detail.empty() ? "" : " (" + detail + ")") + " on a " +
+           (out.complex ? "complex of " + std::to_string(out.complex->patches.size()) + " " +
+                              (out.complex->patches.front().kind == PatchKind::triangular ? "triangular" : "tensor") +
+                              " patches of degree " + std::to_string(out.complex->patches.front().degree)
+                        : net_text(out.net)));
   const bool converged = f.summary.converged;
   std::string how = converged ? "yes" : "no";
   if (f.iterations) how += " (" + std::to_string(*f.iterations) + " iterations";

@@ -224,7 +224,7 @@ TEST(BoundaryJobs, BadInputExitsTwoWithOneLine) {
   };
   expect_bad_job("gap", tri(seg + ", " + R"({"type": "segment", "from": [1,0.01,0], "to": [0,1,0]})" + ", " + seg3),
                  "edges 0 and 1 do not meet: the end of edge 0 is 0.01 from the start of edge 1");
-  expect_bad_job("unknown_curve", tri(seg + R"(, {"type": "circle"}, )" + seg3), "unknown curve type \"circle\"");
+  expect_bad_job("unknown_curve", tri(seg + R"(, {"type": "spiral"}, )" + seg3), "unknown curve type \"spiral\"");
   expect_bad_job("non_finite",
                  tri(seg + ", " + seg2 + ", " + R"({"type": "segment", "from": [0,1,0], "to": [0,0,1e999]})"), "1e999");
   expect_bad_job("overflow",

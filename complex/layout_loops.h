@@ -1,0 +1,115 @@
+#pragma once
+// Patch complexes from boundary loops (boundaries/boundary_curves.h): automatic layouts for a
+// disc (one loop) and an annulus (two loops), and layouts given by the user.
+//
+// Loops: a loop is a list of curves, each starting where the previous one ends and the last
+// ending where the first starts (a loop of one curve is closed by itself: a circle, closed
+// samples). The first loop is the outer one. Every loop runs with the surface on its left seen
+// from the side the normals point to: the outer loop counter-clockwise, an annulus's inner loop
+// the other way round (two coaxial circles spanned by a tube: one with normal +N, one with -N).
+//
+// Automatic layouts. Every junction of two curves is a layout vertex (a real corner must be one;
+// a smooth junction may be one here, below); where a loop has fewer curves than the layout needs,
+// curves are cut into pieces of equal parameter length (the longest first: for a circle, arcs of
+// equal angle). Each layout boundary edge is one piece of one curve, fitted at degree n by
+// fit_edge (boundaries/fit_boundary.h: Bézier curves and segments exactly, arcs and circles by
+// the method asked, Chebyshev interpolation by default, samples by least squares).
+//   disc, triangular: a fan of M >= 3 triangles around a centre vertex (M = max(N, 3) boundary
+//     edges for N curves).
+//   disc, tensor: an O-grid: M boundary edges (M = max(N, 4), made even by one more cut), a ring
+//     of M quads, and inside it one quad (M = 4) or M/2 quads around a centre vertex (M >= 6).
+//   annulus: both loops cut into the same number M = max(N_outer, N_inner, 4) of edges, paired by
+//     the cyclic shift of the inner loop's vertices nearest the outer's; a ring of M quads, or of
+//     M pairs of triangles (each quad cut along its diagonal from its first outer to its first
+//     inner vertex).
+// Why these: in all of them every boundary vertex belongs to two patches, so no patch has a
+// corner where the boundary is smooth (its corner angle there would be 180° and x_u ∥ x_v; the
+// single-patch problem of FORMATS.md). The fan is the fewest triangles with that property. For
+// quads, "M quads meeting at a centre" needs the boundary vertices every other one at a patch
+// corner of a single quad, which is wrong on a smooth loop; the O-grid keeps two quads at every
+// boundary vertex and gives the inside regular quads.
+// Interior positions: the centre vertex is the mean of the boundary edges' control points; the
+// O-grid's inner ring is halfway from the centre to the boundary vertices; inner edges are the
+// straight segments between their vertices, and each patch's inner points the discrete Coons
+// fill of its edges (tensor: P_ij = linear in i + linear in j - bilinear in the corners;
+// triangular: the mean of the three linear interpolations between opposite edge points). A
+// solve (solvers/complex) replaces them.
+//
+// User layouts: vertices (positions of the inner vertices; a boundary vertex's position is taken
+// from the curves), faces, and for each layout boundary edge the loop, curve and parameter range
+// of the curve it follows, in the direction the faces run along it.
+#include "bezierpde/core/eigen.h"
+#include <Eigen/Core>
+#include <vector>
+
+#include "bezierpde/boundaries/fit_boundary.h"
+#include "bezierpde/complex/layout.h"
+#include "bezierpde/complex/patch_complex.h"
+#include "bezierpde/core/errors.h"
+
+namespace bpde {
+
+/// A loop whose curves do not meet (the gap is named).
+class LoopNotClosedError : public ParameterError {
+ public:
+  using ParameterError::ParameterError;
+};
+/// A loop whose curves meet, but not in the given order or direction.
+class CurvesOutOfOrderError : public ParameterError {
+ public:
+  using ParameterError::ParameterError;
+};
+/// A user layout whose boundary does not match the loops (an edge without a curve, a curve piece
+/// used twice or not at all, a piece that runs against its edge, ends that do not meet).
+class LayoutMismatchError : public ParameterError {
+ public:
+  using ParameterError::ParameterError;
+};
+
+using Loop = std::vector<BoundaryCurve>;
+
+struct LoopOptions {
+  FitMethod method = FitMethod::Interpolation;  ///< fit_edge's method for curves that are not Bézier
+  double corner_tolerance = 1e-8;  ///< relative gap allowed between consecutive curves (> 0)
+};
+
+/// The piece of a loop's curve that a layout boundary edge follows.
+struct CurvePiece {
+  int loop = 0, curve = 0;
+  double t0 = 0, t1 = 1;
+};
+
+/// A layout boundary edge from vertex a to vertex b (the faces' direction) and its curve piece.
+struct LayoutBoundaryEdge {
+  int a = 0, b = 0;
+  CurvePiece piece;
+};
+
+struct LoopComplex {
+  Layout layout;
+  PatchComplex complex;                    ///< fixed = the boundary rows
+  std::vector<LayoutBoundaryEdge> boundary;
+  std::vector<EdgeFit> fits;               ///< per boundary edge (EdgeFit::edge its index)
+};
+
+/// Checks that each loop is closed and in order (LoopNotClosedError, CurvesOutOfOrderError,
+/// SizeError for an empty loop or no loops).
+void check_loops(const std::vector<Loop>& loops, double corner_tolerance = 1e-8);
+
+/// One loop: a disc (above). Two loops: an annulus. SizeError for other counts; the errors of
+/// check_loops and of the fits; DegreeError for n outside 1..kMaxDegree.
+LoopComplex loop_complex(PatchKind kind, int n, const std::vector<Loop>& loops, const LoopOptions& options = {});
+
+/// A user layout: faces as in complex/layout.h; `boundary` names one piece per layout boundary
+/// edge. The pieces of each curve must cover [0,1] without gaps or overlaps (LayoutMismatchError),
+/// the edge's vertices must be the piece's ends in order, and the layout must be valid
+/// (validate_layout).
+LoopComplex layout_complex(const Layout& layout, int n, const std::vector<Loop>& loops,
+                           const std::vector<LayoutBoundaryEdge>& boundary, const LoopOptions& options = {});
+
+/// Sets the rows of c that are not fixed, except the corner rows (kept as they are): the inner
+/// rows of each edge on the segment between its end rows, then each patch's inner rows by the
+/// discrete Coons fill of the header.
+void coons_fill(PatchComplex& c);
+
+}  // namespace bpde

@@ -1,0 +1,168 @@
+#include "bezierpde/io/complex_job.h"
+
+#include "bezierpde/complex/refine.h"
+#include "bezierpde/core/errors.h"
+#include "bezierpde/io/boundary_json.h"
+#include "bezierpde/solvers/complex/complex_extremal.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
+
+namespace bpde {
+namespace {
+
+// f() with an InvalidInput's message prefixed by `path: `, its type kept.
+template <class F>
+auto at(const std::string& path, F&& f) -> decltype(f()) {
+  auto msg = [&](const std::exception& e) { return path + ": " + e.what(); };
+  try {
+    return f();
+  } catch (const LoopNotClosedError& e) {
+    throw LoopNotClosedError(msg(e));
+  } catch (const CurvesOutOfOrderError& e) {
+    throw CurvesOutOfOrderError(msg(e));
+  } catch (const LayoutMismatchError& e) {
+    throw LayoutMismatchError(msg(e));
+  } catch (const DegreeError& e) {
+    throw DegreeError(msg(e));
+  } catch (const SizeError& e) {
+    throw SizeError(msg(e));
+  } catch (const NonFiniteError& e) {
+    throw NonFiniteError(msg(e));
+  } catch (const ParameterError& e) {
+    throw ParameterError(msg(e));
+  }
+}
+
+std::vector<Loop> loops_from_json(const Json& j, const std::string& path) {
+  if (!j.is_array() || j.empty()) throw ParseError(path + ": expected an array of loops (arrays of curves)");
+  std::vector<Loop> loops;
+  for (std::size_t l = 0; l < j.size(); ++l) {
+    const std::string lp = path + "[" + std::to_string(l) + "]";
+    if (!j[l].is_array() || j[l].empty()) throw ParseError(lp + ": expected a non-empty array of curves");
+    Loop loop;
+    for (std::size_t k = 0; k < j[l].size(); ++k) loop.push_back(curve_from_json(j[l][k], lp + "[" + std::to_string(k) + "]"));
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+std::vector<int> ints(const Json& j, const std::string& path) {
+  if (!j.is_array()) throw ParseError(path + ": expected an array of integers");
+  std::vector<int> v;
+  for (std::size_t k = 0; k < j.size(); ++k) v.push_back(json_read::integer(j[k], path + "[" + std::to_string(k) + "]"));
+  return v;
+}
+
+/// The user's layout: {"vertices": [[x,y,z], ...], "faces": [[a,b,c(,d)], ...],
+/// "boundary": [{"from": a, "to": b, "loop": l, "curve": k, "range": [t0, t1]}, ...]}.
+LoopComplex user_layout(const Json& j, const std::string& path, PatchKind kind, int n, const std::vector<Loop>& loops,
+                        const LoopOptions& options) {
+  using namespace json_read;
+  require_object(j, path);
+  check_keys(j, path, {"vertices", "faces", "boundary"});
+  Layout L;
+  L.kind = kind;
+  L.vertices = points(field(j, path, "vertices"), path + ".vertices");
+  const Json& faces = field(j, path, "faces");
+  if (!faces.is_array()) throw ParseError(path + ".faces: expected an array of faces");
+  for (std::size_t f = 0; f < faces.size(); ++f) L.faces.push_back(ints(faces[f], path + ".faces[" + std::to_string(f) + "]"));
+  const Json& boundary = field(j, path, "boundary");
+  if (!boundary.is_array()) throw ParseError(path + ".boundary: expected an array of boundary edges");
+  std::vector<LayoutBoundaryEdge> edges;
+  for (std::size_t k = 0; k < boundary.size(); ++k) {
+    const std::string bp = path + ".boundary[" + std::to_string(k) + "]";
+    const Json& b = boundary[k];
+    require_object(b, bp);
+    check_keys(b, bp, {"from", "to", "loop", "curve", "range"});
+    LayoutBoundaryEdge e;
+    e.a = integer(field(b, bp, "from"), bp + ".from");
+    e.b = integer(field(b, bp, "to"), bp + ".to");
+    e.piece.loop = integer(field(b, bp, "loop"), bp + ".loop");
+    e.piece.curve = integer(field(b, bp, "curve"), bp + ".curve");
+    if (b.contains("range")) {
+      const std::vector<double> r = numbers(b["range"], bp + ".range", 2);
+      e.piece.t0 = r[0], e.piece.t1 = r[1];
+    }
+    edges.push_back(e);
+  }
+  return at(path, [&] { return layout_complex(L, n, loops, edges, options); });
+}
+
+Json vec(const Eigen::Vector3d& x) { return Json::array({x(0), x(1), x(2)}); }
+
+}  // namespace
+
+bool is_complex_boundary(const Json& job) {
+  return job.is_object() && job.contains("boundary") && job["boundary"].is_object() &&
+         job["boundary"].contains("type") && job["boundary"]["type"] == "complex";
+}
+
+ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMethod default_fit) {
+  using namespace json_read;
+  require_object(j, path);
+  check_keys(j, path, {"type", "patch", "degree", "refine", "loops", "layout", "fit", "corner_tolerance"});
+  const std::string patch = string(field(j, path, "patch"), path + ".patch");
+  if (patch != "triangular" && patch != "tensor")
+    throw ParseError(path + ".patch: expected \"triangular\" or \"tensor\", got \"" + patch + "\"");
+  const PatchKind kind = patch == "triangular" ? PatchKind::triangular : PatchKind::tensor;
+  const int n = integer(field(j, path, "degree"), path + ".degree");
+  if (n < 1 || n > kMaxComplexExtremalDegree)
+    throw DegreeError(path + ".degree: a complex takes degrees 1.." + std::to_string(kMaxComplexExtremalDegree) +
+                      " (the Bernstein Gram systems lose a digit per degree), got " + std::to_string(n));
+  ComplexJobData data;
+  if (j.contains("refine")) data.refine = integer(j["refine"], path + ".refine");
+  if (data.refine < 0 || data.refine > kMaxComplexRefine)
+    throw SizeError(path + ".refine: must be in 0.." + std::to_string(kMaxComplexRefine) + ", got " +
+                    std::to_string(data.refine));
+  LoopOptions options;
+  options.method = default_fit;
+  if (j.contains("fit")) {
+    const std::string f = string(j["fit"], path + ".fit");
+    if (f == "interpolation") options.method = FitMethod::Interpolation;
+    else if (f == "least-squares") options.method = FitMethod::LeastSquares;
+    else if (f == "geometric") options.method = FitMethod::Geometric;
+    else throw ParseError(path + ".fit: unknown fit \"" + f + "\" (expected interpolation, least-squares or geometric)");
+  }
+  if (j.contains("corner_tolerance")) {
+    options.corner_tolerance = number(j["corner_tolerance"], path + ".corner_tolerance");
+    if (!(options.corner_tolerance > 0)) throw ParameterError(path + ".corner_tolerance: must be > 0");
+  }
+  const std::vector<Loop> loops = loops_from_json(field(j, path, "loops"), path + ".loops");
+  data.coarse = j.contains("layout") ? user_layout(j["layout"], path + ".layout", kind, n, loops, options)
+                                     : at(path + ".loops", [&] { return loop_complex(kind, n, loops, options); });
+  const long long patches = static_cast<long long>(data.coarse.complex.patches.size()) << (2 * data.refine);
+  if (patches > kMaxComplexPatches)
+    throw SizeError(path + ": " + std::to_string(data.coarse.complex.patches.size()) + " patches refined " +
+                    std::to_string(data.refine) + " times are " + std::to_string(patches) + ", more than " +
+                    std::to_string(kMaxComplexPatches));
+  const long long per_patch = static_cast<long long>(data.coarse.complex.patches.front().points.size());
+  if (patches * per_patch * per_patch > kMaxComplexGramEntries)
+    throw SizeError(path + ": " + std::to_string(patches) + " patches of degree " + std::to_string(n) + " need " +
+                    std::to_string(patches * per_patch * per_patch) + " Gram entries, more than " +
+                    std::to_string(kMaxComplexGramEntries) + " (a lower degree or less refinement)");
+  data.complex = data.coarse.complex;
+  for (int r = 0; r < data.refine; ++r) data.complex = refine_h(data.complex);
+  return data;
+}
+
+Json complex_to_json(const ComplexJobData& data, const PatchComplex& solved) {
+  const PatchKind kind = solved.patches.front().kind;
+  Json patches = Json::array();
+  for (int p = 0; p < static_cast<int>(solved.patches.size()); ++p)
+    patches.push_back(kind == PatchKind::triangular ? net_to_json(triangular_net(solved, p)) : net_to_json(tensor_net(solved, p)));
+  const Layout& L = data.coarse.layout;
+  Json vertices = Json::array(), faces = Json::array(), boundary = Json::array();
+  for (int v = 0; v < L.vertices.rows(); ++v) vertices.push_back(vec(L.vertices.row(v).transpose()));
+  for (const auto& f : L.faces) faces.push_back(f);
+  for (const LayoutBoundaryEdge& e : data.coarse.boundary)
+    boundary.push_back({{"from", e.a}, {"to", e.b}, {"loop", e.piece.loop}, {"curve", e.piece.curve},
+                        {"range", Json::array({e.piece.t0, e.piece.t1})}});
+  return {{"type", "complex"},
+          {"patch", kind == PatchKind::triangular ? "triangular" : "tensor"},
+          {"degree", solved.patches.front().degree},
+          {"refine", data.refine},
+          {"patches", patches},
+          {"layout", {{"vertices", vertices}, {"faces", faces}, {"boundary", boundary}}}};
+}
+
+}  // namespace bpde

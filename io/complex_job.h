@@ -1,0 +1,38 @@
+#pragma once
+// The "complex" boundary form of a job (FORMATS.md "Patch complexes"): a surface of several
+// patches spanning boundary loops, on an automatic layout or one given by the user, refined in
+// h `refine` times. Parsing builds the complex (the loops checked, the layout made and its
+// boundary fitted at `degree`, then refined), so every input error surfaces before anything runs.
+#include <memory>
+#include <string>
+
+#include "bezierpde/complex/layout_loops.h"
+#include "bezierpde/io/json_io.h"
+
+namespace bpde {
+
+/// The complex of a job: the loop complex at the job's degree (its layout, boundary pieces and
+/// fits) and the complex refined `refine` times in h (patch p of it refines layout face
+/// p / 4^refine).
+struct ComplexJobData {
+  LoopComplex coarse;
+  PatchComplex complex;
+  int refine = 0;
+};
+
+/// True when j is a job whose "boundary" has "type": "complex".
+bool is_complex_boundary(const Json& job);
+
+/// The "boundary" object of a complex job (path e.g. "job.boundary"). Throws ParseError (unknown
+/// fields, wrong types), DegreeError (degree outside 1..kMaxComplexExtremalDegree), SizeError
+/// (refine outside 0..kMaxComplexRefine, more than kMaxComplexPatches patches after refinement or
+/// more than kMaxComplexGramEntries Gram entries (solvers/complex/complex_extremal.h), loops), LoopNotClosedError, CurvesOutOfOrderError, LayoutMismatchError, ParameterError and the
+/// fits' errors, each message starting with its JSON path.
+ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMethod default_fit);
+
+/// The result.json "net" of a complex: {"type": "complex", "patch", "degree", "refine",
+/// "patches": [NET, ...], "layout": {"vertices", "faces", "boundary": [{"from", "to", "loop",
+/// "curve", "range"}]}}.
+Json complex_to_json(const ComplexJobData& data, const PatchComplex& solved);
+
+}  // namespace bpde
