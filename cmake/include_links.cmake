@@ -3,7 +3,7 @@
 # <source root>/<folder> for every header folder of the library. A link that points elsewhere (a
 # build tree configured from another checkout, a moved source tree) is made again, so the build
 # never compiles another tree's headers. Used by the main CMakeLists.txt and fuzz/CMakeLists.txt.
-set(BPDE_HEADER_FOLDERS core tensor triangular energies solvers boundaries io jobs checks)
+set(BPDE_HEADER_FOLDERS core tensor triangular energies solvers boundaries io jobs checks complex)
 
 function(bpde_include_links source_root include_dir)
   file(MAKE_DIRECTORY ${include_dir}/bezierpde)
