@@ -8,8 +8,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
+#include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/complex/patch_complex.h"
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/tensor/tensor_net.h"
@@ -133,6 +135,48 @@ inline PatchComplex merge_nets(const std::vector<Eigen::MatrixX3d>& nets, PatchK
   for (std::size_t q = 0; q < pts.size(); ++q) c.points.row(static_cast<Eigen::Index>(q)) = pts[q];
   for (std::size_t p = 0; p < nets.size(); ++p)
     for (int r : fixed_local[p]) c.fixed.push_back(c.patches[p].points[static_cast<std::size_t>(r)]);
+  std::sort(c.fixed.begin(), c.fixed.end());
+  c.fixed.erase(std::unique(c.fixed.begin(), c.fixed.end()), c.fixed.end());
+  return c;
+}
+
+}  // namespace bpde::testing
+
+namespace bpde::testing {
+
+/// The unit circle (z = 0) as the outer edges of a fan of K degree-n triangular patches around a
+/// free centre: patch k has P_00n at the centre (row 0), P_n00 at the circle's point of angle
+/// 2πk/K and P_0n0 at 2π(k+1)/K (counter-clockwise seen from +z: x_u ∧ x_v points to +z), its
+/// edge w = 0 the degree-n fit (fit_curve, Chebyshev–Lobatto interpolation) of the arc between.
+/// Rows: the centre, the K radial edges (centre excluded, vertex last), the arcs' inner points,
+/// the patches' inner points. Fixed: the arcs with their vertices. Free rows hold 0.
+inline PatchComplex circle_fan(int K, int n) {
+  PatchComplex c;
+  const int radial0 = 1, arc0 = 1 + K * n, inner0 = arc0 + K * (n - 1);
+  const int inner = (n - 1) * (n - 2) / 2;
+  c.points = Eigen::MatrixX3d::Zero(inner0 + K * inner, 3);
+  auto radial = [&](int k, int r) { return r == 0 ? 0 : radial0 + (k % K) * n + (r - 1); };
+  for (int k = 0; k < K; ++k) {
+    const double a0 = 2 * std::numbers::pi * k / K, a1 = 2 * std::numbers::pi * (k + 1) / K;
+    const Eigen::MatrixX3d arc =
+        fit_curve(n, [&](double t) { return Eigen::Vector3d(std::cos(a0 + (a1 - a0) * t), std::sin(a0 + (a1 - a0) * t), 0); });
+    ComplexPatch p{PatchKind::triangular, n, std::vector<int>(static_cast<std::size_t>(TriangularNet::count(n)))};
+    int next_inner = inner0 + k * inner;
+    for (int r = 0; r < TriangularNet::count(n); ++r) {
+      const auto I = TriangularNet::multi_index(n, r);  // (weight of vertex k, of vertex k + 1, of the centre)
+      int g;
+      if (I[1] == 0) g = radial(k, I[0]);
+      else if (I[0] == 0) g = radial(k + 1, I[1]);
+      else if (I[2] == 0) g = arc0 + k * (n - 1) + (I[1] - 1);
+      else g = next_inner++;
+      p.points[static_cast<std::size_t>(r)] = g;
+      if (I[2] == 0) {
+        c.points.row(g) = arc.row(I[1]);
+        c.fixed.push_back(g);
+      }
+    }
+    c.patches.push_back(p);
+  }
   std::sort(c.fixed.begin(), c.fixed.end());
   c.fixed.erase(std::unique(c.fixed.begin(), c.fixed.end()), c.fixed.end());
   return c;
