@@ -183,3 +183,42 @@ inline PatchComplex circle_fan(int K, int n) {
 }
 
 }  // namespace bpde::testing
+
+namespace bpde::testing {
+
+/// A ring of K degree-(n, n) tensor patches between the unit circles at z = ∓h: patch k spans the
+/// angles 2πk/K … 2π(k+1)/K along u and z = −h … h along v (x_u ∧ x_v points outwards), its points
+/// the interpolant (tensor lattice) of the cylinder (cos θ, sin θ, z) whose edges v = 0 and v = 1
+/// are fitted arcs of the circles; those rows are fixed.
+inline PatchComplex circle_ring(int K, int n, double h) {
+  Eigen::VectorXd t(n + 1);
+  for (int k = 0; k <= n; ++k) t(k) = double(k) / n;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(bernstein_table(n, t));
+  std::vector<Eigen::MatrixX3d> nets;
+  std::vector<std::vector<int>> fixed;
+  for (int k = 0; k < K; ++k) {
+    const double a0 = 2 * std::numbers::pi * k / K, a1 = 2 * std::numbers::pi * (k + 1) / K;
+    Eigen::MatrixX3d P((n + 1) * (n + 1), 3);
+    for (int c = 0; c < 3; ++c) {
+      Eigen::MatrixXd F(n + 1, n + 1);
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+          const double a = a0 + (a1 - a0) * t(i);
+          F(i, j) = c == 0 ? std::cos(a) : c == 1 ? std::sin(a) : -h + 2 * h * t(j);
+        }
+      const Eigen::MatrixXd C = lu.solve(lu.solve(F).transpose()).transpose();
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) P(i * (n + 1) + j, c) = C(i, j);
+    }
+    nets.push_back(P);
+    std::vector<int> f;
+    for (int i = 0; i <= n; ++i) {
+      f.push_back(i * (n + 1));
+      f.push_back(i * (n + 1) + n);
+    }
+    fixed.push_back(f);
+  }
+  return merge_nets(nets, PatchKind::tensor, n, fixed);
+}
+
+}  // namespace bpde::testing
