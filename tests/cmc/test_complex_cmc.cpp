@@ -107,6 +107,25 @@ TEST(ComplexCmc, CapFanConvergesWithDegreeAndTheSeamsClose) {
   EXPECT_LT(seam, 5e-5);
 }
 
+TEST(ComplexCmc, CapFanVolumeFormsReturnTheCapsH) {
+  // The V form at the cap's volume: the area functional's multiplier is the cap's H = −1/2; the
+  // Dirichlet functional's (nlopt) the D_H multiplier near it.
+  CmcOptions o = cmc_options(CmcFunctionalKind::Area, 0.0);
+  o.V = kCapVolume;
+  const CmcResult<PatchComplex> a = solve_cmc(circle_fan(6, 4), o);
+  ASSERT_TRUE(a.summary.converged) << a.summary.message;
+  EXPECT_NEAR(a.V, kCapVolume, 1e-10);
+  EXPECT_NEAR(a.H, -0.5, 2e-3);
+  EXPECT_LT(std::abs(a.A - kCapArea), 2e-5);
+  o.functional = CmcFunctionalKind::Dirichlet;
+  o.solver = CmcSolver::NLopt;
+  const CmcResult<PatchComplex> d = solve_cmc(circle_fan(6, 4), o);
+  ASSERT_TRUE(d.summary.converged) << d.summary.message;
+  EXPECT_NEAR(d.V, kCapVolume, 1e-9);
+  EXPECT_NEAR(d.H, -0.5, 0.1);
+  EXPECT_GT(d.A, a.A);  // the area's minimiser at V0 has the smaller area
+}
+
 TEST(ComplexCmc, UnsupportedRequestsAreRefused) {
   const PatchComplex c = circle_fan(5, 4);
   CmcOptions o = cmc_options(CmcFunctionalKind::MeanCurvature, -0.5);
