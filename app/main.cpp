@@ -29,7 +29,7 @@ namespace {
 
 // The solvers make a fresh Hessian (and its factor or eigen-decomposition) each iteration. Above
 // glibc's mmap and trim thresholds each is a new mapping whose every page faults when first
-// written; a whole-process tool keeps freed memory instead (docs/performance_measurements.md, section 11:
+// written; a whole-process tool keeps freed memory instead (docs/performance_measurements.md, "Design decisions":
 // the area route on the tensor catenoid at n = 10, 5.31 -> 4.42 s wall). A malloc threshold the
 // user sets in the environment is left alone.
 void keep_freed_memory() {

@@ -12,7 +12,7 @@
 // with their scale (what every residual of the area route costs; the baseline is the full gradient);
 // AreaForm/hessian/{triangle,square}/<n> the free block of the Hessian on the same rules, and
 // AreaForm/{hessian,rows-and-scale}/triangle-graded/<n> and AreaForm/rows-and-scale/square-graded/<n> on
-// the graded q = 64 rule of the nearly degenerate corners (docs/performance_measurements.md, section 9). The per-degree setup (Gram and volume quadrature tables) is cached by
+// the graded q = 64 rule of the nearly degenerate corners (docs/performance_measurements.md, "Design decisions"). The per-degree setup (Gram and volume quadrature tables) is cached by
 // CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after the
 // first iteration.
 #include <benchmark/benchmark.h>
@@ -135,7 +135,7 @@ void AreaHelicoidNoTrustRegion(benchmark::State& s) { HelicoidTrustRegion(s, fal
 // FoldedParametrisationIsReportedAsDegenerate: a tensor boundary whose edge v = 0 retraces itself,
 // H = 0, n = 3). Its rule is refined to q = 64 in vain (the integrand has a kink along the fold),
 // so every residual runs on 32 768 nodes: the case of the per-thread node arrays
-// (docs/performance_measurements.md, section 9).
+// (docs/performance_measurements.md, "Design decisions").
 void AreaFolded(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const TensorNet data = tensor_boundary(n, [](double u, double v) {

@@ -1,10 +1,11 @@
 // The hand-written kernel core/row_major_product against Eigen's product on the same row-major
-// operands (docs/performance_measurements.md "row_major_product"), compiled with the same flags:
+// operands (docs/performance_measurements.md "Kernels"), compiled with the same flags:
 //   Kernel/grid-{row-major,eigen}/<n>    one coordinate of a 51 x 51 grid evaluation of a degree-(n, n)
 //                                        patch: T = P BvT ((n+1) x 51), X = Bu T (51 x 51);
 //   Kernel/mould-{row-major,eigen}/<n>   the mould product of the tensor pde lu route, x, y, z at once:
 //                                        3 x 4n times 4n x (n-1)^2 (solvers/pde/pde_lu.cpp);
-//   Kernel/rows-{row-major,eigen}/<r>    r = 1, 2, 3, 4 rows times the n = 20 mould (80 x 361).
+//   Kernel/rows-{row-major,eigen}/<r>    r = 1, 2, 3, 4 rows times the n = 20 mould (80 x 361);
+//   Kernel/fma-peak                      independent multiply-adds: the core's peak FLOP rate.
 #include <benchmark/benchmark.h>
 
 #include "bezierpde/core/eigen.h"
@@ -72,8 +73,27 @@ void Rows(benchmark::State& state, bool eigen) {
   }
 }
 
+// The machine's multiply-add peak of one core: 64 independent accumulators (acc = acc * a + b,
+// vectorised and contracted to FMA by the compiler at the build's flags), 2 flops each per step.
+// The yardstick of the kernels' FLOP rates (docs/performance_measurements.md "Kernels").
+void FmaPeak(benchmark::State& state) {
+  constexpr int kAcc = 64, kSteps = 4096;
+  alignas(64) double acc[kAcc];
+  for (int i = 0; i < kAcc; ++i) acc[i] = 1.0 + 1e-3 * i;
+  double a = 0.999999, b = 1e-7;
+  benchmark::DoNotOptimize(a);
+  benchmark::DoNotOptimize(b);
+  for (auto _ : state) {
+    for (int s = 0; s < kSteps; ++s)
+      for (int i = 0; i < kAcc; ++i) acc[i] = acc[i] * a + b;
+    benchmark::DoNotOptimize(acc);
+  }
+  state.counters["flops"] = benchmark::Counter(2.0 * kAcc * kSteps, benchmark::Counter::kIsIterationInvariantRate);
+}
+
 }  // namespace
 
+BENCHMARK(FmaPeak)->Name("Kernel/fma-peak");
 BENCHMARK_CAPTURE(Grid, rm, false)->Name("Kernel/grid-row-major")->Arg(5)->Arg(10)->Arg(20);
 BENCHMARK_CAPTURE(Grid, eigen, true)->Name("Kernel/grid-eigen")->Arg(5)->Arg(10)->Arg(20);
 BENCHMARK_CAPTURE(Mould, rm, false)->Name("Kernel/mould-row-major")->Arg(10)->Arg(20);

@@ -7,7 +7,7 @@
 // Kinds: pde (tensor biharmonic, method lu), extremal (tensor biharmonic, boundary fixed),
 // cmc (triangular, sphere boundary, H = 1, newton), blend (k x k partition, no data points, the
 // parameter is k). Every job samples at 50 (the default). Compare Report/<kind>/<n> with
-// Solve/<kind>/<n> in the same run (docs/performance_measurements.md, section 1).
+// Solve/<kind>/<n> in the same run (docs/performance_measurements.md, "Reports and solves").
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -29,6 +29,36 @@ inline Eigen::MatrixX3d times(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& 
   return out;
 }
 
+/// X = A * P for a #cols(A) x 3 matrix P in one pass over A (any dense column-major block): each
+/// column of A is read once and added to the three columns of X. For the tall blocks of basis
+/// tables at quadrature nodes (rows: nodes, columns: control points), where a GEMM spends more
+/// time packing A than multiplying by P's three columns. X has A's rows.
+template <class Matrix, class Out>
+inline void times_into(const Matrix& A, const Eigen::MatrixX3d& P, Out&& X) {
+  X.setZero();
+  for (Eigen::Index j = 0; j < A.cols(); ++j) {
+    const auto a = A.col(j);
+    X.col(0) += P(j, 0) * a;
+    X.col(1) += P(j, 1) * a;
+    X.col(2) += P(j, 2) * a;
+  }
+}
+
+/// X = A * P and Y = A * Q in the same single pass over A (two point sets on one table: x_u and
+/// x_v of a triangular net share their basis table).
+template <class Matrix, class Out>
+inline void times_into(const Matrix& A, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q, Out&& X, Out&& Y) {
+  X.setZero();
+  Y.setZero();
+  for (Eigen::Index j = 0; j < A.cols(); ++j) {
+    const auto a = A.col(j);
+    for (int c = 0; c < 3; ++c) {
+      X.col(c) += P(j, c) * a;
+      Y.col(c) += Q(j, c) * a;
+    }
+  }
+}
+
 /// A^T * W for a #rows(A) x 3 matrix W.
 inline Eigen::MatrixX3d times_t(const Eigen::MatrixXd& A, const Eigen::MatrixX3d& W) {
   Eigen::MatrixX3d out(A.cols(), 3);

@@ -14,7 +14,7 @@
 // so nothing caps them), and takes buffers above Eigen's 128 KB stack limit from the heap on every
 // call. Whether glibc then maps fresh pages for them depends on its dynamic thresholds, i.e. on
 // the process's allocation history, and on this VM every page fault costs several µs
-// (docs/performance_measurements.md, sections 11 and 12). Blocks of 64 rows keep the buffers small. Measured (random J,
+// (docs/performance_measurements.md, "Design decisions"). Blocks of 64 rows keep the buffers small. Measured (random J,
 // CPU time per call, one run, glibc's defaults; then with the thresholds the CLI sets):
 //
 //   J          one product   by 64 rows   (CLI thresholds: one product, by 64 rows)
@@ -30,7 +30,7 @@
 // rows by 3·#free) was measured by blocks too and kept as one product: by 64 rows (with its three
 // cross products) a Hessian call was 1.8–1.9x faster at triangular n = 10, q = 20, 1.2x slower at
 // tensor n = 12, q = 30 and level at two others; by 128 rows the area solves did not change
-// (docs/performance_measurements.md, section 12).
+// (docs/performance_measurements.md, "Design decisions").
 //
 // The sum is over the same terms in another order, so A differs from the one-product value by
 // rounding only.

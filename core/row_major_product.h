@@ -15,12 +15,10 @@
 // (i = 0..k-1 for every entry), so results differ only by the rounding of fused versus separate
 // multiply-add.
 //
-// Why not Eigen's product: measured (bench Kernel/*, docs/performance_measurements.md "The native build and the
-// hand-written kernel"), CPU time, same operands, same flags. Portable build (BPDE_NATIVE=OFF, the
-// default: Eigen sees SSE2 only): this kernel is 2.3-2.6x faster on the 51 x 51 grid evaluation
-// (n = 5..20) and 6x on the 3-row mould product at n = 20. Native build (-march=native, Eigen with
-// AVX2/FMA): still 1.3-1.6x on the grid at n = 5..10, 1.6x on the mould product, and level
-// (1.1x, within the noise) on the grid at n = 20. It is kept on every path for that reason.
+// Why not Eigen's product: measured by the Kernel/* routes of bpde_bench against Eigen's product on
+// the same operands at the same flags (docs/performance_measurements.md, "Kernels"). In the portable
+// build (BPDE_NATIVE=OFF: Eigen sees SSE2 only) this kernel wins on every shape; in the native build
+// it wins on the mould product and on the small grids, and the large grids are level with Eigen.
 //
 // Example: evaluate a degree-(n, m) patch coordinate P (row-major (n+1) x (m+1)) on a grid,
 //   T = P * BvT        (BvT: (m+1) x #v, row j = B_j^m at the v's)

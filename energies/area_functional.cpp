@@ -60,7 +60,7 @@ void frame_into(const Eigen::MatrixXd& Bu, const Eigen::MatrixXd& Bv, const Eige
 // between. Measured on a folded tensor patch at n = 3 whose rule is refined to q = 64 (32 768
 // nodes, 0.8 MB per array), in a plain program linking the library:
 // 9.2 s with 812 000 minor page faults and 4.3 s of system time, 2.1 s with the scratch
-// (docs/performance_measurements.md, section 9; the bpde command sets the allocator's thresholds itself).
+// (docs/performance_measurements.md, "Design decisions"; the bpde command sets the allocator's thresholds itself).
 struct FrameScratch {
   NodeFrame f;
   Eigen::MatrixX3d wa, wb, aa, bb;
@@ -258,7 +258,7 @@ Eigen::MatrixXd AreaForm::hessian(const Eigen::MatrixX3d& P, const std::vector<i
   // The blocks' scratch (hessian_scratch() below), kept per thread until release_scratch(): the
   // solves call the Hessian hundreds of times, and a fresh R per call costs its page faults on
   // every call where the allocator has returned it to the system in between (3–13× slower Hessians
-  // on the build machine: docs/performance_measurements.md, section 9).
+  // on the build machine: docs/performance_measurements.md, "Design decisions").
   HessianScratch& sc = hessian_scratch();
   Eigen::MatrixXd &R = sc.R, &DB = sc.DB, &Bub = sc.Bub, &Bvb = sc.Bvb;
   Eigen::MatrixX3d &U0 = sc.U0, &W0 = sc.W0, &U1 = sc.U1, &W1 = sc.W1, &nh = sc.nh;
@@ -326,7 +326,7 @@ namespace {
 // stays O(block × N) whatever q (the tables of AreaForm are #nodes × N twice: 232 MB at
 // triangular n = 25, q = 83). Only the rule is kept between calls, and for small nets the
 // derivative tables (report_rule, ReportTables below).
-// Nodes per block, measured (docs/performance_measurements.md, section 11): triangular 256, so that the
+// Nodes per block, measured (docs/performance_measurements.md, "Design decisions"): triangular 256, so that the
 // block's basis matrix (256 x 78 doubles at n = 11) stays in the L2 cache between its two products
 // (1024: 9-20 % slower at n = 11 ... 16); tensor 1024, whose univariate tables are small (256:
 // 12-16 % slower at n = m = 7 ... 9).
@@ -347,7 +347,7 @@ double streamed_area(const Eigen::MatrixX2d& uv, const Eigen::VectorXd& w, Eigen
 int report_q(int n) { return std::min(200, 3 * n + 8); }
 
 // The report rules, cached per (kind, q) (0 triangle, 1 square): building one (Gauss–Legendre
-// nodes, the Duffy maps) cost more than the D_H solve at n = 4 (docs/performance_measurements.md, section 10).
+// nodes, the Duffy maps) cost more than the D_H solve at n = 4 (docs/performance_measurements.md, "Design decisions").
 std::shared_ptr<const QuadratureRuleTriangle> report_rule(int kind, int q) {
   static KeyedCache<std::array<int, 2>, QuadratureRuleTriangle> cache(8);
   return cache.get({kind, q}, [](const std::array<int, 2>& k) {
@@ -365,7 +365,7 @@ struct ReportTables {
 };
 // In blocks of 256 nodes: whole-rule temporaries (#nodes x 3, four of them) made the heap grow and
 // shrink on every call, and the page faults and TLB flushes of that cost more than the products
-// (measured on the D_H solve at n = 4, docs/performance_measurements.md, section 10).
+// (measured on the D_H solve at n = 4, docs/performance_measurements.md, "Design decisions").
 double tabled_area(const ReportTables& t, const Eigen::MatrixX3d& Du, const Eigen::MatrixX3d& Dv) {
   constexpr Eigen::Index kBlock = 256;
   const Eigen::MatrixXd& Bv = t.Bv.size() ? t.Bv : t.Bu;
@@ -373,8 +373,12 @@ double tabled_area(const ReportTables& t, const Eigen::MatrixX3d& Du, const Eige
   double A = 0.0;
   for (Eigen::Index r0 = 0; r0 < t.w.size(); r0 += kBlock) {
     const Eigen::Index len = std::min(kBlock, t.w.size() - r0);
-    Xu.topRows(len).noalias() = t.Bu.middleRows(r0, len) * Du;
-    Xv.topRows(len).noalias() = Bv.middleRows(r0, len) * Dv;
+    if (t.Bv.size()) {
+      times_into(t.Bu.middleRows(r0, len), Du, Xu.topRows(len));
+      times_into(Bv.middleRows(r0, len), Dv, Xv.topRows(len));
+    } else {  // triangle: one table for both derivatives, read once
+      times_into(t.Bu.middleRows(r0, len), Du, Dv, Xu.topRows(len), Xv.topRows(len));
+    }
     for (Eigen::Index r = 0; r < len; ++r)
       A += t.w(r0 + r) * Xu.row(r).cross(Xv.row(r)).norm();
   }

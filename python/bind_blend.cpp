@@ -68,7 +68,7 @@ void bind_blend(py::module_& m) {
                      "Gauss points per direction and element for the load, 1..50 (6).")
       .def_readwrite("threaded_factorization", &bpde::SmoothingSplineOptions::threaded_factorization,
                      "Let CHOLMOD's factorisation run its OpenMP threads (False: they cost more CPU than they "
-                     "save on blend systems, docs/performance_measurements.md, section 3b).")
+                     "save on blend systems, docs/performance_measurements.md, \"Blend\").")
       .def("validate", &bpde::SmoothingSplineOptions::validate, "Raises ParameterError naming a bad field.");
   py::class_<bpde::SmoothingSpline>(m, "SmoothingSpline", "The C1 bicubic (BFS) spline on [0,1]^2.")
       .def_property_readonly(

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Print the blend config of bench/bench_data.h blend_config(k) as FORMATS.md JSON (for timing
-`bpde blend` from the command line, docs/performance_measurements.md section 3):
+`bpde blend` from the command line, docs/performance_measurements.md, "Blend"):
 
     scripts/blend_config.py 128 > cfg.json && /usr/bin/time -v build/bpde blend cfg.json --out d
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerate (or check) the generated sections of the docs from the example programs.
 
-Usage: docs.py [--check] [--full] [--build DIR] [EXAMPLE ...]
+Usage: docs.py [--check] [--full] [--run GEN,...] [--from GEN=FILE ...] [--bench] [--build DIR] [EXAMPLE ...]
 
 Every example program (examples/NNN-name/main.cpp, built as build/example_NNN_name) prints its
 tables between marker lines
@@ -17,7 +17,7 @@ differs, when a program prints a section that no doc holds, or when a doc holds 
 program printed. Columns named in `machine-dependent:` (timings) are not compared. The columns
 that ROUNDING below names for a section hold numbers whose last printed digit depends on how the
 build rounds (FMA contraction with -march=native against the portable build,
-docs/performance_measurements.md, section 2): there each number may differ from the documented
+docs/performance_measurements.md, "Kernels"): there each number may differ from the documented
 one by one unit of its last printed digit (1.000001 against 1.000002; -0.0000 against 0.0000), and
 a bound "< 1eK" (examples/common/generated.h, order_bound) by one power of ten; the text around
 the numbers must be the same. Anything more is a difference.
@@ -26,6 +26,13 @@ Heavy tables: sections whose name ends in "-full" are printed only when the prog
 extra arguments of FULL_ARGS (minutes, not for CI). `--full` runs those programs with them and
 rewrites (or, with --check, compares) the "-full" sections too; without it they are left as they
 are and not compared.
+
+Measurement scripts: sections whose name starts with "GEN-" for a generator GEN of GENERATORS
+below are printed by a script that runs for minutes (benchmarks, Surface Evolver, sweeps), not
+by an example. `--run GEN` runs it (`--bench` is `--run bench`; `--from GEN=FILE` takes a saved
+output of it instead) and rewrites its sections whenever it runs; otherwise they are left as they
+are, and the check only requires that the docs hold exactly the sections that the script's
+`--list` names. Their numbers are this machine's measurements: nothing in them is compared.
 
 Stamp: a doc that holds a line starting with "Stamp:" (the measurement pages,
 docs/*_measurements.md) gets that line rewritten to the commit and the machine whenever this script
@@ -71,7 +78,7 @@ def is_full(name):
 
 
 # The columns of a section whose numbers are rounding-dependent in their last printed digit,
-# measured against a -march=native build (docs/performance_measurements.md, section 2).
+# measured against a -march=native build (docs/performance_measurements.md, "Kernels").
 ROUNDING = {
     "cmc-fig2-jobs": ["H mean"],  # -0.0000 portable, 0.0000 native (H = 0)
     # square n = 16: H min 0.999999 / 1.000000, |H_mean - 1| 3.3e-08 / 3.2e-08 (portable / native)
@@ -209,13 +216,45 @@ def run(example, build, tmp, full=False):
     return blocks(r.stdout.splitlines(keepends=True), program.name)
 
 
+# Measurement scripts (GEN: the script and its arguments; {build}: the build folder). Each prints
+# sections named "GEN-..." and lists their names with --list.
+GENERATORS = {
+    "bench": ["scripts/bench_tables.py", "{build}/bpde_bench"],
+}
+
+
+def generated_sections(gen, a, build):
+    """({name: (keys, lines)} printed by generator gen when it runs (--run / --from), else {};
+    the names its --list gives)."""
+    script, *args = GENERATORS[gen]
+    names = subprocess.run([sys.executable, str(ROOT / script), "--list"], check=True, capture_output=True,
+                           text=True).stdout.split()
+    saved = dict(f.split("=", 1) for f in a.saved)
+    if gen in saved:
+        text = pathlib.Path(saved[gen]).read_text(encoding="utf-8")
+    elif gen in a.run:
+        cmd = [sys.executable, str(ROOT / script)] + [x.format(build=build) for x in args]
+        text = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True).stdout
+    else:
+        return {}, names
+    return blocks(text.splitlines(keepends=True), script), names
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
     ap.add_argument("--full", action="store_true", help="also the heavy (-full) sections of FULL_ARGS (minutes)")
+    ap.add_argument("--run", default="", help="comma-separated measurement scripts to run (GENERATORS; minutes)")
+    ap.add_argument("--bench", action="store_true", help="the same as --run bench")
+    ap.add_argument("--from", dest="saved", action="append", default=[], metavar="GEN=FILE",
+                    help="a measurement script's sections from its saved output")
     ap.add_argument("--build", default=str(ROOT / "build"), help="build folder with the example programs")
     ap.add_argument("examples", nargs="*", help="example folder names (default: all)")
     a = ap.parse_args()
+    a.run = set(filter(None, a.run.split(","))) | ({"bench"} if a.bench else set())
+    unknown = (a.run | {f.split("=", 1)[0] for f in a.saved}) - set(GENERATORS)
+    if unknown:
+        sys.exit(f"no measurement script {', '.join(sorted(unknown))} (GENERATORS: {', '.join(GENERATORS)})")
     build = pathlib.Path(a.build)
     examples = a.examples or sorted(p.parent.name for p in (ROOT / "examples").glob("*/main.cpp"))
 
@@ -227,6 +266,15 @@ def main():
                 if name in printed:
                     sys.exit(f"section {name} is printed by {printed[name][0]} and {e}")
                 printed[name] = (e, cols, body)
+
+    measured, idle = set(), set()  # sections of measurement scripts that ran / did not run
+    for gen in GENERATORS:
+        sections, names = generated_sections(gen, a, build)
+        for name, (cols, body) in sections.items():
+            printed[name] = (GENERATORS[gen][0], cols, body)
+            measured.add(name)
+        if not sections:
+            idle |= set(names)
 
     problems, placed = [], set()
     for doc in docs:
@@ -241,14 +289,16 @@ def main():
                 name = m.group(1)
                 e, keys, body = printed[name]
                 placed.add(name)
-                same = same_section(held[name][1], body, keys)
-                if not same:
+                same = name not in measured and same_section(held[name][1], body, keys)
+                if not same and name not in measured:
                     problems.append(f"{doc.relative_to(ROOT)}: section {name} differs from what "
                                     f"example_{e} prints (regenerate: bash scripts/docs.sh)")
                 new.append(line)
                 new.extend(held[name][1] if same else body)  # same up to timings and rounding: left as it is
                 continue
-            if m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
+            if m and m.group(1) in idle:
+                placed.add(m.group(1))  # a measurement script's table, not run: left as it is
+            elif m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
                 problems.append(f"{doc.relative_to(ROOT)}: section {m.group(1)} is printed by no example program")
             if name is not None:
                 if line.strip() == END:
@@ -260,9 +310,12 @@ def main():
             new = [stamp_line() if line.startswith(STAMP) else line for line in new]
             doc.write_text("".join(new), encoding="utf-8")
             print(f"docs: rewrote {doc.relative_to(ROOT)}")
+    for name in idle:
+        if name not in placed and a.examples == []:
+            problems.append(f"a measurement script prints section {name}, which no doc holds")
     for name, (e, _, _) in printed.items():
         if name not in placed:
-            problems.append(f"example_{e} prints section {name}, which no doc holds")
+            problems.append(f"{e} prints section {name}, which no doc holds")
     if a.check:
         for p in problems:
             print("FAIL", p)

@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 # The suite runs on build/ configured exactly as scripts/build.sh configures it (native,
 # -march=native, unless BPDE_NATIVE=OFF; shared unless BPDE_SHARED_LIBS=OFF), so running one
 # after the other rebuilds nothing. It passes on the native and on the portable build: its
-# tolerances were measured on both (docs/performance_measurements.md, section 2).
+# tolerances were measured on both (docs/performance_measurements.md, "Kernels").
 bash scripts/build.sh
 # Every tier: unit, integration and slow (tests/tiers.cmake). The inner loop while editing is
 # `ctest --test-dir build -L unit -j2` (under 2 minutes on 2 cores); `-LE slow` adds the integration tests.

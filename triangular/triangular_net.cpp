@@ -121,7 +121,7 @@ TriangularNet TriangularNet::elevated(int r) const {
 
 // Column by column: each column B_I is contiguous over the points, so the products vectorise over
 // them (the row-by-row fill wrote with a stride of #uv: 3-5x slower at n = 6 ... 16 and 8x in the
-// 1024-row blocks of the report's area, docs/performance_measurements.md, section 11). Same products in the
+// 1024-row blocks of the report's area, docs/performance_measurements.md, "Design decisions"). Same products in the
 // same order, so the same numbers: coefficient * u^i * v^j * w^k.
 Eigen::MatrixXd TriangularNet::basis_matrix(int n, const Eigen::MatrixX2d& uv) {
   const Eigen::Index S = uv.rows();

@@ -347,7 +347,7 @@ namespace {
 // error, up to cond x 1e-16, applies to a correction that is itself ~1e-12 of the net). It used to
 // compute the residual in binary128 and correct all three coordinates 3 times by long-double
 // Householder solves whenever any residual exceeded 1e-12: 74-119x the explicit route from n = 16.
-// What it buys is measured in docs/performance_measurements.md ("Tetraharmonic lu").
+// What it buys is measured in docs/performance_measurements.md ("Tetraharmonic and the plate").
 constexpr double kRefineAbove = 1e-12;
 constexpr double kRefineTo = 1e-16;
 

@@ -4,7 +4,7 @@
 // Jacobian is the exact Hessian of A_H by quadrature. All 3k residuals and the 3k unknowns form ONE residual block on ONE parameter
 // block, so Ceres sees the dense Jacobian as it is (one copy per evaluation) instead of k^2 small
 // 3x3 blocks, and solves the LM step with a dense solver (kLinearSolver below; measured in
-// docs/performance_measurements.md, "Ceres CMC route"). Ceres runs single-threaded here.
+// docs/performance_measurements.md, "CMC solvers (D_H)"). Ceres runs single-threaded here.
 #include "bezierpde/core/eigen.h"
 #include <ceres/ceres.h>
 
@@ -22,7 +22,7 @@ namespace {
 // DENSE_NORMAL_CHOLESKY: the LM step from J^T J + D by a dense Cholesky (Eigen), a third of the
 // flops of DENSE_QR on the augmented 6k x 3k matrix. It squares the conditioning of the Bernstein
 // Hessian, which costs at most an extra LM iteration at the degrees of the tests; measured against
-// DENSE_QR in docs/performance_measurements.md ("Ceres CMC route").
+// DENSE_QR in docs/performance_measurements.md ("CMC solvers (D_H)").
 constexpr ceres::LinearSolverType kLinearSolver = ceres::DENSE_NORMAL_CHOLESKY;
 
 // The stopping test of the callback: the residual of eq. (11) as the newton corrector computes it

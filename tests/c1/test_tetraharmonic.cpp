@@ -58,7 +58,7 @@ TEST(Tetraharmonic, RecoversExactPolynomialBothMethods) {
   // lu at n = 16: the relative residual of G·data (9.9e-13 portable, 9.7e-13 with -march=native)
   // stays just under the 1e-12 above which solve_tetraharmonic refines, so the error is that of
   // the unrefined product, whose rounding depends on FMA contraction: 1.26e-9 portable, 3.85e-9
-  // native (docs/performance.md, section 2). 6e-9 is 1.6x the larger and below twice it.
+  // native (docs/performance.md, "The native build"). 6e-9 is 1.6x the larger and below twice it.
   const double tol_lu[] = {0,     0,     0,     0,     1e-15, 1e-14, 1e-14, 1e-13, 1e-13,
                            3e-13, 1e-12, 1e-12, 1e-11, 3e-11, 1e-10, 5e-10, 6e-9};
   const double tol_ex[] = {0,     0,     0,     0,     1e-14, 1e-14, 1e-14, 2e-13, 1e-12,

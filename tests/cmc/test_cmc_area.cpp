@@ -688,7 +688,7 @@ TEST(CmcArea, StalledMinimalSurfaceIsReportedAsANumericalLimit) {
 // extremal nearly folds at a corner: its rule is the graded q = 64 and misses its tolerance there
 // (1.7e-4). The rule is chosen again where the final phases start and on their way
 // (area/final_phases.cpp, AreaSolve::finish), so they run on the rule of the surface they reach, the plain
-// q = 26 (measured; 5408 nodes against 32 768, about 6x faster: docs/performance_measurements.md, section 13).
+// q = 26 (measured; 5408 nodes against 32 768, about 6x faster: docs/performance_measurements.md, "Design decisions").
 // Before, the whole solve kept q = 64. It converges since the trust-region part of the soft-mode
 // phase (2.9e-12 in 8.9 s); before, it ended at the numerical limit 2.6e-11 (mean-curvature-start's;
 // 9.1e-11 before that, where mean-curvature-start gave up on the start's rule).

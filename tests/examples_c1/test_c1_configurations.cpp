@@ -69,7 +69,7 @@ TEST(C1Configurations, JobFilesAreTheDocumentedConfigurations) {
       // The closed-form configurations agree to 1e-15 in both builds. sphere-fig6 is a tensor
       // interpolant (two LU solves of the degree-7 collocation matrix, configurations.h), whose
       // rounding depends on FMA contraction: the files (written by a portable build) match it
-      // exactly there and to 2.0e-14 with -march=native (docs/performance.md, section 2); 3e-14 is
+      // exactly there and to 2.0e-14 with -march=native (docs/performance.md, "The native build"); 3e-14 is
       // 1.5x that, while any change of the configuration itself moves points by far more.
       const double diff = (data.points() - c.net.points()).cwiseAbs().maxCoeff();
       std::cout << c.name << " " << kind << ": job file - configuration " << diff << "\n";
