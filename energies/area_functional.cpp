@@ -15,6 +15,7 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/keyed_cache.h"
 #include "bezierpde/core/quadrature.h"
+#include "bezierpde/energies/patch_assembly.h"
 #include "bezierpde/energies/triangular_gram.h"
 #include "bezierpde/tensor/tensor_net.h"
 #include "bezierpde/triangular/triangular_net.h"
@@ -146,6 +147,11 @@ void AreaForm::check(const Eigen::MatrixX3d& P) const {
 }
 
 double AreaForm::value(const Eigen::MatrixX3d& P) const {
+  if (assembly_) {
+    double A = 0.0;
+    for (int p = 0; p < assembly_->patches(); ++p) A += patch_->value(patch_points(*assembly_, p, P));
+    return A;
+  }
   check(P);
   NodeFrame& f = frame_scratch().f;
   frame_into(Bu_, Bv_, P, f);
@@ -153,6 +159,11 @@ double AreaForm::value(const Eigen::MatrixX3d& P) const {
 }
 
 double AreaForm::min_normal(const Eigen::MatrixX3d& P) const {
+  if (assembly_) {
+    double r = std::numeric_limits<double>::infinity();
+    for (int p = 0; p < assembly_->patches(); ++p) r = std::min(r, patch_->min_normal(patch_points(*assembly_, p, P)));
+    return r;
+  }
   check(P);
   NodeFrame& f = frame_scratch().f;
   frame_into(Bu_, Bv_, P, f);
@@ -172,6 +183,10 @@ Eigen::MatrixX3d AreaForm::gradient(const Eigen::MatrixX3d& P) const {
 
 void AreaForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
                                        Eigen::MatrixX3d* S) const {
+  if (assembly_) {
+    assembled_rows_and_scale(P, idx, G, S);
+    return;
+  }
   check(P);
   for (int I : idx)
     if (I < 0 || I >= size()) throw SizeError("AreaForm: point index out of range");
@@ -221,6 +236,10 @@ void AreaForm::release_scratch() {
 }
 
 Eigen::MatrixXd AreaForm::hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+  if (assembly_)
+    return assembled_hessian_dense(*assembly_, P, idx, [this](const Eigen::MatrixX3d& Pp, const std::vector<int>& l) {
+      return patch_->hessian(Pp, l);
+    });
   check(P);
   for (int I : idx)
     if (I < 0 || I >= size()) throw SizeError("AreaForm: point index out of range");

@@ -55,6 +55,8 @@
 
 namespace bpde {
 
+struct PatchAssembly;
+
 class AreaForm {
  public:
   /// Degree-n triangular nets, q Gauss points per direction on each of the six sub-triangles,
@@ -70,10 +72,19 @@ class AreaForm {
   static std::shared_ptr<const AreaForm> cached_triangular(int n, int q, int grading = 1, int levels = 0);
   static std::shared_ptr<const AreaForm> cached_tensor(int n, int m, int q, int grading = 1, int levels = 0);
 
-  /// Number of control points N.
-  int size() const { return static_cast<int>(Bu_.cols()); }
-  /// Number of quadrature nodes.
-  int nodes() const { return static_cast<int>(w_.size()); }
+  /// A of a surface of several patches (energies/patch_assembly.h): the sum of `patch`'s A over
+  /// the patches of `assembly`, on the #global x 3 points, with patch's rule (q, grading,
+  /// levels). value, gradient and Hessian are the sums of the patch's through the local -> global
+  /// maps; the scale of the gradient rows is the sum of the patches' scales; min_normal is the
+  /// smallest of the patches' (each relative to its own patch's mean |N|).
+  static AreaForm assembled(std::shared_ptr<const AreaForm> patch, std::shared_ptr<const PatchAssembly> assembly);
+  /// The assembly of an assembled form (null for a single patch).
+  const std::shared_ptr<const PatchAssembly>& assembly() const { return assembly_; }
+
+  /// Number of control points N (assembled: the global points).
+  int size() const;
+  /// Number of quadrature nodes (assembled: over all patches).
+  int nodes() const;
   /// Gauss points per direction of each sub-triangle.
   int points_per_direction() const { return q_; }
   /// The grading p of the radial coordinate (1: the plain collapsed rule).
@@ -113,6 +124,11 @@ class AreaForm {
   int levels_ = 0;
   Eigen::VectorXd w_;
   Eigen::MatrixXd Bu_, Bv_;  // #nodes x N: (B_I)_u, (B_I)_v at the nodes
+  // Assembled forms (energies/assembled_forms.cpp): the patch's form and the maps; the tables above empty.
+  std::shared_ptr<const AreaForm> patch_;
+  std::shared_ptr<const PatchAssembly> assembly_;
+  void assembled_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
+                                Eigen::MatrixX3d* S) const;
 };
 
 class TriangularNet;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace bpde {
 namespace {
@@ -29,9 +30,13 @@ constexpr double kGeometricGate = 1e3;
 
 int next_q(int q) { return q + (q + 2) / 3; }
 
-std::shared_ptr<const AreaForm> form_for(bool triangular, int n, int m, int q, int grading, int levels) {
-  return triangular ? AreaForm::cached_triangular(n, q, grading, levels)
-                    : AreaForm::cached_tensor(n, m, q, grading, levels);
+// The patch's rule, assembled over the patches of a complex where `assembly` is given.
+std::shared_ptr<const AreaForm> form_for(bool triangular, int n, int m, int q, int grading, int levels,
+                                         const std::shared_ptr<const PatchAssembly>& assembly) {
+  auto patch = triangular ? AreaForm::cached_triangular(n, q, grading, levels)
+                          : AreaForm::cached_tensor(n, m, q, grading, levels);
+  if (!assembly) return patch;
+  return std::make_shared<const AreaForm>(AreaForm::assembled(std::move(patch), assembly));
 }
 
 double change_between(const AreaForm& a, const AreaForm& b, const Eigen::MatrixX3d& P, const std::vector<int>& idx) {
@@ -55,15 +60,16 @@ double change_between(const AreaForm& a, const AreaForm& b, const Eigen::MatrixX
 // compared with 27; never a rule compared with itself). `stall` (the plain sequence) stops early,
 // ok false, when the change stops falling.
 AreaRule sequence(bool triangular, int n, int m, const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                  double tolerance, int q, int grading, int levels, bool stall) {
+                  double tolerance, int q, int grading, int levels, bool stall,
+                  const std::shared_ptr<const PatchAssembly>& assembly) {
   const int cap = levels > 0 ? kMaxGeometricPoints : kMaxAreaPoints;
   q = std::min(q, cap);
-  std::shared_ptr<const AreaForm> cur = form_for(triangular, n, m, q, grading, levels);
+  std::shared_ptr<const AreaForm> cur = form_for(triangular, n, m, q, grading, levels, assembly);
   AreaRule r;
   double prev = std::numeric_limits<double>::infinity();
   while (true) {
     const int qn = next_q(q);  // may pass the cap: it only measures the error of q
-    std::shared_ptr<const AreaForm> next = form_for(triangular, n, m, qn, grading, levels);
+    std::shared_ptr<const AreaForm> next = form_for(triangular, n, m, qn, grading, levels, assembly);
     r.form = cur;
     r.change = change_between(*cur, *next, P, idx);
     r.ok = r.change <= tolerance;
@@ -71,14 +77,15 @@ AreaRule sequence(bool triangular, int n, int m, const Eigen::MatrixX3d& P, cons
     if (stall && q >= kStallFrom && r.change > kStallRatio * prev) return r;
     prev = r.change;
     q = std::min(qn, cap);
-    cur = form_for(triangular, n, m, q, grading, levels);
+    cur = form_for(triangular, n, m, q, grading, levels, assembly);
   }
 }
 
 }  // namespace
 
 AreaRule choose_area_rule(bool triangular, int n, int m, const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                          double tolerance, int start_q, int start_grading, int start_levels) {
+                          double tolerance, int start_q, int start_grading, int start_levels,
+                          const std::shared_ptr<const PatchAssembly>& assembly) {
   const int deg = std::max(n, m);
   const int q0 = (deg + 1) / 2 + 3;
   // The families in order: plain (0), graded (1), geometric (2); a start refines within its own
@@ -91,9 +98,9 @@ AreaRule choose_area_rule(bool triangular, int n, int m, const Eigen::MatrixX3d&
     const int q = f == f0 && start_q > 0 ? start_q : f == 2 ? kGeometricQ0 : q0;
     // The plain rule stalls (a nearly degenerate corner) or misses at the cap: the graded
     // sequence; where that misses too, the geometric one.
-    const AreaRule r = f == 0   ? sequence(triangular, n, m, P, idx, tolerance, q, 1, 0, true)
-                       : f == 1 ? sequence(triangular, n, m, P, idx, tolerance, q, kGrading, 0, false)
-                                : sequence(triangular, n, m, P, idx, tolerance, q, 1, kGeometricLevels, false);
+    const AreaRule r = f == 0   ? sequence(triangular, n, m, P, idx, tolerance, q, 1, 0, true, assembly)
+                       : f == 1 ? sequence(triangular, n, m, P, idx, tolerance, q, kGrading, 0, false, assembly)
+                                : sequence(triangular, n, m, P, idx, tolerance, q, 1, kGeometricLevels, false, assembly);
     if (r.ok) return r;
     // Not met: the later family unless an earlier one measured a smaller change (as before the
     // geometric rules: the graded rule kept unless the plain one was better).

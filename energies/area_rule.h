@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "bezierpde/energies/area_functional.h"
+#include "bezierpde/energies/patch_assembly.h"
 
 namespace bpde {
 
@@ -40,8 +41,11 @@ struct AreaRule {
 
 /// kind: true for triangular (degree n), false for tensor (n, m). `start_q` > 0 starts the
 /// sequence there, in the family of `start_grading` and `start_levels`, instead of q_0 (to check,
-/// and refine, a rule already in use).
+/// and refine, a rule already in use). With `assembly` (a surface of several patches of that kind
+/// and degree, energies/patch_assembly.h) the rules are the patch's rules assembled over its
+/// patches, P and idx global.
 AreaRule choose_area_rule(bool triangular, int n, int m, const Eigen::MatrixX3d& P, const std::vector<int>& idx,
-                          double tolerance, int start_q = 0, int start_grading = 1, int start_levels = 0);
+                          double tolerance, int start_q = 0, int start_grading = 1, int start_levels = 0,
+                          const std::shared_ptr<const PatchAssembly>& assembly = nullptr);
 
 }  // namespace bpde

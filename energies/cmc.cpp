@@ -11,6 +11,7 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/core/keyed_cache.h"
 #include "bezierpde/core/kron.h"
+#include "bezierpde/energies/patch_assembly.h"
 #include "bezierpde/energies/triangular_gram.h"
 #include "bezierpde/tensor/tensor_net.h"
 #include "bezierpde/triangular/triangular_net.h"
@@ -53,6 +54,16 @@ std::shared_ptr<const CmcFunctional> CmcFunctional::cached_triangular(int n) {
 std::shared_ptr<const CmcFunctional> CmcFunctional::cached_tensor(int n, int m) {
   static KeyedCache<std::pair<int, int>, CmcFunctional> cache(kFunctionalCacheSize);
   return cache.get({n, m}, [](const std::pair<int, int>& d) { return tensor(d.first, d.second); });
+}
+
+CmcFunctional CmcFunctional::assembled(std::shared_ptr<const CmcFunctional> patch,
+                                       std::shared_ptr<const PatchAssembly> assembly) {
+  if (!patch || !assembly) throw ParameterError("CmcFunctional::assembled: needs a patch functional and an assembly");
+  CmcFunctional f;
+  f.volume_ = VolumeForm::assembled(std::shared_ptr<const VolumeForm>(patch, &patch->volume_), assembly);
+  f.gram_ = assembled_matrix(*assembly, patch->gram_);
+  f.abs_gram_ = assembled_matrix(*assembly, patch->abs_gram_);
+  return f;
 }
 
 std::size_t CmcFunctional::memory_bytes() const {

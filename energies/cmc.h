@@ -30,6 +30,7 @@ namespace bpde {
 
 class TriangularNet;
 class TensorNet;
+struct PatchAssembly;
 
 class CmcFunctional {
  public:
@@ -40,6 +41,13 @@ class CmcFunctional {
   /// Shared, cached instances (thread-safe; the 16 most recently used degrees are kept).
   static std::shared_ptr<const CmcFunctional> cached_triangular(int n);
   static std::shared_ptr<const CmcFunctional> cached_tensor(int n, int m);
+  /// D_H of a surface of several patches (energies/patch_assembly.h) on its #global x 3 points:
+  /// the Gram is the patch's summed through the local -> global maps (dense, #global x #global),
+  /// the volume form VolumeForm::assembled; every method below then holds for the complex, with
+  /// point indices and rows global. The residual's term sizes use the summed |C| of the patches.
+  static CmcFunctional assembled(std::shared_ptr<const CmcFunctional> patch, std::shared_ptr<const PatchAssembly> assembly);
+  /// The assembly of an assembled functional (null for a single patch).
+  const std::shared_ptr<const PatchAssembly>& assembly() const { return volume_.assembly(); }
 
   int size() const { return static_cast<int>(gram_.rows()); }
   /// Dirichlet Gram C (N x N): D = 1/2 sum_c P_c^T C P_c. Triangular: eq. (2)–(4); tensor:

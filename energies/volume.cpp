@@ -102,6 +102,7 @@ void VolumeForm::check(const Eigen::MatrixX3d& P) const {
 }
 
 double VolumeForm::value(const Eigen::MatrixX3d& P) const {
+  if (assembly_) return assembled_value(P, false);
   check(P);
   const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d N = cross_rows(Xu, Xv);
@@ -109,6 +110,7 @@ double VolumeForm::value(const Eigen::MatrixX3d& P) const {
 }
 
 double VolumeForm::value_scale(const Eigen::MatrixX3d& P) const {
+  if (assembly_) return assembled_value(P, true);
   check(P);
   const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d N = cross_rows(Xu, Xv);
@@ -116,6 +118,7 @@ double VolumeForm::value_scale(const Eigen::MatrixX3d& P) const {
 }
 
 Eigen::MatrixX3d VolumeForm::gradient(const Eigen::MatrixX3d& P) const {
+  if (assembly_) return assembled_gradient(P, false);
   check(P);
   const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d a = w_.asDiagonal() * cross_rows(Xv, X);
@@ -125,6 +128,7 @@ Eigen::MatrixX3d VolumeForm::gradient(const Eigen::MatrixX3d& P) const {
 }
 
 Eigen::MatrixX3d VolumeForm::gradient_scale(const Eigen::MatrixX3d& P) const {
+  if (assembly_) return assembled_gradient(P, true);
   check(P);
   const Eigen::MatrixX3d X = times(B_, P), Xu = times(Bu_, P), Xv = times(Bv_, P);
   const Eigen::MatrixX3d a = w_.asDiagonal() * cross_rows(Xv, X).cwiseAbs();
@@ -142,6 +146,7 @@ bool VolumeForm::all_interior(const std::vector<int>& idx) const {
 }
 
 Eigen::MatrixXd VolumeForm::hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+  if (assembly_) return assembled_hessian(P, idx, false);
   check(P);
   if (all_interior(idx)) return triangular_ ? hessian_interior_triangular(P, idx) : hessian_interior_tensor(P, idx);
   return hessian_quadrature(P, idx);
@@ -248,6 +253,10 @@ Eigen::MatrixXd VolumeForm::hessian_interior_tensor(const Eigen::MatrixX3d& P, c
 
 void VolumeForm::gradient_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
                                          Eigen::MatrixX3d* S) const {
+  if (assembly_) {
+    assembled_rows_and_scale(P, idx, G, S);
+    return;
+  }
   check(P);
   if (all_interior(idx)) {
     const Eigen::MatrixX3d N = cross_rows(times(Bu_, P), times(Bv_, P));
@@ -279,6 +288,7 @@ Eigen::MatrixX3d VolumeForm::gradient_scale_rows(const Eigen::MatrixX3d& P, cons
 }
 
 Eigen::MatrixXd VolumeForm::hessian_quadrature(const Eigen::MatrixX3d& P, const std::vector<int>& idx) const {
+  if (assembly_) return assembled_hessian(P, idx, true);
   check(P);
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   const Eigen::Index q = w_.size();

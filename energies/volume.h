@@ -30,12 +30,14 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace bpde {
 
 class TriangularNet;
 class TensorNet;
+struct PatchAssembly;
 
 class VolumeForm {
  public:
@@ -43,11 +45,19 @@ class VolumeForm {
   static VolumeForm triangular(int n);
   /// Degree-(n,m) tensor nets.
   static VolumeForm tensor(int n, int m);
+  /// V of a surface of several patches (energies/patch_assembly.h): the sum of `patch`'s V over
+  /// the patches of `assembly`, on the #global x 3 points; every method below is the sum of the
+  /// patch's through the local -> global maps (gradient rows and Hessian blocks of shared points
+  /// add up). For a closed-up disc the sum is the volume of the cone from the origin over the
+  /// whole surface, as for one patch. The node tables (weights(), basis(), ...) are the patch's.
+  static VolumeForm assembled(std::shared_ptr<const VolumeForm> patch, std::shared_ptr<const PatchAssembly> assembly);
+  /// The assembly of an assembled form (null for a single patch).
+  const std::shared_ptr<const PatchAssembly>& assembly() const { return assembly_; }
 
-  /// Number of control points N.
-  int size() const { return static_cast<int>(B_.cols()); }
-  /// Number of quadrature nodes.
-  int nodes() const { return static_cast<int>(w_.size()); }
+  /// Number of control points N (assembled: the global points).
+  int size() const;
+  /// Number of quadrature nodes (assembled: over all patches).
+  int nodes() const;
   /// Bytes held by the tables.
   std::size_t memory_bytes() const;
 
@@ -78,7 +88,8 @@ class VolumeForm {
                                Eigen::MatrixX3d* S) const;
   /// True when B_I vanishes on the boundary of the domain (triangular: every index >= 1;
   /// tensor: 1 <= i <= n-1 and 1 <= j <= m-1).
-  bool interior(int I) const { return interior_[static_cast<std::size_t>(I)] != 0; }
+  /// Always false for an assembled form.
+  bool interior(int I) const { return !assembly_ && interior_[static_cast<std::size_t>(I)] != 0; }
 
   /// Quadrature nodes' data, for callers that evaluate other integrands on the same rule.
   const Eigen::VectorXd& weights() const { return w_; }
@@ -102,6 +113,14 @@ class VolumeForm {
   Eigen::MatrixXd Du_, Dv_, Mt_;
   Eigen::VectorXd mult_n_, mult_n1_, mult_2n1_;
   Eigen::MatrixXd Mu1_, Mv1_, Mu2_, Mv2_;
+  // Assembled forms (energies/assembled_forms.cpp): the patch's form and the maps; the tables above empty.
+  std::shared_ptr<const VolumeForm> patch_;
+  std::shared_ptr<const PatchAssembly> assembly_;
+  double assembled_value(const Eigen::MatrixX3d& P, bool scale) const;
+  Eigen::MatrixX3d assembled_gradient(const Eigen::MatrixX3d& P, bool scale) const;
+  Eigen::MatrixXd assembled_hessian(const Eigen::MatrixX3d& P, const std::vector<int>& idx, bool quadrature) const;
+  void assembled_rows_and_scale(const Eigen::MatrixX3d& P, const std::vector<int>& idx, Eigen::MatrixX3d* G,
+                                Eigen::MatrixX3d* S) const;
 };
 
 /// V = 1/3 ∫ <x_u ∧ x_v, x>, exact from the control net.

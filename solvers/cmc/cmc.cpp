@@ -14,6 +14,7 @@
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/solvers/cmc/area/area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/cmc/complex_net.h"
 #include "bezierpde/solvers/summary.h"
 
 namespace bpde {
@@ -380,6 +381,9 @@ CmcResult<TriangularNet> solve_cmc(const TriangularNet& data, const CmcOptions& 
   return cmc_detail::solve_impl(data, options);
 }
 CmcResult<TensorNet> solve_cmc(const TensorNet& data, const CmcOptions& options) {
+  return cmc_detail::solve_impl(data, options);
+}
+CmcResult<ComplexNet> solve_cmc(const ComplexNet& data, const CmcOptions& options) {
   return cmc_detail::solve_impl(data, options);
 }
 TriangularNet dirichlet_extremal(const TriangularNet& data, FixedSet fixed) {

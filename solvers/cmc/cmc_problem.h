@@ -13,6 +13,10 @@
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 
+namespace bpde {
+class ComplexNet;  // solvers/cmc/complex_net.h
+}
+
 namespace bpde::cmc_detail {
 
 /// x in a solver message: %g with `digits` significant digits, and 0 for -0.
@@ -96,10 +100,13 @@ double multiplier(const CmcProblem& p);
 std::string fold_message(double h, bool gram_singular);
 void check_degree(const TriangularNet& net, FixedSet fixed);
 void check_degree(const TensorNet& net, FixedSet fixed);
+void check_degree(const ComplexNet& net, FixedSet fixed);
 std::shared_ptr<const CmcFunctional> functional_for(const TriangularNet& net);
 std::shared_ptr<const CmcFunctional> functional_for(const TensorNet& net);
+std::shared_ptr<const CmcFunctional> functional_for(const ComplexNet& net);
 TriangularNet make_net(const TriangularNet& data, const Eigen::MatrixX3d& P);
 TensorNet make_net(const TensorNet& data, const Eigen::MatrixX3d& P);
+ComplexNet make_net(const ComplexNet& data, const Eigen::MatrixX3d& P);
 
 // Dirichlet extremal into p.P (Cholesky, or pivoted LDL^T when rounding makes the Bernstein Gram
 // indefinite). Returns the factor used for the tangent at H = 0 and a Cholesky factor L of the
@@ -180,5 +187,6 @@ class StepController {
 /// The area functional (cmc.h, "The area functional"; area/driver.cpp). options are validated.
 CmcResult<TriangularNet> solve_area(const TriangularNet& data, const CmcOptions& options);
 CmcResult<TensorNet> solve_area(const TensorNet& data, const CmcOptions& options);
+CmcResult<ComplexNet> solve_area(const ComplexNet& data, const CmcOptions& options);
 
 }  // namespace bpde::cmc_detail

@@ -139,12 +139,16 @@ inline ParametrisationCheck parametrisation_check(const Regularity& r) {
 }
 Regularity regularity(const TriangularNet& net, double A);
 Regularity regularity(const TensorNet& net, double A);
+/// A complex (complex_net.h): the patches' verdicts, each patch on its own grid with its own area
+/// (A unused); ok when every patch is.
+Regularity regularity(const ComplexNet& net, double A);
 /// The verdict on a result: regularity() and, where that is ok, folds inside the corner margins
 /// (rays from each corner down to 3e-6 of the edge; the normal must not turn over). Not used
 /// between the routes of a solve: a fold at a corner whose boundary angle is reflex is in every
 /// net with those edges, so it cannot choose between them.
 Regularity final_regularity(const TriangularNet& net, double A);
 Regularity final_regularity(const TensorNet& net, double A);
+Regularity final_regularity(const ComplexNet& net, double A);
 /// max over the samples (a/10, b/10) of the domain, without the corners (the regularity test's
 /// margin 0.05), of |<x_b − x_a, N_a>|, N_a the unit normal of a: how far surface b lies from
 /// surface a along a's normals (the branch test of the area's H and V continuations, regularity.cpp). A motion of
@@ -153,10 +157,15 @@ Regularity final_regularity(const TensorNet& net, double A);
 /// order. +inf where a's normal vanishes at a sample. a and b of the same degree.
 double normal_gap(const TriangularNet& a, const TriangularNet& b);
 double normal_gap(const TensorNet& a, const TensorNet& b);
+/// A complex: the largest of the patches'.
+double normal_gap(const ComplexNet& a, const ComplexNet& b);
 
 /// The least-squares mean-curvature functional (cmc.h; cmc_mean_curvature.cpp). options are validated.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options);
+/// Not defined on complexes: throws UnsupportedProblem (the area solve does not try
+/// mean-curvature-start there, driver.cpp).
+CmcResult<ComplexNet> solve_mean_curvature(const ComplexNet& data, const CmcOptions& options);
 /// The same from the D start already solved (`dirichlet`: solve_cmc of data with options' H and V,
 /// functional dirichlet, solver newton in the H form and nlopt in the V form), taken instead of
 /// solving it again (the area functional solves it before mean-curvature-start); null: solved here.
@@ -164,6 +173,8 @@ CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const C
                                               const CmcResult<TriangularNet>* dirichlet);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
                                           const CmcResult<TensorNet>* dirichlet);
+CmcResult<ComplexNet> solve_mean_curvature(const ComplexNet& data, const CmcOptions& options,
+                                           const CmcResult<ComplexNet>* dirichlet);
 
 /// Ceres LM on the residual blocks ∇A_H (cmc_ceres.cpp).
 CorrectorStats ceres_correct(AreaProblem& p, double H, const CmcOptions& o);

@@ -30,7 +30,7 @@ const CmcResult<Net>& AreaSolve<Net>::dirichlet_solution(double H, const double*
 template <class Net>
 bool AreaSolve<Net>::choose_rule_for(double tol, int start_q, int start_grading, int start_levels) {
   const AreaRule r = choose_area_rule(tri, n, m, p.P(), p.base.free, kRuleToleranceFactor * tol, start_q,
-                                      start_grading, start_levels);
+                                      start_grading, start_levels, p.base.f->assembly());
   p.a = r.form;
   rule_change = r.change;
   return r.ok;
@@ -154,5 +154,6 @@ double AreaSolve<Net>::dirichlet_first_variation(const double* V0) {
   template double AreaSolve<Net>::dirichlet_first_variation(const double*);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

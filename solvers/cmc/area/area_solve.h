@@ -9,7 +9,8 @@
 // Conventions: H is the mean curvature of the result (CmcOptions); "residual" and "first
 // variation" are relative (AreaProblem::residual_at); the V form's residual also holds
 // |V − V0| over the volume's scale (vresidual). Members are explicitly instantiated for
-// TriangularNet and TensorNet in the file that defines them.
+// TriangularNet, TensorNet and ComplexNet (a surface of several patches, complex_net.h) in the
+// file that defines them.
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <functional>
@@ -25,12 +26,19 @@
 #include "bezierpde/solvers/cmc/area/tuning.h"
 #include "bezierpde/solvers/cmc/area_route.h"
 #include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/complex_net.h"
 #include "bezierpde/solvers/summary.h"
 
 namespace bpde::cmc_detail::area_impl {
 
 inline bool is_triangular(const TriangularNet&) { return true; }
 inline bool is_triangular(const TensorNet&) { return false; }
+inline bool is_triangular(const ComplexNet& c) { return c.triangular(); }
+/// Whether mean-curvature-start can run: the least squares of the mean curvature is defined on
+/// single patches.
+inline bool has_mean_curvature_start(const TriangularNet&) { return true; }
+inline bool has_mean_curvature_start(const TensorNet&) { return true; }
+inline bool has_mean_curvature_start(const ComplexNet&) { return false; }
 
 /// How a route ended: H reached, whether it produced a point (ok; possibly above the tolerance,
 /// a numerical limit), why not, and its own words.

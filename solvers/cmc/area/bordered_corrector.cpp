@@ -82,5 +82,6 @@ CorrectorStats AreaSolve<Net>::bordered_correct(double V0, double& H, double tol
   template CorrectorStats AreaSolve<Net>::bordered_correct(double, double&, double, int);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

@@ -145,6 +145,13 @@ struct Driver {
   /// The gate of mean-curvature-start: not tried where the D_H point already nearly is a critical
   /// point of A_H (conformal data).
   bool gate_mean_curvature_start() {
+    if (!has_mean_curvature_start(s.data)) {
+      AreaRouteRecord rec;
+      rec.route = AreaRoute::MeanCurvatureStart;
+      rec.why = "the least squares of the mean curvature is defined on single patches";
+      log().records.push_back(rec);
+      return false;
+    }
     const double r = s.dirichlet_first_variation(V0);
     if (r > kConformalFirstVariation) return true;
     AreaRouteRecord rec;
@@ -319,6 +326,9 @@ CmcResult<TriangularNet> solve_area(const TriangularNet& data, const CmcOptions&
   return area_impl::solve(data, options);
 }
 CmcResult<TensorNet> solve_area(const TensorNet& data, const CmcOptions& options) {
+  return area_impl::solve(data, options);
+}
+CmcResult<ComplexNet> solve_area(const ComplexNet& data, const CmcOptions& options) {
   return area_impl::solve(data, options);
 }
 

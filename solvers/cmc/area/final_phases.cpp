@@ -127,5 +127,6 @@ bool AreaSolve<Net>::minimal_surface(double tol) {
   template bool AreaSolve<Net>::minimal_surface(double);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

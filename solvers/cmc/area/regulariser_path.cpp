@@ -161,5 +161,6 @@ CmcOptions AreaSolve<Net>::stage_options(double e) const {
   template CmcOptions AreaSolve<Net>::stage_options(double) const;
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

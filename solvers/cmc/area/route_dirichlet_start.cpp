@@ -50,5 +50,6 @@ bool AreaSolve<Net>::from_dirichlet(double H, std::string& note) {
   template bool AreaSolve<Net>::from_dirichlet(double, std::string&);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

@@ -48,5 +48,6 @@ AreaOutcome AreaSolve<Net>::from_dirichlet_volume(double V0) {
   template AreaOutcome AreaSolve<Net>::from_dirichlet_volume(double);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

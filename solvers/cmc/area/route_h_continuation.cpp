@@ -94,5 +94,6 @@ AreaOutcome AreaSolve<Net>::continuation(const Eigen::MatrixX3d& start, const st
   template AreaOutcome AreaSolve<Net>::continuation(const Eigen::MatrixX3d&, const std::vector<int>&, int&);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

@@ -129,5 +129,6 @@ bool AreaSolve<Net>::from_mean_curvature(const double* V0, double& H, std::strin
   template bool AreaSolve<Net>::from_mean_curvature(const double*, double&, std::string&, int&);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

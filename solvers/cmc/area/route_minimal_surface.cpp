@@ -26,5 +26,6 @@ AreaOutcome AreaSolve<Net>::minimal_surface_route() {
 #define BPDE_INSTANTIATE(Net) template AreaOutcome AreaSolve<Net>::minimal_surface_route();
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

@@ -59,5 +59,6 @@ AreaOutcome AreaSolve<Net>::volume_continuation_from_smaller(double V0, double V
   template AreaOutcome AreaSolve<Net>::volume_continuation_from_smaller(double, double, int&);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

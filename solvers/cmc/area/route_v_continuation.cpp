@@ -107,5 +107,6 @@ AreaOutcome AreaSolve<Net>::continue_volume(double Vs, double H, double V0, int&
   template AreaOutcome AreaSolve<Net>::continue_volume(double, double, double, int&, double, bool);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl

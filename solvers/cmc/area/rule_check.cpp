@@ -41,5 +41,6 @@ void AreaSolve<Net>::rule_check(AreaOutcome& out) {
 #define BPDE_INSTANTIATE(Net) template void AreaSolve<Net>::rule_check(AreaOutcome&);
 BPDE_INSTANTIATE(TriangularNet)
 BPDE_INSTANTIATE(TensorNet)
+BPDE_INSTANTIATE(ComplexNet)
 
 }  // namespace bpde::cmc_detail::area_impl
