@@ -217,9 +217,14 @@ def run(example, build, tmp, full=False):
 
 
 # Measurement scripts (GEN: the script and its arguments; {build}: the build folder). Each prints
-# sections named "GEN-..." and lists their names with --list.
+# sections named "GEN-..." and lists their names with --list (given after the same arguments).
 GENERATORS = {
-    "bench": ["scripts/bench_tables.py", "{build}/bpde_bench"],
+    "bench": ["scripts/bench_tables.py", "{build}/bpde_bench"],  # minutes
+    "boundary-fit": ["scripts/boundary_fit_table.py", "{build}/bpde"],  # seconds
+    "sample-fit": ["scripts/sample_fit_table.py", "{build}/bpde"],  # seconds
+    "sample-solve": ["scripts/sample_fit_table.py", "--solve", "{build}/bpde"],  # about 25 minutes
+    "boundary-sweep": ["scripts/random_boundary_sweep.py", "{build}/bpde", "7"],  # about 10 minutes
+    "corner-sweep": ["scripts/random_boundary_sweep.py", "--corners", "{build}/bpde", "7"],  # minutes
 }
 
 
@@ -227,13 +232,14 @@ def generated_sections(gen, a, build):
     """({name: (keys, lines)} printed by generator gen when it runs (--run / --from), else {};
     the names its --list gives)."""
     script, *args = GENERATORS[gen]
-    names = subprocess.run([sys.executable, str(ROOT / script), "--list"], check=True, capture_output=True,
-                           text=True).stdout.split()
+    args = [x.format(build=build) for x in args]
+    names = subprocess.run([sys.executable, str(ROOT / script)] + args + ["--list"], check=True,
+                           capture_output=True, text=True).stdout.split()
     saved = dict(f.split("=", 1) for f in a.saved)
     if gen in saved:
         text = pathlib.Path(saved[gen]).read_text(encoding="utf-8")
     elif gen in a.run:
-        cmd = [sys.executable, str(ROOT / script)] + [x.format(build=build) for x in args]
+        cmd = [sys.executable, str(ROOT / script)] + args
         text = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True).stdout
     else:
         return {}, names
