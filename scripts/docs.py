@@ -225,6 +225,7 @@ GENERATORS = {
     "sample-solve": ["scripts/sample_fit_table.py", "--solve", "{build}/bpde"],  # about 25 minutes
     "boundary-sweep": ["scripts/random_boundary_sweep.py", "{build}/bpde", "7"],  # about 10 minutes
     "corner-sweep": ["scripts/random_boundary_sweep.py", "--corners", "{build}/bpde", "7"],  # minutes
+    "pde-accuracy": ["scripts/pde_accuracy_table.py", "{build}/test_pde"],  # seconds
 }
 
 
