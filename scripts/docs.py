@@ -83,6 +83,8 @@ ROUNDING = {
     "cmc-fig2-jobs": ["H mean"],  # -0.0000 portable, 0.0000 native (H = 0)
     # square n = 16: H min 0.999999 / 1.000000, |H_mean - 1| 3.3e-08 / 3.2e-08 (portable / native)
     "cmc-sphere-convergence": ["H min / max", "\\|H_mean − 1\\|"],
+    # the fold as the continuation's step control locates it (4 decimals; not measured portable)
+    "cmc-sphere-fold": ["fold H > 0", "fold H < 0"],
 }
 
 
