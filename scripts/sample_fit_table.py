@@ -7,7 +7,7 @@ form, FORMATS.md "Boundary curves"):
   - corrected: no parameters given (the default: the chord length, corrected to foot points);
   - given: the samples' own angle, mapped onto [0, 1].
 With --solve instead the area functional at H = 0 (the minimal surface spanning the curve) on the
-net of each fit, n = 8, 10, 12, for curve A and a second one (B): status, seconds and the
+net of each fit, n = 8, 10, 12, for curve A and a second one (B): status, CPU seconds and the
 mean-curvature range away from the corners (about 25 minutes).
 The tables are printed as the sections sample-fit-degree and (--solve) sample-solve-area of
 scripts/docs.py (`docs.py --run sample-fit`, `--run sample-solve`); `--list` prints their names.
@@ -17,13 +17,11 @@ python3 scripts/sample_fit_table.py --job CURVE N MODE [PROBLEM-JSON] prints the
 functional at H = 0)."""
 import json
 import math
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
-from sections import list_sections, print_section
+from sections import cpu_run, list_sections, print_section
 
 SOLVE = "--solve" in sys.argv[1:]
 list_sections(["sample-solve-area"] if SOLVE else ["sample-fit-degree"])
@@ -71,9 +69,8 @@ def run(n, mode, problem, name="A"):
     with tempfile.TemporaryDirectory() as d:
         p = Path(d) / "job.json"
         p.write_text(json.dumps(job))
-        t = time.time()
-        rc = subprocess.run([BPDE, "solve", str(p), "--out", str(Path(d) / "out")], capture_output=True).returncode
-        seconds = time.time() - t
+        done, seconds = cpu_run([BPDE, "solve", str(p), "--out", str(Path(d) / "out")])
+        rc = done.returncode
         if rc not in (0, 1):
             sys.exit(f"bpde exited {rc} on n = {n}, {mode}")
         return json.loads((Path(d) / "out" / "result.json").read_text())["report"], seconds

@@ -1,4 +1,6 @@
-"""The section markers of scripts/docs.py, for the measurement scripts of its GENERATORS.
+"""The section markers of scripts/docs.py, for the measurement scripts of its GENERATORS, and the
+CPU time of a child process (what those scripts time, so that other load on the machine does not
+count).
 
 A measurement script prints each of its tables as
 
@@ -9,6 +11,8 @@ A measurement script prints each of its tables as
 and prints the names alone with `--list` (without running anything); docs.py puts the tables into
 the docs where the same markers stand.
 """
+import resource
+import subprocess
 import sys
 
 
@@ -27,3 +31,17 @@ def list_sections(names):
     if "--list" in sys.argv[1:]:
         print("\n".join(names))
         sys.exit(0)
+
+
+def cpu_run(cmd, timeout=None):
+    """Runs cmd (output captured): (CompletedProcess, or None on a timeout; the user + system CPU
+    seconds of the child, resource.getrusage(RUSAGE_CHILDREN) before and after)."""
+    def cpu():
+        r = resource.getrusage(resource.RUSAGE_CHILDREN)
+        return r.ru_utime + r.ru_stime
+    before = cpu()
+    try:
+        done = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        done = None
+    return done, cpu() - before
