@@ -85,6 +85,8 @@ ROUNDING = {
     "cmc-sphere-convergence": ["H min / max", "\\|H_mean − 1\\|"],
     # the fold as the continuation's step control locates it (4 decimals; not measured portable)
     "cmc-sphere-fold": ["fold H > 0", "fold H < 0"],
+    # differences of two quadratures, 2 digits from 1e-13 up (not measured portable)
+    "cmc-area-rule-probe": ["q = 11", "15", "20", "27", "36", "48", "64", "86"],
 }
 
 
