@@ -63,6 +63,7 @@ ARGS = {
     "003-blend-cylinders": ["{tmp}", "{tmp}/out"],
     "004-cmc-c1-triangle": ["{src}", "{tmp}/out"],
     "004-cmc-circle": ["{src}", "{tmp}/out"],
+    "004-cmc-circle-sweep": ["{src}", "{tmp}/out"],
     "004-cmc-fig2": ["{src}", "{tmp}/out"],
     "004-cmc-sphere-convergence": ["{src}", "{tmp}/out"],
 }
@@ -87,6 +88,10 @@ ROUNDING = {
     "cmc-sphere-fold": ["fold H > 0", "fold H < 0"],
     # differences of two quadratures, 2 digits from 1e-13 up (not measured portable)
     "cmc-area-rule-probe": ["q = 11", "15", "20", "27", "36", "48", "64", "86"],
+    # the fold as the continuation locates it, 6 digits; sampled curvature and energies to their
+    # last printed digit (not measured portable)
+    "cmc-circle-sweep-fold": ["H reached", "D_H at that H"],
+    "cmc-circle-sweep-degree-axis": ["H_min", "H_max", "energy"],
 }
 
 
