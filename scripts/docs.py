@@ -236,6 +236,7 @@ GENERATORS = {
     "corner-sweep": ["scripts/random_boundary_sweep.py", "--corners", "{build}/bpde", "7"],  # minutes
     "pde-accuracy": ["scripts/pde_accuracy_table.py", "{build}/test_pde"],  # seconds
     "circle-join": ["scripts/circle_join_table.py", "{build}/bpde"],  # seconds
+    "c1-accuracy": ["scripts/c1_accuracy_table.py", "{build}/test_c1"],  # seconds
     # Surface Evolver (`evolver`, Debian package evolver-nox) against bpde solve; about 15 minutes
     "evolver": ["scripts/evolver_compare.py", "--bpde", "{build}/bpde", "--case", "all",
                 "--degrees", "4,5,6,7,8,9,10,12,14,16", "--linear-levels", "1..8", "--quadratic-levels", "1..8",
