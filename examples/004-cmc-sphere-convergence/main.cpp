@@ -11,8 +11,10 @@
 //      mean-curvature statistics (corners left out, margin 0.1), |H_mean − 1|, solve time;
 //   3. the same for tensor nets (sphere_square);
 //   4. the sign check: H = −1 with the same data does not give the sphere;
-//   5. the fold of the D_H branch from H = 0 (triangular), both signs of H.
+//   5. the fold of the D_H branch from H = 0 (triangular), both signs of H;
+//   6. the memory of the D_H functional per degree (docs/cmc_measurements.md).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -175,6 +177,35 @@ int main(int argc, char** argv) {
     o.H = -10;
     const auto neg = bpde::solve_cmc(bpde::triangular_boundary(n, bpde::sphere_triangle), o);
     std::printf("| %d | %.4f | %.4f |\n", n, pos.H, neg.H);
+  }
+
+  // 6. Memory per degree of the D_H functional (docs/cmc_measurements.md): what CmcFunctional
+  // keeps (Gram and volume tables) against the dense tensor C_IJK, the time to build it (uncached)
+  // and one solve at H = +1 on the sphere data.
+  section.reset();
+  std::printf("\n");
+  section.emplace("cmc-memory", "setup ms, solve ms");
+  std::printf(
+      "| n | points N | free k | nodes | memory MB | dense C_IJK would need, MB | setup ms | solve ms |\n"
+      "|---|---|---|---|---|---|---|---|\n");
+  for (int n : {4, 6, 8, 10, 12, 15, 20, 25}) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bpde::CmcFunctional f = bpde::CmcFunctional::triangular(n);
+    const double setup = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    bpde::CmcOptions o;
+    o.H = 1.0;
+    const auto r = bpde::solve_cmc(bpde::triangular_boundary(n, bpde::sphere_triangle), o);
+    const double N = f.size();
+    std::printf("| %d | %d | %d | %d | %.3g | %.3g | %.1f | %.1f |\n", n, f.size(), (n - 1) * (n - 2) / 2,
+                f.volume_form().nodes(), f.memory_bytes() / 1e6, N * N * N * 8 / 1e6, setup, 1e3 * r.summary.seconds);
+  }
+  section.reset();
+  std::printf("\n");
+  section.emplace("cmc-memory-tensor");
+  std::printf("| n = m | points N | memory MB |\n|---|---|---|\n");
+  for (int n : {4, 10, 15, 20}) {
+    const bpde::CmcFunctional f = bpde::CmcFunctional::tensor(n, n);
+    std::printf("| %d | %d | %.3g |\n", n, f.size(), f.memory_bytes() / 1e6);
   }
   return 0;
 }
