@@ -63,6 +63,7 @@ ARGS = {
     "003-blend-cylinders": ["{tmp}", "{tmp}/out"],
     "004-cmc-c1-triangle": ["{src}", "{tmp}/out"],
     "004-cmc-circle": ["{src}", "{tmp}/out"],
+    "004-cmc-circle-sweep": ["{src}", "{tmp}/out"],
     "004-cmc-fig2": ["{src}", "{tmp}/out"],
     "004-cmc-sphere-convergence": ["{src}", "{tmp}/out"],
 }
@@ -83,6 +84,14 @@ ROUNDING = {
     "cmc-fig2-jobs": ["H mean"],  # -0.0000 portable, 0.0000 native (H = 0)
     # square n = 16: H min 0.999999 / 1.000000, |H_mean - 1| 3.3e-08 / 3.2e-08 (portable / native)
     "cmc-sphere-convergence": ["H min / max", "\\|H_mean − 1\\|"],
+    # the fold as the continuation's step control locates it (4 decimals; not measured portable)
+    "cmc-sphere-fold": ["fold H > 0", "fold H < 0"],
+    # differences of two quadratures, 2 digits from 1e-13 up (not measured portable)
+    "cmc-area-rule-probe": ["q = 11", "15", "20", "27", "36", "48", "64", "86"],
+    # the fold as the continuation locates it, 6 digits; sampled curvature and energies to their
+    # last printed digit (not measured portable)
+    "cmc-circle-sweep-fold": ["H reached", "D_H at that H"],
+    "cmc-circle-sweep-degree-axis": ["H_min", "H_max", "energy"],
 }
 
 
@@ -217,9 +226,21 @@ def run(example, build, tmp, full=False):
 
 
 # Measurement scripts (GEN: the script and its arguments; {build}: the build folder). Each prints
-# sections named "GEN-..." and lists their names with --list.
+# sections named "GEN-..." and lists their names with --list (given after the same arguments).
 GENERATORS = {
-    "bench": ["scripts/bench_tables.py", "{build}/bpde_bench"],
+    "bench": ["scripts/bench_tables.py", "{build}/bpde_bench"],  # minutes
+    "boundary-fit": ["scripts/boundary_fit_table.py", "{build}/bpde"],  # seconds
+    "sample-fit": ["scripts/sample_fit_table.py", "{build}/bpde"],  # seconds
+    "sample-solve": ["scripts/sample_fit_table.py", "--solve", "{build}/bpde"],  # about 25 minutes
+    "boundary-sweep": ["scripts/random_boundary_sweep.py", "{build}/bpde", "7"],  # about 10 minutes
+    "corner-sweep": ["scripts/random_boundary_sweep.py", "--corners", "{build}/bpde", "7"],  # minutes
+    "pde-accuracy": ["scripts/pde_accuracy_table.py", "{build}/test_pde"],  # seconds
+    "circle-join": ["scripts/circle_join_table.py", "{build}/bpde"],  # seconds
+    "c1-accuracy": ["scripts/c1_accuracy_table.py", "{build}/test_c1"],  # seconds
+    # Surface Evolver (`evolver`, Debian package evolver-nox) against bpde solve; about 15 minutes
+    "evolver": ["scripts/evolver_compare.py", "--bpde", "{build}/bpde", "--case", "all",
+                "--degrees", "4,5,6,7,8,9,10,12,14,16", "--linear-levels", "1..8", "--quadratic-levels", "1..8",
+                "--mc-tolerances", "1e-7,1e-8", "--area-dirichlet-start"],
 }
 
 
@@ -227,13 +248,14 @@ def generated_sections(gen, a, build):
     """({name: (keys, lines)} printed by generator gen when it runs (--run / --from), else {};
     the names its --list gives)."""
     script, *args = GENERATORS[gen]
-    names = subprocess.run([sys.executable, str(ROOT / script), "--list"], check=True, capture_output=True,
-                           text=True).stdout.split()
+    args = [x.format(build=build) for x in args]
+    names = subprocess.run([sys.executable, str(ROOT / script)] + args + ["--list"], check=True,
+                           capture_output=True, text=True).stdout.split()
     saved = dict(f.split("=", 1) for f in a.saved)
     if gen in saved:
         text = pathlib.Path(saved[gen]).read_text(encoding="utf-8")
     elif gen in a.run:
-        cmd = [sys.executable, str(ROOT / script)] + [x.format(build=build) for x in args]
+        cmd = [sys.executable, str(ROOT / script)] + args
         text = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True).stdout
     else:
         return {}, names

@@ -8,6 +8,11 @@
                                        [--library build/example_004_cmc_area_tables]
                                        [--mc-tolerances 1e-5,1e-7] [--area-dirichlet-start]
 
+Every table is printed between the section markers of scripts/docs.py (sections
+evolver-CASE-bezierpde, -library, -evolver and -time; `--list` prints the names that the other
+arguments select), so that `python3 scripts/docs.py --run evolver` writes the run of
+docs/cmc_evolver_measurements.md (its arguments are in scripts/docs.py, GENERATORS).
+
 Both programs solve the same problem, a surface of constant mean curvature H with a fixed
 boundary, and the error is the distance to the exact sphere:
 
@@ -491,6 +496,18 @@ def parse_list(text):
     return [int(t) for t in text.split(",") if t]
 
 
+def section_names(case, library):
+    """The sections of scripts/docs.py that one case prints (generator evolver, docs/cmc_evolver_measurements.md)."""
+    return ["evolver-%s-%s" % (case, t) for t in (["bezierpde", "library", "evolver", "time"] if library
+                                                   else ["bezierpde", "evolver", "time"])]
+
+
+def marked(name, table, machine_dependent):
+    """A table between the section markers of scripts/docs.py (the timing columns machine-dependent)."""
+    return "<!-- generated: %s; machine-dependent: %s -->\n%s\n<!-- end -->" % (name, ", ".join(machine_dependent),
+                                                                              table)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--bpde", default="build/bpde")
@@ -512,7 +529,13 @@ def main(argv=None):
                          "without the mean-curvature start), in the same run")
     ap.add_argument("--library", default="build/example_004_cmc_area_tables",
                     help="the example program of the library route")
+    ap.add_argument("--list", action="store_true",
+                    help="print the names of the sections these arguments print (scripts/docs.py) and exit")
     args = ap.parse_args(argv)
+    if args.list:
+        for name in {"circle": ["circle"], "sphere": ["sphere"], "all": ["circle", "sphere"]}[args.case]:
+            print("\n".join(section_names(name, bool(args.tolerances))))
+        return 0
     try:
         tolerances = [float(t) for t in args.tolerances.split(",") if t]
     except ValueError:
@@ -560,16 +583,19 @@ def main(argv=None):
             if case.name == "circle" else []
         erows = [run_evolver(evolver, case, k, False, work) for k in parse_list(args.linear_levels)]
         erows += [run_evolver(evolver, case, k, True, work) for k in parse_list(args.quadratic_levels)]
+        names = dict(zip(["bezierpde", "library", "evolver", "time"] if lrows else ["bezierpde", "evolver", "time"],
+                         section_names(case.name, bool(lrows))))
         print("\n### %s, H = %g (bezierpde)\n" % (case.name, case.H))
-        print(bpde_table(case, brows))
+        print(marked(names["bezierpde"], bpde_table(case, brows), ["CPU s (process)", "solve s (report, wall)"]))
         print()
         if lrows:
             print("\n### %s, H = %g (bezierpde library, by tolerance)\n" % (case.name, case.H))
-            print(library_table(lrows))
+            print(marked(names["library"], library_table(lrows), ["CPU s (process)", "solve s (wall)"]))
             print()
-        print(evolver_table(case, erows))
+        print(marked(names["evolver"], evolver_table(case, erows), ["CPU s"]))
         print()
-        print(time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9], lrows))
+        table = time_to_accuracy(case, brows, erows, [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9], lrows)
+        print(marked(names["time"], table, [c.strip() for c in table.split("\n")[0].strip("|").split("|")][1:]))
         with open(os.path.join(work, "rows-%s.json" % case.name), "w") as f:
             json.dump({"bpde": brows, "library": lrows, "evolver": erows}, f, indent=1)
     print("\nload average at the end %.2f %.2f %.2f" % os.getloadavg())

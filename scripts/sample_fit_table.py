@@ -6,24 +6,27 @@ form, FORMATS.md "Boundary curves"):
   - "chord-length": the normalised chord length, kept (`"parameters": "chord-length"`);
   - corrected: no parameters given (the default: the chord length, corrected to foot points);
   - given: the samples' own angle, mapped onto [0, 1].
-With --solve also the area functional at H = 0 (the minimal surface spanning the curve) on the
-net of each fit, n = 8, 10, 12, for curve A and a second one (B): status, seconds and the
+With --solve instead the area functional at H = 0 (the minimal surface spanning the curve) on the
+net of each fit, n = 8, 10, 12, for curve A and a second one (B): status, CPU seconds and the
 mean-curvature range away from the corners (about 25 minutes).
-Usage: python3 scripts/sample_fit_table.py [--solve] [path/to/bpde]  (default build/bpde);
+The tables are printed as the sections sample-fit-degree and (--solve) sample-solve-area of
+scripts/docs.py (`docs.py --run sample-fit`, `--run sample-solve`); `--list` prints their names.
+Usage: python3 scripts/sample_fit_table.py [--list] [--solve] [path/to/bpde]  (default build/bpde);
 python3 scripts/sample_fit_table.py --job CURVE N MODE [PROBLEM-JSON] prints the job of one case
 (CURVE A or B; MODE chord-length, corrected or given; the problem defaults to the area
 functional at H = 0)."""
 import json
 import math
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
+from sections import cpu_run, list_sections, print_section
+
+SOLVE = "--solve" in sys.argv[1:]
+list_sections(["sample-solve-area"] if SOLVE else ["sample-fit-degree"])
 args = [a for a in sys.argv[1:] if a != "--solve"]
 args = [] if "--job" in sys.argv[1:] else args
-SOLVE = "--solve" in sys.argv[1:]
 BPDE = args[0] if args else "build/bpde"
 K = 60  # samples per edge: K + 1 points
 
@@ -66,9 +69,8 @@ def run(n, mode, problem, name="A"):
     with tempfile.TemporaryDirectory() as d:
         p = Path(d) / "job.json"
         p.write_text(json.dumps(job))
-        t = time.time()
-        rc = subprocess.run([BPDE, "solve", str(p), "--out", str(Path(d) / "out")], capture_output=True).returncode
-        seconds = time.time() - t
+        done, seconds = cpu_run([BPDE, "solve", str(p), "--out", str(Path(d) / "out")])
+        rc = done.returncode
         if rc not in (0, 1):
             sys.exit(f"bpde exited {rc} on n = {n}, {mode}")
         return json.loads((Path(d) / "out" / "result.json").read_text())["report"], seconds
@@ -82,21 +84,21 @@ if "--job" in sys.argv[1:]:  # --job CURVE N MODE [PROBLEM-JSON]: print that job
     sys.exit(0)
 
 MODES = ["chord-length", "corrected", "given"]
-print("| n | chord length | corrected (default) | given (the curve's angle) | iterations of the correction |")
-print("|---|---|---|---|---|")
-for n in range(4, 17, 2):
-    errs, its = [], ""
-    for mode in MODES:
-        rep, _ = run(n, mode, {"kind": "extremal", "energy": {"name": "dirichlet"}})
-        errs.append(max(e["max_error"] for e in rep["boundary_fit"]))
-        if mode == "corrected":
-            its = ", ".join(str(e.get("corrections", "-")) for e in rep["boundary_fit"])
-    print(f"| {n} | " + " | ".join(f"{x:.1e}" for x in errs) + f" | {its} |")
-
-if SOLVE:
-    print()
-    print("| curve | n | parameters | boundary error | status | first variation | seconds | mean curvature |")
-    print("|---|---|---|---|---|---|---|---|")
+if not SOLVE:
+    rows = ["| n | chord length | corrected (default) | given (the curve's angle) | iterations of the correction |",
+            "|---|---|---|---|---|"]
+    for n in range(4, 17, 2):
+        errs, its = [], ""
+        for mode in MODES:
+            rep, _ = run(n, mode, {"kind": "extremal", "energy": {"name": "dirichlet"}})
+            errs.append(max(e["max_error"] for e in rep["boundary_fit"]))
+            if mode == "corrected":
+                its = ", ".join(str(e.get("corrections", "-")) for e in rep["boundary_fit"])
+        rows.append(f"| {n} | " + " | ".join(f"{x:.1e}" for x in errs) + f" | {its} |")
+    print_section("sample-fit-degree", rows)
+else:
+    rows = ["| curve | n | parameters | boundary error | status | first variation | seconds | mean curvature |",
+            "|---|---|---|---|---|---|---|---|"]
     for name in CURVES:
         for n in (8, 10, 12):
             for mode in ("chord-length", "corrected"):
@@ -104,5 +106,7 @@ if SOLVE:
                 mc = rep["mean_curvature"]
                 status = "converged" if rep["converged"] else "not converged"
                 err = max(e["max_error"] for e in rep["boundary_fit"])
-                print(f"| {name} | {n} | {mode} | {err:.1e} | {status} | {rep['residual']:.1e} | {s:.1f} | "
-                      f"{mc['min']:.2g} … {mc['max']:.2g} |", flush=True)
+                rows.append(f"| {name} | {n} | {mode} | {err:.1e} | {status} | {rep['residual']:.1e} | {s:.1f} | "
+                            f"{mc['min']:.2g} … {mc['max']:.2g} |")
+                print(rows[-1], file=sys.stderr, flush=True)
+    print_section("sample-solve-area", rows, ["seconds"])

@@ -79,16 +79,29 @@ void print_z_grid(const BSplineNet& net) {
   std::printf("\n");
 }
 
+// Residuals at rounding level (their digits vary with the build): "< 1e-12" below 1e-12.
+std::string rounding(double x) { return bpde::examples::stable_small(x, 1e-12); }
+
+// An energy: 8 significant digits, "< 1e-8" where it is 0 up to rounding (a semi-definite energy's
+// minimum).
+std::string energy_text(double e) {
+  if (std::abs(e) < 1e-8) return "< 1e-8";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.8g", e);
+  return b;
+}
+
 void report(const char* what, const BSplinePdeResult& r, const EnergySpec& op) {
   std::printf(
       "- %s: %d equations, rank %d over all points, %d over the free points; free parameters %d; "
-      "compatibility conditions %d; converged %s; relative residual %.2e%s\n",
+      "compatibility conditions %d; converged %s; relative residual %s%s\n",
       what, r.equations, r.rank, r.rank_free, r.free_parameters, r.compatibility_conditions,
-      r.summary.converged ? "**yes**" : "**no**", r.summary.residual,
+      r.summary.converged ? "**yes**" : "**no**", rounding(r.summary.residual).c_str(),
       r.minimum_energy_member ? "; **minimum-energy member** returned" : "");
   if (r.summary.converged)
-    std::printf("  - energy %.10g; relative equation residual %.1e; pde_residual (FORMATS.md, 50 x 50 grid) %.1e\n",
-                r.energy, bspline_pde_equation_residual(r.net, op), bspline_pde_residual(r.net, op));
+    std::printf("  - energy %s; relative equation residual %s; pde_residual (FORMATS.md, 50 x 50 grid) %s\n",
+                energy_text(r.energy).c_str(), rounding(bspline_pde_equation_residual(r.net, op)).c_str(),
+                bpde::examples::stable_small(bspline_pde_residual(r.net, op), 1e-6).c_str());
   if (!r.summary.message.empty()) std::printf("  - message: \"%s\"\n", r.summary.message.c_str());
 }
 
@@ -99,6 +112,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 int main() {
+  // Examples 1 and 2: the generated section bspline-paper-examples of README.md.
+  std::optional<bpde::examples::GeneratedSection> paper_section;
+  paper_section.emplace("bspline-paper-examples");
   // ------------------------------------------------------------------ Example 1
   std::printf("## Example 1: a x_uu + b x_uv + c x_vv = 0 with (a,b,c) = (1,-2,1), bicubic, 4 x 4 points\n\n");
   std::printf("Set-up: uniform knots 0..7 (h = 1), standard indexing, patch on the span [u3,u4] x [v3,v4].\n\n");
@@ -159,9 +175,10 @@ int main() {
       const double z11 = -a.dot(r0) / a.squaredNorm();
       paper.points()(7, 2) = z11;
       std::printf(
-          "- The paper's listed net, with the missing P_11 = (2, 2, %.6g) chosen to minimise the residual: "
+          "- The paper's listed net, with the missing P_11 = (2, 2, %s) chosen to minimise the residual: "
           "relative equation residual %.3g, pde_residual %.3g: **not a solution**.\n",
-          z11, bspline_pde_equation_residual(paper, op), bspline_pde_residual(paper, op));
+          std::abs(z11) < 1e-12 ? "0 up to rounding" : frac(z11).c_str(), bspline_pde_equation_residual(paper, op),
+          bspline_pde_residual(paper, op));
       const BSplinePdeResult r = solve_bspline_pde(paper, op, fixed);
       report("Solver with the paper's 11 prescribed points", r, op);
       std::printf("\nz-coordinates of the solver's net (row i = 0 and column j = 0 prescribed):\n\n");
@@ -174,7 +191,12 @@ int main() {
     }
   }
 
+  paper_section.reset();
+  std::printf("\n");
   // ------------------------------------------------------------------ §5 special cases
+  // The PDE solutions of §5: the generated section bspline-section5-pde of README.md.
+  std::optional<bpde::examples::GeneratedSection> section5;
+  section5.emplace("bspline-section5-pde");
   std::printf("## Section 5 special cases on a multi-span net\n\n");
   std::printf(
       "Biquintic, clamped knots [0^6, 0.5, 1^6] in both directions (2 x 2 spans, 7 x 7 points), "
@@ -234,8 +256,8 @@ int main() {
         report("boundary of z = (u^3 - 2u)(v^5 + v) + uv (cubic in u), x = u, y = v",
                solve_bspline_pde(boundary_only(cubic_u), op), op);
       if (op.kind() == EnergyKind::Biharmonic && rc.summary.converged)
-        std::printf("  - max |P - P_exact| = %.2e (the biharmonic polynomial is recovered)\n",
-                    (rc.net.points() - poly.points()).cwiseAbs().maxCoeff());
+        std::printf("  - max |P - P_exact| = %s (the biharmonic polynomial is recovered)\n",
+                    rounding((rc.net.points() - poly.points()).cwiseAbs().maxCoeff()).c_str());
       std::printf("\n");
     }
     // Coons patch check for the generic boundary.
@@ -253,11 +275,12 @@ int main() {
         }
       std::printf(
           "The Coons solution equals the bilinearly blended Coons patch of the four boundary curves: "
-          "max deviation on a 21 x 21 grid %.2e.\n\n",
-          err);
+          "max deviation on a 21 x 21 grid %s.\n",
+          rounding(err).c_str());
     }
 
-    std::printf("### Extremals (exist for any boundary)\n\n");
+    section5.reset();
+    std::printf("\n### Extremals (exist for any boundary)\n\n");
     std::optional<bpde::examples::GeneratedSection> section;
     section.emplace("bspline-extremals", "seconds");
     std::printf("| energy | fixed | energy value | relative residual | seconds |\n|---|---|---|---|---|\n");

@@ -15,7 +15,7 @@
 //                                     --gauge-probe | --larger-caps [N H] |
 //                                     --larger-caps-mean-curvature [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
-//   for n = 4, 5. With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
+//   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
 //   docs/cmc_measurements.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
 //   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
@@ -226,7 +226,10 @@ void larger_caps(const std::vector<std::pair<int, double>>& cases, bpde::CmcSolv
 
 // The error of the rule q (its change to the next rule of the sequence, as area_rule.h measures it)
 // on the solved circle nets, plain (grading 1) and graded (grading 3).
+// The section cmc-area-rule-probe of docs/cmc_measurements.md; errors below 1e-13 (rounding, whose
+// digits vary with the build) print as "< 1e-13".
 void rule_probe() {
+  const bpde::examples::GeneratedSection section("cmc-area-rule-probe");
   std::printf("| n | sine of the corner angle (data) | interior angle (deg) |\n| --- | --- | --- |\n");
   for (int n : {4, 5, 6, 7, 8, 10}) {
     const bpde::TriangularNet d = bpde::circle_three_arcs(n);
@@ -252,7 +255,7 @@ void rule_probe() {
         b.gradient_rows_and_scale(P, idx, &Gb, &Sb);
         const double Ab = b.value(P);
         const double c = std::max(std::abs(a.value(P) - Ab) / Ab, (Ga - Gb).cwiseAbs().maxCoeff() / Sb.maxCoeff());
-        std::printf(" %.1e |", c);
+        std::printf(" %s |", bpde::examples::stable_small(c, 1e-13).c_str());
       }
       std::printf("\n");
     }
@@ -500,6 +503,8 @@ int main(int argc, char** argv) {
   const bool full = argc > 1 && std::string(argv[1]) == "--full";
   std::printf("### Circle in three arcs, H = -0.5, n = 4, 5\n\n");
   circle_table("cmc-area-circle", -0.5, {4, 5});
+  std::printf("\n### Area rules at the circle's corners\n\n");
+  rule_probe();
   if (!full) return 0;
   std::printf("\n### Circle in three arcs, H = -0.5\n\n");
   circle_table("cmc-area-circle-0.5-full", -0.5, {4, 6, 8, 10, 12, 14, 16});

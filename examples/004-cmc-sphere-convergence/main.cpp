@@ -10,11 +10,15 @@
 //   2. triangular nets, n = 4..16, H = +1: max ||x| − 1| and max |x − x_sphere(u,v)| on a 40-grid,
 //      mean-curvature statistics (corners left out, margin 0.1), |H_mean − 1|, solve time;
 //   3. the same for tensor nets (sphere_square);
-//   4. the sign check: H = −1 with the same data does not give the sphere.
+//   4. the sign check: H = −1 with the same data does not give the sphere;
+//   5. the fold of the D_H branch from H = 0 (triangular), both signs of H;
+//   6. the memory of the D_H functional per degree (docs/cmc_measurements.md).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,9 +110,11 @@ int main(int argc, char** argv) {
                           job_json(bpde::tensor_boundary(8, bpde::sphere_square), 1.0));
   }
 
-  // The tables are the generated section "cmc-sphere-convergence" of README.md (scripts/docs.sh);
-  // the solve times (ms) are machine-dependent and not compared.
-  const bpde::examples::GeneratedSection section("cmc-sphere-convergence", "ms");
+  // The tables are generated sections of README.md (scripts/docs.sh); the degree sweeps and the
+  // fold also stand in docs/cmc_measurements.md. The solve times (ms) are machine-dependent and not
+  // compared.
+  std::optional<bpde::examples::GeneratedSection> section;
+  section.emplace("cmc-sphere-jobs");
   // 1. Job files.
   std::vector<fs::path> jobs;
   for (const auto& e : fs::directory_iterator(dir))
@@ -132,14 +138,20 @@ int main(int argc, char** argv) {
   }
 
   // 2–3. Degree sweeps, H = +1 (the sphere's H in the FORMATS.md orientation).
-  std::printf("\n#### Triangular (sphere_triangle), H = +1\n\n%s", kSweepHeader);
+  section.reset();
+  std::printf("\n");
+  section.emplace("cmc-sphere-convergence", "ms");
+  std::printf("#### Triangular (sphere_triangle), H = +1\n\n%s", kSweepHeader);
   for (int n = 4; n <= 16; ++n) sweep_row(bpde::triangular_boundary(n, bpde::sphere_triangle), n, 1.0);
   std::printf("\n#### Tensor (sphere_square), H = +1\n\n%s", kSweepHeader);
   for (int n = 4; n <= 16; ++n) sweep_row(bpde::tensor_boundary(n, bpde::sphere_square), n, 1.0);
 
   // 4. Sign check.
+  section.reset();
+  std::printf("\n");
+  section.emplace("cmc-sphere-sign");
   std::printf(
-      "\n#### Sign check: the same data with H = −1 (n = 8)\n\n| net | converged | max \\|\\|x\\| − 1\\| | V "
+      "#### Sign check: the same data with H = −1 (n = 8)\n\n| net | converged | max \\|\\|x\\| − 1\\| | V "
       "|\n|---|---|---|---|\n");
   {
     bpde::CmcOptions o;
@@ -150,6 +162,50 @@ int main(int argc, char** argv) {
     const auto q = bpde::solve_cmc(bpde::tensor_boundary(8, bpde::sphere_square), o);
     std::printf("| tensor | %s | %.3f | %.6f |\n", q.summary.converged ? "yes" : q.summary.message.c_str(),
                 errors(q.net).dist, q.V);
+  }
+
+  // 5. The fold of the D_H branch from H = 0 on the triangular data, towards H = ±10 (the solve
+  // stops at the fold): not symmetric in ±H, since the boundary is not planar.
+  section.reset();
+  std::printf("\n");
+  section.emplace("cmc-sphere-fold");
+  std::printf("| n | fold H > 0 | fold H < 0 |\n|---|---|---|\n");
+  for (int n : {4, 6, 8, 10, 12}) {
+    bpde::CmcOptions o;
+    o.H = 10;
+    const auto pos = bpde::solve_cmc(bpde::triangular_boundary(n, bpde::sphere_triangle), o);
+    o.H = -10;
+    const auto neg = bpde::solve_cmc(bpde::triangular_boundary(n, bpde::sphere_triangle), o);
+    std::printf("| %d | %.4f | %.4f |\n", n, pos.H, neg.H);
+  }
+
+  // 6. Memory per degree of the D_H functional (docs/cmc_measurements.md): what CmcFunctional
+  // keeps (Gram and volume tables) against the dense tensor C_IJK, the time to build it (uncached)
+  // and one solve at H = +1 on the sphere data.
+  section.reset();
+  std::printf("\n");
+  section.emplace("cmc-memory", "setup ms, solve ms");
+  std::printf(
+      "| n | points N | free k | nodes | memory MB | dense C_IJK would need, MB | setup ms | solve ms |\n"
+      "|---|---|---|---|---|---|---|---|\n");
+  for (int n : {4, 6, 8, 10, 12, 15, 20, 25}) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bpde::CmcFunctional f = bpde::CmcFunctional::triangular(n);
+    const double setup = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    bpde::CmcOptions o;
+    o.H = 1.0;
+    const auto r = bpde::solve_cmc(bpde::triangular_boundary(n, bpde::sphere_triangle), o);
+    const double N = f.size();
+    std::printf("| %d | %d | %d | %d | %.3g | %.3g | %.1f | %.1f |\n", n, f.size(), (n - 1) * (n - 2) / 2,
+                f.volume_form().nodes(), f.memory_bytes() / 1e6, N * N * N * 8 / 1e6, setup, 1e3 * r.summary.seconds);
+  }
+  section.reset();
+  std::printf("\n");
+  section.emplace("cmc-memory-tensor");
+  std::printf("| n = m | points N | memory MB |\n|---|---|---|\n");
+  for (int n : {4, 10, 15, 20}) {
+    const bpde::CmcFunctional f = bpde::CmcFunctional::tensor(n, n);
+    std::printf("| %d | %d | %.3g |\n", n, f.size(), f.memory_bytes() / 1e6);
   }
   return 0;
 }
