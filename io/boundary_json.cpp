@@ -8,30 +8,15 @@
 #include "bezierpde/boundaries/reference_curves.h"
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/error_path.h"
 
 namespace bpde {
 namespace {
 
-// Run f; an InvalidInput from the library (messages without a location) gets `path: ` in front,
-// with its type kept. A leading "boundary: " of the fit's messages is dropped (path names it).
+// at_path (io/error_path.h) without the fit's leading "boundary: ", which the path names.
 template <class F>
 auto at(const std::string& path, F&& f) -> decltype(f()) {
-  auto msg = [&](const std::exception& e) {
-    std::string m = e.what();
-    if (m.rfind("boundary: ", 0) == 0) m = m.substr(10);
-    return path + ": " + m;
-  };
-  try {
-    return f();
-  } catch (const DegreeError& e) {
-    throw DegreeError(msg(e));
-  } catch (const SizeError& e) {
-    throw SizeError(msg(e));
-  } catch (const NonFiniteError& e) {
-    throw NonFiniteError(msg(e));
-  } catch (const ParameterError& e) {
-    throw ParameterError(msg(e));
-  }
+  return at_path(path, std::forward<F>(f), "boundary: ");
 }
 
 Eigen::Vector3d vec3(const Json& j, const std::string& path) {

@@ -2,6 +2,7 @@
 
 #include "bezierpde/complex/refine.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/error_path.h"
 #include "bezierpde/io/boundary_json.h"
 #include "bezierpde/solvers/complex/complex_extremal.h"
 #include "bezierpde/tensor/tensor_net.h"
@@ -9,29 +10,6 @@
 
 namespace bpde {
 namespace {
-
-// f() with an InvalidInput's message prefixed by `path: `, its type kept.
-template <class F>
-auto at(const std::string& path, F&& f) -> decltype(f()) {
-  auto msg = [&](const std::exception& e) { return path + ": " + e.what(); };
-  try {
-    return f();
-  } catch (const LoopNotClosedError& e) {
-    throw LoopNotClosedError(msg(e));
-  } catch (const CurvesOutOfOrderError& e) {
-    throw CurvesOutOfOrderError(msg(e));
-  } catch (const LayoutMismatchError& e) {
-    throw LayoutMismatchError(msg(e));
-  } catch (const DegreeError& e) {
-    throw DegreeError(msg(e));
-  } catch (const SizeError& e) {
-    throw SizeError(msg(e));
-  } catch (const NonFiniteError& e) {
-    throw NonFiniteError(msg(e));
-  } catch (const ParameterError& e) {
-    throw ParameterError(msg(e));
-  }
-}
 
 std::vector<Loop> loops_from_json(const Json& j, const std::string& path) {
   if (!j.is_array() || j.empty()) throw ParseError(path + ": expected an array of loops (arrays of curves)");
@@ -85,7 +63,7 @@ LoopComplex user_layout(const Json& j, const std::string& path, PatchKind kind, 
     }
     edges.push_back(e);
   }
-  return at(path, [&] { return layout_complex(L, n, loops, edges, options); });
+  return at_path(path, [&] { return layout_complex(L, n, loops, edges, options); });
 }
 
 Json vec(const Eigen::Vector3d& x) { return Json::array({x(0), x(1), x(2)}); }
@@ -129,7 +107,7 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
   }
   const std::vector<Loop> loops = loops_from_json(field(j, path, "loops"), path + ".loops");
   data.coarse = j.contains("layout") ? user_layout(j["layout"], path + ".layout", kind, n, loops, options)
-                                     : at(path + ".loops", [&] { return loop_complex(kind, n, loops, options); });
+                                     : at_path(path + ".loops", [&] { return loop_complex(kind, n, loops, options); });
   const long long patches = static_cast<long long>(data.coarse.complex.patches.size()) << (2 * data.refine);
   if (patches > kMaxComplexPatches)
     throw SizeError(path + ": " + std::to_string(data.coarse.complex.patches.size()) + " patches refined " +
