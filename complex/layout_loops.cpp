@@ -120,7 +120,7 @@ Eigen::Vector3d piece_start(const std::vector<Loop>& loops, const CurvePiece& p)
 
 LoopComplex disc(PatchKind kind, int n, const std::vector<Loop>& loops, const LoopOptions& options) {
   const int N = static_cast<int>(loops[0].size());
-  int M = kind == PatchKind::triangular ? std::max(N, 3) : std::max(N, 4);
+  int M = kind == PatchKind::triangular ? (N >= 3 ? N : 6) : std::max(N, 4);
   if (kind == PatchKind::tensor && M % 2) ++M;
   const std::vector<CurvePiece> pieces = cut_loop(loops[0], 0, M);
   Layout L;

@@ -14,8 +14,10 @@
 // equal angle). Each layout boundary edge is one piece of one curve, fitted at degree n by
 // fit_edge (boundaries/fit_boundary.h: Bézier curves and segments exactly, arcs and circles by
 // the method asked, Chebyshev interpolation by default, samples by least squares).
-//   disc, triangular: a fan of M >= 3 triangles around a centre vertex (M = max(N, 3) boundary
-//     edges for N curves).
+//   disc, triangular: a fan of M triangles around a centre vertex, one per curve (M = N) for
+//     N >= 3 curves, else M = 6 (the loop's curves cut into 6 pieces of equal parameter: a fan of
+//     3 puts 120° arcs on its patches, and the area solve of the spherical cap over one circle
+//     then stops at a nearly degenerate parametrisation; with 6 it converges to the exact cap).
 //   disc, tensor: an O-grid: M boundary edges (M = max(N, 4), made even by one more cut), a ring
 //     of M quads, and inside it one quad (M = 4) or M/2 quads around a centre vertex (M >= 6).
 //   annulus: both loops cut into the same number M = max(N_outer, N_inner, 4) of edges, paired by
@@ -24,7 +26,7 @@
 //     inner vertex).
 // Why these: in all of them every boundary vertex belongs to two patches, so no patch has a
 // corner where the boundary is smooth (its corner angle there would be 180° and x_u ∥ x_v; the
-// single-patch problem of FORMATS.md). The fan is the fewest triangles with that property. For
+// single-patch problem of FORMATS.md).  For
 // quads, "M quads meeting at a centre" needs the boundary vertices every other one at a patch
 // corner of a single quad, which is wrong on a smooth loop; the O-grid keeps two quads at every
 // boundary vertex and gives the inside regular quads.

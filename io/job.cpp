@@ -210,12 +210,17 @@ FitMethod default_boundary_fit(const Json& j) {
   return f == "area" || f == "mean-curvature" ? FitMethod::Geometric : FitMethod::Interpolation;
 }
 
-// What a complex job takes (FORMATS.md "Patch complexes"): the extremal problem, C⁰ data, no
+// What a complex job takes (FORMATS.md "Patch complexes"): the extremal problem or cmc (dirichlet
+// or area functional), C⁰ data, no
 // STEP or view.html export.
 void check_complex_job(const Job& job, const std::string& source) {
-  if (job.problem.kind != ProblemKind::Extremal)
-    throw UnsupportedProblem(source + ".problem: a complex boundary takes problem \"extremal\", not \"" +
+  const bool cmc = job.problem.kind == ProblemKind::CmcH || job.problem.kind == ProblemKind::CmcV;
+  if (job.problem.kind != ProblemKind::Extremal && !cmc)
+    throw UnsupportedProblem(source + ".problem: a complex boundary takes problem \"extremal\" or \"cmc\", not \"" +
                              to_string(job.problem.kind) + "\"");
+  if (cmc && job.problem.functional == CmcFunctionalKind::MeanCurvature)
+    throw UnsupportedProblem(source + ".problem.functional: a complex boundary takes the \"dirichlet\" or \"area\" "
+                             "functional, not \"mean-curvature\"");
   if (job.fixed != FixedSet::Boundary)
     throw UnsupportedProblem(source + ".fixed: a complex boundary takes fixed \"boundary\" (C0 data) only");
   const PatchComplex& c = job.complex->complex;

@@ -54,7 +54,7 @@ struct Job {
   bool export_html = false;
   /// A job whose boundary is a patch complex (FORMATS.md "Patch complexes"): the complex, built
   /// and refined when the job is read; `net` is then its first patch (for messages only).
-  std::shared_ptr<const ComplexJobData> complex;
+  std::shared_ptr<const ComplexJobData> complex = nullptr;
 };
 
 // kMaxSamples (core/mesh.h): the largest accepted `samples`, bounded by the memory it needs.

@@ -13,6 +13,7 @@
 #include "bezierpde/io/output_folder.h"
 #include "bezierpde/io/vtp_io.h"
 #include "bezierpde/jobs/job_progress.h"
+#include "bezierpde/solvers/cmc/complex_cmc.h"
 #include "bezierpde/solvers/complex/complex_extremal.h"
 
 namespace bpde {
@@ -85,14 +86,40 @@ std::string net_obj(const PatchComplex& c) {
   return s;
 }
 
+
+// The report fields every complex result has: its size and the continuity across its seams.
+void add_complex_report(SolveOutcome& out, const ComplexJobData& data, const PatchComplex& c) {
+  out.report["patches"] = c.patches.size();
+  out.report["degree"] = c.patches.front().degree;
+  out.report["refine"] = data.refine;
+  out.report["seam_angle_max"] = finite_or_null(seam_angle_max(c));
+}
+
+// The cmc problem on a complex: the single-patch solve (solvers/cmc/complex_cmc.h).
+SolveOutcome run_complex_cmc(const Job& job) {
+  const ComplexJobData& data = *job.complex;
+  const CmcOptions o = job_cmc_options(job);
+  const CmcResult<PatchComplex> r = solve_cmc(data.complex, o);
+  const Status status = checked_status(r.summary);
+  SolveOutcome out{job.net, SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status,
+                   std::make_shared<const PatchComplex>(r.net)};
+  out.figures.problem = job.problem.kind;
+  out.figures.summary = r.summary;
+  if (r.summary.iterations > 0) out.figures.iterations = r.summary.iterations;
+  add_cmc_figures(out, o, r);
+  add_complex_report(out, data, r.net);
+  return out;
+}
+
 }  // namespace
 
 SolveOutcome run_complex_job(const Job& job) {
+  if (job.problem.kind == ProblemKind::CmcH || job.problem.kind == ProblemKind::CmcV) return run_complex_cmc(job);
   const ComplexJobData& data = *job.complex;
   const EnergySpec& e = *job.problem.energy;
   const ComplexExtremal r = solve_complex_extremal(data.complex, e);
   const Status status = checked_status(r.summary);
-  SolveOutcome out{job.net, SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status};
+  SolveOutcome out{job.net, SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status, nullptr};
   out.complex = std::make_shared<const PatchComplex>(r.complex);
   out.figures.problem = job.problem.kind;
   out.figures.summary = r.summary;
@@ -108,10 +135,7 @@ SolveOutcome run_complex_job(const Job& job) {
       volume_sum += volume(tensor_net(r.complex, p));
     }
   }
-  out.report["patches"] = r.complex.patches.size();
-  out.report["degree"] = r.complex.patches.front().degree;
-  out.report["refine"] = data.refine;
-  out.report["seam_angle_max"] = finite_or_null(seam_angle_max(r.complex));
+  add_complex_report(out, data, r.complex);
   out.report["area"] = finite_or_null(area_sum);
   out.report["volume"] = finite_or_null(volume_sum);
   return out;
@@ -130,6 +154,12 @@ WrittenResult write_complex_result(const std::string& dir, const Job& job, const
                                  ? Json{{"min", written.mean_curvature->min}, {"max", written.mean_curvature->max},
                                         {"mean", written.mean_curvature->mean}, {"count", written.mean_curvature->count}}
                                  : Json(nullptr);
+  // A cmc complex says how far it is from constant mean curvature (run_job.h, CmcCertificate).
+  if (written.mean_curvature->count > 0 && report.value("problem", "") == "cmc" && report.contains("H") &&
+      report["H"].is_number()) {
+    written.certificate = cmc_certificate(*written.mean_curvature, report["H"].get<double>(), m.mesh);
+    report["certificate"] = certificate_json(*written.certificate);
+  }
   {
     const ProgressStage stage(job_progress(), "checking (CGAL)");
     report["check"] = check_report(m.mesh);

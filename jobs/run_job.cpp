@@ -25,6 +25,7 @@
 #include "bezierpde/jobs/exports.h"
 #include "bezierpde/jobs/job_progress.h"
 #include "bezierpde/jobs/run_complex.h"
+#include "bezierpde/solvers/cmc/complex_cmc.h"
 #include "bezierpde/solvers/bspline/bspline_extremal.h"
 #include "bezierpde/solvers/bspline/bspline_pde.h"
 #include "bezierpde/solvers/c1/biharmonic_load.h"
@@ -69,14 +70,6 @@ Json stats_json(const MeanCurvatureStats& st) {
           {"at_max", {st.at_max[0], st.at_max[1]}}};
 }
 
-Json certificate_json(const CmcCertificate& c) {
-  return {{"H", c.H},
-          {"mean_curvature_deviation", c.deviation},
-          {"at", {c.at[0], c.at[1]}},
-          {"reference_curvature", c.reference_curvature},
-          {"relative_deviation", c.relative},
-          {"near_constant", c.near_constant()}};
-}
 
 // Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
@@ -104,7 +97,8 @@ Json figures_report(const SolveFigures& f) {
 // into the report.
 SolveOutcome outcome(const Job& job, Net net, const Summary& s) {
   const Status status = checked_status(s);
-  SolveOutcome out{std::move(net), SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status};
+  SolveOutcome out{std::move(net), SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status,
+                   nullptr};
   out.figures.problem = job.problem.kind;
   out.figures.summary = s;
   if (s.iterations > 0) out.figures.iterations = s.iterations;
@@ -182,6 +176,16 @@ SolveOutcome triangular_extremal(const Job& job, const TriangularNet& net) {
 
 template <class NetT>
 SolveOutcome cmc(const Job& job, const NetT& net) {
+  const CmcOptions o = job_cmc_options(job);
+  const CmcResult<NetT> r = solve_cmc(net, o);
+  SolveOutcome out = outcome(job, r.net, r.summary);
+  add_cmc_figures(out, o, r);
+  return out;
+}
+
+}  // namespace
+
+CmcOptions job_cmc_options(const Job& job) {
   CmcOptions o;
   o.fixed = job.fixed;
   o.solver = job.problem.solver;
@@ -193,8 +197,11 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
     o.V = job.problem.V;
   else
     o.H = job.problem.H;
-  const CmcResult<NetT> r = solve_cmc(net, o);
-  SolveOutcome out = outcome(job, r.net, r.summary);
+  return o;
+}
+
+template <class NetT>
+void add_cmc_figures(SolveOutcome& out, const CmcOptions& o, const CmcResult<NetT>& r) {
   out.figures.solver = to_string(o.solver);
   out.figures.energy = r.energy;
   out.figures.D = r.D;
@@ -221,8 +228,12 @@ SolveOutcome cmc(const Job& job, const NetT& net) {
                                      {"fold_corner_angle", r.parametrisation.fold_u >= 0
                                                                ? finite_or_null(r.parametrisation.fold_corner_angle)
                                                                : Json(nullptr)}};
-  return out;
 }
+template void add_cmc_figures(SolveOutcome&, const CmcOptions&, const CmcResult<TriangularNet>&);
+template void add_cmc_figures(SolveOutcome&, const CmcOptions&, const CmcResult<TensorNet>&);
+template void add_cmc_figures(SolveOutcome&, const CmcOptions&, const CmcResult<PatchComplex>&);
+
+namespace {
 
 // Δ⁴ = (∂²u + ∂²v)⁴ as PDE terms {du, dv, coefficient} for the residual report.
 std::vector<PdeTerm> tetraharmonic_terms() { return {{8, 0, 1.0}, {6, 2, 4.0}, {4, 4, 6.0}, {2, 6, 4.0}, {0, 8, 1.0}}; }
@@ -499,6 +510,15 @@ Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples)
 Json check_report(const TriangleMesh& mesh) { return check_json(mesh_check(mesh)); }
 
 bool CmcCertificate::near_constant() const { return relative <= kCmcDeviationLimit; }
+
+Json certificate_json(const CmcCertificate& c) {
+  return {{"H", c.H},
+          {"mean_curvature_deviation", c.deviation},
+          {"at", c.at[0] >= 0 ? Json{c.at[0], c.at[1]} : Json(nullptr)},
+          {"reference_curvature", c.reference_curvature},
+          {"relative_deviation", c.relative},
+          {"near_constant", c.near_constant()}};
+}
 
 CmcCertificate cmc_certificate(const MeanCurvatureStats& stats, double H, const TriangleMesh& mesh) {
   CmcCertificate c;

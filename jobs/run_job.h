@@ -20,6 +20,7 @@
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/io/job.h"
 #include "bezierpde/jobs/exports.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/requirements.h"
 #include "bezierpde/solvers/summary.h"
 
@@ -67,8 +68,16 @@ struct SolveOutcome {
   bool converged = true;
   Status status = Status::Converged;
   /// A complex job (Job::complex): the solved complex; `net` is then its first patch.
-  std::shared_ptr<const PatchComplex> complex;
+  std::shared_ptr<const PatchComplex> complex = nullptr;
 };
+
+/// The CmcOptions of a cmc job (H or V form, functional, solver, fixed set, start, progress).
+CmcOptions job_cmc_options(const Job& job);
+/// The figures and report fields of a cmc result (D, V, H, energy, steps, residual, functional,
+/// area, quadrature, routes, parametrisation) into `out`; NetT: TriangularNet, TensorNet or
+/// PatchComplex (a complex job, jobs/run_complex.h).
+template <class NetT>
+void add_cmc_figures(SolveOutcome& out, const CmcOptions& o, const CmcResult<NetT>& r);
 
 /// The status of a solver's Summary, checked against its contract (solvers/summary.h): a
 /// Converged status with converged = false, or the reverse, is a broken invariant (InternalError).
@@ -130,6 +139,8 @@ struct CmcCertificate {
 inline constexpr double kCmcDeviationLimit = 0.05;
 /// The certificate of a CMC result from its mesh statistics (count > 0) and its H.
 CmcCertificate cmc_certificate(const MeanCurvatureStats& stats, double H, const TriangleMesh& mesh);
+/// report.certificate as FORMATS.md writes it (`at` null where the statistics have no location).
+Json certificate_json(const CmcCertificate& c);
 
 /// What was written: the whole result.json object, the exit code, and the figures write_result
 /// added to the report (empty where the report had them already).

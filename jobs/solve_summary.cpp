@@ -76,8 +76,9 @@ std::string solve_summary(const SolveOutcome& out, const WrittenResult& written,
                             number(h->mean, "%.6g") + " (away from the corners)"
                       : "none (no sample away from the corners)");
   if (const auto& c = written.certificate) {
-    const std::string where = "(u, v) = (" + number(c->at[0], "%.3g") + ", " + number(c->at[1], "%.3g") + ")";
-    const std::string off = "|H(x) - H| up to " + number(c->deviation, "%.3g") + " at " + where + ", " +
+    const std::string where =
+        c->at[0] >= 0 ? " at (u, v) = (" + number(c->at[0], "%.3g") + ", " + number(c->at[1], "%.3g") + ")" : "";
+    const std::string off = "|H(x) - H| up to " + number(c->deviation, "%.3g") + where + ", " +
                             number(100 * c->relative, "%.3g") + " % of the reference curvature";
     line(s, "certificate",
          c->near_constant() ? off

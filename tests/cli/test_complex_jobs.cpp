@@ -33,7 +33,13 @@ std::string polygon_loop(int k, double z = 0, bool reverse = false) {
     if (reverse) a = k - i, b = k - i - 1;
     auto pt = [&](int j) {
       const double t = 2 * std::numbers::pi * j / k;
-      return "[" + std::to_string(std::cos(t)) + ", " + std::to_string(std::sin(t)) + ", " + std::to_string(z) + "]";
+      std::string p = "[";
+      p += std::to_string(std::cos(t));
+      p += ", ";
+      p += std::to_string(std::sin(t));
+      p += ", ";
+      p += std::to_string(z);
+      return p + "]";
     };
     s += std::string(i ? ", " : "") + R"({"type": "segment", "from": )" + pt(a % k) + R"(, "to": )" +
          pt(b % k) + "}";
@@ -99,7 +105,7 @@ TEST(ComplexJobs, CircleAndClosedSamplesAndAnnulusSolve) {
   samples += "]";
   const Json closed = solve("closed_samples", R"({"boundary": {"type": "complex", "patch": "triangular", "degree": 4,
       "loops": [[{"type": "samples", "points": )" + samples + R"(, "closed": true}]]}, )" + kDirichlet + "}");
-  EXPECT_EQ(closed["report"]["patches"], 3);
+  EXPECT_EQ(closed["report"]["patches"], 6);
   EXPECT_NEAR(closed["report"]["area"].get<double>(), std::numbers::pi, 5e-3);
   const Json tube = solve("annulus", R"({"boundary": {"type": "complex", "patch": "tensor", "degree": 6,
       "loops": [[{"type": "circle", "center": [0, 0, 0.5], "normal": [0, 0, 1], "radius": 1}],
@@ -147,7 +153,8 @@ TEST(ComplexJobs, BadInputExitsTwoWithOneLineAndNoFiles) {
                                             {"type": "segment", "from": [0,1,0], "to": [0,0,0]},
                                             {"type": "segment", "from": [1,0,0], "to": [0,1,0]}])"));
   expect_refused("three_loops", job("", pentagon + ", " + polygon_loop(5, 1) + ", " + polygon_loop(5, 2)));
-  expect_refused("cmc_problem", job("", pentagon, R"("problem": {"kind": "cmc", "H": 0.5})"));
+  expect_refused("cmc_mean_curvature",
+                 job("", pentagon, R"("problem": {"kind": "cmc", "H": 0.5, "functional": "mean-curvature"})"));
   expect_refused("export_step", job("", pentagon, kDirichlet + R"(, "export": ["step"])"));
   expect_refused("unknown_patch", job("", pentagon).replace(job("", pentagon).find("triangular"), 10, "hexagonal"));
   expect_refused("circle_without_radius", job("", R"([{"type": "circle", "center": [0,0,0], "normal": [0,0,1]}])"));
@@ -179,4 +186,28 @@ TEST(ComplexJobs, SweepOverDegreeAndRefinement) {
   EXPECT_LT(energy[1], energy[0]);
   EXPECT_LT(energy[2], energy[0]);
   EXPECT_LT(energy[3], energy[2]);
+}
+
+// The cmc problem on a complex (FORMATS.md "Patch complexes"): the spherical cap of radius 2 over
+// the unit circle given as one circle curve, |H| = 0.5, by the area functional on the automatic
+// fan of 6 triangular patches at degree 4: A = 3.36714885790773 and V = 0.430966541037603
+// (exact), the certificate near constant, the seams nearly tangent.
+TEST(ComplexJobs, CmcCapFromOneCircleMatchesTheExactCap) {
+  const fs::path out = tmpdir() / "complex_cap";
+  const CmdResult r = run("solve " +
+                          write("complex_cap.json",
+                                R"({"boundary": {"type": "complex", "patch": "triangular", "degree": 4, "loops": [[)"
+                                R"({"type": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1}]]},)"
+                                R"( "problem": {"kind": "cmc", "H": -0.5, "functional": "area"}})")
+                              .string() +
+                          " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json rep = bpde::read_json_file((out / "result.json").string())["report"];
+  EXPECT_EQ(rep["patches"], 6);
+  EXPECT_NEAR(rep["area"].get<double>(), 3.36714885790773, 1e-7);
+  EXPECT_NEAR(rep["volume"].get<double>(), 0.430966541037603, 1e-7);
+  EXPECT_LT(rep["seam_angle_max"].get<double>(), 0.01);  // degrees
+  ASSERT_TRUE(rep.contains("certificate")) << rep.dump();
+  EXPECT_TRUE(rep["certificate"]["near_constant"].get<bool>());
+  EXPECT_LT(rep["certificate"]["mean_curvature_deviation"].get<double>(), 1e-3);
 }
