@@ -1,10 +1,12 @@
 #include "bezierpde/io/html_view.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "bpde_viewer_assets.h"  // generated at build time (CMakeLists.txt): kTemplate, kBundle, kThreeVersion
@@ -53,11 +55,50 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
-// Replace the one occurrence of `marker` in `page` (InternalError if it is missing).
-void fill(std::string& page, std::string_view marker, const std::string& value) {
-  const size_t p = page.find(marker);
-  if (p == std::string::npos) throw InternalError("view.html template: no " + std::string(marker));
-  page.replace(p, marker.size(), value);
+// The page: the template with each @BPDE_NAME@ marker replaced by values.at(NAME), in one pass
+// over the template by position, so that no value (the title, the report's strings, three.js) is
+// ever searched for markers. InternalError for a marker without a value or a value never used.
+std::string fill_template(std::string_view page, const std::vector<std::pair<std::string_view, std::string_view>>& values) {
+  std::string out;
+  std::size_t used = 0, at = 0;
+  for (std::size_t p; (p = page.find("@BPDE_", at)) != std::string_view::npos;) {
+    const std::size_t end = page.find('@', p + 1);
+    if (end == std::string_view::npos) break;
+    const std::string_view name = page.substr(p + 1, end - p - 1);
+    auto it = std::find_if(values.begin(), values.end(), [&](const auto& v) { return v.first == name; });
+    if (it == values.end()) throw InternalError("view.html template: no value for @" + std::string(name) + "@");
+    out.append(page.substr(at, p - at));
+    out.append(it->second);
+    used |= std::size_t(1) << (it - values.begin());
+    at = end + 1;
+  }
+  out.append(page.substr(at));
+  if (used != (std::size_t(1) << values.size()) - 1) throw InternalError("view.html template: markers missing");
+  return out;
+}
+
+// JSON for a <script> element: "<", ">" and "&" (which could end the element or open a comment
+// that swallows its end tag) and U+2028/U+2029 as \u escapes; they occur only inside strings, where
+// the escapes read back as the same characters.
+std::string script_safe(std::string json) {
+  std::string out;
+  out.reserve(json.size());
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (c == '<')
+      out += "\\u003c";
+    else if (c == '>')
+      out += "\\u003e";
+    else if (c == '&')
+      out += "\\u0026";
+    else if (c == '\xE2' && i + 2 < json.size() && json[i + 1] == '\x80' && (json[i + 2] == '\xA8' || json[i + 2] == '\xA9')) {
+      out += json[i + 2] == '\xA8' ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 bool finite_number(const Json& j) { return j.is_number() && std::isfinite(j.get<double>()); }
@@ -109,28 +150,13 @@ std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFie
                {"net", {{"points", b64(floats(P))}, {"lines", b64(lines)}}},
                {"range", {lo, hi}},
                {"report", report.is_object() ? report : Json::object()}};
-  std::string json = data.dump(-1, ' ', true, Json::error_handler_t::replace);
-  // inside <script>, "</" could close the element: JSON allows the escaped "<\/"
-  for (size_t p = 0; (p = json.find("</", p)) != std::string::npos; p += 3) json.replace(p, 2, "<\\/");
-
-  std::string page(viewer_assets::kTemplate);
-  const std::string t = html_escape(title);
-  fill(page, "@BPDE_TITLE@", t);
-  fill(page, "@BPDE_TITLE@", t);
-  fill(page, "@BPDE_THREE_VERSION@", viewer_three_version());
-  fill(page, "@BPDE_RANGE_NOTE@", note);
-  // the bundle last, so that no marker is searched for inside three.js or the data
-  const size_t data_at = page.find("@BPDE_DATA@"), bundle_at = page.find("@BPDE_BUNDLE@");
-  if (data_at == std::string::npos || bundle_at == std::string::npos || bundle_at < data_at)
-    throw InternalError("view.html template: markers missing");
-  std::string out;
-  out.reserve(page.size() + json.size() + viewer_assets::kBundle.size());
-  out.append(page, 0, data_at);
-  out += json;
-  out.append(page, data_at + 11, bundle_at - data_at - 11);
-  out.append(viewer_assets::kBundle);
-  out.append(page, bundle_at + 13, std::string::npos);
-  return out;
+  const std::string json = script_safe(data.dump(-1, ' ', true, Json::error_handler_t::replace));
+  const std::string t = html_escape(title), three = viewer_three_version();
+  return fill_template(viewer_assets::kTemplate, {{"BPDE_TITLE", t},
+                                                  {"BPDE_THREE_VERSION", three},
+                                                  {"BPDE_RANGE_NOTE", note},
+                                                  {"BPDE_DATA", json},
+                                                  {"BPDE_BUNDLE", viewer_assets::kBundle}});
 }
 
 void write_view_html(const std::string& path, const Net& net, const TriangleMesh& mesh, const Json& report,

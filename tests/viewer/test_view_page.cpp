@@ -2,6 +2,7 @@
 // URL), its data as float32/uint32 base64 that decode to the mesh, the report and the range.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "bezierpde/io/html_view.h"
@@ -95,4 +96,28 @@ TEST(ViewPage, SelfContainedWithTheMeshAsFloat32) {
   }
   EXPECT_EQ(bare["range"][0].get<double>(), lo);
   EXPECT_EQ(bare["range"][1].get<double>(), hi);
+}
+
+// Report strings and a title that look like markup or like the template's markers reach the page
+// as data: the data script holds no "<", ">" or "&" (so "<!--<script>" cannot swallow its end
+// tag), reads back to the same strings, and the markers in values are never substituted.
+TEST(ViewPage, MarkupAndMarkersInTheReportAreData) {
+  const SolveOutcome out = run_job(demo_job());
+  const TriangleMesh mesh = sample_net(out.net, 4);
+  const SurfaceFields f = surface_fields(out.net, mesh);
+  Json report = out.report;
+  const std::vector<std::string> strings = {"<!--<script>", "</script><script>alert(1)</script>", "@BPDE_DATA@",
+                                            "@BPDE_BUNDLE@", "a & b > c", "line\u2028separator"};
+  for (std::size_t k = 0; k < strings.size(); ++k) report["s" + std::to_string(k)] = strings[k];
+  std::string page;
+  ASSERT_NO_THROW(page = view_html(out.net, mesh, f, report, "title @BPDE_RANGE_NOTE@ @BPDE_DATA@"));
+  const std::string open = "<script id=\"bpde-data\" type=\"application/json\">";
+  const size_t a = page.find(open), b = page.find("</script>", a);
+  ASSERT_NE(a, std::string::npos);
+  const std::string text = page.substr(a + open.size(), b - a - open.size());
+  EXPECT_EQ(text.find_first_of("<>&"), std::string::npos);
+  const Json data = Json::parse(text);
+  for (std::size_t k = 0; k < strings.size(); ++k) EXPECT_EQ(data["report"]["s" + std::to_string(k)], strings[k]);
+  EXPECT_NE(page.find("<title>title @BPDE_RANGE_NOTE@ @BPDE_DATA@</title>"), std::string::npos);
+  EXPECT_NE(page.find("OrbitControls"), std::string::npos);  // the bundle is there once
 }
