@@ -245,6 +245,11 @@ SweepSpec sweep_from_json(const Json& j, const std::string& source, const std::s
         if (s.empty()) throw ParseError(where + ": an axis is a dotted path of non-empty keys");
       if (!it.value().is_array() || it.value().empty())
         throw ParseError(where + ": expected a non-empty array of values");
+      // The row holds the axis values beside `index`, `job` and the result columns: an axis of
+      // one of those names would overwrite its column and repeat the CSV header name.
+      if (it.key() == "index" || it.key() == "job" ||
+          std::find(kSweepResultColumns.begin(), kSweepResultColumns.end(), it.key()) != kSweepResultColumns.end())
+        throw ParseError(where + ": \"" + it.key() + "\" is a column of the results table; name the axis by its path in the job");
       SweepAxis axis;
       axis.path = it.key();
       for (const Json& v : it.value()) axis.values.push_back(v);

@@ -101,6 +101,12 @@ TEST(SweepSpec, BadSpecsThrowTypedErrors) {
   EXPECT_THROW(bpde::sweep_from_json(Json::parse(R"({"base": {}, "extra": 1})")), bpde::ParseError);
   EXPECT_THROW(bpde::sweep_from_json(Json::parse(R"({"base": {}, "axes": {"a": []}})")), bpde::ParseError);
   EXPECT_THROW(bpde::sweep_from_json(Json::parse(R"({"base": {}, "axes": {"a..b": [1]}})")), bpde::ParseError);
+  // an axis named like a column of the results table would overwrite it; a path into the job is fine
+  for (const char* column : {"index", "job", "status", "H"})
+    EXPECT_THROW(bpde::sweep_from_json(Json::parse(std::string(R"({"base": {}, "axes": {")") + column + R"(": [1]}})")),
+                 bpde::ParseError)
+        << column;
+  EXPECT_NO_THROW(bpde::sweep_from_json(Json::parse(R"({"base": {}, "axes": {"problem.H": [1]}})")));
   EXPECT_THROW(bpde::sweep_from_json(Json::parse(R"({"base": {}, "boundary": "moebius"})")), bpde::ParameterError);
   EXPECT_THROW(bpde::sweep_from_json(Json::parse(R"({"base": "no-such-job.json"})")), bpde::FileError);
   Json big = Json::parse(R"({"base": {}, "axes": {}})");
