@@ -414,6 +414,7 @@ void SmoothingSplineSolver::Impl::order_free_dofs() {
 #ifdef BPDE_HAVE_CHOLMOD
   const int L1 = space.l() + 1, nn = space.num_nodes();
   cholmod_common& cm = ldlt.cholmod();
+  cm.print = 0;  // no CHOLMOD messages on stdout (see the factorisation)
   // The lower triangle of the node graph, pattern only: node c = i (l+1) + j and the nodes
   // (i, j), (i, j+1), (i+1, j-1), (i+1, j), (i+1, j+1) that exist (increasing indices).
   cholmod_sparse* G = cholmod_allocate_sparse(nn, nn, 5 * static_cast<size_t>(nn), 1, 1, -1, CHOLMOD_PATTERN, &cm);
@@ -545,6 +546,8 @@ void SmoothingSplineSolver::Impl::factor_reduced() {
   // ordering and no postorder keep it, and CHOLMOD then factors the lower triangle we pass as it
   // is (for any other ordering it factors two permuted transposes of it).
   cholmod_common& cm = ldlt.cholmod();
+  cm.print = 0;  // CHOLMOD prints its warnings (a matrix not positive definite) on stdout; the
+                 // solver reports them through its Summary (bpde's stdout carries JSON only)
   cm.nmethods = 1;
   cm.method[0].ordering = CHOLMOD_NATURAL;
   cm.postorder = 0;

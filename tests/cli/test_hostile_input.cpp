@@ -694,3 +694,16 @@ TEST(HostileInput, BlendConfigsEnergyArgumentsAndSweepsGetTheSameReaderBounds) {
   EXPECT_EQ(deep_axis.status, 2);
   expect_untouched(out);
 }
+
+// An epsilon at the edge of double's range: exit 2 with one line on stderr, and nothing on stdout
+// (CHOLMOD printed "CHOLMOD warning: matrix not positive definite" there).
+TEST(HostileInput, HugeEpsilonIsOneErrorLineAndNoSolverOutput) {
+  std::string blend = kBlendConfig;
+  blend.replace(blend.find("\"epsilon\": 0.01"), 15, "\"epsilon\": 1.7e308");
+  const fs::path out = tmpdir() / "huge_epsilon";
+  const CmdResult r = run("blend " + write("huge_epsilon.json", blend).string() + " --out " + out.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
