@@ -19,7 +19,8 @@ machine. All numbers are timings of this machine, so every numeric column is mac
 the docs check compares only the tables' shape (routes, sizes, goals). `--list` prints the
 section names without running anything (the docs check uses it to know the bench sections).
 `--quick` shortens the minimum time of each route and leaves the scaling table out (a smoke run);
-`--only` runs the named route families alone (the other tables and goals print "–").
+`--only` runs the named sections alone and prints only them (with `goals` among them, the goals
+of the sections not run print "–").
 
 Timings are CPU milliseconds per iteration (the benchmark's `cpu_time`); a ratio column divides
 two routes of the same run.
@@ -310,6 +311,19 @@ def main():
     out += section("scaling", scale or ["(not run)"], scale_cols) + [""]
     out += section("startup", startup_table(start) if start else ["(not run)"],
                    ["min CPU ms", "median CPU ms", "min / `/bin/true`", "loader relocations"])
+    if a.only:  # only the sections asked for (docs.py --from rewrites just those)
+        keep, text, on = [], [], False
+        for line in out:
+            m = re.match(r"<!-- generated: bench-([a-z0-9-]+);", line)
+            if m:
+                on = m.group(1) in only
+            if on:
+                keep.append(line)
+            if line == "<!-- end -->":
+                if on:
+                    keep.append("")
+                on = False
+        out = keep
     print("\n".join(out))
     print(f"bench: done on {cpu}", file=sys.stderr)
     return 0

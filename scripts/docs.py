@@ -295,8 +295,7 @@ def main():
         for name, (cols, body) in sections.items():
             printed[name] = (GENERATORS[gen][0], cols, body)
             measured.add(name)
-        if not sections:
-            idle |= set(names)
+        idle |= set(names) - set(sections)  # not run, or not among the sections a saved run holds
 
     problems, placed = [], set()
     for doc in docs:
