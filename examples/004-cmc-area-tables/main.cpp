@@ -11,12 +11,13 @@
 //   - H = 0, tensor: the catenoid piece (θ, ρ) = (1.2u, 1.1 + 0.8v) on the square (radial, so not
 //     conformal: the conformal one is ρ = cosh z with z linear); checked the same way.
 //
-// Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
+// Usage: example_004_cmc_area_tables [--full [NAME ...] | --tolerance-probe | --margin-probe | --rule-probe |
 //                                     --gauge-probe | --larger-caps [N H] |
 //                                     --larger-caps-mean-curvature [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
-//   docs/cmc_measurements.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
+//   docs/cmc_measurements.md and its mean-curvature tables on the circle (degree 10; the V form), in the sections
+//   whose names end in "-full"; "--full NAME ..." prints only the named ones (docs.py --full-sections). --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
 //   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
 //   margins 0.1 … 0.3, boundary samples left out; under a minute).
@@ -161,15 +162,82 @@ void minimal_table(const char* name, const char* column, const std::vector<int>&
   }
 }
 
-void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<int>& triangular_degrees) {
-  minimal_table("cmc-area-helicoid-full", "\\|x sin z − y cos z\\|", tensor_degrees,
-                [](int n) { return bpde::tensor_boundary(n, helicoid); }, helicoid_off);
-  std::printf("\n");
-  minimal_table("cmc-area-catenoid-full", "\\|√(x² + y²) − cosh z\\|", triangular_degrees,
-                [](int n) { return bpde::triangular_boundary(n, catenoid); }, catenoid_off);
-  std::printf("\n");
-  minimal_table("cmc-area-catenoid-tensor-full", "\\|√(x² + y²) − cosh z\\|", tensor_degrees,
-                [](int n) { return bpde::tensor_boundary(n, catenoid_square); }, catenoid_off);
+// The H = 0 tables whose names `wants`.
+template <class Wants>
+void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<int>& triangular_degrees, Wants wants) {
+  if (wants("cmc-area-helicoid-full")) {
+    minimal_table("cmc-area-helicoid-full", "\\|x sin z − y cos z\\|", tensor_degrees,
+                  [](int n) { return bpde::tensor_boundary(n, helicoid); }, helicoid_off);
+    std::printf("\n");
+  }
+  if (wants("cmc-area-catenoid-full")) {
+    minimal_table("cmc-area-catenoid-full", "\\|√(x² + y²) − cosh z\\|", triangular_degrees,
+                  [](int n) { return bpde::triangular_boundary(n, catenoid); }, catenoid_off);
+    std::printf("\n");
+  }
+  if (wants("cmc-area-catenoid-tensor-full"))
+    minimal_table("cmc-area-catenoid-tensor-full", "\\|√(x² + y²) − cosh z\\|", tensor_degrees,
+                  [](int n) { return bpde::tensor_boundary(n, catenoid_square); }, catenoid_off);
+}
+
+// The small cap of H over the unit circle (H < 0): its radius R = 1/|H|, its centre c (on the z
+// axis, below the plane: the cap bulges to +z) and its volume over the plane.
+struct SmallCap {
+  double R;
+  Eigen::Vector3d c;
+  double V;
+  explicit SmallCap(double H) : R(1 / std::abs(H)), c(0, 0, -std::sqrt(R * R - 1)) {
+    const double h = R - std::sqrt(R * R - 1);
+    V = std::numbers::pi * h * h * (3 * R - h) / 3;
+  }
+  double dist(const bpde::TriangularNet& net) const {
+    return worst(net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; });
+  }
+};
+
+// The area and the mean-curvature functional on the circle at degree 10, H = -0.5 and -0.9
+// (docs/cmc_measurements.md, "The mean-curvature functional on the circle at degree 10"): the
+// distance to the sphere (40-grid, corners included), H on the 40-grid at corner margin 0.1, the
+// status with the residual of the functional solved, and the summary's seconds.
+void mean_curvature_degree_10() {
+  const GeneratedSection section("cmc-mean-curvature-circle-10-full", "seconds");
+  std::printf("| H | functional | dist to the sphere | max \\|H_sampled − H\\| | status | residual | seconds |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
+  for (double H : {-0.5, -0.9}) {
+    const SmallCap cap(H);
+    for (const bpde::CmcFunctionalKind f : {bpde::CmcFunctionalKind::Area, bpde::CmcFunctionalKind::MeanCurvature}) {
+      const auto r = solve(bpde::circle_three_arcs(10), H, f);
+      const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(r.net, 40, 0.1);
+      std::printf("| %g | %s | %.1e | %.1e | %s | %s %.1e | %.2f |\n", H, bpde::to_string(r.functional).c_str(),
+                  cap.dist(r.net), std::max(std::abs(s.min - H), std::abs(s.max - H)), status_cell(r.summary).c_str(),
+                  f == bpde::CmcFunctionalKind::MeanCurvature ? "√Φ" : "first variation", r.summary.residual,
+                  r.summary.seconds);
+      std::fflush(stdout);
+    }
+  }
+}
+
+// The mean-curvature functional's V form on the circle (docs/cmc_measurements.md, "The
+// mean-curvature functional's V form on the circle"): v0 the volume of the small cap of H, solver
+// newton and ceres, n = 8 … 14; the H found against the cap's, the distance to the cap's sphere.
+void mean_curvature_volume_form() {
+  const GeneratedSection section("cmc-mean-curvature-volume-form-full", "iterations, seconds");
+  std::printf("| n | H of the cap | solver | iterations | status | √Φ | H error | dist | seconds |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (int n : {8, 10, 12, 14})
+    for (double H : {-0.5, -0.9})
+      for (const bpde::CmcSolver solver : {bpde::CmcSolver::Newton, bpde::CmcSolver::Ceres}) {
+        const SmallCap cap(H);
+        bpde::CmcOptions o;
+        o.functional = bpde::CmcFunctionalKind::MeanCurvature;
+        o.V = cap.V;
+        o.solver = solver;
+        const auto r = bpde::solve_cmc(bpde::circle_three_arcs(n), o);
+        std::printf("| %d | %g | %s | %d | %s | %.1e | %.1e | %.1e | %.2f |\n", n, H, bpde::to_string(solver).c_str(),
+                    r.summary.iterations, status_cell(r.summary).c_str(), r.summary.residual, std::abs(r.H - H),
+                    cap.dist(r.net), r.summary.seconds);
+        std::fflush(stdout);
+      }
 }
 
 // The circle at n = 10 solved to tighter first-variation tolerances than the default 1e-11
@@ -501,16 +569,33 @@ int main(int argc, char** argv) {
     return 0;
   }
   const bool full = argc > 1 && std::string(argv[1]) == "--full";
+  // "--full NAME ..." prints only the named "-full" sections (scripts/docs.py --full-sections).
+  const std::vector<std::string> only(argv + std::min(argc, 2), argv + argc);
+  const auto wants = [&](const char* name) {
+    return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+  };
   std::printf("### Circle in three arcs, H = -0.5, n = 4, 5\n\n");
   circle_table("cmc-area-circle", -0.5, {4, 5});
   std::printf("\n### Area rules at the circle's corners\n\n");
   rule_probe();
   if (!full) return 0;
-  std::printf("\n### Circle in three arcs, H = -0.5\n\n");
-  circle_table("cmc-area-circle-0.5-full", -0.5, {4, 6, 8, 10, 12, 14, 16});
-  std::printf("\n### Circle in three arcs, H = -0.9\n\n");
-  circle_table("cmc-area-circle-0.9-full", -0.9, {4, 6, 8, 10, 12, 14, 16});
+  if (wants("cmc-area-circle-0.5-full")) {
+    std::printf("\n### Circle in three arcs, H = -0.5\n\n");
+    circle_table("cmc-area-circle-0.5-full", -0.5, {4, 6, 8, 10, 12, 14, 16});
+  }
+  if (wants("cmc-area-circle-0.9-full")) {
+    std::printf("\n### Circle in three arcs, H = -0.9\n\n");
+    circle_table("cmc-area-circle-0.9-full", -0.9, {4, 6, 8, 10, 12, 14, 16});
+  }
   std::printf("\n### H = 0\n\n");
-  minimal_tables({4, 6, 8, 10, 12}, {4, 6, 8, 10, 12, 14, 16});
+  minimal_tables({4, 6, 8, 10, 12}, {4, 6, 8, 10, 12, 14, 16}, wants);
+  if (wants("cmc-mean-curvature-circle-10-full")) {
+    std::printf("\n### The mean-curvature functional on the circle at degree 10\n\n");
+    mean_curvature_degree_10();
+  }
+  if (wants("cmc-mean-curvature-volume-form-full")) {
+    std::printf("\n### The mean-curvature functional's V form on the circle\n\n");
+    mean_curvature_volume_form();
+  }
   return 0;
 }
