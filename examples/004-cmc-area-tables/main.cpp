@@ -16,7 +16,8 @@
 //                                     --larger-caps-mean-curvature [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
-//   docs/cmc_measurements.md and its mean-curvature tables on the circle (degree 10; the V form), in the sections
+//   docs/cmc_measurements.md, its starts of the area functional side by side and its mean-curvature tables on the
+//   circle (degree 10; the V form), in the sections
 //   whose names end in "-full"; "--full NAME ..." prints only the named ones (docs.py --full-sections). --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
 //   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
@@ -46,6 +47,7 @@
 #include <memory>
 #include <string>
 #include <numbers>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -178,6 +180,87 @@ void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<in
   if (wants("cmc-area-catenoid-tensor-full"))
     minimal_table("cmc-area-catenoid-tensor-full", "\\|√(x² + y²) − cosh z\\|", tensor_degrees,
                   [](int n) { return bpde::tensor_boundary(n, catenoid_square); }, catenoid_off);
+}
+
+// The area functional from `"start": "minimal-surface"` and from the default start, side by side
+// (docs/cmc_measurements.md, "The starts of the area functional side by side"): the H form on the
+// circle (H = -0.5, -0.9, -1.2) and on the tensor helicoid and catenoid pieces (H = -0.8, +0.8), the
+// V form on the circle with v0 the small cap's volume (H = -0.5, -0.9) and the larger cap's
+// (H = -0.7, -0.9, -0.5). Each start's cell: status and first variation (a fold: the H where the
+// branch turns; the V form: the distance of the H found to the cap's), then its continuation steps
+// and the summary's seconds.
+template <class Net>
+bpde::CmcResult<Net> solve_from(const Net& data, double H, std::optional<double> V, bpde::AreaStart start) {
+  bpde::CmcOptions o;
+  o.functional = bpde::CmcFunctionalKind::Area;
+  o.area_start = start;
+  if (V)
+    o.V = *V;
+  else
+    o.H = H;
+  return bpde::solve_cmc(data, o);
+}
+
+template <class Net>
+std::string start_cell(const bpde::CmcResult<Net>& r, double H, bool volume_form) {
+  char buf[96];
+  if (r.summary.status == bpde::Status::Fold)
+    std::snprintf(buf, sizeof buf, "fold at H = %.6f", r.H);
+  else if (volume_form)
+    std::snprintf(buf, sizeof buf, "%s %s, \\|H − H_cap\\| = %.1e", status_cell(r.summary).c_str(),
+                  residual_cell(r.summary.residual).c_str(), std::abs(r.H - H));
+  else
+    std::snprintf(buf, sizeof buf, "%s %s", status_cell(r.summary).c_str(), residual_cell(r.summary.residual).c_str());
+  return buf;
+}
+
+template <class Net>
+void starts_row(const char* form, const char* name, int n, const Net& data, double H, std::optional<double> V) {
+  const auto a = solve_from(data, H, V, bpde::AreaStart::MinimalSurface);
+  const auto b = solve_from(data, H, V, bpde::AreaStart::MeanCurvature);
+  std::printf("| %s | %s | %d | %s | %d | %.2f | %s | %d | %.2f |\n", form, name, n, start_cell(a, H, V.has_value()).c_str(),
+              a.continuation_steps, a.summary.seconds, start_cell(b, H, V.has_value()).c_str(), b.continuation_steps,
+              b.summary.seconds);
+  std::fflush(stdout);
+}
+
+// The volume of the small (larger = false) or the larger cap of H over the unit circle.
+double cap_volume(double H, bool larger) {
+  const double R = 1 / std::abs(H), h = larger ? R + std::sqrt(R * R - 1) : R - std::sqrt(R * R - 1);
+  return std::numbers::pi * h * h * (3 * R - h) / 3;
+}
+
+void area_starts() {
+  const GeneratedSection section("cmc-area-starts-full", "steps (minimal-surface), s (minimal-surface), steps (default), s (default)");
+  std::printf("| form | case | n | start `minimal-surface` | steps (minimal-surface) | s (minimal-surface) | "
+              "default start (`mean-curvature`) | steps (default) | s (default) |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  char name[64];
+  for (double H : {-0.5, -0.9, -1.2})
+    for (int n : {6, 8, 10}) {
+      std::snprintf(name, sizeof name, "circle, H = %g", H);
+      starts_row("H", name, n, bpde::circle_three_arcs(n), H, std::nullopt);
+    }
+  for (double H : {-0.8, 0.8})
+    for (int n : {6, 8}) {
+      std::snprintf(name, sizeof name, "helicoid piece (tensor), H = %g", H);
+      starts_row("H", name, n, bpde::tensor_boundary(n, helicoid), H, std::nullopt);
+    }
+  for (double H : {-0.8, 0.8})
+    for (int n : {6, 8}) {
+      std::snprintf(name, sizeof name, "catenoid piece (tensor), H = %g", H);
+      starts_row("H", name, n, bpde::tensor_boundary(n, catenoid_square), H, std::nullopt);
+    }
+  for (double H : {-0.5, -0.9})
+    for (int n : {6, 8, 10}) {
+      std::snprintf(name, sizeof name, "circle, cap of H = %g (v0 = %.4g)", H, cap_volume(H, false));
+      starts_row("V", name, n, bpde::circle_three_arcs(n), H, cap_volume(H, false));
+    }
+  for (double H : {-0.7, -0.9, -0.5})
+    for (int n : {8, 10}) {
+      std::snprintf(name, sizeof name, "circle, larger cap of H = %g (v0 = %.4g)", H, cap_volume(H, true));
+      starts_row("V", name, n, bpde::circle_three_arcs(n), H, cap_volume(H, true));
+    }
 }
 
 // The small cap of H over the unit circle (H < 0): its radius R = 1/|H|, its centre c (on the z
@@ -589,6 +672,10 @@ int main(int argc, char** argv) {
   }
   std::printf("\n### H = 0\n\n");
   minimal_tables({4, 6, 8, 10, 12}, {4, 6, 8, 10, 12, 14, 16}, wants);
+  if (wants("cmc-area-starts-full")) {
+    std::printf("\n### The starts of the area functional side by side\n\n");
+    area_starts();
+  }
   if (wants("cmc-mean-curvature-circle-10-full")) {
     std::printf("\n### The mean-curvature functional on the circle at degree 10\n\n");
     mean_curvature_degree_10();
