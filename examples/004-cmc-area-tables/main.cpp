@@ -15,10 +15,11 @@
 //                                     --gauge-probe | --larger-caps [N H] |
 //                                     --larger-caps-mean-curvature [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
-//   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
-//   docs/cmc_measurements.md, its starts of the area functional side by side and its mean-curvature tables on the
-//   circle (degree 10; the V form), in the sections
-//   whose names end in "-full"; "--full NAME ..." prints only the named ones (docs.py --full-sections). --tolerance-probe: the circle at n = 10
+//   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full
+//   (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of docs/cmc_measurements.md, its
+//   trust-region final phase on and off, its starts of the area functional side by side and its
+//   mean-curvature tables on the circle (degree 10; the V form), in the sections whose names end in
+//   "-full"; "--full NAME ..." prints only the named ones (docs.py --full-sections). --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
 //   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
 //   margins 0.1 … 0.3, boundary samples left out; under a minute).
@@ -51,6 +52,8 @@
 #include <utility>
 #include <vector>
 
+#include "bezierpde/boundaries/boundary_curves.h"
+#include "bezierpde/boundaries/fit_boundary.h"
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/energies/area_functional.h"
@@ -261,6 +264,101 @@ void area_starts() {
       std::snprintf(name, sizeof name, "circle, larger cap of H = %g (v0 = %.4g)", H, cap_volume(H, true));
       starts_row("V", name, n, bpde::circle_three_arcs(n), H, cap_volume(H, true));
     }
+}
+
+// Curve A of docs/boundaries.md ("Samples without parameters"): the wavy closed space curve
+// r = 1 + 0.25 cos 2θ + 0.2 sin 3θ, z = 0.3 cos 2θ + 0.2 sin 2θ − 0.25 cos 3θ, corners at
+// θ = 0, 1.45, 3.3, 4.75, given as 61 samples per edge without parameters, fitted by a tensor net
+// of degree n (as tests/cmc/test_cmc_area.cpp, CmcArea.RuleIsChosenAgainWhereTheStartNearlyFolds).
+bpde::TensorNet curve_a(int n) {
+  const double cuts[5] = {0.0, 1.45, 3.3, 4.75, 2 * std::numbers::pi};
+  auto curve = [](double th) {
+    const double r = 1 + 0.25 * std::cos(2 * th) + 0.2 * std::sin(3 * th);
+    return Eigen::Vector3d(r * std::cos(th), r * std::sin(th),
+                           0.3 * std::cos(2 * th) + 0.2 * std::sin(2 * th) - 0.25 * std::cos(3 * th));
+  };
+  bpde::BoundaryData data;
+  for (int e = 0; e < 4; ++e) {
+    Eigen::MatrixX3d q(61, 3);
+    for (int k = 0; k <= 60; ++k) q.row(k) = curve(cuts[e] + (cuts[e + 1] - cuts[e]) * k / 60.0).transpose();
+    if (e == 3) q.row(60) = curve(0.0).transpose();  // the first corner, bit for bit
+    data.edges.push_back(bpde::BoundaryCurve::samples(q));
+  }
+  return bpde::fit_tensor_boundary(n, n, data).net;
+}
+
+// One side of the trust-region table: status and first variation, and, where the kept route's
+// soft-mode phase ended at a degenerate bound or a stationary point, that end.
+template <class Net>
+std::string trust_region_cell(const bpde::CmcResult<Net>& r) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s %.1e", status_cell(r.summary).c_str(), r.summary.residual);
+  std::string s = buf;
+  const bpde::AreaRouteRecord* k = r.routes.kept();
+  if (k && k->soft_mode_end != bpde::SoftModeEnd::None) s += std::string(" (") + bpde::to_string(k->soft_mode_end) + ")";
+  return s;
+}
+
+// The area functional with `o` solved with area_trust_region false and true: one row.
+template <class Net>
+void trust_region_row(const std::string& name, const Net& data, bpde::CmcOptions o) {
+  o.functional = bpde::CmcFunctionalKind::Area;
+  o.area_trust_region = false;
+  const auto a = bpde::solve_cmc(data, o);
+  o.area_trust_region = true;
+  const auto b = bpde::solve_cmc(data, o);
+  const bpde::MeanCurvatureStats ha = bpde::mean_curvature_stats(a.net, 40, 0.1),
+                                  hb = bpde::mean_curvature_stats(b.net, 40, 0.1);
+  std::printf("| %s | %s | %.3f … %.3f | %.1f | %s | %.3f … %.3f | %.1f |\n", name.c_str(), trust_region_cell(a).c_str(),
+              ha.min, ha.max, a.summary.seconds, trust_region_cell(b).c_str(), hb.min, hb.max, b.summary.seconds);
+  std::fflush(stdout);
+}
+
+// The trust-region part of the soft-mode phase on and off (docs/cmc_measurements.md, "The
+// trust-region final phase on and off"; CmcOptions::area_trust_region), on the cases where the
+// soft-mode loop stops above the tolerance; H min … max on the 40-grid at corner margin 0.1.
+// "Routes from the D_H point": area_start Dirichlet. The
+// catenoid boundary is the triangular catenoid piece; V_min the volume of its minimal surface (the
+// area functional at H = 0, solved at the same degree).
+void trust_region_table() {
+  const GeneratedSection section("cmc-area-trust-region-full", "s without, s with");
+  std::printf("| case | without | H without | s without | with | H with | s with |\n"
+              "| --- | --- | --- | --- | --- | --- | --- |\n");
+  const auto h_options = [](double H, bool dirichlet) {
+    bpde::CmcOptions o;
+    o.H = H;
+    if (dirichlet) o.area_start = bpde::AreaStart::Dirichlet;
+    return o;
+  };
+  trust_region_row("helicoid piece, tensor n = 4, H = 0, routes from the D_H point",
+                   bpde::tensor_boundary(4, helicoid), h_options(0, true));
+  trust_region_row("helicoid piece, tensor n = 8, H = 0.8", bpde::tensor_boundary(8, helicoid), h_options(0.8, false));
+  trust_region_row("catenoid piece, tensor n = 6, H = 0, routes from the D_H point",
+                   bpde::tensor_boundary(6, catenoid_square), h_options(0, true));
+  trust_region_row("catenoid piece, tensor n = 10, H = 0", bpde::tensor_boundary(10, catenoid_square), h_options(0, false));
+  trust_region_row("the same, routes from the D_H point", bpde::tensor_boundary(10, catenoid_square), h_options(0, true));
+  trust_region_row("sphere triangle n = 8, H = 1", bpde::triangular_boundary(8, bpde::sphere_triangle), h_options(1, false));
+  trust_region_row("sphere triangle n = 10, H = 1", bpde::triangular_boundary(10, bpde::sphere_triangle), h_options(1, false));
+  trust_region_row("catenoid boundary, triangular n = 7, H = −0.1204", bpde::triangular_boundary(7, catenoid),
+                   h_options(-0.1204, false));
+  trust_region_row("the same at n = 8", bpde::triangular_boundary(8, catenoid), h_options(-0.1204, false));
+  trust_region_row("the same at n = 8, H = 0.12", bpde::triangular_boundary(8, catenoid), h_options(0.12, false));
+  for (const auto& [n, factors] : {std::pair{7, std::vector<double>{1.0, 1.05}}, std::pair{8, std::vector<double>{0.95, 1.05}}}) {
+    const bpde::TriangularNet data = bpde::triangular_boundary(n, catenoid);
+    const double v_min = solve(data, 0.0, true).V;
+    for (double f : factors) {
+      bpde::CmcOptions o;
+      o.V = f * v_min;
+      char name[128];
+      std::snprintf(name, sizeof name, "catenoid boundary n = %d, V = %g V_min (V_min = %.5f)", n, f, v_min);
+      trust_region_row(name, data, o);
+    }
+  }
+  for (int n : {8, 10, 12}) {
+    char name[96];
+    std::snprintf(name, sizeof name, "curve A ([boundaries.md](boundaries.md)), tensor n = %d, H = 0", n);
+    trust_region_row(name, curve_a(n), h_options(0, false));
+  }
 }
 
 // The small cap of H over the unit circle (H < 0): its radius R = 1/|H|, its centre c (on the z
@@ -672,6 +770,10 @@ int main(int argc, char** argv) {
   }
   std::printf("\n### H = 0\n\n");
   minimal_tables({4, 6, 8, 10, 12}, {4, 6, 8, 10, 12, 14, 16}, wants);
+  if (wants("cmc-area-trust-region-full")) {
+    std::printf("\n### The trust-region final phase on and off\n\n");
+    trust_region_table();
+  }
   if (wants("cmc-area-starts-full")) {
     std::printf("\n### The starts of the area functional side by side\n\n");
     area_starts();
