@@ -73,8 +73,8 @@ ARGS = {
 # The extra arguments that make a program print its heavy ("-full") sections (docs.py --full).
 # With --full-sections NAME,... the names follow them: 004-cmc-area-tables then prints only the
 # named "-full" sections (its whole --full run takes many minutes; cmc-area-trust-region-full
-# about 5 minutes, cmc-area-starts-full about 2, cmc-mean-curvature-circle-10-full and
-# cmc-mean-curvature-volume-form-full seconds).
+# about 5 minutes, cmc-area-starts-full about 2, cmc-area-conformal-gate-full,
+# cmc-mean-curvature-circle-10-full and cmc-mean-curvature-volume-form-full seconds).
 FULL_ARGS = {
     "004-cmc-area-tables": ["--full"],
 }

@@ -17,7 +17,8 @@
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
 //   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full
 //   (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of docs/cmc_measurements.md, its
-//   trust-region final phase on and off, its starts of the area functional side by side and its
+//   trust-region final phase on and off, its starts of the area functional side by side, its
+//   conformal-data gate of mean-curvature-start and its
 //   mean-curvature tables on the circle (degree 10; the V form), in the sections whose names end in
 //   "-full"; "--full NAME ..." prints only the named ones (docs.py --full-sections). --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
@@ -359,6 +360,48 @@ void trust_region_table() {
     std::snprintf(name, sizeof name, "curve A ([boundaries.md](boundaries.md)), tensor n = %d, H = 0", n);
     trust_region_row(name, curve_a(n), h_options(0, false));
   }
+}
+
+// The relative first variation of A_H at the D_H critical point of `data` (the gate of
+// mean-curvature-start, docs/cmc_algorithm.md), measured on the plain rule with q points per
+// direction: max |∇A + 2H∇V| over the free points against the same with |∇A| + 2|H||∇V|, as the
+// probes above.
+double dirichlet_point_first_variation(const bpde::TriangularNet& data, double H, int q) {
+  const auto d = solve(data, H, bpde::CmcFunctionalKind::Dirichlet);
+  const int n = data.n();
+  const std::vector<int> idx = d.net.free_indices(bpde::FixedSet::Boundary);
+  const bpde::AreaForm a = bpde::AreaForm::triangular(n, q, 1);
+  const auto f = bpde::CmcFunctional::cached_triangular(n);
+  Eigen::MatrixX3d GA, SA, GV, SV;
+  a.gradient_rows_and_scale(d.net.points(), idx, &GA, &SA);
+  f->volume_form().gradient_rows_and_scale(d.net.points(), idx, &GV, &SV);
+  return (GA + 2 * H * GV).cwiseAbs().maxCoeff() / (SA + 2 * std::abs(H) * SV).maxCoeff();
+}
+
+// Conformal data: when mean-curvature-start is skipped (docs/cmc_measurements.md). The first
+// variation at the D_H point (on the plain rule the area solve ends with), whether
+// mean-curvature-start was tried and kept, and the area solve's seconds from the default start
+// and with area_start Dirichlet.
+void conformal_gate_table() {
+  const GeneratedSection section("cmc-area-conformal-gate-full", "area solve s, dirichlet start s");
+  std::printf("| data | n | H | first variation at the D_H point | mean-curvature-start | status | area solve s | "
+              "dirichlet start s |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  const auto row = [](const char* name, const bpde::TriangularNet& data, double H) {
+    bpde::CmcOptions o;
+    o.H = H;
+    o.functional = bpde::CmcFunctionalKind::Area;
+    const auto r = bpde::solve_cmc(data, o);
+    o.area_start = bpde::AreaStart::Dirichlet;
+    const auto rd = bpde::solve_cmc(data, o);
+    const bpde::AreaRouteRecord* mc = r.routes.find(bpde::AreaRoute::MeanCurvatureStart);
+    const char* gate = !mc || !mc->tried ? "not tried" : mc->kept ? "tried, kept" : "tried, gives way";
+    std::printf("| %s | %d | %g | %.1e | %s | %s | %.3f | %.3f |\n", name, data.n(), H,
+                dirichlet_point_first_variation(data, H, r.quadrature_points), gate, status_cell(r.summary).c_str(),
+                r.summary.seconds, rd.summary.seconds);
+    std::fflush(stdout);
+  };
+  for (int n : {8, 9, 10, 12, 14, 16}) row("sphere triangle", bpde::triangular_boundary(n, bpde::sphere_triangle), 1.0);
+  for (int n : {8, 10, 12}) row("Fig. 1 circle", bpde::circle_three_arcs(n), -0.5);
 }
 
 // The small cap of H over the unit circle (H < 0): its radius R = 1/|H|, its centre c (on the z
@@ -773,6 +816,10 @@ int main(int argc, char** argv) {
   if (wants("cmc-area-trust-region-full")) {
     std::printf("\n### The trust-region final phase on and off\n\n");
     trust_region_table();
+  }
+  if (wants("cmc-area-conformal-gate-full")) {
+    std::printf("\n### Conformal data: when the mean-curvature start is skipped\n\n");
+    conformal_gate_table();
   }
   if (wants("cmc-area-starts-full")) {
     std::printf("\n### The starts of the area functional side by side\n\n");
