@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerate (or check) the generated sections of the docs from the example programs.
 
-Usage: docs.py [--check] [--full] [--run GEN,...] [--from GEN=FILE ...] [--bench] [--build DIR] [EXAMPLE ...]
+Usage: docs.py [--check] [--full [--full-sections NAME,...]] [--run GEN,...] [--from GEN=FILE ...] [--bench] [--build DIR] [EXAMPLE ...]
 
 Every example program (examples/NNN-name/main.cpp, built as build/example_NNN_name) prints its
 tables between marker lines
@@ -25,7 +25,9 @@ the numbers must be the same. Anything more is a difference.
 Heavy tables: sections whose name ends in "-full" are printed only when the program runs with the
 extra arguments of FULL_ARGS (minutes, not for CI). `--full` runs those programs with them and
 rewrites (or, with --check, compares) the "-full" sections too; without it they are left as they
-are and not compared.
+are and not compared. `--full --full-sections NAME,...` runs them with the section names appended
+to FULL_ARGS, so that they print (and this script rewrites) only those "-full" sections; the
+others are left as they are.
 
 Measurement scripts: sections whose name starts with "GEN-" for a generator GEN of GENERATORS
 below are printed by a script that runs for minutes (benchmarks, Surface Evolver, sweeps), not
@@ -69,6 +71,10 @@ ARGS = {
 }
 
 # The extra arguments that make a program print its heavy ("-full") sections (docs.py --full).
+# With --full-sections NAME,... the names follow them: 004-cmc-area-tables then prints only the
+# named "-full" sections (its whole --full run takes many minutes; cmc-area-trust-region-full
+# about 5 minutes, cmc-area-starts-full about 2, cmc-area-conformal-gate-full,
+# cmc-mean-curvature-circle-10-full and cmc-mean-curvature-volume-form-full seconds).
 FULL_ARGS = {
     "004-cmc-area-tables": ["--full"],
 }
@@ -209,7 +215,7 @@ def stamp_line():
             f"{os.cpu_count()} cores ({platform.system()} {platform.machine()}).\n")
 
 
-def run(example, build, tmp, full=False):
+def run(example, build, tmp, full=False, full_sections=()):
     program = build / ("example_" + re.sub(r"[^A-Za-z0-9_]", "_", example))
     if not program.exists():
         sys.exit(f"{program} is missing: build it (bash scripts/build.sh)")
@@ -218,6 +224,8 @@ def run(example, build, tmp, full=False):
     args = [a.format(src=ROOT / "examples" / example, tmp=scratch) for a in ARGS.get(example, [])]
     if full:
         args += FULL_ARGS.get(example, [])
+        if example in FULL_ARGS:
+            args += list(full_sections)
     r = subprocess.run([str(program)] + args, cwd=scratch, capture_output=True, text=True,
                        timeout=None if full else 600)
     if r.returncode != 0:
@@ -266,6 +274,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
     ap.add_argument("--full", action="store_true", help="also the heavy (-full) sections of FULL_ARGS (minutes)")
+    ap.add_argument("--full-sections", default="",
+                    help="with --full: only these comma-separated -full sections (the others are left as they are)")
     ap.add_argument("--run", default="", help="comma-separated measurement scripts to run (GENERATORS; minutes)")
     ap.add_argument("--bench", action="store_true", help="the same as --run bench")
     ap.add_argument("--from", dest="saved", action="append", default=[], metavar="GEN=FILE",
@@ -273,6 +283,9 @@ def main():
     ap.add_argument("--build", default=str(ROOT / "build"), help="build folder with the example programs")
     ap.add_argument("examples", nargs="*", help="example folder names (default: all)")
     a = ap.parse_args()
+    a.full_sections = [x for x in a.full_sections.split(",") if x]
+    if a.full_sections and not a.full:
+        sys.exit("--full-sections needs --full")
     a.run = set(filter(None, a.run.split(","))) | ({"bench"} if a.bench else set())
     unknown = (a.run | {f.split("=", 1)[0] for f in a.saved}) - set(GENERATORS)
     if unknown:
@@ -284,7 +297,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="bpde_docs_") as tmp:
         printed = {}  # name -> (example, columns, lines)
         for e in examples:
-            for name, (cols, body) in run(e, build, tmp, a.full).items():
+            for name, (cols, body) in run(e, build, tmp, a.full, a.full_sections).items():
                 if name in printed:
                     sys.exit(f"section {name} is printed by {printed[name][0]} and {e}")
                 printed[name] = (e, cols, body)
@@ -319,7 +332,8 @@ def main():
                 continue
             if m and m.group(1) in idle:
                 placed.add(m.group(1))  # a measurement script's table, not run: left as it is
-            elif m and a.examples == [] and not (is_full(m.group(1)) and not a.full):
+            elif m and a.examples == [] and not (is_full(m.group(1)) and
+                                                 (not a.full or (a.full_sections and m.group(1) not in a.full_sections))):
                 problems.append(f"{doc.relative_to(ROOT)}: section {m.group(1)} is printed by no example program")
             if name is not None:
                 if line.strip() == END:

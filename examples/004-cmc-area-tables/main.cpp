@@ -11,12 +11,16 @@
 //   - H = 0, tensor: the catenoid piece (θ, ρ) = (1.2u, 1.1 + 0.8v) on the square (radial, so not
 //     conformal: the conformal one is ρ = cosh z with z linear); checked the same way.
 //
-// Usage: example_004_cmc_area_tables [--full | --tolerance-probe | --margin-probe | --rule-probe |
+// Usage: example_004_cmc_area_tables [--full [NAME ...] | --tolerance-probe | --margin-probe | --rule-probe |
 //                                     --gauge-probe | --larger-caps [N H] |
 //                                     --larger-caps-mean-curvature [N H] | --solve-circle N TOLERANCE]
 //   Without --full (what scripts/docs.py --check runs in CI, a few seconds): the circle at H = -0.5
-//   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of
-//   docs/cmc_measurements.md, in the sections whose names end in "-full". --tolerance-probe: the circle at n = 10
+//   for n = 4, 5, and the rule probe below (section cmc-area-rule-probe). With --full
+//   (scripts/docs.sh --full; minutes): the degree tables n = 4 … 16 of docs/cmc_measurements.md, its
+//   trust-region final phase on and off, its starts of the area functional side by side, its
+//   conformal-data gate of mean-curvature-start and its
+//   mean-curvature tables on the circle (degree 10; the V form), in the sections whose names end in
+//   "-full"; "--full NAME ..." prints only the named ones (docs.py --full-sections). --tolerance-probe: the circle at n = 10
 //   (H = -0.5, -0.9) solved to the tolerances 1e-11, 1e-12, 1e-13 (a plain table, about a minute).
 //   --margin-probe: where the area route's H deviates on the circle at n = 10, 12, 14 (corner
 //   margins 0.1 … 0.3, boundary samples left out; under a minute).
@@ -45,9 +49,12 @@
 #include <memory>
 #include <string>
 #include <numbers>
+#include <optional>
 #include <utility>
 #include <vector>
 
+#include "bezierpde/boundaries/boundary_curves.h"
+#include "bezierpde/boundaries/fit_boundary.h"
 #include "bezierpde/boundaries/reference_boundaries.h"
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/energies/area_functional.h"
@@ -161,15 +168,300 @@ void minimal_table(const char* name, const char* column, const std::vector<int>&
   }
 }
 
-void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<int>& triangular_degrees) {
-  minimal_table("cmc-area-helicoid-full", "\\|x sin z − y cos z\\|", tensor_degrees,
-                [](int n) { return bpde::tensor_boundary(n, helicoid); }, helicoid_off);
-  std::printf("\n");
-  minimal_table("cmc-area-catenoid-full", "\\|√(x² + y²) − cosh z\\|", triangular_degrees,
-                [](int n) { return bpde::triangular_boundary(n, catenoid); }, catenoid_off);
-  std::printf("\n");
-  minimal_table("cmc-area-catenoid-tensor-full", "\\|√(x² + y²) − cosh z\\|", tensor_degrees,
-                [](int n) { return bpde::tensor_boundary(n, catenoid_square); }, catenoid_off);
+// The H = 0 tables whose names `wants`.
+template <class Wants>
+void minimal_tables(const std::vector<int>& tensor_degrees, const std::vector<int>& triangular_degrees, Wants wants) {
+  if (wants("cmc-area-helicoid-full")) {
+    minimal_table("cmc-area-helicoid-full", "\\|x sin z − y cos z\\|", tensor_degrees,
+                  [](int n) { return bpde::tensor_boundary(n, helicoid); }, helicoid_off);
+    std::printf("\n");
+  }
+  if (wants("cmc-area-catenoid-full")) {
+    minimal_table("cmc-area-catenoid-full", "\\|√(x² + y²) − cosh z\\|", triangular_degrees,
+                  [](int n) { return bpde::triangular_boundary(n, catenoid); }, catenoid_off);
+    std::printf("\n");
+  }
+  if (wants("cmc-area-catenoid-tensor-full"))
+    minimal_table("cmc-area-catenoid-tensor-full", "\\|√(x² + y²) − cosh z\\|", tensor_degrees,
+                  [](int n) { return bpde::tensor_boundary(n, catenoid_square); }, catenoid_off);
+}
+
+// The area functional from `"start": "minimal-surface"` and from the default start, side by side
+// (docs/cmc_measurements.md, "The starts of the area functional side by side"): the H form on the
+// circle (H = -0.5, -0.9, -1.2) and on the tensor helicoid and catenoid pieces (H = -0.8, +0.8), the
+// V form on the circle with v0 the small cap's volume (H = -0.5, -0.9) and the larger cap's
+// (H = -0.7, -0.9, -0.5). Each start's cell: status and first variation (a fold: the H where the
+// branch turns; the V form: the distance of the H found to the cap's), then its continuation steps
+// and the summary's seconds.
+template <class Net>
+bpde::CmcResult<Net> solve_from(const Net& data, double H, std::optional<double> V, bpde::AreaStart start) {
+  bpde::CmcOptions o;
+  o.functional = bpde::CmcFunctionalKind::Area;
+  o.area_start = start;
+  if (V)
+    o.V = *V;
+  else
+    o.H = H;
+  return bpde::solve_cmc(data, o);
+}
+
+template <class Net>
+std::string start_cell(const bpde::CmcResult<Net>& r, double H, bool volume_form) {
+  char buf[96];
+  if (r.summary.status == bpde::Status::Fold)
+    std::snprintf(buf, sizeof buf, "fold at H = %.6f", r.H);
+  else if (volume_form)
+    std::snprintf(buf, sizeof buf, "%s %s, \\|H − H_cap\\| = %.1e", status_cell(r.summary).c_str(),
+                  residual_cell(r.summary.residual).c_str(), std::abs(r.H - H));
+  else
+    std::snprintf(buf, sizeof buf, "%s %s", status_cell(r.summary).c_str(), residual_cell(r.summary.residual).c_str());
+  return buf;
+}
+
+template <class Net>
+void starts_row(const char* form, const char* name, int n, const Net& data, double H, std::optional<double> V) {
+  const auto a = solve_from(data, H, V, bpde::AreaStart::MinimalSurface);
+  const auto b = solve_from(data, H, V, bpde::AreaStart::MeanCurvature);
+  std::printf("| %s | %s | %d | %s | %d | %.2f | %s | %d | %.2f |\n", form, name, n, start_cell(a, H, V.has_value()).c_str(),
+              a.continuation_steps, a.summary.seconds, start_cell(b, H, V.has_value()).c_str(), b.continuation_steps,
+              b.summary.seconds);
+  std::fflush(stdout);
+}
+
+// The volume of the small (larger = false) or the larger cap of H over the unit circle.
+double cap_volume(double H, bool larger) {
+  const double R = 1 / std::abs(H), h = larger ? R + std::sqrt(R * R - 1) : R - std::sqrt(R * R - 1);
+  return std::numbers::pi * h * h * (3 * R - h) / 3;
+}
+
+void area_starts() {
+  const GeneratedSection section("cmc-area-starts-full", "steps (minimal-surface), s (minimal-surface), steps (default), s (default)");
+  std::printf("| form | case | n | start `minimal-surface` | steps (minimal-surface) | s (minimal-surface) | "
+              "default start (`mean-curvature`) | steps (default) | s (default) |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  char name[64];
+  for (double H : {-0.5, -0.9, -1.2})
+    for (int n : {6, 8, 10}) {
+      std::snprintf(name, sizeof name, "circle, H = %g", H);
+      starts_row("H", name, n, bpde::circle_three_arcs(n), H, std::nullopt);
+    }
+  for (double H : {-0.8, 0.8})
+    for (int n : {6, 8}) {
+      std::snprintf(name, sizeof name, "helicoid piece (tensor), H = %g", H);
+      starts_row("H", name, n, bpde::tensor_boundary(n, helicoid), H, std::nullopt);
+    }
+  for (double H : {-0.8, 0.8})
+    for (int n : {6, 8}) {
+      std::snprintf(name, sizeof name, "catenoid piece (tensor), H = %g", H);
+      starts_row("H", name, n, bpde::tensor_boundary(n, catenoid_square), H, std::nullopt);
+    }
+  for (double H : {-0.5, -0.9})
+    for (int n : {6, 8, 10}) {
+      std::snprintf(name, sizeof name, "circle, cap of H = %g (v0 = %.4g)", H, cap_volume(H, false));
+      starts_row("V", name, n, bpde::circle_three_arcs(n), H, cap_volume(H, false));
+    }
+  for (double H : {-0.7, -0.9, -0.5})
+    for (int n : {8, 10}) {
+      std::snprintf(name, sizeof name, "circle, larger cap of H = %g (v0 = %.4g)", H, cap_volume(H, true));
+      starts_row("V", name, n, bpde::circle_three_arcs(n), H, cap_volume(H, true));
+    }
+}
+
+// Curve A of docs/boundaries.md ("Samples without parameters"): the wavy closed space curve
+// r = 1 + 0.25 cos 2θ + 0.2 sin 3θ, z = 0.3 cos 2θ + 0.2 sin 2θ − 0.25 cos 3θ, corners at
+// θ = 0, 1.45, 3.3, 4.75, given as 61 samples per edge without parameters, fitted by a tensor net
+// of degree n (as tests/cmc/test_cmc_area.cpp, CmcArea.RuleIsChosenAgainWhereTheStartNearlyFolds).
+bpde::TensorNet curve_a(int n) {
+  const double cuts[5] = {0.0, 1.45, 3.3, 4.75, 2 * std::numbers::pi};
+  auto curve = [](double th) {
+    const double r = 1 + 0.25 * std::cos(2 * th) + 0.2 * std::sin(3 * th);
+    return Eigen::Vector3d(r * std::cos(th), r * std::sin(th),
+                           0.3 * std::cos(2 * th) + 0.2 * std::sin(2 * th) - 0.25 * std::cos(3 * th));
+  };
+  bpde::BoundaryData data;
+  for (int e = 0; e < 4; ++e) {
+    Eigen::MatrixX3d q(61, 3);
+    for (int k = 0; k <= 60; ++k) q.row(k) = curve(cuts[e] + (cuts[e + 1] - cuts[e]) * k / 60.0).transpose();
+    if (e == 3) q.row(60) = curve(0.0).transpose();  // the first corner, bit for bit
+    data.edges.push_back(bpde::BoundaryCurve::samples(q));
+  }
+  return bpde::fit_tensor_boundary(n, n, data).net;
+}
+
+// One side of the trust-region table: status and first variation, and, where the kept route's
+// soft-mode phase ended at a degenerate bound or a stationary point, that end.
+template <class Net>
+std::string trust_region_cell(const bpde::CmcResult<Net>& r) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s %.1e", status_cell(r.summary).c_str(), r.summary.residual);
+  std::string s = buf;
+  const bpde::AreaRouteRecord* k = r.routes.kept();
+  if (k && k->soft_mode_end != bpde::SoftModeEnd::None) s += std::string(" (") + bpde::to_string(k->soft_mode_end) + ")";
+  return s;
+}
+
+// The area functional with `o` solved with area_trust_region false and true: one row.
+template <class Net>
+void trust_region_row(const std::string& name, const Net& data, bpde::CmcOptions o) {
+  o.functional = bpde::CmcFunctionalKind::Area;
+  o.area_trust_region = false;
+  const auto a = bpde::solve_cmc(data, o);
+  o.area_trust_region = true;
+  const auto b = bpde::solve_cmc(data, o);
+  const bpde::MeanCurvatureStats ha = bpde::mean_curvature_stats(a.net, 40, 0.1),
+                                  hb = bpde::mean_curvature_stats(b.net, 40, 0.1);
+  std::printf("| %s | %s | %.3f … %.3f | %.1f | %s | %.3f … %.3f | %.1f |\n", name.c_str(), trust_region_cell(a).c_str(),
+              ha.min, ha.max, a.summary.seconds, trust_region_cell(b).c_str(), hb.min, hb.max, b.summary.seconds);
+  std::fflush(stdout);
+}
+
+// The trust-region part of the soft-mode phase on and off (docs/cmc_measurements.md, "The
+// trust-region final phase on and off"; CmcOptions::area_trust_region), on the cases where the
+// soft-mode loop stops above the tolerance; H min … max on the 40-grid at corner margin 0.1.
+// "Routes from the D_H point": area_start Dirichlet. The
+// catenoid boundary is the triangular catenoid piece; V_min the volume of its minimal surface (the
+// area functional at H = 0, solved at the same degree).
+void trust_region_table() {
+  const GeneratedSection section("cmc-area-trust-region-full", "s without, s with");
+  std::printf("| case | without | H without | s without | with | H with | s with |\n"
+              "| --- | --- | --- | --- | --- | --- | --- |\n");
+  const auto h_options = [](double H, bool dirichlet) {
+    bpde::CmcOptions o;
+    o.H = H;
+    if (dirichlet) o.area_start = bpde::AreaStart::Dirichlet;
+    return o;
+  };
+  trust_region_row("helicoid piece, tensor n = 4, H = 0, routes from the D_H point",
+                   bpde::tensor_boundary(4, helicoid), h_options(0, true));
+  trust_region_row("helicoid piece, tensor n = 8, H = 0.8", bpde::tensor_boundary(8, helicoid), h_options(0.8, false));
+  trust_region_row("catenoid piece, tensor n = 6, H = 0, routes from the D_H point",
+                   bpde::tensor_boundary(6, catenoid_square), h_options(0, true));
+  trust_region_row("catenoid piece, tensor n = 10, H = 0", bpde::tensor_boundary(10, catenoid_square), h_options(0, false));
+  trust_region_row("the same, routes from the D_H point", bpde::tensor_boundary(10, catenoid_square), h_options(0, true));
+  trust_region_row("sphere triangle n = 8, H = 1", bpde::triangular_boundary(8, bpde::sphere_triangle), h_options(1, false));
+  trust_region_row("sphere triangle n = 10, H = 1", bpde::triangular_boundary(10, bpde::sphere_triangle), h_options(1, false));
+  trust_region_row("catenoid boundary, triangular n = 7, H = −0.1204", bpde::triangular_boundary(7, catenoid),
+                   h_options(-0.1204, false));
+  trust_region_row("the same at n = 8", bpde::triangular_boundary(8, catenoid), h_options(-0.1204, false));
+  trust_region_row("the same at n = 8, H = 0.12", bpde::triangular_boundary(8, catenoid), h_options(0.12, false));
+  for (const auto& [n, factors] : {std::pair{7, std::vector<double>{1.0, 1.05}}, std::pair{8, std::vector<double>{0.95, 1.05}}}) {
+    const bpde::TriangularNet data = bpde::triangular_boundary(n, catenoid);
+    const double v_min = solve(data, 0.0, true).V;
+    for (double f : factors) {
+      bpde::CmcOptions o;
+      o.V = f * v_min;
+      char name[128];
+      std::snprintf(name, sizeof name, "catenoid boundary n = %d, V = %g V_min (V_min = %.5f)", n, f, v_min);
+      trust_region_row(name, data, o);
+    }
+  }
+  for (int n : {8, 10, 12}) {
+    char name[96];
+    std::snprintf(name, sizeof name, "curve A ([boundaries.md](boundaries.md)), tensor n = %d, H = 0", n);
+    trust_region_row(name, curve_a(n), h_options(0, false));
+  }
+}
+
+// The relative first variation of A_H at the D_H critical point of `data` (the gate of
+// mean-curvature-start, docs/cmc_algorithm.md), measured on the plain rule with q points per
+// direction: max |∇A + 2H∇V| over the free points against the same with |∇A| + 2|H||∇V|, as the
+// probes above.
+double dirichlet_point_first_variation(const bpde::TriangularNet& data, double H, int q) {
+  const auto d = solve(data, H, bpde::CmcFunctionalKind::Dirichlet);
+  const int n = data.n();
+  const std::vector<int> idx = d.net.free_indices(bpde::FixedSet::Boundary);
+  const bpde::AreaForm a = bpde::AreaForm::triangular(n, q, 1);
+  const auto f = bpde::CmcFunctional::cached_triangular(n);
+  Eigen::MatrixX3d GA, SA, GV, SV;
+  a.gradient_rows_and_scale(d.net.points(), idx, &GA, &SA);
+  f->volume_form().gradient_rows_and_scale(d.net.points(), idx, &GV, &SV);
+  return (GA + 2 * H * GV).cwiseAbs().maxCoeff() / (SA + 2 * std::abs(H) * SV).maxCoeff();
+}
+
+// Conformal data: when mean-curvature-start is skipped (docs/cmc_measurements.md). The first
+// variation at the D_H point (on the plain rule the area solve ends with), whether
+// mean-curvature-start was tried and kept, and the area solve's seconds from the default start
+// and with area_start Dirichlet.
+void conformal_gate_table() {
+  const GeneratedSection section("cmc-area-conformal-gate-full", "area solve s, dirichlet start s");
+  std::printf("| data | n | H | first variation at the D_H point | mean-curvature-start | status | area solve s | "
+              "dirichlet start s |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  const auto row = [](const char* name, const bpde::TriangularNet& data, double H) {
+    bpde::CmcOptions o;
+    o.H = H;
+    o.functional = bpde::CmcFunctionalKind::Area;
+    const auto r = bpde::solve_cmc(data, o);
+    o.area_start = bpde::AreaStart::Dirichlet;
+    const auto rd = bpde::solve_cmc(data, o);
+    const bpde::AreaRouteRecord* mc = r.routes.find(bpde::AreaRoute::MeanCurvatureStart);
+    const char* gate = !mc || !mc->tried ? "not tried" : mc->kept ? "tried, kept" : "tried, gives way";
+    std::printf("| %s | %d | %g | %.1e | %s | %s | %.3f | %.3f |\n", name, data.n(), H,
+                dirichlet_point_first_variation(data, H, r.quadrature_points), gate, status_cell(r.summary).c_str(),
+                r.summary.seconds, rd.summary.seconds);
+    std::fflush(stdout);
+  };
+  for (int n : {8, 9, 10, 12, 14, 16}) row("sphere triangle", bpde::triangular_boundary(n, bpde::sphere_triangle), 1.0);
+  for (int n : {8, 10, 12}) row("Fig. 1 circle", bpde::circle_three_arcs(n), -0.5);
+}
+
+// The small cap of H over the unit circle (H < 0): its radius R = 1/|H|, its centre c (on the z
+// axis, below the plane: the cap bulges to +z) and its volume over the plane.
+struct SmallCap {
+  double R;
+  Eigen::Vector3d c;
+  double V;
+  explicit SmallCap(double H) : R(1 / std::abs(H)), c(0, 0, -std::sqrt(R * R - 1)) {
+    const double h = R - std::sqrt(R * R - 1);
+    V = std::numbers::pi * h * h * (3 * R - h) / 3;
+  }
+  double dist(const bpde::TriangularNet& net) const {
+    return worst(net, [&](const Eigen::Vector3d& x) { return (x - c).norm() - R; });
+  }
+};
+
+// The area and the mean-curvature functional on the circle at degree 10, H = -0.5 and -0.9
+// (docs/cmc_measurements.md, "The mean-curvature functional on the circle at degree 10"): the
+// distance to the sphere (40-grid, corners included), H on the 40-grid at corner margin 0.1, the
+// status with the residual of the functional solved, and the summary's seconds.
+void mean_curvature_degree_10() {
+  const GeneratedSection section("cmc-mean-curvature-circle-10-full", "seconds");
+  std::printf("| H | functional | dist to the sphere | max \\|H_sampled − H\\| | status | residual | seconds |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
+  for (double H : {-0.5, -0.9}) {
+    const SmallCap cap(H);
+    for (const bpde::CmcFunctionalKind f : {bpde::CmcFunctionalKind::Area, bpde::CmcFunctionalKind::MeanCurvature}) {
+      const auto r = solve(bpde::circle_three_arcs(10), H, f);
+      const bpde::MeanCurvatureStats s = bpde::mean_curvature_stats(r.net, 40, 0.1);
+      std::printf("| %g | %s | %.1e | %.1e | %s | %s %.1e | %.2f |\n", H, bpde::to_string(r.functional).c_str(),
+                  cap.dist(r.net), std::max(std::abs(s.min - H), std::abs(s.max - H)), status_cell(r.summary).c_str(),
+                  f == bpde::CmcFunctionalKind::MeanCurvature ? "√Φ" : "first variation", r.summary.residual,
+                  r.summary.seconds);
+      std::fflush(stdout);
+    }
+  }
+}
+
+// The mean-curvature functional's V form on the circle (docs/cmc_measurements.md, "The
+// mean-curvature functional's V form on the circle"): v0 the volume of the small cap of H, solver
+// newton and ceres, n = 8 … 14; the H found against the cap's, the distance to the cap's sphere.
+void mean_curvature_volume_form() {
+  const GeneratedSection section("cmc-mean-curvature-volume-form-full", "iterations, seconds");
+  std::printf("| n | H of the cap | solver | iterations | status | √Φ | H error | dist | seconds |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (int n : {8, 10, 12, 14})
+    for (double H : {-0.5, -0.9})
+      for (const bpde::CmcSolver solver : {bpde::CmcSolver::Newton, bpde::CmcSolver::Ceres}) {
+        const SmallCap cap(H);
+        bpde::CmcOptions o;
+        o.functional = bpde::CmcFunctionalKind::MeanCurvature;
+        o.V = cap.V;
+        o.solver = solver;
+        const auto r = bpde::solve_cmc(bpde::circle_three_arcs(n), o);
+        std::printf("| %d | %g | %s | %d | %s | %.1e | %.1e | %.1e | %.2f |\n", n, H, bpde::to_string(solver).c_str(),
+                    r.summary.iterations, status_cell(r.summary).c_str(), r.summary.residual, std::abs(r.H - H),
+                    cap.dist(r.net), r.summary.seconds);
+        std::fflush(stdout);
+      }
 }
 
 // The circle at n = 10 solved to tighter first-variation tolerances than the default 1e-11
@@ -501,16 +793,45 @@ int main(int argc, char** argv) {
     return 0;
   }
   const bool full = argc > 1 && std::string(argv[1]) == "--full";
+  // "--full NAME ..." prints only the named "-full" sections (scripts/docs.py --full-sections).
+  const std::vector<std::string> only(argv + std::min(argc, 2), argv + argc);
+  const auto wants = [&](const char* name) {
+    return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+  };
   std::printf("### Circle in three arcs, H = -0.5, n = 4, 5\n\n");
   circle_table("cmc-area-circle", -0.5, {4, 5});
   std::printf("\n### Area rules at the circle's corners\n\n");
   rule_probe();
   if (!full) return 0;
-  std::printf("\n### Circle in three arcs, H = -0.5\n\n");
-  circle_table("cmc-area-circle-0.5-full", -0.5, {4, 6, 8, 10, 12, 14, 16});
-  std::printf("\n### Circle in three arcs, H = -0.9\n\n");
-  circle_table("cmc-area-circle-0.9-full", -0.9, {4, 6, 8, 10, 12, 14, 16});
+  if (wants("cmc-area-circle-0.5-full")) {
+    std::printf("\n### Circle in three arcs, H = -0.5\n\n");
+    circle_table("cmc-area-circle-0.5-full", -0.5, {4, 6, 8, 10, 12, 14, 16});
+  }
+  if (wants("cmc-area-circle-0.9-full")) {
+    std::printf("\n### Circle in three arcs, H = -0.9\n\n");
+    circle_table("cmc-area-circle-0.9-full", -0.9, {4, 6, 8, 10, 12, 14, 16});
+  }
   std::printf("\n### H = 0\n\n");
-  minimal_tables({4, 6, 8, 10, 12}, {4, 6, 8, 10, 12, 14, 16});
+  minimal_tables({4, 6, 8, 10, 12}, {4, 6, 8, 10, 12, 14, 16}, wants);
+  if (wants("cmc-area-trust-region-full")) {
+    std::printf("\n### The trust-region final phase on and off\n\n");
+    trust_region_table();
+  }
+  if (wants("cmc-area-conformal-gate-full")) {
+    std::printf("\n### Conformal data: when the mean-curvature start is skipped\n\n");
+    conformal_gate_table();
+  }
+  if (wants("cmc-area-starts-full")) {
+    std::printf("\n### The starts of the area functional side by side\n\n");
+    area_starts();
+  }
+  if (wants("cmc-mean-curvature-circle-10-full")) {
+    std::printf("\n### The mean-curvature functional on the circle at degree 10\n\n");
+    mean_curvature_degree_10();
+  }
+  if (wants("cmc-mean-curvature-volume-form-full")) {
+    std::printf("\n### The mean-curvature functional's V form on the circle\n\n");
+    mean_curvature_volume_form();
+  }
   return 0;
 }
