@@ -245,6 +245,7 @@ GENERATORS = {
     "pde-accuracy": ["scripts/pde_accuracy_table.py", "{build}/test_pde"],  # seconds
     "circle-join": ["scripts/circle_join_table.py", "{build}/bpde"],  # seconds
     "c1-accuracy": ["scripts/c1_accuracy_table.py", "{build}/test_c1"],  # seconds
+    "geometric-fit": ["scripts/geometric_fit_table.py", "{build}/test_boundaries"],  # seconds
     # Surface Evolver (`evolver`, Debian package evolver-nox) against bpde solve; about 15 minutes
     "evolver": ["scripts/evolver_compare.py", "--bpde", "{build}/bpde", "--case", "all",
                 "--degrees", "4,5,6,7,8,9,10,12,14,16", "--linear-levels", "1..8", "--quadratic-levels", "1..8",

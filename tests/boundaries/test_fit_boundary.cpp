@@ -613,6 +613,8 @@ TEST(FitBoundary, GeometricFitFollowsTheCurveNotItsParametrisation) {
         dist = std::max(dist, distance_to_bezier(g.points, x));
         dist_p = std::max(dist_p, distance_to_bezier(p.points, x));
       }
+      // the table of docs/boundaries.md, "Geometric fits" (scripts/geometric_fit_table.py)
+      std::printf("geometric fit: curve %zu n = %d interpolation %.1e geometric %.1e\n", c, n, dist_p, dist);
       EXPECT_LT(dist, dist_p / 30) << c << " n = " << n;
       EXPECT_NEAR(bpde::edge_error(curves[c], g), dist, 0.02 * dist + 1e-14) << c << " n = " << n;
     }
