@@ -15,7 +15,7 @@ launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S fuzz -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER="$CXX_FUZZ" "${launcher[@]}" >/dev/null
 cmake --build build-fuzz -j "$(nproc)"
-for t in net job blend; do
+for t in net job blend curve; do
   mkdir -p "build-fuzz/corpus/$t"
   start=$(date +%s)
   # -max_len: the seeds include 100000-level nestings (200 kB); 2 MB leaves room to grow them.
