@@ -1,4 +1,4 @@
-// The cost of a job's report beside the cost of its solve (issue "speed where users feel it"):
+// The cost of a job's report beside the cost of its solve (docs/performance.md, "where users feel it"):
 //   Solve/<kind>/<n>    run_job (or run_blend): the solve and the report quantities the solver
 //                       computes (energy, pde_residual), with the per-degree caches warm;
 //   Report/<kind>/<n>   write_job_result (or write_blend_outcome) into a temporary folder: the one

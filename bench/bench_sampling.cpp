@@ -1,4 +1,4 @@
-// Sampling benchmarks (issue: foundation).
+// Sampling benchmarks: tabulated evaluation against pointwise de Casteljau.
 //   Sample/tensor-grid/<n>        50x50 grid (2601 points) of a degree-(n,n) patch, tensor structure:
 //                                 one Bernstein table per direction + two small products.
 //   Sample/tensor-casteljau/<n>   the same 2601 points by per-point de Casteljau (baseline).

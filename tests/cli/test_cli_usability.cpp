@@ -1,4 +1,4 @@
-// The command as a new user meets it (issue "A command that behaves like the tools users know"):
+// The command as a new user meets it (it behaves like the tools users know):
 // --version, bare `bpde`, the summary of `bpde solve`, --quiet and --samples, result.json as a
 // net input, and a file given to the wrong subcommand.
 #include <gtest/gtest.h>
