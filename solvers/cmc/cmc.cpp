@@ -374,17 +374,39 @@ Net dirichlet_impl(const Net& data, FixedSet fixed) {
   return make_net(data, p.P);
 }
 
+// Control points beyond this size leave no usable surface: the report's sampling and checks
+// square and sum coordinates, which overflow near 1e154.
+constexpr double kLargestUsableCoordinate = 1e150;
+
+// A solve that ran out of the range of double (a volume far beyond what the boundary can enclose,
+// e.g. V = 1e200) is not a result: the data net is returned instead, with converged false and a
+// message that says where the control points went (exit 1, never a mesh of infinities).
+template <class Net>
+CmcResult<Net> in_range(CmcResult<Net> res, const Net& data) {
+  const double largest = res.net.points().size() ? res.net.points().cwiseAbs().maxCoeff() : 0.0;
+  if (std::isfinite(largest) && largest <= kLargestUsableCoordinate) return res;
+  res.summary.converged = false;
+  res.summary.status = Status::NoConvergence;
+  res.summary.message = "the solve left the range of double: a control point reached |x| = " +
+                        (std::isfinite(largest) ? num(largest, 3) : std::string("inf or nan")) +
+                        " (the data net is returned; " + res.summary.message + ")";
+  res.net = data;
+  // the figures belonged to the net that left the range: none (null in result.json)
+  res.D = res.V = res.DH = res.A = res.energy = std::numeric_limits<double>::quiet_NaN();
+  return res;
+}
+
 }  // namespace
 }  // namespace cmc_detail
 
 CmcResult<TriangularNet> solve_cmc(const TriangularNet& data, const CmcOptions& options) {
-  return cmc_detail::solve_impl(data, options);
+  return cmc_detail::in_range(cmc_detail::solve_impl(data, options), data);
 }
 CmcResult<TensorNet> solve_cmc(const TensorNet& data, const CmcOptions& options) {
-  return cmc_detail::solve_impl(data, options);
+  return cmc_detail::in_range(cmc_detail::solve_impl(data, options), data);
 }
 CmcResult<ComplexNet> solve_cmc(const ComplexNet& data, const CmcOptions& options) {
-  return cmc_detail::solve_impl(data, options);
+  return cmc_detail::in_range(cmc_detail::solve_impl(data, options), data);
 }
 TriangularNet dirichlet_extremal(const TriangularNet& data, FixedSet fixed) {
   return cmc_detail::dirichlet_impl(data, fixed);

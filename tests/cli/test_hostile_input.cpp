@@ -21,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bezierpde/io/json_io.h"
 #include "tests/cli/cli_run.h"
 
 namespace fs = std::filesystem;
@@ -706,4 +707,25 @@ TEST(HostileInput, HugeEpsilonIsOneErrorLineAndNoSolverOutput) {
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// A volume no boundary of this size encloses (V = 1e200, the D_H V form): a valid request with no
+// solution, so exit 1 with result.json converged false and its message, the data net written and
+// no figure of the net that ran out of range (was: exit 2 from the mesh check of a net at 1e200).
+TEST(HostileInput, UnreachableVolumeIsNoSolutionNotBadInput) {
+  const fs::path out = tmpdir() / "huge_volume";
+  const CmdResult r =
+      run("solve " +
+          write("huge_volume.json",
+                R"({"boundary": {"type": "triangular", "degree": 6, "builder": "circle-three-arcs"}, "problem": {"kind": "cmc", "V": 1e200}})")
+              .string() +
+          " --out " + out.string());
+  EXPECT_EQ(r.status, 1) << r.err;
+  ASSERT_TRUE(fs::exists(out / "result.json"));
+  const bpde::Json res = bpde::read_json_file((out / "result.json").string());
+  EXPECT_FALSE(res["report"]["converged"].get<bool>());
+  EXPECT_FALSE(res["report"]["message"].get<std::string>().empty());
+  EXPECT_TRUE(res["report"]["volume"].is_null());
+  for (const auto& p : res["net"]["points"])
+    for (const auto& x : p) EXPECT_LE(std::abs(x.get<double>()), 2.0);  // the unit circle's data net
 }
