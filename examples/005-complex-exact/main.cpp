@@ -3,13 +3,15 @@
 // run_job, write_job_result; the path of `bpde solve`), over a grid of degrees p and refinements
 // h (`refine` with `refit`: the boundary fitted again at every level).
 //
-// Usage: example_005_complex_exact [--tables] [--all] [--grid CASE=P:R,P:R,...]... [EXAMPLE_DIR [OUT_DIR]]
+// Usage: example_005_complex_exact [--tables] [--all] [--cases CASE,...] [--grid CASE=P:R,P:R,...]...
+//                                  [EXAMPLE_DIR [OUT_DIR]]
 //   Without --tables: usage only (the tables take minutes; scripts/docs.py runs them through the
 //   complex-exact generator, scripts/complex_exact_tables.py).
 //   --tables       the tables of docs/complex.md ("The exact cases"), one per case, over each
 //                  case's grid of p x refine; the cells of the default run set are solved, the
 //                  others printed as skipped for time.
 //   --all          solve every cell of every grid (long: the area solves of fine grids take minutes each).
+//   --cases C,...  only these cases (their sections alone).
 //   --grid C=CELLS solve exactly these cells of case C (p:refine, comma-separated; the grid grows
 //                  to hold them), e.g. --grid cap-circle=3:0,3:1,3:2.
 //   EXAMPLE_DIR defaults to examples/005-complex-exact (the job files CASE.json), OUT_DIR to
@@ -116,6 +118,8 @@ double enneper_distance(const Eigen::Vector3d& x) {
 
 struct Case {
   std::string name, title;
+  std::string file;  // the job file (CASE.json unless given)
+  Json problem;      // replaces the job's problem when not null
   std::optional<double> area, volume;
   std::function<double(const Eigen::Vector3d&)> distance;  // empty: no exact surface
   std::vector<int> ps, rs;                                // the grid shown
@@ -125,18 +129,24 @@ struct Case {
 std::vector<Case> cases() {
   std::vector<Case> c;
   const std::set<std::pair<int, int>> cap_run{{3, 0}, {3, 1}, {3, 2}, {4, 0}, {4, 1}, {6, 0}};
-  c.push_back({"cap-circle", "the cap, one circle (fan of 6 triangles)", kCapArea, kCapVolume, sphere_distance,
+  c.push_back({"cap-circle", "the cap, one circle (fan of 6 triangles)", "", nullptr, kCapArea, kCapVolume, sphere_distance,
                {3, 4, 6, 8}, {0, 1, 2}, cap_run});
   for (int k : {5, 6, 8})
     c.push_back({"cap-arcs-" + std::to_string(k),
-                 "the cap, " + std::to_string(k) + " arcs (fan of " + std::to_string(k) + " triangles)", kCapArea,
+                 "the cap, " + std::to_string(k) + " arcs (fan of " + std::to_string(k) + " triangles)", "", nullptr, kCapArea,
                  kCapVolume, sphere_distance, {3, 4, 6}, {0, 1}, {{3, 0}, {3, 1}, {4, 0}, {6, 0}}});
-  c.push_back({"enneper", "Enneper's surface, r = 0.8 (fan of 6 triangles)", kEnneperArea, std::nullopt,
+  c.push_back({"enneper", "Enneper's surface, r = 0.8 (fan of 6 triangles)", "", nullptr, kEnneperArea, std::nullopt,
                enneper_distance, {3, 4, 6}, {0, 1, 2}, {{3, 0}, {3, 1}, {3, 2}, {4, 0}, {4, 1}}});
-  c.push_back({"catenoid", "the catenoid (ring of 4 quads)", kCatenoidArea, std::nullopt, catenoid_distance,
+  c.push_back({"catenoid", "the catenoid (ring of 4 quads)", "", nullptr, kCatenoidArea, std::nullopt, catenoid_distance,
                {3, 4, 6, 8}, {0, 1, 2}, {{3, 0}, {3, 1}, {3, 2}, {4, 0}, {4, 1}, {6, 0}, {8, 0}}});
-  c.push_back({"rectangle", "the 4 x 0.5 rectangle at H = 0.2 (8 x 1 squares)", std::nullopt, std::nullopt, {},
+  c.push_back({"rectangle", "the 4 x 0.5 rectangle at H = 0.2 (8 x 1 squares)", "", nullptr, std::nullopt, std::nullopt, {},
                {3, 4, 6}, {0, 1}, {{3, 0}, {4, 0}}});
+  // The Dirichlet extremal of the unit circle (cap-circle.json's boundary, interpolation fits): a
+  // planar disc, whose area error is the boundary fits' alone; dist: its largest |z|.
+  c.push_back({"dirichlet-disc", "the Dirichlet extremal of the unit circle (fan of 6 triangles; A* = π)",
+               "cap-circle", Json{{"kind", "extremal"}, {"energy", {{"name", "dirichlet"}}}}, std::numbers::pi,
+               std::nullopt, [](const Eigen::Vector3d& x) { return std::abs(x(2)); }, {3, 4}, {0, 1, 2, 3},
+               {{3, 0}, {3, 1}, {3, 2}, {3, 3}, {4, 0}, {4, 1}, {4, 2}, {4, 3}}});
   return c;
 }
 
@@ -153,6 +163,7 @@ Cell solve(const Case& k, const Json& base, int p, int r, const fs::path& out) {
   Json j = base;
   j["boundary"]["degree"] = p;
   j["boundary"]["refine"] = r;
+  if (!k.problem.is_null()) j["problem"] = k.problem;
   const auto t0 = std::chrono::steady_clock::now();
   try {
     const bpde::Job job = bpde::job_from_json(j, k.name);
@@ -175,7 +186,7 @@ Cell solve(const Case& k, const Json& base, int p, int r, const fs::path& out) {
       // the rectangle: H away from its corners (farther than kCornerMargin), and the
       // control net's reach: the largest distance of a control point from the centre of the
       // sampled surface's bounding box over the box's diagonal
-      const double H = j["problem"]["H"].get<double>();
+      const double H = j["problem"].value("H", 0.0);
       cell.cert_inside = 0;
       for (Eigen::Index v = 0; v < m.mesh.V.rows(); ++v) {
         const Eigen::Vector3d x = m.mesh.V.row(v).transpose();
@@ -257,6 +268,7 @@ void table(const Case& k, const std::map<std::pair<int, int>, Cell>& cells) {
 
 int main(int argc, char** argv) {
   bool tables = false, all = false;
+  std::set<std::string> only;  // --cases: these cases alone
   std::map<std::string, std::set<std::pair<int, int>>> asked;
   std::vector<std::string> positional;
   for (int a = 1; a < argc; ++a) {
@@ -265,6 +277,9 @@ int main(int argc, char** argv) {
       tables = true;
     } else if (arg == "--all") {
       all = true;
+    } else if (arg == "--cases" && a + 1 < argc) {
+      std::stringstream names(argv[++a]);
+      for (std::string name; std::getline(names, name, ',');) only.insert(name);
     } else if (arg == "--grid" && a + 1 < argc) {
       const std::string g = argv[++a];
       const auto eq = g.find('=');
@@ -297,12 +312,15 @@ int main(int argc, char** argv) {
   const fs::path dir = positional.size() > 0 ? fs::path(positional[0]) : fs::path("examples/005-complex-exact");
   const fs::path out = positional.size() > 1 ? fs::path(positional[1]) : fs::path("out/005-complex-exact");
   std::vector<Case> list = cases();
-  for (const auto& [name, set] : asked)
+  std::set<std::string> names = only;
+  for (const auto& [name, set] : asked) names.insert(name);
+  for (const std::string& name : names)
     if (std::none_of(list.begin(), list.end(), [&](const Case& k) { return k.name == name; })) {
-      std::fprintf(stderr, "--grid: no case %s\n", name.c_str());
+      std::fprintf(stderr, "no case %s\n", name.c_str());
       return 2;
     }
   for (Case& k : list) {
+    if (!only.empty() && !only.count(k.name)) continue;
     std::set<std::pair<int, int>> run = k.run;
     if (all)
       for (int p : k.ps)
@@ -314,7 +332,7 @@ int main(int argc, char** argv) {
     }
     std::sort(k.ps.begin(), k.ps.end());
     std::sort(k.rs.begin(), k.rs.end());
-    const Json base = bpde::read_json_file((dir / (k.name + ".json")).string());
+    const Json base = bpde::read_json_file((dir / ((k.file.empty() ? k.name : k.file) + ".json")).string());
     std::map<std::pair<int, int>, Cell> cells;
     for (const auto& [p, r] : run) {
       cells[{p, r}] = solve(k, base, p, r, out);
