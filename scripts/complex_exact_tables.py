@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tables of docs/complex.md, "The exact cases": runs the example program
 example_005_complex_exact --tables over the job files of examples/005-complex-exact and prints its
-sections (complex-exact-CASE), for scripts/docs.py --run complex-exact (a few minutes).
+sections (complex-exact-CASE), for scripts/docs.py --run complex-exact (about 10 minutes).
 
 Usage: complex_exact_tables.py PROGRAM [--list] [EXAMPLE ARGUMENTS ...]
   --list  only the names of the sections it prints
