@@ -153,8 +153,7 @@ void solve_c1(const PatchComplex& c, const SpMat& K, const std::vector<int>& fre
     out.summary.set_failed(Status::Incompatible,
                            "the C1 conditions across the seams contradict the boundary data at degree " + std::to_string(n) +
                                " (C1 defect " + std::to_string(out.c1_residual) +
-                               "): no C1 complex of this degree takes this boundary; a higher degree (n >= 5 "
-                               "for C1 splines in general) or C0");
+                               "): no C1 complex of this degree takes this boundary (raise the degree, or use C0)");
     return;
   }
   out.summary.finish(out.summary.residual < kConvergenceTolerance, Status::NumericalLimit, [&] {
