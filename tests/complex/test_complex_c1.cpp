@@ -215,3 +215,31 @@ TEST(ComplexC1, RefusesTensorComplexesAndAMissingDomain) {
   const Layout T = fan_layout(4);
   EXPECT_THROW(solve_complex_extremal(complex_topology(T, 3), EnergySpec::dirichlet(), o), ParameterError);
 }
+
+TEST(ComplexC1, AnnulusRingAndATutteDomainWithInnerVertices) {
+  // two coaxial circles spanned by a tube: the ring of triangles between two concentric circles
+  const Loop top{BoundaryCurve::circle({0, 0, 0.5}, {0, 0, 1}, 1.0)};
+  const Loop bottom{BoundaryCurve::circle({0, 0, -0.5}, {0, 0, -1}, 1.0)};
+  const LoopComplex ring = loop_complex(PatchKind::triangular, 5, {top, bottom});
+  const std::vector<DomainTriangle> D = layout_domain(ring.layout, layout_domain_positions(ring.layout));
+  ComplexExtremalOptions c0;
+  c0.domain = D;
+  const ComplexExtremal e0 = solve_complex_extremal(ring.complex, EnergySpec::dirichlet(), c0);
+  const ComplexExtremal e1 = solve_complex_extremal(ring.complex, EnergySpec::dirichlet(), c1_options(D));
+  ASSERT_TRUE(e0.summary.converged) << e0.summary.message;
+  ASSERT_TRUE(e1.summary.converged) << e1.summary.message;
+  EXPECT_GT(seam_angle_max(e0.complex), 1e-3);
+  EXPECT_LT(seam_angle_max(e1.complex), 1e-8);
+  EXPECT_LT(e1.c1_residual, 1e-10);
+  EXPECT_GT(e1.energy, e0.energy);
+  // a 3 x 3 grid of triangle pairs: 4 inner vertices placed by Tutte's embedding
+  const Layout grid = grid_layout(PatchKind::triangular, 3);
+  const Eigen::MatrixX2d P = layout_domain_positions(grid);
+  for (int v : {5, 6, 9, 10}) EXPECT_LT(P.row(v).norm(), 1.0);  // inside the unit circle
+  PatchComplex c = complex_topology(grid, 5);
+  set_from_function(c, grid, [](double x, double y) { return Eigen::Vector3d(x, y, std::sin(x) * std::cos(y)); });
+  const ComplexExtremal g =
+      solve_complex_extremal(c, EnergySpec::biharmonic(), c1_options(layout_domain(grid, P)));
+  ASSERT_TRUE(g.summary.converged) << g.summary.message;
+  EXPECT_LT(seam_angle_max(g.complex), 1e-8);
+}
