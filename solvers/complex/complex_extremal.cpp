@@ -135,7 +135,7 @@ void solve_c1(const PatchComplex& c, const SpMat& K, const std::vector<int>& fre
       lambda += kC1Penalty * r;
       out.c1_steps = step + 1;
       const double defect = r.cwiseAbs().maxCoeff();
-      if (!(defect > 1e-15 * (y.cwiseAbs().maxCoeff() + dh.cwiseAbs().maxCoeff())) || !(defect < 0.5 * last)) break;
+      if (!(defect > 1e-15 * (y.cwiseAbs().maxCoeff() + dh.cwiseAbs().maxCoeff())) || !(defect < 0.9 * last)) break;
       last = defect;
     }
     Xf = s.asDiagonal() * y;

@@ -38,7 +38,8 @@
 // CHOLMOD factorisation, a solve per step. It needs neither independent conditions (the
 // conditions at a vertex are linearly dependent) nor K_ff regular (only K positive on the
 // conditions' null space; C¹ removes the piecewise-affine null directions of C⁰). The steps stop
-// when the conditions' residual no longer falls; the stationarity A y + Ĉᵀλ = b holds after each
+// when the conditions' residual is at rounding level or falls by less than a tenth in a step (at
+// most 200 steps); the stationarity A y + Ĉᵀλ = b holds after each
 // step. Conditions that the boundary data contradict (degree too low for C¹ with that boundary)
 // leave a residual: c1_residual (complex_c1.h) above kC1Tolerance is Status::Incompatible, the
 // returned complex the last iterate (the energy's minimiser with the conditions' least-squares
