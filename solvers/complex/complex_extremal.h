@@ -42,8 +42,7 @@
 // most 200 steps); the stationarity A y + Ĉᵀλ = b holds after each
 // step. Conditions that the boundary data contradict (degree too low for C¹ with that boundary)
 // leave a residual: c1_residual (complex_c1.h) above kC1Tolerance is Status::Incompatible, the
-// returned complex the last iterate (the energy's minimiser with the conditions' least-squares
-// defect).
+// returned complex the last iterate.
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Sparse>
 
