@@ -16,8 +16,9 @@ namespace {
 
 void require_triangular(const Layout& layout) {
   if (layout.kind != PatchKind::triangular)
-    throw ParameterError("C1 continuity takes triangular complexes: a tensor layout's quads are not parallelograms "
-                         "of a planar domain (the O-grid's ring), so its seams have no linear C1 condition");
+    throw ParameterError(
+        "C1 continuity takes triangular complexes: a tensor layout's quads are not parallelograms "
+        "of a planar domain (the O-grid's ring), so its seams have no linear C1 condition");
 }
 
 double signed_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
@@ -46,8 +47,10 @@ void tutte_inner(const Layout& layout, const std::vector<bool>& on_boundary, Eig
     for (const auto& [from, to] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
       if (index[from] < 0) continue;
       t.emplace_back(index[from], index[from], 1.0);
-      if (index[to] >= 0) t.emplace_back(index[from], index[to], -1.0);
-      else rhs.row(index[from]) += P.row(to);
+      if (index[to] >= 0)
+        t.emplace_back(index[from], index[to], -1.0);
+      else
+        rhs.row(index[from]) += P.row(to);
     }
   Eigen::SparseMatrix<double> L(ni, ni);
   L.setFromTriplets(t.begin(), t.end());
@@ -127,7 +130,8 @@ std::vector<DomainTriangle> refine_domain_h(const std::vector<DomainTriangle>& d
   for (const DomainTriangle& T : domain) {
     const Eigen::RowVector2d A = T.row(0), B = T.row(1), C = T.row(2);
     const Eigen::RowVector2d AB = (A + B) / 2, BC = (B + C) / 2, CA = (C + A) / 2;
-    for (const auto& part : {std::array{A, AB, CA}, std::array{AB, B, BC}, std::array{CA, BC, C}, std::array{BC, CA, AB}}) {
+    for (const auto& part :
+         {std::array{A, AB, CA}, std::array{AB, B, BC}, std::array{CA, BC, C}, std::array{BC, CA, AB}}) {
       DomainTriangle S;
       for (int k = 0; k < 3; ++k) S.row(k) = part[k];
       out.push_back(S);

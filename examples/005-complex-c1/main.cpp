@@ -42,7 +42,6 @@ Loop loop_of(const Case& c) {
   return loop;
 }
 
-
 std::string fmt(const char* f, double x) {
   char b[64];
   std::snprintf(b, sizeof b, f, x);
@@ -57,8 +56,8 @@ void row(const Case& k, const EnergySpec& energy, int n, int refine) {
   std::vector<DomainTriangle> D = layout_domain(lc.layout, layout_domain_positions(lc.layout));
   PatchComplex c = lc.complex;
   for (int r = 0; r < refine; ++r) c = refine_h(c), D = refine_domain_h(D);
-  std::printf("| %s | %d | %s | %d | %d | %zu |", k.name, static_cast<int>(lc.layout.faces.size()), energy.name().c_str(), n,
-              refine, c.patches.size());
+  std::printf("| %s | %d | %s | %d | %d | %zu |", k.name, static_cast<int>(lc.layout.faces.size()),
+              energy.name().c_str(), n, refine, c.patches.size());
   // C0: the job's default (each patch's energy in its reference triangle), then on the domain
   std::string c0_reference = "singular", c0_domain = "singular", e0 = "";
   double E0 = NAN;
@@ -90,11 +89,12 @@ void row(const Case& k, const EnergySpec& energy, int n, int refine) {
 }  // namespace
 
 int main() {
-  const std::vector<Case> cases{{"circle", 0, 0, 1}, {"saddle", 0.4, 0.2, 1}, {"saddle", 0.4, 0.2, 3},
-                                {"saddle", 0.4, 0.2, 5}};
+  const std::vector<Case> cases{
+      {"circle", 0, 0, 1}, {"saddle", 0.4, 0.2, 1}, {"saddle", 0.4, 0.2, 3}, {"saddle", 0.4, 0.2, 5}};
   examples::GeneratedSection section("complex-c1-seams");
-  std::printf("| boundary | fan | energy | n | refine | patches | C0 seam angle (°), reference energies | C0 seam angle (°), "
-              "domain energies | C1 seam angle (°) | C1 defect | energy C0 | energy C1 | C1 cost (%%) |\n");
+  std::printf(
+      "| boundary | fan | energy | n | refine | patches | C0 seam angle (°), reference energies | C0 seam angle (°), "
+      "domain energies | C1 seam angle (°) | C1 defect | energy C0 | energy C1 | C1 cost (%%) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Case& k = cases[i];

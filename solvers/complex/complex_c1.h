@@ -4,10 +4,10 @@
 //
 // With a domain triangle for every patch, the complex is a piecewise polynomial map of a planar
 // triangulation (a spline in S⁰_n). It is C¹ as a map of the domain exactly when, across every
-// interior seam, the classical smoothness conditions hold (Farin; Lai–Schumaker, "Spline Functions on Triangulations", ch. 2): for
-// patches p and q sharing the edge E1E2, with D the vertex of q opposite it and (β_B, β_C, β_A)
-// D's barycentric coordinates in p's domain triangle (weights of p's x(1,0), x(0,1), x(0,0),
-// i.e. of the multi-index slots i, j, k),
+// interior seam, the classical smoothness conditions hold (Farin; Lai–Schumaker, "Spline
+// Functions on Triangulations", ch. 2): for patches p and q sharing the edge E1E2, with D the
+// vertex of q opposite it and (β_B, β_C, β_A) D's barycentric coordinates in p's domain triangle
+// (weights of p's x(1,0), x(0,1), x(0,0), i.e. of the multi-index slots i, j, k),
 //
 //     Q_J = Σ_s β_s P_{I + e_s},   J = (a at E1, n-1-a at E2, 1 at D),  I = (a at E1, n-1-a at E2,
 //                                  0 at p's opposite vertex),  a = 0..n-1,

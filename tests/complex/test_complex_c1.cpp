@@ -116,10 +116,12 @@ TEST(ComplexC1, DomainGramsMeasureTheEnergyOnTheDomainTriangle) {
   // 1/2 ∫ (Δf)² over a general triangle for f = s² + 3st - t³/6 + ... with Δf = 2 - t: exact integral
   DomainTriangle S;
   S << 0.2, -0.1, 1.5, 0.3, 0.4, 1.2;
-  const Layout L{PatchKind::triangular, (Eigen::MatrixX3d(3, 3) << 0.2, -0.1, 0, 1.5, 0.3, 0, 0.4, 1.2, 0).finished(),
+  const Layout L{PatchKind::triangular,
+                 (Eigen::MatrixX3d(3, 3) << 0.2, -0.1, 0, 1.5, 0.3, 0, 0.4, 1.2, 0).finished(),
                  {{0, 1, 2}}};
   const int n = 4;
-  PatchComplex c = on_function(L, n, [](double s, double t) { return Eigen::Vector3d(s * s + 3 * s * t - t * t * t / 6, 0, 0); });
+  PatchComplex c =
+      on_function(L, n, [](double s, double t) { return Eigen::Vector3d(s * s + 3 * s * t - t * t * t / 6, 0, 0); });
   DomainGrams lap(n, EnergySpec::laplacian_squared());
   const Eigen::VectorXd P = c.points.col(0);
   Eigen::VectorXd local(P.size());
@@ -129,7 +131,8 @@ TEST(ComplexC1, DomainGramsMeasureTheEnergyOnTheDomainTriangle) {
   const Eigen::Vector2d A(0.2, -0.1), B(1.5, 0.3), C(0.4, 1.2);
   const double area = 0.5 * ((B - A).x() * (C - A).y() - (B - A).y() * (C - A).x());
   double integral = 0;
-  for (const Eigen::Vector2d& m : {Eigen::Vector2d((A + B) / 2), Eigen::Vector2d((B + C) / 2), Eigen::Vector2d((C + A) / 2)})
+  for (const Eigen::Vector2d& m :
+       {Eigen::Vector2d((A + B) / 2), Eigen::Vector2d((B + C) / 2), Eigen::Vector2d((C + A) / 2)})
     integral += area / 3 * (2 - m.y()) * (2 - m.y());
   EXPECT_NEAR(E, 0.5 * integral, 1e-12);
 }
@@ -192,7 +195,8 @@ TEST(ComplexC1, DegreeTooLowForTheBoundaryIsIncompatible) {
   EXPECT_GT(e.c1_residual, 1e-6);
   // compatible data at the same degree (a global quadratic) has its C1 complex
   const Layout L = fan_layout(6);
-  const PatchComplex q = on_function(L, 2, [](double x, double y) { return Eigen::Vector3d(x, y, x * x - y * y + x * y); });
+  const PatchComplex q =
+      on_function(L, 2, [](double x, double y) { return Eigen::Vector3d(x, y, x * x - y * y + x * y); });
   const ComplexExtremal eq = solve_complex_extremal(q, EnergySpec::dirichlet(), c1_options(xy_domain(L)));
   EXPECT_TRUE(eq.summary.converged) << eq.summary.message;
   EXPECT_LT((eq.complex.points - q.points).cwiseAbs().maxCoeff(), 1e-10);
@@ -239,8 +243,7 @@ TEST(ComplexC1, AnnulusRingAndATutteDomainWithInnerVertices) {
   for (int v : {5, 6, 9, 10}) EXPECT_LT(P.row(v).norm(), 1.0);  // inside the unit circle
   PatchComplex c = complex_topology(grid, 5);
   set_from_function(c, grid, [](double x, double y) { return Eigen::Vector3d(x, y, std::sin(x) * std::cos(y)); });
-  const ComplexExtremal g =
-      solve_complex_extremal(c, EnergySpec::biharmonic(), c1_options(layout_domain(grid, P)));
+  const ComplexExtremal g = solve_complex_extremal(c, EnergySpec::biharmonic(), c1_options(layout_domain(grid, P)));
   ASSERT_TRUE(g.summary.converged) << g.summary.message;
   EXPECT_LT(seam_angle_max(g.complex), 1e-8);
 }

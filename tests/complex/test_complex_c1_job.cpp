@@ -25,12 +25,15 @@ Json saddle_polygon(int k) {
   return Json::array({loop});
 }
 
-Json complex_job(const std::string& patch, int n, const std::string& continuity, const std::string& problem = "extremal") {
+Json complex_job(const std::string& patch, int n, const std::string& continuity,
+                 const std::string& problem = "extremal") {
   Json boundary = {{"type", "complex"}, {"patch", patch}, {"degree", n}, {"loops", saddle_polygon(8)}};
   if (!continuity.empty()) boundary["continuity"] = continuity;
   Json job = {{"boundary", boundary}, {"samples", 8}};
-  if (problem == "extremal") job["problem"] = {{"kind", "extremal"}, {"energy", {{"name", "dirichlet"}}}};
-  else job["problem"] = {{"kind", "cmc"}, {"H", 0.0}, {"functional", "dirichlet"}};
+  if (problem == "extremal")
+    job["problem"] = {{"kind", "extremal"}, {"energy", {{"name", "dirichlet"}}}};
+  else
+    job["problem"] = {{"kind", "cmc"}, {"H", 0.0}, {"functional", "dirichlet"}};
   job["fixed"] = "boundary";
   return job;
 }
