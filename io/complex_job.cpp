@@ -78,7 +78,8 @@ bool is_complex_boundary(const Json& job) {
 ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMethod default_fit) {
   using namespace json_read;
   require_object(j, path);
-  check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "loops", "layout", "fit", "corner_tolerance"});
+  check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "loops", "layout", "fit", "corner_tolerance",
+                       "continuity"});
   const std::string patch = string(field(j, path, "patch"), path + ".patch");
   if (patch != "triangular" && patch != "tensor")
     throw ParseError(path + ".patch: expected \"triangular\" or \"tensor\", got \"" + patch + "\"");
@@ -95,6 +96,13 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
   if (j.contains("refit")) {
     if (!j["refit"].is_boolean()) throw ParseError(path + ".refit: expected true or false");
     data.refit = j["refit"].get<bool>();
+  }
+  if (j.contains("continuity")) {
+    const std::string c = string(j["continuity"], path + ".continuity");
+    if (c != "C0" && c != "C1") throw ParseError(path + ".continuity: expected \"C0\" or \"C1\", got \"" + c + "\"");
+    data.continuity = c == "C1" ? Continuity::C1 : Continuity::C0;
+    if (data.continuity == Continuity::C1 && kind != PatchKind::triangular)
+      throw ParameterError(path + ".continuity: C1 takes triangular complexes (FORMATS.md \"Patch complexes\")");
   }
   LoopOptions options;
   options.method = default_fit;
@@ -126,6 +134,12 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
   for (int r = 0; r < data.refine; ++r) data.complex = refine_h(data.complex);
   if (data.refit)
     data.coarse.fits = at_path(path + ".loops", [&] { return refit_boundary(data.complex, data.coarse, data.refine, loops, options); });
+  if (data.continuity == Continuity::C1) {
+    data.domain = at_path(path + ".continuity", [&] {
+      return layout_domain(data.coarse.layout, layout_domain_positions(data.coarse.layout));
+    });
+    for (int r = 0; r < data.refine; ++r) data.domain = refine_domain_h(data.domain);
+  }
   return data;
 }
 
