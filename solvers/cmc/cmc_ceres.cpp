@@ -54,14 +54,22 @@ struct JacobianFailed {};
 class GramScale {
  public:
   explicit GramScale(const CmcProblem& p) : k_(p.k()) {
-    llt_.compute(p.f->gram()(p.free, p.free));
-    ok_ = llt_.info() == Eigen::Success && llt_.matrixLLT().allFinite();
+    Eigen::LLT<Eigen::MatrixXd> llt(p.f->gram()(p.free, p.free));
+    if (llt.info() != Eigen::Success) return;
+    // L^{-1} once (k^3/3 flops), so that each Jacobian is a triangular product (Eigen's packed
+    // product kernels) rather than a triangular solve.
+    Linv_ = Eigen::MatrixXd::Identity(k_, k_);
+    llt.matrixL().solveInPlace(Linv_);
+    if (!Linv_.allFinite()) Linv_.resize(0, 0);
   }
   /// R = L^{-1} F by coordinate.
   void residuals(const Eigen::VectorXd& F, double* r) const {
     Eigen::Map<Eigen::MatrixX3d> R(r, k_, 3);
-    R = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(F.data(), k_, 3);
-    if (ok_) llt_.matrixL().solveInPlace(R);
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> Fc(F.data(), k_, 3);
+    if (Linv_.size())
+      R.noalias() = Linv_.triangularView<Eigen::Lower>() * Fc;
+    else
+      R = Fc;
   }
   /// J = L^{-1} H by coordinate (rows as R, columns as y), H 3k x 3k, J column-major.
   void jacobian(const Eigen::MatrixXd& H, double* j) const {
@@ -69,16 +77,17 @@ class GramScale {
     Eigen::Map<Eigen::MatrixXd> J(j, n, n);
     using Strided = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>;
     for (int c = 0; c < 3; ++c) {
-      auto rows = J.middleRows(c * k_, k_);
-      rows = Strided(H.data() + c, k_, n, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(n, 3));
-      if (ok_) llt_.matrixL().solveInPlace(rows);
+      const Strided Hc(H.data() + c, k_, n, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(n, 3));
+      if (Linv_.size())
+        J.middleRows(c * k_, k_).noalias() = Linv_.triangularView<Eigen::Lower>() * Hc;
+      else
+        J.middleRows(c * k_, k_) = Hc;
     }
   }
 
  private:
   int k_;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
-  bool ok_ = false;
+  Eigen::MatrixXd Linv_;  // L^{-1}; empty: the identity scale
 };
 
 const CmcProblem& dirichlet_part(const CmcProblem& p) { return p; }
