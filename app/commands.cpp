@@ -12,6 +12,7 @@
 #include "bezierpde/io/output_folder.h"
 #include "bezierpde/io/step_export.h"
 #include "bezierpde/jobs/job_progress.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/jobs/exports.h"
 #include "bezierpde/jobs/run_blend.h"
 #include "bezierpde/jobs/run_demo.h"

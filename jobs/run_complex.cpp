@@ -12,6 +12,7 @@
 #include "bezierpde/io/mesh_io.h"
 #include "bezierpde/io/output_folder.h"
 #include "bezierpde/io/vtp_io.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/jobs/job_progress.h"
 #include "bezierpde/solvers/cmc/complex_cmc.h"
 #include "bezierpde/solvers/complex/complex_extremal.h"

@@ -15,7 +15,7 @@
 #include "bezierpde/complex/complex_mesh.h"
 #include "bezierpde/io/complex_job.h"
 #include "bezierpde/io/html_view.h"
-#include "bezierpde/jobs/exports.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/solvers/complex/complex_extremal.h"
 #include "tests/cli/cli_run.h"
 #include "tests/io/mesh_readers.h"
