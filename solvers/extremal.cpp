@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/extremal.h"
 
+#include "bezierpde/core/interruption.h"
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <algorithm>
@@ -288,7 +289,11 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   auto f = std::make_shared<Factor>();
   // Cholesky (blocked, fast). Failure means indefinite or singular (a pivoted LDLT says which);
   // success with a reciprocal condition estimate below the tolerance means numerically singular.
+  // Interruption points (core/interruption.h) before and after the factorisation and the mould's
+  // solve, the steps that cannot stop (docs/robustness.md).
+  check_interruption();
   f->sym.compute(A_ff_);
+  check_interruption();
   const double rcond = f->sym.rcond();
   const bool ok = f->sym.cholesky() && rcond > options.singular_tolerance;
   const double dmin = f->sym.cholesky() ? rcond : f->sym.min_pivot();
@@ -304,6 +309,7 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   }
   factor_ = f;
   mould_ = apply_basis(f->sym.solve(-A_fb_));
+  check_interruption();
 }
 
 Eigen::MatrixXd ExtremalSolver::apply_basis(const Eigen::MatrixXd& Y) const {

@@ -13,6 +13,7 @@
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/bernstein_ops.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/interruption.h"
 #include "bezierpde/core/keyed_cache.h"
 #include "bezierpde/core/kron.h"
 #include "bezierpde/solvers/c1/biharmonic_load.h"
@@ -101,14 +102,33 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
       }
     }
   };
+  // Interruption points (core/interruption.h): every 64 columns assembled, solved or refined, and
+  // before and after the QR factorisation, the one step that cannot stop (docs/robustness.md).
+  constexpr int kColumnBlock = 64;
   MatL AI(N, ni), AF(N, nf);
-  for (int c = 0; c < ni; ++c)
+  for (int c = 0; c < ni; ++c) {
+    if (c % kColumnBlock == 0) check_interruption();
     column(s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1, AI.col(c));
-  for (int c = 0; c < nf; ++c)
+  }
+  for (int c = 0; c < nf; ++c) {
+    if (c % kColumnBlock == 0) check_interruption();
     column(s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1, AF.col(c));
+  }
+  check_interruption();
   s->qr = std::make_unique<Eigen::HouseholderQR<MatL>>(AI);
+  check_interruption();
   const Eigen::HouseholderQR<MatL>& qr = *s->qr;
-  MatL G = -qr.solve(AF);
+  // qr.solve by blocks of columns (each column of the right-hand side is solved on its own).
+  auto solve_by_blocks = [&](const auto& rhs) {
+    MatL X(ni, rhs.cols());
+    for (Eigen::Index c = 0; c < rhs.cols(); c += kColumnBlock) {
+      const Eigen::Index w = std::min<Eigen::Index>(kColumnBlock, rhs.cols() - c);
+      X.middleCols(c, w) = qr.solve(MatL(rhs.middleCols(c, w)));
+      check_interruption();
+    }
+    return X;
+  };
+  MatL G = -solve_by_blocks(AF);
   // Refinement: R = A_I G + A_F in quad (Kronecker form, X_c = G(:,c) on the interior + e_f),
   // then G -= QR \ R. The system is consistent (Theorem 1), so R -> 0.
   // Two steps (solvers/c1/refine_mould.h) suffice up to n ~ 20; none below n = 9.
@@ -118,13 +138,14 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
       [&](const MatL& cur) {
         MatL R(N, nf);
         for (int c = 0; c < nf; ++c) {
+          if (c % kColumnBlock == 0) check_interruption();
           mould_column(cur, c, s->interior, s->fixed, X);
           apply_operator(T, n, X, Y);
           for (int r = 0; r < N; ++r) R(r, c) = static_cast<long double>(Y[static_cast<size_t>(r)]);
         }
         return R;
       },
-      [&](const MatL& R) -> MatL { return qr.solve(R); });
+      [&](const MatL& R) -> MatL { return solve_by_blocks(R); });
   s->G = G.cast<double>();
   for (int d = 0; d <= 8; d += 2) {
     Eigen::MatrixXd M(n1, n1);
@@ -133,7 +154,7 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
         M(i, j) = static_cast<double>(T[static_cast<size_t>(d)][static_cast<size_t>(i * n1 + j)]);
     s->TD.push_back(std::move(M));
   }
-  s->pinv = qr.solve(MatL::Identity(N, N)).cast<double>();
+  s->pinv = solve_by_blocks(MatL::Identity(N, N)).cast<double>();
   s->T = std::move(T);
   return s;
 }
