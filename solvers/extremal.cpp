@@ -231,7 +231,9 @@ ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet 
   const TensorNet shape(n, m);  // DegreeError outside 1..kMaxDegree
   check_min_degree(n, m, fixed);
   const std::vector<QuadraticTerm> terms = energy.terms();
+  check_interruption();  // core/interruption.h: around the Gram matrix's assembly
   Q_ = tensor_gram(n, m, terms);
+  check_interruption();
   N_ = static_cast<int>(Q_.rows());
   fixed_ = shape.fixed_indices(fixed);
   free_ = shape.free_indices(fixed);
@@ -415,10 +417,13 @@ ExtremalResult solve_extremal_untimed(const TensorNet& net, const EnergySpec& en
   std::shared_ptr<const ExtremalSolver> solver =
       options.use_cache ? ExtremalSolver::cached(energy, net.n(), net.m(), fixed, options)
                         : std::make_shared<const ExtremalSolver>(energy, net.n(), net.m(), fixed, options);
+  check_interruption();  // core/interruption.h: between the solve and its figures
   ExtremalResult r{solver->solve(net), 0.0, {}};
+  check_interruption();
   r.energy = solver->extremal_energy(r.net.points());
   r.summary.iterations = 0;
   r.summary.residual = solver->reduced_residual(r.net.points());
+  check_interruption();
   const bool ok = r.summary.residual <= kConvergenceTolerance && std::isfinite(r.energy) && r.net.points().allFinite();
   std::ostringstream s;
   if (!ok)

@@ -42,11 +42,38 @@ void check_data(const TensorNet& data) {
 // (64-bit mantissa) and refine G with residuals computed in binary128 from exact matrix entries.
 using MatL = MatLD;
 
+// Eigen's HouseholderQR computed as Eigen computes it (householder_qr_inplace_blocked: panels of
+// 48 columns, each factored and then applied to the trailing columns) with an interruption point
+// (core/interruption.h) between the panels: the QR of the degree-40 operator takes tens of seconds.
+// The same numbers as HouseholderQR(A); solve() and the other members are HouseholderQR's.
+class InterruptibleQR : public Eigen::HouseholderQR<MatL> {
+ public:
+  explicit InterruptibleQR(const MatL& A) {
+    constexpr Eigen::Index kPanel = 48;  // Eigen's block size in HouseholderQR::computeInPlace
+    m_qr = A;
+    const Eigen::Index rows = A.rows(), cols = A.cols(), size = std::min(rows, cols);
+    m_hCoeffs.resize(size);
+    m_temp.resize(cols);
+    for (Eigen::Index k = 0; k < size; k += kPanel) {
+      check_interruption();
+      const Eigen::Index bs = std::min(size - k, kPanel), tcols = cols - k - bs, brows = rows - k;
+      Eigen::Block<MatL> A11_21 = m_qr.block(k, k, brows, bs);
+      auto h = m_hCoeffs.segment(k, bs);
+      Eigen::internal::householder_qr_inplace_unblocked(A11_21, h, m_temp.data());
+      if (tcols) {
+        Eigen::Block<MatL> A21_22 = m_qr.block(k, k + bs, brows, tcols);
+        Eigen::internal::apply_block_householder_on_the_left(A21_22, A11_21, h, false);
+      }
+    }
+    m_isInitialized = true;
+  }
+};
+
 struct LuSolver {
   std::vector<int> interior, fixed;
   Eigen::MatrixXd G;                               // interior = G * fixed
   std::vector<std::vector<quad>> T;                // T_0, T_2, .., T_8 in quad (index d)
-  std::unique_ptr<Eigen::HouseholderQR<MatL>> qr;  // of the interior columns, for refinement
+  std::unique_ptr<InterruptibleQR> qr;             // of the interior columns, for refinement
   std::vector<Eigen::MatrixXd> TD;  // T_0, T_2, .., T_8 rounded to double (index d/2)
   Eigen::MatrixXd pinv;  // the least-squares operator qr->solve(.) as an (interior x (n+1)^2) matrix
 };
@@ -86,7 +113,10 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
   s->interior = shape.free_indices(FixedSet::BoundaryAdjacent);
   const int n1 = n + 1, N = n1 * n1, ni = static_cast<int>(s->interior.size()), nf = static_cast<int>(s->fixed.size());
   std::vector<std::vector<quad>> T(9);
-  for (int d = 0; d <= 8; d += 2) T[static_cast<size_t>(d)] = derivative_at_degree_rm<quad>(n, d);
+  for (int d = 0; d <= 8; d += 2) {
+    check_interruption();  // core/interruption.h (each matrix takes seconds in binary128 at n = 40)
+    T[static_cast<size_t>(d)] = derivative_at_degree_rm<quad>(n, d);
+  }
   // Operator columns in long double: column (k,l) of sum_t C_t T_{8-2t} (x) T_{2t} is
   // sum_t C_t T_{8-2t}(:,k) T_{2t}(:,l)^T.
   auto column = [&](int k, int l, Eigen::Ref<VecLD> out) {
@@ -103,7 +133,7 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
     }
   };
   // Interruption points (core/interruption.h): every 64 columns assembled, solved or refined, and
-  // before and after the QR factorisation, the one step that cannot stop (docs/robustness.md).
+  // between the panels of the QR factorisation (InterruptibleQR).
   constexpr int kColumnBlock = 64;
   MatL AI(N, ni), AF(N, nf);
   for (int c = 0; c < ni; ++c) {
@@ -115,7 +145,7 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
     column(s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1, AF.col(c));
   }
   check_interruption();
-  s->qr = std::make_unique<Eigen::HouseholderQR<MatL>>(AI);
+  s->qr = std::make_unique<InterruptibleQR>(AI);
   check_interruption();
   const Eigen::HouseholderQR<MatL>& qr = *s->qr;
   // qr.solve by blocks of columns (each column of the right-hand side is solved on its own).
