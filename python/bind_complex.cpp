@@ -105,6 +105,12 @@ void bind_complex(py::module_& m) {
           py::gil_scoped_release release;
           data = bpde::complex_from_json(j, "boundary", fit);
         }
+        // The C¹ solve needs the complex's planar domain and its seam conditions, which the
+        // entry points below do not take: such a job runs through bezierpde.solve.
+        if (data.continuity != bpde::Continuity::C0)
+          throw bpde::UnsupportedProblem(
+              "boundary.continuity: the complex entry points solve C0 complexes; run a \"C1\" complex as a job "
+              "(bezierpde.solve)");
         return data.complex;
       },
       py::arg("boundary"), py::arg("fit") = "interpolation",
@@ -112,7 +118,8 @@ void bind_complex(py::module_& m) {
       "complexes\": loops, degree, refine, ...), its boundary rows fitted and fixed (the other rows hold the "
       "layout's start values, which every solve replaces). "
       "`fit` is the default fit of the curves (a job's default: \"interpolation\", \"geometric\" for the "
-      "area and mean-curvature functionals). Bad input raises the job's errors.");
+      "area and mean-curvature functionals). Bad input raises the job's errors; \"continuity\": \"C1\" "
+      "raises UnsupportedProblem (run such a complex as a job with bezierpde.solve).");
 
   py::class_<bpde::ComplexExtremal>(m, "ComplexExtremalResult", "A complex extremal: complex, energy, summary.")
       .def_readonly("complex", &bpde::ComplexExtremal::complex)

@@ -141,6 +141,8 @@ def test_complex_jobs_in_a_sweep_with_degree_and_refine_axes(tmp_path):
          bezierpde.InvalidInput),
         (lambda: bezierpde.sample_complex(bezierpde.complex_from_boundary(boundary(polygon_loop(5))), 0),
          bezierpde.ParameterError),
+        (lambda: bezierpde.complex_from_boundary({**boundary(polygon_loop(5)), "continuity": "C1"}),
+         bezierpde.UnsupportedProblem),
     ],
 )
 def test_bad_complexes_raise_the_documented_errors(call, cls):
