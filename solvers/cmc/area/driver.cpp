@@ -302,9 +302,12 @@ CmcResult<Net> solve(const Net& data, const CmcOptions& o) {
     const Eigen::MatrixX3d extremal = base.P;
     AreaProblem problem;
     problem.base = base;
-    if constexpr (std::is_same_v<Net, ComplexNet>) {
-      // Several patches: sparse Gram and Hessians, sparse factors (sparse_terms.h).
-      problem.sparse = std::make_shared<const SparseAreaTerms>(*base.f, base.free, data.triangular(), data.n());
+    bool sparse = false;
+    if constexpr (std::is_same_v<Net, ComplexNet>) sparse = 3 * base.k() > kSparseFromCoordinates;
+    if (sparse) {
+      // Several patches, many points: sparse Gram and Hessians, sparse factors (sparse_terms.h).
+      if constexpr (std::is_same_v<Net, ComplexNet>)
+        problem.sparse = std::make_shared<const SparseAreaTerms>(*base.f, base.free, data.triangular(), data.n());
     } else {
       const Eigen::MatrixXd Cff = base.f->gram()(base.free, base.free);
       problem.C = kron(Cff, Eigen::Matrix3d::Identity());
