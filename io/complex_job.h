@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bezierpde/complex/layout_loops.h"
+#include "bezierpde/complex/planar_domain.h"
 #include "bezierpde/io/json_io.h"
 
 namespace bpde {
@@ -18,6 +19,9 @@ struct ComplexJobData {
   LoopComplex coarse;
   PatchComplex complex;
   int refine = 0;
+  Continuity continuity = Continuity::C0;  ///< "continuity": "C0" (default) or "C1" (triangular only)
+  /// C1: the planar domain of `complex` (layout_domain_positions of the coarse layout, refined)
+  std::vector<DomainTriangle> domain;
 };
 
 /// True when j is a job whose "boundary" has "type": "complex".

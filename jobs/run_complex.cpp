@@ -5,6 +5,7 @@
 #include <set>
 
 #include "bezierpde/complex/complex_mesh.h"
+#include "bezierpde/core/errors.h"
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/energies/volume.h"
 #include "bezierpde/io/atomic_file.h"
@@ -93,11 +94,14 @@ void add_complex_report(SolveOutcome& out, const ComplexJobData& data, const Pat
   out.report["degree"] = c.patches.front().degree;
   out.report["refine"] = data.refine;
   out.report["seam_angle_max"] = finite_or_null(seam_angle_max(c));
+  out.report["continuity"] = data.continuity == Continuity::C1 ? "C1" : "C0";
 }
 
 // The cmc problem on a complex: the single-patch solve (solvers/cmc/complex_cmc.h).
 SolveOutcome run_complex_cmc(const Job& job) {
   const ComplexJobData& data = *job.complex;
+  if (data.continuity == Continuity::C1)
+    throw ParameterError("job.boundary.continuity: C1 takes the quadratic energies' extremals, not cmc");
   const CmcOptions o = job_cmc_options(job);
   const CmcResult<PatchComplex> r = solve_cmc(data.complex, o);
   const Status status = checked_status(r.summary);
@@ -117,7 +121,10 @@ SolveOutcome run_complex_job(const Job& job) {
   if (job.problem.kind == ProblemKind::CmcH || job.problem.kind == ProblemKind::CmcV) return run_complex_cmc(job);
   const ComplexJobData& data = *job.complex;
   const EnergySpec& e = *job.problem.energy;
-  const ComplexExtremal r = solve_complex_extremal(data.complex, e);
+  ComplexExtremalOptions options;
+  options.continuity = data.continuity;
+  options.domain = data.domain;
+  const ComplexExtremal r = solve_complex_extremal(data.complex, e, options);
   const Status status = checked_status(r.summary);
   SolveOutcome out{job.net, SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status, nullptr};
   out.complex = std::make_shared<const PatchComplex>(r.complex);
@@ -136,6 +143,7 @@ SolveOutcome run_complex_job(const Job& job) {
     }
   }
   add_complex_report(out, data, r.complex);
+  if (data.continuity == Continuity::C1) out.report["c1_residual"] = finite_or_null(r.c1_residual);
   out.report["area"] = finite_or_null(area_sum);
   out.report["volume"] = finite_or_null(volume_sum);
   return out;
