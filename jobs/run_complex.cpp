@@ -13,6 +13,7 @@
 #include "bezierpde/io/mesh_io.h"
 #include "bezierpde/io/output_folder.h"
 #include "bezierpde/io/vtp_io.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/jobs/job_progress.h"
 #include "bezierpde/solvers/cmc/complex_cmc.h"
 #include "bezierpde/solvers/complex/complex_extremal.h"
@@ -176,12 +177,13 @@ WrittenResult write_complex_result(const std::string& dir, const Job& job, const
   written.result = {{"net", complex_to_json(*job.complex, c)}, {"report", report}};
   const SurfaceFields fields = complex_fields(c, m);
   std::vector<std::int32_t> patch(m.patch.data(), m.patch.data() + m.patch.size());
-  OutputFolder folder(dir, output_file_names(true, Exports{}));
+  OutputFolder folder(dir, output_file_names(true, job_exports(job)));
   write_json_file(folder.file("result.json"), written.result);
   write_obj(folder.file("surface.obj"), m.mesh);
   write_ply(folder.file("surface.ply"), m.mesh, fields, job.mesh_format);
   write_vtp(folder.file("surface.vtp"), m.mesh, fields, job.mesh_format, nullptr, &patch);
   write_file_atomically(folder.file("net.obj"), net_obj(c));
+  write_complex_exports(folder, job_exports(job), c, m, fields, report, job.samples);
   folder.commit();
   written.exit_code = exit_code(out.status);
   return written;
