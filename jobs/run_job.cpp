@@ -422,7 +422,8 @@ SolveOutcome run_job(const Job& job) {
     throw UnsupportedProblem("job.tolerance: tolerances and refinement rounds take a complex boundary");
   SolveOutcome out = job.complex ? run_complex_job(job) : checked_solver(job, "job").run(job);
   out.report.update(figures_report(out.figures));
-  if (!job.boundary_fit.is_null()) out.report["boundary_fit"] = out.report.contains("boundary_fit") ? out.report["boundary_fit"] : job.boundary_fit;
+  // a complex's report has the fits of the complex it was solved on (the last tolerance round's)
+  if (!job.boundary_fit.is_null() && !out.report.contains("boundary_fit")) out.report["boundary_fit"] = job.boundary_fit;
   if (!job.complex)
     if (const std::optional<BoundaryError> e = fit_boundary_error(job.boundary_fit))
       out.report["boundary_error"] = boundary_error_json(*e);
@@ -706,14 +707,27 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
   return write_result(dir, r, sampled_net(net, mesh, samples), std::move(report), extra, status, format, exports);
 }
 
+namespace {
+// result.json's "net": the net, or the complex with its layout.
+Json result_net_json(const ResultSurface& surface) {
+  return surface.complex ? complex_to_json(*surface.complex_data, *surface.complex) : net_to_json(surface.net);
+}
+}  // namespace
+
+Json job_result_json(const Job& job, const SolveOutcome& out) {
+  const ResultSurface surface = result_surface(job, out);
+  Json result = {{"net", result_net_json(surface)},
+                 {"report", complete_report(sample_surface(surface, job.samples), out.report)}};
+  for (auto it = out.extra.begin(); it != out.extra.end(); ++it) result[it.key()] = it.value();
+  return result;
+}
+
 WrittenResult write_result(const std::string& dir, const ResultSurface& surface, const SampledSurface& sampled,
                            Json report, const Json& extra, Status status, MeshFormat format, const Exports& exports) {
   WrittenResult written;
   report = complete_report(sampled, std::move(report), &written);
   const ProgressStage stage(job_progress(), kWritingFilesStage);
-  written.result = {{"net", surface.complex ? complex_to_json(*surface.complex_data, *surface.complex)
-                                            : net_to_json(surface.net)},
-                    {"report", report}};
+  written.result = {{"net", result_net_json(surface)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) written.result[it.key()] = it.value();
   write_output_files(dir, &written.result, surface, sampled, format, exports);
   written.exit_code = exit_code(status);

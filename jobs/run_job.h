@@ -248,6 +248,9 @@ WrittenResult write_result(const std::string& dir, const Net& net, const Triangl
 WrittenResult write_result(const std::string& dir, const ResultSurface& surface, const SampledSurface& sampled,
                            Json report, const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii,
                            const Exports& exports = {});
+/// result.json's object for a job's outcome without writing files: the report completed as
+/// write_job_result completes it (the Python module's solve without an output folder).
+Json job_result_json(const Job& job, const SolveOutcome& out);
 /// write_result for a job's outcome, sampled at job.samples, in job.mesh_format, and the job's
 /// exports (job.export_step: DIR/surface.step; job.export_html: DIR/view.html; jobs/exports.h).
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out);

@@ -21,11 +21,7 @@ Json solve_result(const Json& job_json, const std::optional<std::string>& out) {
   const bpde::Job job = bpde::job_from_json(job_json, "job");
   const bpde::SolveOutcome outcome = bpde::run_job(job);
   if (out) return bpde::write_job_result(*out, job, outcome).result;
-  const bpde::TriangleMesh mesh = bpde::sample_net(outcome.net, job.samples);
-  const Json report = bpde::complete_report(outcome.net, mesh, job.samples, outcome.report);
-  Json result = {{"net", bpde::net_to_json(outcome.net)}, {"report", report}};
-  for (auto it = outcome.extra.begin(); it != outcome.extra.end(); ++it) result[it.key()] = it.value();
-  return result;
+  return bpde::job_result_json(job, outcome);
 }
 
 void check_samples(int samples) {
