@@ -222,3 +222,17 @@ TEST(ComplexTolerance, SingleNetsReportTheirFitErrorAndRefuseATolerance) {
     EXPECT_FALSE(fs::exists(out));
   }
 }
+
+// A seam tolerance: the D_H critical point's normals jump across the fan's seams by 3.7° at degree
+// 4 and 1.2° at degree 6; a tolerance of 2° is met by raising the degree.
+TEST(ComplexTolerance, SeamAngleToleranceIsMetByRaisingTheDegree) {
+  const Solved s = solve("seam_tol", circle_job(4, kDirichletCap, R"(, "tolerance": {"seam_angle": 2})"));
+  ASSERT_EQ(s.status, 0);
+  const Json& rounds = s.result["report"]["rounds"];
+  ASSERT_GE(rounds.size(), 2u);
+  EXPECT_GT(num(rounds[0]["seam_angle_max"]), 2);
+  EXPECT_EQ(rounds[0]["failed"], Json::array({"seam_angle"}));
+  EXPECT_LT(num(rounds.back()["seam_angle_max"]), 2);
+  EXPECT_EQ(num(s.result["report"]["seam_angle_max"]), num(rounds.back()["seam_angle_max"]));
+  for (std::size_t k = 1; k < rounds.size(); ++k) EXPECT_GT(rounds[k]["degree"], rounds[k - 1]["degree"]);
+}
