@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <set>
 
 #include "bezierpde/complex/complex_mesh.h"
@@ -244,8 +245,13 @@ SolveOutcome run_rounds(const Job& job) {
   double total_seconds = 0;
   for (int k = 0;; ++k) {
     const auto start = std::chrono::steady_clock::now();
+    // progress: each round is a stage of its own around the solver's stages
+    const std::string stage = "tolerance round " + std::to_string(k + 1) + " (degree " + std::to_string(n) +
+                              ", refine " + std::to_string(refine) + ")";
+    std::optional<ProgressStage> round_stage(std::in_place, job_progress(), stage);
     SolveOutcome out = solve_on(job, data);
     const RoundFigures f = measure(job, out);
+    round_stage.reset();
     const std::vector<Failure> failing = failures(tol, f);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     total_seconds += seconds;
