@@ -357,6 +357,7 @@ SampledSurface sampled_complex(const PatchComplex& c, int samples) {
     s.counted(k) = near ? 0 : 1;
   }
   s.mesh = std::move(m.mesh);
+  s.samples = samples;
   return s;
 }
 

@@ -497,6 +497,7 @@ SampledSurface sampled_net(const Net& net, TriangleMesh mesh, int samples) {
       }
   }
   s.mesh = std::move(mesh);
+  s.samples = N;
   return s;
 }
 
@@ -594,8 +595,10 @@ void write_output_files(const std::string& dir, const Json* result, const Result
   wrote(w_net);
   const Json report = result && result->contains("report") ? (*result)["report"] : Json::object();
   if (surface.complex && (exports.step || exports.html))
-    // The STEP and view.html exports of a complex are written by jobs/exports.h once it has
-    // them; a complex job asking for them is refused when it is read (io/job.cpp).
+    // Hook for the STEP and view.html exports of a complex (the complex exports of jobs/,
+    // write_complex_exports(out, exports, c, ComplexMesh{mesh, triangle_patch, vertex_patch, uv},
+    // fields, report, sampled.samples)); until they are there a complex job asking for them is
+    // refused when it is read (io/job.cpp).
     throw UnsupportedProblem("export: a complex is written as meshes and result.json");
   if (exports.step) write_step(out.file("surface.step"), surface.net), wrote(w_step);
   if (exports.html)

@@ -119,6 +119,7 @@ struct SampledSurface {
   /// per vertex: 1 when the mean-curvature statistics count it (below, kStatsCornerMargin)
   Eigen::Matrix<std::uint8_t, Eigen::Dynamic, 1> counted;
   bool complex = false;
+  int samples = 0;  ///< N: samples per (patch) edge it was sampled at
 };
 
 /// The corner margin of the mean-curvature statistics, in each patch's domain: a sample within
