@@ -80,6 +80,12 @@ void build_refined(ComplexJobData& data, int n, const std::string& path) {
                     std::to_string(kMaxComplexGramEntries) + " (a lower degree or less refinement)");
   data.complex = data.coarse.complex;
   for (int r = 0; r < data.refine; ++r) data.complex = refine_h(data.complex);
+  if (data.continuity == Continuity::C1) {
+    data.domain = at_path(path + ".continuity", [&] {
+      return layout_domain(data.coarse.layout, layout_domain_positions(data.coarse.layout));
+    });
+    for (int r = 0; r < data.refine; ++r) data.domain = refine_domain_h(data.domain);
+  }
 }
 
 Json vec(const Eigen::Vector3d& x) { return Json::array({x(0), x(1), x(2)}); }
@@ -94,7 +100,7 @@ bool is_complex_boundary(const Json& job) {
 ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMethod default_fit) {
   using namespace json_read;
   require_object(j, path);
-  check_keys(j, path, {"type", "patch", "degree", "refine", "loops", "layout", "fit", "corner_tolerance"});
+  check_keys(j, path, {"type", "patch", "degree", "refine", "loops", "layout", "fit", "corner_tolerance", "continuity"});
   const std::string patch = string(field(j, path, "patch"), path + ".patch");
   if (patch != "triangular" && patch != "tensor")
     throw ParseError(path + ".patch: expected \"triangular\" or \"tensor\", got \"" + patch + "\"");
@@ -108,6 +114,13 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
   if (data.refine < 0 || data.refine > kMaxComplexRefine)
     throw SizeError(path + ".refine: must be in 0.." + std::to_string(kMaxComplexRefine) + ", got " +
                     std::to_string(data.refine));
+  if (j.contains("continuity")) {
+    const std::string c = string(j["continuity"], path + ".continuity");
+    if (c != "C0" && c != "C1") throw ParseError(path + ".continuity: expected \"C0\" or \"C1\", got \"" + c + "\"");
+    data.continuity = c == "C1" ? Continuity::C1 : Continuity::C0;
+    if (data.continuity == Continuity::C1 && kind != PatchKind::triangular)
+      throw ParameterError(path + ".continuity: C1 takes triangular complexes (FORMATS.md \"Patch complexes\")");
+  }
   LoopOptions options;
   options.method = default_fit;
   if (j.contains("fit")) {

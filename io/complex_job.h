@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bezierpde/complex/layout_loops.h"
+#include "bezierpde/complex/planar_domain.h"
 #include "bezierpde/io/json_io.h"
 
 namespace bpde {
@@ -27,6 +28,9 @@ struct ComplexJobData {
   bool user_layout = false;
   Layout layout;
   std::vector<LayoutBoundaryEdge> layout_boundary;
+  Continuity continuity = Continuity::C0;  ///< "continuity": "C0" (default) or "C1" (triangular only)
+  /// C1: the planar domain of `complex` (layout_domain_positions of the coarse layout, refined)
+  std::vector<DomainTriangle> domain;
 };
 
 /// True when j is a job whose "boundary" has "type": "complex".

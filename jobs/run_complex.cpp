@@ -10,6 +10,7 @@
 
 #include "bezierpde/complex/complex_mesh.h"
 #include "bezierpde/complex/layout.h"
+#include "bezierpde/core/errors.h"
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/energies/volume.h"
 #include "bezierpde/io/atomic_file.h"
@@ -105,6 +106,7 @@ void add_complex_report(SolveOutcome& out, const ComplexJobData& data, const Pat
   out.report["degree"] = c.patches.front().degree;
   out.report["refine"] = data.refine;
   out.report["seam_angle_max"] = finite_or_null(seam_angle_max(c));
+  out.report["continuity"] = data.continuity == Continuity::C1 ? "C1" : "C0";
   out.report["boundary_fit"] = boundary_fit_to_json(data.coarse.fits);
   out.report["boundary_error"] = boundary_error_json(complex_boundary_error(data));
 }
@@ -121,6 +123,8 @@ SolveOutcome base_outcome(const Job& job, const Summary& s, const PatchComplex& 
 
 // The cmc problem on a complex: the single-patch solve (solvers/cmc/complex_cmc.h).
 SolveOutcome solve_complex_cmc(const Job& job, const ComplexJobData& data) {
+  if (data.continuity == Continuity::C1)
+    throw ParameterError("job.boundary.continuity: C1 takes the quadratic energies' extremals, not cmc");
   const CmcOptions o = job_cmc_options(job);
   const CmcResult<PatchComplex> r = solve_cmc(data.complex, o);
   SolveOutcome out = base_outcome(job, r.summary, r.net);
@@ -131,7 +135,10 @@ SolveOutcome solve_complex_cmc(const Job& job, const ComplexJobData& data) {
 
 SolveOutcome solve_complex_extremal(const Job& job, const ComplexJobData& data) {
   const EnergySpec& e = *job.problem.energy;
-  const ComplexExtremal r = solve_complex_extremal(data.complex, e);
+  ComplexExtremalOptions options;
+  options.continuity = data.continuity;
+  options.domain = data.domain;
+  const ComplexExtremal r = solve_complex_extremal(data.complex, e, options);
   SolveOutcome out = base_outcome(job, r.summary, r.complex);
   out.figures.energy = r.energy;
   out.figures.energy_name = e.name();
@@ -146,6 +153,7 @@ SolveOutcome solve_complex_extremal(const Job& job, const ComplexJobData& data) 
     }
   }
   add_complex_report(out, data, r.complex);
+  if (data.continuity == Continuity::C1) out.report["c1_residual"] = finite_or_null(r.c1_residual);
   out.report["area"] = finite_or_null(area_sum);
   out.report["volume"] = finite_or_null(volume_sum);
   return out;
