@@ -12,12 +12,21 @@
 // with their scale (what every residual of the area route costs; the baseline is the full gradient);
 // AreaForm/hessian/{triangle,square}/<n> the free block of the Hessian on the same rules, and
 // AreaForm/{hessian,rows-and-scale}/triangle-graded/<n> and AreaForm/rows-and-scale/square-graded/<n> on
-// the graded q = 64 rule of the nearly degenerate corners (docs/performance_measurements.md, "Design decisions"). The per-degree setup (Gram and volume quadrature tables) is cached by
+// the graded q = 64 rule of the nearly degenerate corners (docs/performance_measurements.md, "Design decisions").
+// Degree/…/<n> (n = 6 … 16): the solve time against the degree with the FLOP counts of the
+// dominant kernels (the "flops" counters, counted from the sizes; see DegreeFlops below):
+// Degree/area the area solve of CmcArea/circle, Degree/area-{gradient,hessian} one residual pass
+// (all free rows and their scales) and one free Hessian of the area on the rule that solve ends
+// on, Degree/dh the D_H solve of Cmc/newton and Degree/dh-factor the Cholesky of its 3k x 3k
+// Hessian (at H = 0). The per-degree setup (Gram and volume quadrature tables) is cached by
 // CmcFunctional and built before timing; the area rules' tables are cached by AreaForm after the
 // first iteration.
 #include <benchmark/benchmark.h>
 
+#include "bezierpde/core/eigen.h"
+#include <Eigen/Cholesky>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <vector>
 
@@ -217,6 +226,124 @@ void AreaHessianGraded(benchmark::State& s) { AreaFormRoute(s, true, false, true
 void AreaRowsGraded(benchmark::State& s) { AreaFormRoute(s, true, true, false, true); }
 void AreaRowsSquareGraded(benchmark::State& s) { AreaFormRoute(s, false, true, false, true); }
 
+
+// The solve time against the degree. FLOP counts of the kernels, counted from the sizes (a
+// multiply-add is 2 flops; per-node work of O(1) per node and the O(k^2) scatter left out):
+//   Q nodes of the rule, N = (n+1)(n+2)/2 control points, k = (n-1)(n-2)/2 free (boundary fixed);
+//   area residual pass (AreaForm::gradient_rows_and_scale): x_u, x_v at the nodes by 6 GEMV
+//     passes over the Q x N basis tables (12 Q N), and per free row 4 dot products of length Q
+//     per coordinate for the row and its scale (24 Q k): 12 Q N + 24 Q k;
+//   area Hessian (AreaForm::hessian): the 2Q x 3k node matrix R filled (24 Q k), its rank update
+//     R^T R on the lower triangle (2Q (3k)(3k+1)/2 multiply-adds: 18 Q k^2 + 6 Q k) and the three
+//     k x k products B_u^T diag B_v (6 Q k^2): 24 Q k^2 + 30 Q k;
+//   D_H Hessian factor (Cholesky of 3k x 3k): (3k)^3 / 3 = 9 k^3.
+struct DegreeSizes {
+  double N, k;
+  explicit DegreeSizes(int n) : N((n + 1) * (n + 2) / 2.0), k((n - 1) * (n - 2) / 2.0) {}
+};
+double area_pass_flops(int n, double Q) {
+  const DegreeSizes s(n);
+  return 12 * Q * s.N + 24 * Q * s.k;
+}
+double area_hessian_flops(int n, double Q) {
+  const DegreeSizes s(n);
+  return 24 * Q * s.k * s.k + 30 * Q * s.k;
+}
+double dh_factor_flops(int n) {
+  const double k = DegreeSizes(n).k;
+  return 9 * k * k * k;
+}
+
+// q of the rule the circle's area solve ends on, per degree (filled by Degree/area, which runs
+// first; a kernel route run alone solves once before timing).
+std::map<int, int>& circle_rule() {
+  static std::map<int, int> q;
+  return q;
+}
+int circle_rule_q(int n) {
+  auto it = circle_rule().find(n);
+  if (it != circle_rule().end()) return it->second;
+  CmcOptions o;
+  o.H = -0.5;
+  o.functional = CmcFunctionalKind::Area;
+  return circle_rule()[n] = solve_cmc(circle_three_arcs(n), o).quadrature_points;
+}
+
+void DegreeArea(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const TriangularNet data = circle_three_arcs(n);
+  CmcFunctional::cached_triangular(n);
+  CmcOptions o;
+  o.H = -0.5;
+  o.functional = CmcFunctionalKind::Area;
+  int q = 0, iters = 0;
+  double converged = 0;
+  for (auto _ : state) {
+    const auto r = solve_cmc(data, o);
+    q = r.quadrature_points;
+    iters = r.summary.iterations;
+    converged = r.summary.converged ? 1 : 0;
+    benchmark::DoNotOptimize(r);
+  }
+  circle_rule()[n] = q;
+  const double Q = q > 0 ? AreaForm::cached_triangular(n, q)->nodes() : 0;
+  state.counters["q"] = q;
+  state.counters["nodes"] = Q;
+  state.counters["iterations"] = iters;
+  state.counters["converged"] = converged;
+  state.counters["pass_flops"] = area_pass_flops(n, Q);
+  state.counters["hessian_flops"] = area_hessian_flops(n, Q);
+}
+
+void DegreeAreaKernel(benchmark::State& state, bool hessian) {
+  const int n = static_cast<int>(state.range(0));
+  const int q = circle_rule_q(n);
+  if (q <= 0) {
+    state.SkipWithError("no rule");
+    return;
+  }
+  const std::shared_ptr<const AreaForm> f = AreaForm::cached_triangular(n, q);
+  const TriangularNet data = circle_three_arcs(n);
+  const Eigen::MatrixX3d P = dirichlet_extremal(data, FixedSet::Boundary).points();
+  const std::vector<int> idx = data.free_indices(FixedSet::Boundary);
+  Eigen::MatrixX3d G, S;
+  for (auto _ : state) {
+    if (hessian) {
+      benchmark::DoNotOptimize(f->hessian(P, idx));
+    } else {
+      f->gradient_rows_and_scale(P, idx, &G, &S);
+      benchmark::DoNotOptimize(G.data());
+    }
+  }
+  const double Q = f->nodes();
+  state.counters["nodes"] = Q;
+  state.counters["flops"] = benchmark::Counter(hessian ? area_hessian_flops(n, Q) : area_pass_flops(n, Q),
+                                               benchmark::Counter::kIsIterationInvariantRate);
+}
+void DegreeAreaPass(benchmark::State& s) { DegreeAreaKernel(s, false); }
+void DegreeAreaHessian(benchmark::State& s) { DegreeAreaKernel(s, true); }
+
+void DegreeDh(benchmark::State& state) {
+  run(state, CmcSolver::Newton, false);
+  state.counters["factor_flops"] = dh_factor_flops(static_cast<int>(state.range(0)));
+}
+
+// The Cholesky of the D_H Hessian at H = 0 (the Dirichlet Gram over the free points ⊗ Id_3) at the
+// Dirichlet extremal of the sphere's data: the factorisation of every fresh newton step.
+void DegreeDhFactor(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const TriangularNet data = sphere_data(n);
+  const auto f = CmcFunctional::cached_triangular(n);
+  const Eigen::MatrixX3d P = dirichlet_extremal(data, FixedSet::Boundary).points();
+  const Eigen::MatrixXd Hs = f->hessian(P, 0.0, data.free_indices(FixedSet::Boundary));
+  Eigen::LLT<Eigen::MatrixXd> llt(Hs.rows());
+  for (auto _ : state) {
+    llt.compute(Hs);
+    benchmark::DoNotOptimize(llt.matrixLLT().data());
+  }
+  state.counters["flops"] = benchmark::Counter(dh_factor_flops(n), benchmark::Counter::kIsIterationInvariantRate);
+}
+
 }  // namespace
 
 BENCHMARK(AreaGradientTriangle)->Name("AreaForm/gradient/triangle")->Arg(6)->Arg(10)->Unit(benchmark::kMicrosecond);
@@ -266,3 +393,8 @@ BENCHMARK(MeanCurvatureCircleVolumeCeres)
     ->Name("CmcMeanCurvature/ceres-volume/circle")
     ->DenseRange(10, 12, 2)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(DegreeArea)->Name("Degree/area")->DenseRange(6, 16)->Unit(benchmark::kMillisecond);
+BENCHMARK(DegreeAreaPass)->Name("Degree/area-gradient")->DenseRange(6, 16)->Unit(benchmark::kMicrosecond);
+BENCHMARK(DegreeAreaHessian)->Name("Degree/area-hessian")->DenseRange(6, 16)->Unit(benchmark::kMicrosecond);
+BENCHMARK(DegreeDh)->Name("Degree/dh")->DenseRange(6, 16)->Unit(benchmark::kMillisecond);
+BENCHMARK(DegreeDhFactor)->Name("Degree/dh-factor")->DenseRange(6, 16)->Unit(benchmark::kMicrosecond);

@@ -52,18 +52,24 @@ def fmt(x):
 class Run:
     """The CPU time (ms) and counters of every route of one bpde_bench process."""
 
-    def __init__(self, bench, pattern, min_time):
+    def __init__(self, bench, pattern, min_time, repetitions=1):
+        """With repetitions > 1 each route runs that many times (interleaved by Google Benchmark's
+        --benchmark_enable_random_interleaving) and keeps its fastest run and that run's counters."""
         self.ms, self.counters = {}, {}
         if pattern is None:  # not asked for (--only)
             return
-        out = subprocess.run([bench, "--benchmark_filter=" + pattern, "--benchmark_format=json",
-                              f"--benchmark_min_time={min_time}"],
-                             check=True, capture_output=True, text=True).stdout
+        cmd = [bench, "--benchmark_filter=" + pattern, "--benchmark_format=json", f"--benchmark_min_time={min_time}"]
+        if repetitions > 1:
+            cmd += [f"--benchmark_repetitions={repetitions}", "--benchmark_enable_random_interleaving=true"]
+        out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
         for b in json.loads(out)["benchmarks"]:
             if b.get("run_type", "iteration") != "iteration":
                 continue
-            name = b["name"]
-            self.ms[name] = b["cpu_time"] * UNIT_MS[b["time_unit"]]
+            name = b.get("run_name", b["name"])
+            ms = b["cpu_time"] * UNIT_MS[b["time_unit"]]
+            if name in self.ms and self.ms[name] <= ms:
+                continue
+            self.ms[name] = ms
             self.counters[name] = {k: v for k, v in b.items() if isinstance(v, (int, float))}
 
     def get(self, route, size):
@@ -160,7 +166,7 @@ FAMILIES = [
       ("triangular: de Casteljau / basis", "Sample/triangular-casteljau", "Sample/triangular-basis")]),
 ]
 
-SECTIONS = ["goals"] + [f[0] for f in FAMILIES] + ["kernel-peak", "table1", "scaling", "startup"]
+SECTIONS = ["goals"] + [f[0] for f in FAMILIES] + ["kernel-peak", "degree-flops", "table1", "scaling", "startup"]
 
 
 def family_sections(runs):
@@ -180,6 +186,54 @@ def kernel_peak(run):
         f = run.counters[name].get("flops")
         if name.startswith("Kernel/mould-") and f:
             lines.append(f"| {name.removeprefix('Kernel/')} | {fmt(f / 1e9)} | {fmt(f / peak) if peak else '–'} |")
+    return lines
+
+
+def power_fit(points):
+    """The exponent a of t ~ n^a by least squares on (log n, log t)."""
+    import math
+    pts = [(math.log(n), math.log(t)) for n, t in points if t and t > 0]
+    if len(pts) < 2:
+        return None
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    sxx = sum((x - mx) ** 2 for x, _ in pts)
+    return sum((x - mx) * (y - my) for x, y in pts) / sxx if sxx else None
+
+
+DEGREE_COLUMNS = ["nodes", "area solve ms", "pass MFLOP", "pass GFLOP/s", "pass / peak", "Hessian MFLOP",
+                  "Hessian GFLOP/s", "Hessian / peak", "D_H solve ms", "factor MFLOP", "factor GFLOP/s",
+                  "factor / peak"]
+
+
+def degree_flops(run):
+    """The solve time against the degree (bench/bench_cmc.cpp, Degree/…): the area solve of the
+    circle in three arcs and the D_H solve of the sphere's data, each beside the FLOP counts of its
+    dominant kernels (counted from the sizes in bench_cmc.cpp) and their measured rates against the
+    core's multiply-add peak (Kernel/fma-peak); then the fitted exponents of time against n."""
+    peak = run.counters.get("Kernel/fma-peak", {}).get("flops")
+
+    def rate(route, n):
+        f = run.counters.get(f"{route}/{n}", {}).get("flops")
+        return (fmt(f / 1e9), fmt(f / peak) if peak else "–") if f else ("–", "–")
+
+    lines = ["| n | " + " | ".join(DEGREE_COLUMNS) + " |", "|" + "---|" * (1 + len(DEGREE_COLUMNS))]
+    sizes = sizes_of(run, ["Degree/area", "Degree/dh"])
+    for n in sizes:
+        c = run.counters.get(f"Degree/area/{n}", {})
+        d = run.counters.get(f"Degree/dh/{n}", {})
+        mflop = lambda x: fmt(x / 1e6) if x else "–"
+        cells = [str(n), fmt(c.get("nodes")), fmt(run.get("Degree/area", n)), mflop(c.get("pass_flops")),
+                 *rate("Degree/area-gradient", n), mflop(c.get("hessian_flops")), *rate("Degree/area-hessian", n),
+                 fmt(run.get("Degree/dh", n)), mflop(d.get("factor_flops")), *rate("Degree/dh-factor", n)]
+        lines.append("| " + " | ".join(cells) + " |")
+    fits = [("area solve time ~ n^, n = 6–16", "Degree/area", 6), ("area solve time ~ n^, n = 8–16", "Degree/area", 8),
+            ("D_H solve time ~ n^, n = 6–16", "Degree/dh", 6), ("D_H solve time ~ n^, n = 10–16", "Degree/dh", 10)]
+    lines += ["", "| measure | value |", "|---|---|",
+              f"| the core's multiply-add peak (Kernel/fma-peak), GFLOP/s | {fmt(peak / 1e9) if peak else '–'} |"]
+    for label, route, lo in fits:
+        a = power_fit([(n, run.get(route, n)) for n in sizes if n >= lo])
+        lines.append(f"| {label} | {fmt(a)} |")
     return lines
 
 
@@ -296,6 +350,9 @@ def main():
         print(f"bench: {name} ({pattern})", file=sys.stderr, flush=True)
         runs[name] = Run(a.bench, pattern if name in only else None, min_time)
     runs["kernel-peak"] = Run(a.bench, "^Kernel/(fma-peak|mould-)" if "kernel-peak" in only else None, min_time)
+    print("bench: degree-flops", file=sys.stderr, flush=True)
+    runs["degree-flops"] = Run(a.bench, "^(Degree/|Kernel/fma-peak$)" if "degree-flops" in only else None, min_time,
+                               repetitions=1 if a.quick else 3)
     print("bench: table1", file=sys.stderr, flush=True)
     t1, t1_verdicts = table1(a.bench, min_time) if "table1" in only else ([], [])
     print("bench: scaling", file=sys.stderr, flush=True)
@@ -305,6 +362,7 @@ def main():
     cpu = next((l.partition(":")[2].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "")
     out = goals(runs, t1_verdicts, scale, start) + [""] + family_sections(runs)
     out += section("kernel-peak", kernel_peak(runs["kernel-peak"]), ["GFLOP/s", "share of the peak"]) + [""]
+    out += section("degree-flops", degree_flops(runs["degree-flops"]), DEGREE_COLUMNS + ["value"]) + [""]
     t1_cols = [c.strip() for c in t1[0].strip("|").split("|")][2:] if t1 else []
     out += section("table1", (t1 + [""] + ["- " + v for v in t1_verdicts]) if t1 else ["(not run)"], t1_cols) + [""]
     scale_cols = ["CPU ms", "peak MB", "time ~ size^", "memory above the smallest run ~ size^"]

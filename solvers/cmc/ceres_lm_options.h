@@ -1,9 +1,10 @@
 #pragma once
-// The Ceres solver options both Ceres routes of the cmc family use (cmc_ceres.cpp, the corrector of
-// eq. (11) and of the first variation of A_H; mean_curvature_ceres.cpp, the least squares of the
-// mean curvature): Levenberg–Marquardt with a dense normal-Cholesky step (Eigen), single-threaded,
-// silent, and Ceres's own function, gradient and parameter tolerances set out of the way, because
-// each route stops by its own IterationCallback at the library's convergence test.
+// The ceres::Solve options of the cmc family's Ceres routes (cmc_ceres.cpp, the bordered corrector
+// of the area's V form; area/soft_mode_phase.cpp; mean_curvature_ceres.cpp, the least squares of
+// the mean curvature; the corrector of eq. (11) runs ceres::TinySolver instead, cmc_ceres.cpp):
+// Levenberg–Marquardt with a dense normal-Cholesky step (Eigen), single-threaded, silent, and
+// Ceres's own function, gradient and parameter tolerances set out of the way, because each route
+// stops by its own IterationCallback at the library's convergence test.
 #include "bezierpde/core/eigen.h"
 #include <ceres/ceres.h>
 
