@@ -1,6 +1,7 @@
 #include "bezierpde/complex/layout_loops.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -165,7 +166,31 @@ LoopComplex annulus(PatchKind kind, int n, const std::vector<Loop>& loops, const
     L.vertices.row(i) = piece_start(loops, outer[i]).transpose();
     L.vertices.row(M + i) = piece_start(loops, inner[i]).transpose();
   }
-  // the inner loop runs the other way: outer vertex i faces inner vertex (shift - i) mod M
+  // the inner loop runs the other way round; refused when it runs the same way (header)
+  {
+    const int q = 4, K = q * M;
+    auto points = [&](const std::vector<CurvePiece>& pieces, int l) {
+      std::vector<Eigen::Vector3d> x;
+      for (const CurvePiece& p : pieces)
+        for (int k = 0; k < q; ++k) x.push_back(loops[l][p.curve].evaluate(p.t0 + (p.t1 - p.t0) * k / q));
+      return x;
+    };
+    const std::vector<Eigen::Vector3d> o = points(outer, 0), w = points(inner, 1);
+    double opposite = INFINITY, same = INFINITY;
+    for (int s = 0; s < K; ++s) {
+      double a = 0, b = 0;
+      for (int i = 0; i < K; ++i) {
+        a += (o[i] - w[((s - i) % K + K) % K]).squaredNorm();
+        b += (o[i] - w[(s + i) % K]).squaredNorm();
+      }
+      opposite = std::min(opposite, a), same = std::min(same, b);
+    }
+    if (same < opposite * (1 - 1e-9))
+      throw LoopOrientationError(
+          "loop 1 runs the same way round as loop 0: an annulus's inner loop runs the other way (the surface on the "
+          "left of both; reverse its curves' order and direction, or give a circle the opposite normal)");
+  }
+  // outer vertex i faces inner vertex (shift - i) mod M
   int shift = 0;
   double best = INFINITY;
   for (int s = 0; s < M; ++s) {
@@ -291,6 +316,66 @@ LoopComplex layout_complex(const Layout& layout, int n, const std::vector<Loop>&
     }
   }
   return fit_layout(layout, n, loops, boundary, options);
+}
+
+std::vector<EdgeFit> refit_boundary(PatchComplex& refined, const LoopComplex& coarse, int refine,
+                                    const std::vector<Loop>& loops, const LoopOptions& options) {
+  if (refine <= 0) return coarse.fits;
+  const Layout& L = coarse.layout;
+  const int n = refined.patches.front().degree;
+  // (patch, local edge, piece) of every boundary edge, split along with the patches: a part k of
+  // patch p is patch 4p + k; coarse edge e of a patch is edges e of parts first[e], second[e]
+  const bool tri = L.kind == PatchKind::triangular;
+  const std::array<int, 4> first = tri ? std::array<int, 4>{0, 1, 2, 0} : std::array<int, 4>{0, 1, 2, 3};
+  const std::array<int, 4> second = tri ? std::array<int, 4>{1, 2, 0, 0} : std::array<int, 4>{1, 2, 3, 0};
+  struct Piece {
+    int patch, edge, coarse;
+    CurvePiece piece;
+  };
+  std::vector<Piece> pieces;
+  for (int k = 0; k < static_cast<int>(coarse.boundary.size()); ++k) {
+    const LayoutBoundaryEdge& b = coarse.boundary[k];
+    bool found = false;
+    for (int f = 0; f < static_cast<int>(L.faces.size()) && !found; ++f)
+      for (std::size_t e = 0; e < L.faces[f].size() && !found; ++e)
+        if (L.faces[f][e] == b.a && L.faces[f][(e + 1) % L.faces[f].size()] == b.b) {
+          pieces.push_back({f, static_cast<int>(e), k, b.piece});
+          found = true;
+        }
+    if (!found) throw LayoutMismatchError("layout boundary edge " + std::to_string(b.a) + "-" + std::to_string(b.b) +
+                                          " is run by no face");
+  }
+  for (int r = 0; r < refine; ++r) {
+    std::vector<Piece> next;
+    for (const Piece& p : pieces) {
+      const double tm = 0.5 * (p.piece.t0 + p.piece.t1);
+      next.push_back({4 * p.patch + first[p.edge], p.edge, p.coarse, {p.piece.loop, p.piece.curve, p.piece.t0, tm}});
+      next.push_back({4 * p.patch + second[p.edge], p.edge, p.coarse, {p.piece.loop, p.piece.curve, tm, p.piece.t1}});
+    }
+    pieces = std::move(next);
+  }
+  if (pieces.empty() || pieces.back().patch >= static_cast<int>(refined.patches.size()))
+    throw SizeError("refit_boundary: the complex is not the coarse one refined " + std::to_string(refine) + " times");
+  std::vector<EdgeFit> out = coarse.fits;
+  for (EdgeFit& f : out) f.max_error = 0;
+  std::map<int, std::pair<Eigen::Vector3d, int>> corners;
+  for (const Piece& p : pieces) {
+    const BoundaryCurve curve = loops[p.piece.loop][p.piece.curve].piece(p.piece.t0, p.piece.t1);
+    const CurveFit fit = fit_edge(curve, n, options.method);
+    const std::vector<int> local = patch_edge_local_rows(L.kind, n, p.edge);
+    const std::vector<int>& rows = refined.patches[p.patch].points;
+    for (int s = 1; s < n; ++s) refined.points.row(rows[local[s]]) = fit.points.row(s);
+    for (int s : {0, n}) {
+      auto& [sum, hits] = corners.try_emplace(rows[local[s]], Eigen::Vector3d::Zero(), 0).first->second;
+      sum += fit.points.row(s).transpose(), ++hits;
+    }
+    EdgeFit& report = out[p.coarse];
+    report.method = fit.method;
+    const double error = edge_error(curve, fit);
+    if (!(error <= report.max_error)) report.max_error = error;  // NaN stays NaN
+  }
+  for (const auto& [row, acc] : corners) refined.points.row(row) = (acc.first / acc.second).transpose();
+  return out;
 }
 
 void coons_fill(PatchComplex& c) {

@@ -23,7 +23,16 @@
 //   annulus: both loops cut into the same number M = max(N_outer, N_inner, 4) of edges, paired by
 //     the cyclic shift of the inner loop's vertices nearest the outer's; a ring of M quads, or of
 //     M pairs of triangles (each quad cut along its diagonal from its first outer to its first
-//     inner vertex).
+//     inner vertex). The pairing runs the inner loop the other way round: outer point i faces
+//     inner point s − i. An inner loop given the same way round as the outer one is refused
+//     (LoopOrientationError naming loop 1) rather than reversed: its ring would be twisted (the
+//     patches' normals flip), and a reversed loop would no longer be the curves and parameter
+//     ranges the user gave (the layout's `boundary` names them). The test: 4 points per edge on
+//     each loop (4M in all, at equal parameter steps of the pieces); when the best cyclic pairing
+//     of the two point lists in the same direction (o_i with q_{s+i}) is nearer, in the sum of
+//     squared distances, than the best pairing in opposite directions (o_i with q_{s-i}), the
+//     inner loop runs the same way. (Two coaxial circles: the right pairing joins points straight
+//     across the tube, the wrong one crosses it.)
 // Why these: in all of them every boundary vertex belongs to two patches, so no patch has a
 // corner where the boundary is smooth (its corner angle there would be 180° and x_u ∥ x_v; the
 // single-patch problem of FORMATS.md).  For
@@ -58,6 +67,11 @@ class LoopNotClosedError : public ParameterError {
 };
 /// A loop whose curves meet, but not in the given order or direction.
 class CurvesOutOfOrderError : public ParameterError {
+ public:
+  using ParameterError::ParameterError;
+};
+/// An annulus whose inner loop runs the same way round as the outer one (above).
+class LoopOrientationError : public ParameterError {
  public:
   using ParameterError::ParameterError;
 };
@@ -108,6 +122,19 @@ LoopComplex loop_complex(PatchKind kind, int n, const std::vector<Loop>& loops, 
 /// (validate_layout).
 LoopComplex layout_complex(const Layout& layout, int n, const std::vector<Loop>& loops,
                            const std::vector<LayoutBoundaryEdge>& boundary, const LoopOptions& options = {});
+
+/// The boundary of `refined` (coarse.complex refined `refine` times by refine_h, complex/refine.h)
+/// fitted again on the refined layout, so that the boundary error falls with h: every coarse
+/// layout boundary edge, the piece [t0, t1] of its curve, is split with its patches into 2^refine
+/// edges, the k-th following the piece [t0 + k (t1 − t0)/2^refine, t0 + (k + 1)(t1 − t0)/2^refine],
+/// and each is fitted on its own at the complex's degree by fit_edge (options.method), its inner
+/// rows set to the fit and each boundary vertex row to the mean of the fits' ends there (the curve
+/// point, for fits that keep the ends). The inner rows of `refined` are kept (the subdivided
+/// start). Returns one EdgeFit per coarse boundary edge (the order of coarse.boundary): the
+/// method of its pieces' fits and the largest of their max_error. refine = 0 refits nothing and
+/// returns coarse.fits. Needs the loops the coarse complex was made from.
+std::vector<EdgeFit> refit_boundary(PatchComplex& refined, const LoopComplex& coarse, int refine,
+                                    const std::vector<Loop>& loops, const LoopOptions& options = {});
 
 /// Sets the rows of c that are not fixed, except the corner rows (kept as they are): the inner
 /// rows of each edge on the segment between its end rows, then each patch's inner rows by the

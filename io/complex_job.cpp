@@ -80,6 +80,10 @@ void build_refined(ComplexJobData& data, int n, const std::string& path) {
                     std::to_string(kMaxComplexGramEntries) + " (a lower degree or less refinement)");
   data.complex = data.coarse.complex;
   for (int r = 0; r < data.refine; ++r) data.complex = refine_h(data.complex);
+  if (data.refit)
+    data.coarse.fits = at_path(path + ".loops", [&] {
+      return refit_boundary(data.complex, data.coarse, data.refine, data.loops, data.options);
+    });
   if (data.continuity == Continuity::C1) {
     data.domain = at_path(path + ".continuity", [&] {
       return layout_domain(data.coarse.layout, layout_domain_positions(data.coarse.layout));
@@ -100,7 +104,8 @@ bool is_complex_boundary(const Json& job) {
 ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMethod default_fit) {
   using namespace json_read;
   require_object(j, path);
-  check_keys(j, path, {"type", "patch", "degree", "refine", "loops", "layout", "fit", "corner_tolerance", "continuity"});
+  check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "loops", "layout", "fit", "corner_tolerance",
+                       "continuity"});
   const std::string patch = string(field(j, path, "patch"), path + ".patch");
   if (patch != "triangular" && patch != "tensor")
     throw ParseError(path + ".patch: expected \"triangular\" or \"tensor\", got \"" + patch + "\"");
@@ -114,6 +119,10 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
   if (data.refine < 0 || data.refine > kMaxComplexRefine)
     throw SizeError(path + ".refine: must be in 0.." + std::to_string(kMaxComplexRefine) + ", got " +
                     std::to_string(data.refine));
+  if (j.contains("refit")) {
+    if (!j["refit"].is_boolean()) throw ParseError(path + ".refit: expected true or false");
+    data.refit = j["refit"].get<bool>();
+  }
   if (j.contains("continuity")) {
     const std::string c = string(j["continuity"], path + ".continuity");
     if (c != "C0" && c != "C1") throw ParseError(path + ".continuity: expected \"C0\" or \"C1\", got \"" + c + "\"");
@@ -184,6 +193,7 @@ Json complex_to_json(const ComplexJobData& data, const PatchComplex& solved) {
           {"patch", kind == PatchKind::triangular ? "triangular" : "tensor"},
           {"degree", solved.patches.front().degree},
           {"refine", data.refine},
+          {"refit", data.refit},
           {"patches", patches},
           {"layout", {{"vertices", vertices}, {"faces", faces}, {"boundary", boundary}}}};
 }

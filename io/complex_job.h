@@ -15,7 +15,9 @@ namespace bpde {
 
 /// The complex of a job: the loop complex at the job's degree (its layout, boundary pieces and
 /// fits) and the complex refined `refine` times in h (patch p of it refines layout face
-/// p / 4^refine).
+/// p / 4^refine). With `refit`, the refined complex's boundary is fitted again on the refined
+/// layout (refit_boundary, complex/layout_loops.h) and coarse.fits are those fits (one entry per
+/// coarse boundary edge, the largest error of its pieces).
 struct ComplexJobData {
   LoopComplex coarse;
   PatchComplex complex;
@@ -28,6 +30,7 @@ struct ComplexJobData {
   bool user_layout = false;
   Layout layout;
   std::vector<LayoutBoundaryEdge> layout_boundary;
+  bool refit = false;
   Continuity continuity = Continuity::C0;  ///< "continuity": "C0" (default) or "C1" (triangular only)
   /// C1: the planar domain of `complex` (layout_domain_positions of the coarse layout, refined)
   std::vector<DomainTriangle> domain;
@@ -48,7 +51,7 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
 /// SizeError of complex_from_json (the degree, refine, patch and Gram-entry limits), with `path`.
 ComplexJobData complex_job_at(const ComplexJobData& data, int n, int refine, const std::string& path);
 
-/// The result.json "net" of a complex: {"type": "complex", "patch", "degree", "refine",
+/// The result.json "net" of a complex: {"type": "complex", "patch", "degree", "refine", "refit",
 /// "patches": [NET, ...], "layout": {"vertices", "faces", "boundary": [{"from", "to", "loop",
 /// "curve", "range"}]}}.
 Json complex_to_json(const ComplexJobData& data, const PatchComplex& solved);

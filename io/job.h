@@ -73,7 +73,7 @@ struct Job {
   /// and refined when the job is read; `net` is then its first patch (for messages only).
   std::shared_ptr<const ComplexJobData> complex = nullptr;
   /// `"tolerance"` (complex jobs): solve, measure, refine until it holds (jobs/run_complex.h).
-  std::optional<Tolerance> tolerance;
+  std::optional<Tolerance> tolerance = std::nullopt;
 };
 
 // kMaxSamples (core/mesh.h): the largest accepted `samples`, bounded by the memory it needs.

@@ -389,6 +389,12 @@ SurfaceFields complex_surface_fields(const PatchComplex& c, const SampledSurface
 void write_complex_net_obj(const std::string& path, const PatchComplex& c) { write_file_atomically(path, net_obj(c)); }
 
 BoundaryError complex_boundary_error(const ComplexJobData& data) {
+  // With refit the refined boundary is fitted piece by piece: its fits' errors (no location).
+  if (data.refit) {
+    Json fits = Json::array();
+    for (const EdgeFit& f : data.coarse.fits) fits.push_back({{"max_error", f.max_error}});
+    return fit_boundary_error(fits).value_or(BoundaryError{});
+  }
   const Layout& L = data.coarse.layout;
   const PatchComplex& c = data.coarse.complex;
   const int n = c.patches.front().degree;

@@ -20,7 +20,7 @@
 # times beside each name are the ones that put it there (Release, BPDE_NATIVE=ON, shared libraries,
 # `ctest -j2` on 2 cores).
 
-set(BPDE_INTEGRATION_TEST_FOLDERS cli viewer examples_c1 examples_cmc)
+set(BPDE_INTEGRATION_TEST_FOLDERS cli viewer examples_c1 examples_cmc examples_complex)
 
 # The slow tests of each test program, with the seconds one `ctest -j2` took for each. Those marked
 # "switch" solve one problem twice, a switch on and off, and compare: they measure the switch.

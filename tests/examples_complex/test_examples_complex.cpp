@@ -1,0 +1,154 @@
+// The exact cases of patch complexes (examples/005-complex-exact, docs/complex.md) run through
+// job_from_json / run_job / write_job_result, the path of `bpde solve`, at cheap (degree, refine)
+// cells: the numbers against the exact surfaces, and the rates in h against the theory of
+// docs/complex.md ("Theory of the rates in h").
+#include "bezierpde/core/eigen.h"
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+#include "bezierpde/complex/complex_mesh.h"
+#include "bezierpde/io/json_io.h"
+#include "bezierpde/jobs/run_job.h"
+
+namespace fs = std::filesystem;
+using bpde::Json;
+
+namespace {
+
+const double kCapArea = 4 * std::numbers::pi * (2 - std::sqrt(3.0));  // 2πRh, R = 2, h = 2 − √3
+const double kCapVolume = std::numbers::pi * std::pow(2 - std::sqrt(3.0), 2) * (4 + std::sqrt(3.0)) / 3;  // πh²(3R − h)/3
+const double kCatenoidArea = 5.99179697580228;  // a cosh(1/(2a)) = 1, a = 0.848337938094979
+const double kEnneperArea = std::numbers::pi / 3 * (std::pow(1.64, 3) - 1);
+
+Json job_file(const std::string& name) {
+  return bpde::read_json_file(std::string(BPDE_SOURCE_DIR) + "/examples/005-complex-exact/" + name + ".json");
+}
+
+struct Solved {
+  Json report;  // as result.json holds it (with the certificate)
+  bpde::PatchComplex complex;
+  int exit = 0;
+};
+
+Solved run(Json j, int degree, int refine) {
+  j["boundary"]["degree"] = degree;
+  j["boundary"]["refine"] = refine;
+  j["samples"] = 8;
+  const bpde::Job job = bpde::job_from_json(j);
+  const bpde::SolveOutcome o = bpde::run_job(job);
+  const fs::path dir = fs::path(::testing::TempDir()) / ("bpde_examples_complex_" + std::to_string(degree) + "_" + std::to_string(refine));
+  const bpde::WrittenResult w = bpde::write_job_result(dir.string(), job, o);
+  fs::remove_all(dir);
+  return {w.result["report"], *o.complex, w.exit_code};
+}
+
+template <class F>
+double max_distance(const bpde::PatchComplex& c, F distance) {
+  const bpde::ComplexMesh m = bpde::sample_complex(c, 16);
+  double d = 0;
+  for (Eigen::Index v = 0; v < m.mesh.V.rows(); ++v) d = std::max(d, distance(Eigen::Vector3d(m.mesh.V.row(v).transpose())));
+  return d;
+}
+
+double sphere_distance(const Eigen::Vector3d& x) { return std::abs((x - Eigen::Vector3d(0, 0, -std::sqrt(3.0))).norm() - 2); }
+
+double catenoid_radial_error(const Eigen::Vector3d& x) {
+  const double a = 0.848337938094979;
+  return std::abs(std::hypot(x(0), x(1)) - a * std::cosh(x(2) / a));
+}
+
+double area(const Solved& r) { return r.report["area"].get<double>(); }
+
+}  // namespace
+
+// The exact values of docs/complex.md from their closed forms.
+TEST(ExamplesComplex, ExactValuesOfTheCases) {
+  EXPECT_NEAR(kCapArea, 3.36714885790773, 1e-13);
+  EXPECT_NEAR(kCapVolume, 0.430966541037603, 1e-14);
+  double a = 0.8;
+  for (int it = 0; it < 60; ++it) a -= (a * std::cosh(0.5 / a) - 1) / (std::cosh(0.5 / a) - 0.5 / a * std::sinh(0.5 / a));
+  EXPECT_NEAR(a, 0.848337938094979, 1e-14);
+  EXPECT_NEAR(std::numbers::pi * a * a * (std::sinh(1 / a) + 1 / a), kCatenoidArea, 1e-13);
+  // Enneper's area element (1 + u² + v²)² by Gauss–Legendre in the radius (exact for this polynomial)
+  const double x[] = {-0.906179845938664, -0.538469310105683, 0.0, 0.538469310105683, 0.906179845938664};
+  const double w[] = {0.236926885056189, 0.478628670499366, 0.568888888888889, 0.478628670499366, 0.236926885056189};
+  double A = 0;
+  for (int k = 0; k < 5; ++k) {
+    const double rho = 0.4 * (x[k] + 1);
+    A += 0.4 * w[k] * 2 * std::numbers::pi * rho * std::pow(1 + rho * rho, 2);
+  }
+  EXPECT_NEAR(A, kEnneperArea, 1e-12);
+  EXPECT_NEAR(kEnneperArea, 3.57193220406873, 1e-13);
+}
+
+// The cap from one circle at a cheap cell: A and V to 1e-8, on the sphere.
+TEST(ExamplesComplex, CapFromOneCircle) {
+  const Solved r = run(job_file("cap-circle"), 4, 0);
+  ASSERT_EQ(r.exit, 0) << r.report.dump();
+  EXPECT_EQ(r.report["patches"], 6);
+  EXPECT_NEAR(area(r), kCapArea, 1e-8);
+  EXPECT_NEAR(r.report["volume"].get<double>(), kCapVolume, 1e-8);
+  EXPECT_LT(max_distance(r.complex, sphere_distance), 1e-4);
+  EXPECT_LT(r.report["certificate"]["mean_curvature_deviation"].get<double>(), 1e-2);
+}
+
+// The Dirichlet extremal of the unit circle (planar): the region the fitted boundary encloses, so
+// the area error is the boundary's first variation alone: rate n + 1 for odd n, n + 2 for even n
+// (Chebyshev–Lobatto interpolation, refit at every level).
+TEST(ExamplesComplex, DirichletDiscRateInHIsTheBoundaryFits) {
+  Json j = job_file("cap-circle");
+  j["problem"] = {{"kind", "extremal"}, {"energy", {{"name", "dirichlet"}}}};
+  for (int n : {3, 4}) {
+    std::vector<double> e;
+    for (int r = 0; r <= 3; ++r) e.push_back(std::abs(area(run(j, n, r)) - std::numbers::pi));
+    const double theory = n % 2 ? n + 1 : n + 2;
+    for (int r = 1; r <= 3; ++r) EXPECT_NEAR(std::log2(e[r - 1] / e[r]), theory, 0.5) << "n = " << n << ", refine " << r;
+  }
+}
+
+// The catenoid by the area functional, degree 3: area rate 2n = 6 (measured 6.1, 5.95), distance
+// rate at least n + 1 = 4 (the radial error |ρ − a cosh(z/a)|, an upper bound of the distance).
+TEST(ExamplesComplex, CatenoidRatesInH) {
+  std::vector<double> dA, dist;
+  for (int r = 0; r <= 2; ++r) {
+    const Solved c = run(job_file("catenoid"), 3, r);
+    ASSERT_EQ(c.exit, 0) << c.report.dump();
+    dA.push_back(std::abs(area(c) - kCatenoidArea));
+    dist.push_back(max_distance(c.complex, catenoid_radial_error));
+  }
+  for (int r = 1; r <= 2; ++r) {
+    EXPECT_NEAR(std::log2(dA[r - 1] / dA[r]), 6.0, 0.5) << "refine " << r;
+    // at least the theory's n + 1 (measured 3.6 and 7.7: the largest sampled error moves between
+    // the levels; docs/complex.md)
+    EXPECT_GT(std::log2(dist[r - 1] / dist[r]), 3.5) << "refine " << r;
+  }
+  EXPECT_LT(dA[2], 1e-8);
+}
+
+// The rectangle at H = 0.2: at its four corners every polynomial patch has H = 0 (two orthogonal
+// straight lines through a point of a smooth surface: their normal curvatures, both 0, add up to
+// 2H), so the certificate, corners included, is |H| = 0.2 exactly; in the middle third the
+// Dirichlet functional's surface is within 1e-3 of H (measured 3.3e-4 at degree 6, refine 1), and
+// its control net stays within the surface's bounding box (reach 0.5 of the diagonal).
+TEST(ExamplesComplex, RectangleCornersHaveZeroMeanCurvature) {
+  const Solved r = run(job_file("rectangle"), 6, 1);
+  ASSERT_EQ(r.exit, 0) << r.report.dump();
+  EXPECT_NEAR(r.report["certificate"]["mean_curvature_deviation"].get<double>(), 0.2, 1e-9);
+  const bpde::ComplexMesh m = bpde::sample_complex(r.complex, 16);
+  double middle = 0, corner = 1;
+  for (Eigen::Index v = 0; v < m.mesh.V.rows(); ++v) {
+    const Eigen::Vector3d x = m.mesh.V.row(v).transpose();
+    if (std::abs(x(0)) <= 1.5) middle = std::max(middle, std::abs(m.mesh.H(v) - 0.2));
+    if (std::abs(std::abs(x(0)) - 2) < 1e-12 && std::abs(std::abs(x(1)) - 0.25) < 1e-12) corner = std::min(corner, 1 - std::abs(m.mesh.H(v)));
+  }
+  EXPECT_LT(middle, 1e-3);
+  EXPECT_NEAR(corner, 1.0, 1e-9);  // |H| at the corners below 1e-9
+  const Eigen::Vector3d lo = m.mesh.V.colwise().minCoeff(), hi = m.mesh.V.colwise().maxCoeff();
+  const double reach = (r.complex.points.rowwise() - (0.5 * (lo + hi)).transpose()).rowwise().norm().maxCoeff() / (hi - lo).norm();
+  EXPECT_LT(reach, 1.0);
+}
