@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/inputs.h"
+#include "bezierpde/complex/complex_mesh.h"
 #include "bezierpde/core/errors.h"
 #include "bezierpde/io/blend_config.h"
 #include "bezierpde/io/html_view.h"
@@ -11,6 +12,7 @@
 #include "bezierpde/io/output_folder.h"
 #include "bezierpde/io/step_export.h"
 #include "bezierpde/jobs/job_progress.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/jobs/exports.h"
 #include "bezierpde/jobs/run_blend.h"
 #include "bezierpde/jobs/run_demo.h"
@@ -32,6 +34,12 @@ void check_samples(int samples) {
 TriangleMesh sampled(const Net& net, int samples) {
   const ProgressStage stage(job_progress(), kSamplingStage);
   return sample_net(net, samples, job_progress());
+}
+
+// sample_complex with its progress stage (the welded mesh of a complex, complex/complex_mesh.h).
+ComplexMesh sampled(const PatchComplex& c, int samples) {
+  const ProgressStage stage(job_progress(), kSamplingStage);
+  return sample_complex(c, samples);
 }
 
 }  // namespace
@@ -57,8 +65,18 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
                bool quiet) {
   check_samples(samples);
   const MeshFormat format = mesh_format_from_string(mesh_format, "--mesh-format");
-  const Net net = read_net_input(net_path);
+  const AnyNet input = read_any_net_input(net_path);
   check_output_dir(out_dir, surface_file_names());
+  if (const auto* complex = std::get_if<ComplexNetFile>(&input)) {
+    const ComplexMesh m = sampled(complex->complex, samples);
+    {
+      const ProgressStage stage(job_progress(), kWritingFilesStage);
+      write_complex_surface_files(out_dir, complex->complex, m, format);
+    }
+    if (!quiet) std::fputs(files_line(out_dir, surface_file_names()).c_str(), stdout);
+    return 0;
+  }
+  const Net& net = std::get<Net>(input);
   const TriangleMesh mesh = sampled(net, samples);
   {
     const ProgressStage stage(job_progress(), kWritingFilesStage);
@@ -76,8 +94,10 @@ int cmd_energy(const std::string& net_path, const std::string& energy, std::opti
 
 int cmd_check(const std::string& net_path, int samples) {
   check_samples(samples);
-  const Net net = read_net_input(net_path);
-  const TriangleMesh mesh = sampled(net, samples);
+  const AnyNet input = read_any_net_input(net_path);
+  const TriangleMesh mesh = std::holds_alternative<ComplexNetFile>(input)
+                                ? sampled(std::get<ComplexNetFile>(input).complex, samples).mesh
+                                : sampled(std::get<Net>(input), samples);
   Json report;
   {
     const ProgressStage stage(job_progress(), kMeshCheckStage);
@@ -105,17 +125,28 @@ int cmd_view(const std::string& dir, int samples, bool quiet) {
   const std::string path = dir + "/result.json";
   const Json result = read_json_file(path);
   json_read::require_object(result, path);
-  const Net net = net_from_json(json_read::field(result, path, "net"), path + ".net");
+  const AnyNet input = any_net_from_json(json_read::field(result, path, "net"), path + ".net");
   const Json report = result.contains("report") ? result["report"] : Json::object();
   OutputFolder out(dir, {"view.html"});
-  write_view_html(out.file("view.html"), net, sampled(net, samples), report, view_title(net, report));
+  if (const auto* complex = std::get_if<ComplexNetFile>(&input)) {
+    const PatchComplex& c = complex->complex;
+    const ComplexMesh m = sampled(c, samples);
+    write_view_html(out.file("view.html"), c, m, complex_surface_fields(c, m), report, view_title(c, report), samples);
+  } else {
+    const Net& net = std::get<Net>(input);
+    write_view_html(out.file("view.html"), net, sampled(net, samples), report, view_title(net, report));
+  }
   out.commit();
   if (!quiet) std::fputs(files_line(dir, {"view.html"}).c_str(), stdout);
   return 0;
 }
 
 int cmd_export(const std::string& net_path, const std::string& step_path, bool quiet) {
-  write_step(step_path, read_net_input(net_path));
+  const AnyNet input = read_any_net_input(net_path);
+  if (const auto* complex = std::get_if<ComplexNetFile>(&input))
+    write_step(step_path, complex->complex);
+  else
+    write_step(step_path, std::get<Net>(input));
   if (!quiet) std::fputs(files_line("", {step_path}).c_str(), stdout);
   return 0;
 }

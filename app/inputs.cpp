@@ -25,8 +25,34 @@ namespace {
 
 }  // namespace
 
+AnyNet any_net_from_json(const Json& j, const std::string& path) {
+  if (is_complex_net(j)) return complex_net_from_json(j, path);
+  return net_from_json(j, path);
+}
+
+AnyNet read_any_net_input(const std::string& path) {
+  const Json j = read_json_file(path);
+  switch (input_kind(j)) {
+    case InputKind::Result:
+      return any_net_from_json(j["net"], path + ".net");
+    case InputKind::Job:
+      wrong_command(path, "a job, not a net", "bpde solve");
+    case InputKind::Blend:
+      wrong_command(path, "a blend config, not a net", "bpde blend");
+    case InputKind::Net:
+    case InputKind::Unknown:
+      break;
+  }
+  return any_net_from_json(j, path);
+}
+
 Net read_net_input(const std::string& path) {
   const Json j = read_json_file(path);
+  const bool result = input_kind(j) == InputKind::Result;
+  if (is_complex_net(result ? j["net"] : j))
+    throw UnsupportedProblem(path + (result ? ".net" : "") +
+                             ": a patch complex; this subcommand takes a single net (`bpde sample`, `check`, "
+                             "`view` and `export` take complexes)");
   switch (input_kind(j)) {
     case InputKind::Result:
       return net_from_json(j["net"], path + ".net");

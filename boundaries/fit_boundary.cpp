@@ -561,8 +561,8 @@ CurveFit fit_edge(const BoundaryCurve& curve, int n, FitMethod method, bool corr
         return f;
       }
     } catch (const ParameterError&) {
-      // The nodes' least squares is numerically rank deficient (QR threshold 1e-12: high degrees,
-      // where the interpolant is at rounding anyway): the interpolant below.
+      // The nodes' parameters no longer determine a least-squares fit (fewer than n − 1 distinct
+      // inside (0,1)): the interpolant below.
     }
   }
   if (method == FitMethod::LeastSquares) {

@@ -26,6 +26,13 @@
 //   Hand-written rather than Ceres: bpde_core (nets, boundary curves) links Eigen alone, so that a
 //   program that uses only the nets does not link Ceres (CMakeLists.txt, tests/package).
 //
+// Conditioning: the least squares at given parameters (least_squares_at) solve the Bernstein
+// system by a complete orthogonal decomposition at a rank relative to rounding, not a fixed
+// threshold: the Bernstein matrix's condition grows about 2^n, so at degree 50 and above (up to
+// the nets' 64) its smallest singular values fall below 1e-12 of the largest although n − 1
+// distinct inner parameters determine the fit exactly; the dropped directions move the fitted
+// values by rounding only (a helix sampled 1000 or 100000 times is fitted to 1e-13 at n = 64).
+//
 // Shapes: q is (M+1) x 3 (M >= 1), t0 has M+1 entries, strictly increasing from 0 to 1.
 // Conventions: Bernstein coefficients P are (n+1) x 3, P_0 first (core/bernstein.h).
 #include "bezierpde/core/eigen.h"

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <set>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "bezierpde/io/atomic_file.h"
 #include "bezierpde/io/base64.h"
 #include "bezierpde/io/mesh_io.h"
+#include "bezierpde/tensor/tensor_net.h"
+#include "bezierpde/triangular/triangular_net.h"
 
 namespace bpde {
 namespace {
@@ -107,8 +110,11 @@ bool finite_number(const Json& j) { return j.is_number() && std::isfinite(j.get<
 
 std::string viewer_three_version() { return std::string(viewer_assets::kThreeVersion); }
 
-std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFields& fields, const Json& report,
-                      const std::string& title) {
+namespace {
+
+// The page for a mesh with its fields, a control net (points, segment pairs) and extra data fields.
+std::string page(const TriangleMesh& mesh, const SurfaceFields& fields, const Eigen::MatrixX3d& P,
+                 const std::vector<std::uint32_t>& lines, const Json& report, const std::string& title, Json extra) {
   const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
   std::vector<float> H(static_cast<size_t>(nv));
   std::vector<std::uint8_t> regular(static_cast<size_t>(nv));
@@ -134,10 +140,6 @@ std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFie
   std::vector<std::uint32_t> tris(static_cast<size_t>(nf) * 3);
   for (Eigen::Index t = 0; t < nf; ++t)
     for (int c = 0; c < 3; ++c) tris[static_cast<size_t>(3 * t + c)] = static_cast<std::uint32_t>(mesh.F(t, c));
-  std::vector<std::uint32_t> lines;
-  for (const auto& [a, b] : net_segments(net))
-    lines.insert(lines.end(), {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
-  const Eigen::MatrixX3d P = std::visit([](const auto& n) -> Eigen::MatrixX3d { return n.points(); }, net);
 
   Json data = {{"title", title},
                {"vertices", nv},
@@ -150,6 +152,7 @@ std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFie
                {"net", {{"points", b64(floats(P))}, {"lines", b64(lines)}}},
                {"range", {lo, hi}},
                {"report", report.is_object() ? report : Json::object()}};
+  for (auto it = extra.begin(); it != extra.end(); ++it) data[it.key()] = std::move(it.value());
   const std::string json = script_safe(data.dump(-1, ' ', true, Json::error_handler_t::replace));
   const std::string t = html_escape(title), three = viewer_three_version();
   return fill_template(viewer_assets::kTemplate, {{"BPDE_TITLE", t},
@@ -157,6 +160,69 @@ std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFie
                                                   {"BPDE_RANGE_NOTE", note},
                                                   {"BPDE_DATA", json},
                                                   {"BPDE_BUNDLE", viewer_assets::kBundle}});
+}
+
+}  // namespace
+
+std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFields& fields, const Json& report,
+                      const std::string& title) {
+  std::vector<std::uint32_t> lines;
+  for (const auto& [a, b] : net_segments(net))
+    lines.insert(lines.end(), {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+  const Eigen::MatrixX3d P = std::visit([](const auto& n) -> Eigen::MatrixX3d { return n.points(); }, net);
+  return page(mesh, fields, P, lines, report, title, Json::object());
+}
+
+std::string view_html(const PatchComplex& c, const ComplexMesh& m, const SurfaceFields& fields, const Json& report,
+                      const std::string& title, int seam_samples) {
+  if (seam_samples < 1 || seam_samples > kMaxSamples)
+    throw ParameterError("view_html: seam samples must be in 1.." + std::to_string(kMaxSamples) + ", got " +
+                         std::to_string(seam_samples));
+  validate(c);
+  // every patch's control net, each segment once, on the complex's rows
+  std::set<std::pair<int, int>> segments;
+  std::vector<Net> nets;
+  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p) {
+    nets.push_back(c.patches[p].kind == PatchKind::triangular ? Net(triangular_net(c, p)) : Net(tensor_net(c, p)));
+    for (const auto& [a, b] : net_segments(nets.back())) {
+      const int ga = c.patches[p].points[a], gb = c.patches[p].points[b];
+      segments.insert({std::min(ga, gb), std::max(ga, gb)});
+    }
+  }
+  std::vector<std::uint32_t> lines;
+  for (const auto& [a, b] : segments) lines.insert(lines.end(), {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+  // the seams: interior edges first, then the boundary, each a polyline of seam_samples segments
+  std::vector<ComplexEdge> edges = complex_edges(c);
+  std::stable_partition(edges.begin(), edges.end(), [](const ComplexEdge& e) { return !e.boundary(); });
+  const int N = seam_samples;
+  Eigen::MatrixX3d seam_points(static_cast<Eigen::Index>(edges.size()) * (N + 1), 3);
+  std::vector<std::uint32_t> seam_lines;
+  int interior = 0;
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const ComplexEdge::Side& side = edges[k].sides.front();
+    interior += edges[k].boundary() ? 0 : 1;
+    const Net& net = nets[static_cast<std::size_t>(side.patch)];
+    const Eigen::Index start = static_cast<Eigen::Index>(k) * (N + 1);
+    for (int s = 0; s <= N; ++s) {
+      const Eigen::Vector2d uv = patch_edge_parameter(c.patches[side.patch].kind, side.edge, static_cast<double>(s) / N);
+      seam_points.row(start + s) =
+          std::visit([&](const auto& n) -> Eigen::Vector3d { return n.evaluate(uv(0), uv(1)); }, net).transpose();
+      if (s < N)
+        seam_lines.insert(seam_lines.end(), {static_cast<std::uint32_t>(start + s), static_cast<std::uint32_t>(start + s + 1)});
+    }
+  }
+  Json extra = {{"seams",
+                 {{"edges", edges.size()},
+                  {"interior", interior},
+                  {"samples", N},
+                  {"points", b64(floats(seam_points))},
+                  {"lines", b64(seam_lines)}}}};
+  return page(m.mesh, fields, c.points, lines, report, title, std::move(extra));
+}
+
+void write_view_html(const std::string& path, const PatchComplex& c, const ComplexMesh& m, const SurfaceFields& fields,
+                     const Json& report, const std::string& title, int seam_samples) {
+  write_file_atomically(path, view_html(c, m, fields, report, title, seam_samples));
 }
 
 void write_view_html(const std::string& path, const Net& net, const TriangleMesh& mesh, const Json& report,

@@ -10,8 +10,17 @@
 // Colours: H over [lo, hi] = the report's `mean_curvature` {min, max} (away from the corners)
 // when the report has it, else the range of H over the regular vertices; values outside are
 // clamped to the ends of the scale.
+//
+// A patch complex (complex/patch_complex.h) is shown as its welded mesh (complex/complex_mesh.h),
+// its net as every patch's control net (each control point once, each patch's net lines once) and
+// its seams: every edge of the complex (complex_edges: the interior seams and the boundary edges,
+// each once) as a polyline of `seam_samples` segments, sampled on the first patch that has it at
+// t = k / seam_samples; the data's `seams` = {edges, interior, samples, points, lines}, shown
+// with the check box "patch seams".
 #include <string>
 
+#include "bezierpde/complex/complex_mesh.h"
+#include "bezierpde/complex/patch_complex.h"
 #include "bezierpde/core/mesh.h"
 #include "bezierpde/io/json_io.h"
 #include "bezierpde/io/surface_fields.h"
@@ -25,6 +34,14 @@ std::string view_html(const Net& net, const TriangleMesh& mesh, const SurfaceFie
 /// view_html written to `path`. Throws FileError.
 void write_view_html(const std::string& path, const Net& net, const TriangleMesh& mesh, const Json& report,
                      const std::string& title);
+
+/// The page for a patch complex, its welded mesh `m` with `fields` (per vertex of m.mesh) and its
+/// seams sampled at `seam_samples` segments per edge (1..kMaxSamples, ParameterError otherwise).
+std::string view_html(const PatchComplex& c, const ComplexMesh& m, const SurfaceFields& fields, const Json& report,
+                      const std::string& title, int seam_samples);
+/// That page written to `path`. Throws FileError.
+void write_view_html(const std::string& path, const PatchComplex& c, const ComplexMesh& m, const SurfaceFields& fields,
+                     const Json& report, const std::string& title, int seam_samples);
 
 /// The three.js version inlined into the page.
 std::string viewer_three_version();

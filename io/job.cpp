@@ -212,8 +212,7 @@ FitMethod default_boundary_fit(const Json& j) {
 }
 
 // What a complex job takes (FORMATS.md "Patch complexes"): the extremal problem or cmc (dirichlet
-// or area functional), C⁰ data, no
-// STEP or view.html export.
+// or area functional), C⁰ data.
 void check_complex_job(const Job& job, const std::string& source) {
   const bool cmc = job.problem.kind == ProblemKind::CmcH || job.problem.kind == ProblemKind::CmcV;
   if (job.problem.kind != ProblemKind::Extremal && !cmc)
@@ -230,9 +229,6 @@ void check_complex_job(const Job& job, const std::string& source) {
     throw ParameterError(source + ".samples: " + std::to_string(c.patches.size()) + " patches at " +
                          std::to_string(job.samples) + " samples are " + std::to_string(vertices) +
                          " mesh vertices, more than " + std::to_string(kMaxComplexSampleVertices));
-  if (job.export_step || job.export_html)
-    throw UnsupportedProblem(source + ".export: a complex is written as meshes and result.json; "
-                             "\"step\" and \"html\" take a single net");
 }
 
 // `"tolerance"` (FORMATS.md "Patch complexes"): complex jobs only; mean_curvature only for cmc.

@@ -28,6 +28,8 @@ struct Plugin {
   std::string path;
   bpde_step_write_fn write = nullptr;
   bpde_step_read_fn read = nullptr;
+  bpde_step_write_shell_fn write_shell = nullptr;
+  bpde_step_topology_fn topology = nullptr;
   std::string error;  // why it could not be loaded (then write/read are null)
 };
 
@@ -59,8 +61,10 @@ Plugin load() {
     const auto abi = reinterpret_cast<bpde_step_abi_fn>(dlsym(handle, "bpde_step_plugin_abi"));
     p.write = reinterpret_cast<bpde_step_write_fn>(dlsym(handle, "bpde_step_plugin_write"));
     p.read = reinterpret_cast<bpde_step_read_fn>(dlsym(handle, "bpde_step_plugin_read"));
-    if (!abi || !p.write || !p.read || abi() != BPDE_STEP_PLUGIN_ABI) {
-      p.write = nullptr, p.read = nullptr;
+    p.write_shell = reinterpret_cast<bpde_step_write_shell_fn>(dlsym(handle, "bpde_step_plugin_write_shell"));
+    p.topology = reinterpret_cast<bpde_step_topology_fn>(dlsym(handle, "bpde_step_plugin_topology"));
+    if (!abi || !p.write || !p.read || !p.write_shell || !p.topology || abi() != BPDE_STEP_PLUGIN_ABI) {
+      p.write = nullptr, p.read = nullptr, p.write_shell = nullptr, p.topology = nullptr;
       p.error = "STEP export: " + candidate + " is not a STEP plugin of this build";
       return p;
     }
@@ -203,6 +207,49 @@ void write_step(const std::string& path, const Net& net) {
         throw InternalError("STEP export: " + std::string(message) + " (" + net_kind(net) + " net)");
     }
   });
+}
+
+void write_step(const std::string& path, const PatchComplex& c) {
+  validate(c);
+  const int n = c.patches.front().degree;
+  if (n > kMaxStepDegree)
+    throw DegreeError("write_step: STEP export: degree " + std::to_string(n) + " is above OpenCASCADE's largest degree " +
+                      std::to_string(kMaxStepDegree));
+  const Plugin& p = plugin();
+  std::vector<Surface> surfaces;
+  surfaces.reserve(c.patches.size());
+  for (int k = 0; k < static_cast<int>(c.patches.size()); ++k)
+    surfaces.push_back(c.patches[k].kind == PatchKind::triangular ? surface_of(triangular_net(c, k))
+                                                                  : surface_of(tensor_net(c, k)));
+  std::vector<bpde_step_surface> s;
+  for (const Surface& surface : surfaces) s.push_back(surface.s);
+  const double diag = (c.points.colwise().maxCoeff() - c.points.colwise().minCoeff()).norm();
+  const double tolerance = kStepSewingTolerance * std::max(1.0, diag);
+  replace_file_atomically(path, [&](const std::string& tmp) {
+    char message[512] = {0};
+    switch (p.write_shell(s.data(), static_cast<int>(s.size()), tolerance, tmp.c_str(), message, sizeof message)) {
+      case BPDE_STEP_OK:
+        return;
+      case BPDE_STEP_FILE:
+        throw FileError("cannot write file '" + path + "'");
+      default:
+        throw InternalError("STEP export: " + std::string(message) + " (patch complex)");
+    }
+  });
+}
+
+StepTopology read_step_topology(const std::string& path) {
+  const Plugin& p = plugin();
+  bpde_step_topology t{};
+  char message[512] = {0};
+  const int status = p.topology(path.c_str(), &t, message, sizeof message);
+  if (status == BPDE_STEP_FILE) throw FileError("cannot read STEP file '" + path + "'");
+  if (status != BPDE_STEP_OK) throw InternalError("STEP read: " + std::string(message));
+  StepTopology out;
+  out.valid = t.valid != 0;
+  out.solids = t.solids, out.shells = t.shells, out.faces = t.faces, out.edges = t.edges;
+  out.free_edges = t.free_edges, out.degenerate_edges = t.degenerate_edges;
+  return out;
 }
 
 StepReadBack read_step(const std::string& path, const Eigen::MatrixX2d& uv) {

@@ -22,6 +22,14 @@
 //    triangular/tensor_form.h, y(s, t) = x(s, (1-s)t), as a Geom_BezierSurface on [0,1]^2 whose
 //    edge s = 1 is collapsed onto P_{n00}.
 // Lengths are written as they are, in the file's millimetres.
+//
+// A patch complex (complex/patch_complex.h) is one shape: one face per patch, as above (a
+// triangular patch as its degenerate tensor form, a tensor patch as its Bézier surface), sewn with
+// BRepBuilderAPI_Sewing at kStepSewingTolerance into one shell (a connected complex; the faces of
+// a disconnected one into one shell per component, in a compound). Shared edges are the same
+// control points in both patches, so the sewing joins every interior seam; the free edges of the
+// shell are the complex's boundary edges (and no degenerate edge counts as one).
+#include "bezierpde/complex/patch_complex.h"
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <algorithm>
@@ -69,6 +77,15 @@ inline void check_step_degree(const Net& net, const std::string& where) {
 /// be written, StepPluginError without the plugin, InternalError if OpenCASCADE refuses the surface.
 void write_step(const std::string& path, const Net& net);
 
+/// Sewing tolerance of a complex, relative to the diagonal of the bounding box of its control
+/// points (absolute below a diagonal of 1 mm).
+inline constexpr double kStepSewingTolerance = 1e-6;
+
+/// Write the complex `c` to `path` as one sewn shell (above). Validates c (complex/patch_complex.h);
+/// throws DegreeError above kMaxStepDegree, FileError if the file cannot be written,
+/// StepPluginError without the plugin, InternalError if OpenCASCADE refuses a surface.
+void write_step(const std::string& path, const PatchComplex& c);
+
 /// The paths where the STEP plugin is looked for, in the order above.
 std::vector<std::string> step_plugin_candidates();
 
@@ -85,6 +102,17 @@ struct StepReadBack {
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   Eigen::MatrixX3d points;  ///< one row per row of uv
 };
+/// The topology of a STEP file's shape as OpenCASCADE reads it back: BRepCheck_Analyzer's verdict
+/// and the shapes, each counted once. `free_edges`: the edges of exactly one face that are not
+/// degenerate; `degenerate_edges`: the edges collapsed to a point.
+struct StepTopology {
+  bool valid = false;
+  int solids = 0, shells = 0, faces = 0, edges = 0, free_edges = 0, degenerate_edges = 0;
+};
+/// Read `path` with STEPControl_Reader and analyse its shape. Throws FileError if it cannot be
+/// read, StepPluginError without the plugin.
+StepTopology read_step_topology(const std::string& path);
+
 /// Read `path` with STEPControl_Reader. Throws FileError if it cannot be read, StepPluginError
 /// without the plugin.
 StepReadBack read_step(const std::string& path, const Eigen::MatrixX2d& uv);

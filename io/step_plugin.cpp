@@ -4,6 +4,9 @@
 #include "bezierpde/io/step_plugin.h"
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAbs_SurfaceType.hxx>
 #include <GeomAdaptor_Surface.hxx>
@@ -20,9 +23,14 @@
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Shell.hxx>
 #include <cstdio>
 #include <exception>
 #include <mutex>
@@ -78,6 +86,28 @@ Handle(Geom_Surface) bspline(const bpde_step_surface& s) {
   return new Geom_BSplineSurface(poles_of(s), UK, VK, UM, VM, s.p, s.q);
 }
 
+// The face of a surface on its natural parameter range; degenerate edges (the collapsed edge of a
+// triangular patch's tensor form) detected at 1e-7.
+TopoDS_Face make_face(const bpde_step_surface& s) {
+  const Handle(Geom_Surface) surface =
+      s.kind == BPDE_STEP_BSPLINE ? bspline(s) : Handle(Geom_Surface)(new Geom_BezierSurface(poles_of(s)));
+  double u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  BRepBuilderAPI_MakeFace make(surface, u0, u1, v0, v1, 1e-7);
+  if (!make.IsDone()) throw Standard_Failure("could not make a face");
+  return make.Face();
+}
+
+int write_shape(const TopoDS_Shape& shape, const char* path, char* message, size_t size) {
+  STEPControl_Writer writer;
+  Interface_Static::SetCVal("write.step.schema", "AP214IS");
+  Interface_Static::SetCVal("write.step.product.name", "bezierpde surface");
+  if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
+    return fail(BPDE_STEP_REFUSED, "OpenCASCADE could not transfer the shape", message, size);
+  if (writer.Write(path) != IFSelect_RetDone) return fail(BPDE_STEP_FILE, "cannot write file", message, size);
+  return BPDE_STEP_OK;
+}
+
 }  // namespace
 
 extern "C" {
@@ -90,24 +120,12 @@ __attribute__((visibility("default"))) int bpde_step_plugin_write(const bpde_ste
     silence_opencascade();
     TopoDS_Face face;
     try {
-      const Handle(Geom_Surface) surface =
-          s->kind == BPDE_STEP_BSPLINE ? bspline(*s) : Handle(Geom_Surface)(new Geom_BezierSurface(poles_of(*s)));
-      double u0, u1, v0, v1;
-      surface->Bounds(u0, u1, v0, v1);
-      BRepBuilderAPI_MakeFace make(surface, u0, u1, v0, v1, 1e-7);
-      if (!make.IsDone()) return fail(BPDE_STEP_REFUSED, "OpenCASCADE could not make a face", message, size);
-      face = make.Face();
+      face = make_face(*s);
     } catch (const Standard_Failure& e) {
       return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE refused the surface: ") + e.GetMessageString(), message,
                   size);
     }
-    STEPControl_Writer writer;
-    Interface_Static::SetCVal("write.step.schema", "AP214IS");
-    Interface_Static::SetCVal("write.step.product.name", "bezierpde surface");
-    if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone)
-      return fail(BPDE_STEP_REFUSED, "OpenCASCADE could not transfer the face", message, size);
-    if (writer.Write(path) != IFSelect_RetDone) return fail(BPDE_STEP_FILE, "cannot write file", message, size);
-    return BPDE_STEP_OK;
+    return write_shape(face, path, message, size);
   } catch (const Standard_Failure& e) {
     return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
   } catch (const std::exception& e) {
@@ -139,6 +157,79 @@ __attribute__((visibility("default"))) int bpde_step_plugin_read(const char* pat
     for (long k = 0; k < rows; ++k) {
       const gp_Pnt p = s->Value(uv[2 * k], uv[2 * k + 1]);
       points[3 * k] = p.X(), points[3 * k + 1] = p.Y(), points[3 * k + 2] = p.Z();
+    }
+    return BPDE_STEP_OK;
+  } catch (const Standard_Failure& e) {
+    return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
+  } catch (const std::exception& e) {
+    return fail(BPDE_STEP_REFUSED, e.what(), message, size);
+  }
+}
+
+__attribute__((visibility("default"))) int bpde_step_plugin_write_shell(const bpde_step_surface* s, int count,
+                                                                        double tolerance, const char* path,
+                                                                        char* message, size_t size) {
+  try {
+    silence_opencascade();
+    if (count < 1) return fail(BPDE_STEP_REFUSED, "no surfaces to write", message, size);
+    TopoDS_Shape shape;
+    try {
+      BRepBuilderAPI_Sewing sewing(tolerance);
+      for (int k = 0; k < count; ++k) sewing.Add(make_face(s[k]));
+      sewing.Perform();
+      shape = sewing.SewedShape();
+      if (shape.IsNull()) return fail(BPDE_STEP_REFUSED, "OpenCASCADE could not sew the faces", message, size);
+      if (shape.ShapeType() == TopAbs_FACE) {  // one face: sewing returns it as it is
+        BRep_Builder builder;
+        TopoDS_Shell shell;
+        builder.MakeShell(shell);
+        builder.Add(shell, shape);
+        shape = shell;
+      }
+    } catch (const Standard_Failure& e) {
+      return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE refused the surfaces: ") + e.GetMessageString(), message,
+                  size);
+    }
+    return write_shape(shape, path, message, size);
+  } catch (const Standard_Failure& e) {
+    return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
+  } catch (const std::exception& e) {
+    return fail(BPDE_STEP_REFUSED, e.what(), message, size);
+  }
+}
+
+__attribute__((visibility("default"))) int bpde_step_plugin_topology(const char* path, bpde_step_topology* out,
+                                                                     char* message, size_t size) {
+  try {
+    silence_opencascade();
+    STEPControl_Reader reader;
+    if (reader.ReadFile(path) != IFSelect_RetDone) return fail(BPDE_STEP_FILE, "cannot read STEP file", message, size);
+    reader.TransferRoots();
+    const TopoDS_Shape shape = reader.OneShape();
+    *out = bpde_step_topology{};
+    if (shape.IsNull()) return BPDE_STEP_OK;
+    out->valid = BRepCheck_Analyzer(shape).IsValid() ? 1 : 0;
+    auto count = [&](TopAbs_ShapeEnum type) {
+      TopTools_IndexedMapOfShape map;
+      TopExp::MapShapes(shape, type, map);
+      return map.Extent();
+    };
+    out->solids = count(TopAbs_SOLID);
+    out->shells = count(TopAbs_SHELL);
+    out->faces = count(TopAbs_FACE);
+    TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+    out->edges = edge_faces.Extent();
+    for (int k = 1; k <= edge_faces.Extent(); ++k) {
+      const TopoDS_Edge& e = TopoDS::Edge(edge_faces.FindKey(k));
+      if (BRep_Tool::Degenerated(e)) {
+        ++out->degenerate_edges;
+        continue;
+      }
+      // a seam edge of one face is listed twice for it; count distinct faces
+      TopTools_IndexedMapOfShape faces;
+      for (const TopoDS_Shape& f : edge_faces.FindFromIndex(k)) faces.Add(f);
+      if (faces.Extent() == 1) ++out->free_edges;
     }
     return BPDE_STEP_OK;
   } catch (const Standard_Failure& e) {

@@ -13,7 +13,7 @@ extern "C" {
 
 /// Raised whenever a struct or a function below changes: the library refuses a plugin whose
 /// bpde_step_plugin_abi() differs (a plugin of another build).
-#define BPDE_STEP_PLUGIN_ABI 1
+#define BPDE_STEP_PLUGIN_ABI 2
 
 enum bpde_step_kind { BPDE_STEP_BEZIER = 0, BPDE_STEP_BSPLINE = 1 };
 
@@ -43,6 +43,15 @@ struct bpde_step_readback {
   double u0, u1, v0, v1;
 };
 
+/// The topology of a STEP file's shape, as OpenCASCADE reads it back (io/step_export.h
+/// StepTopology): `valid` is BRepCheck_Analyzer's verdict (1 valid); shapes counted once each;
+/// `free_edges` are the edges of exactly one face that are not degenerate (a face's boundary not
+/// shared with another face), `degenerate_edges` the edges collapsed to a point.
+struct bpde_step_topology {
+  int valid;
+  int solids, shells, faces, edges, free_edges, degenerate_edges;
+};
+
 typedef int (*bpde_step_abi_fn)(void);
 typedef int (*bpde_step_write_fn)(const bpde_step_surface* s, const char* path, char* message, size_t size);
 /// Reads `path`; for the first face, the surface's points at the `rows` parameter pairs uv[2k],
@@ -50,7 +59,16 @@ typedef int (*bpde_step_write_fn)(const bpde_step_surface* s, const char* path, 
 typedef int (*bpde_step_read_fn)(const char* path, const double* uv, long rows, bpde_step_readback* out,
                                  double* points, char* message, size_t size);
 
+/// Writes the `count` surfaces as one shape: one face per surface, sewn with BRepBuilderAPI_Sewing
+/// at `tolerance` into a shell (a connected surface; a compound of shells otherwise).
+typedef int (*bpde_step_write_shell_fn)(const bpde_step_surface* s, int count, double tolerance, const char* path,
+                                        char* message, size_t size);
+typedef int (*bpde_step_topology_fn)(const char* path, bpde_step_topology* out, char* message, size_t size);
+
 int bpde_step_plugin_abi(void);
+int bpde_step_plugin_write_shell(const bpde_step_surface* s, int count, double tolerance, const char* path,
+                                 char* message, size_t size);
+int bpde_step_plugin_topology(const char* path, bpde_step_topology* out, char* message, size_t size);
 int bpde_step_plugin_write(const bpde_step_surface* s, const char* path, char* message, size_t size);
 int bpde_step_plugin_read(const char* path, const double* uv, long rows, bpde_step_readback* out, double* points,
                           char* message, size_t size);

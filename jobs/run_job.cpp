@@ -22,6 +22,7 @@
 #include "bezierpde/io/output_folder.h"
 #include "bezierpde/io/step_export.h"
 #include "bezierpde/io/vtp_io.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/jobs/exports.h"
 #include "bezierpde/jobs/job_progress.h"
 #include "bezierpde/jobs/run_complex.h"
@@ -594,12 +595,12 @@ void write_output_files(const std::string& dir, const Json* result, const Result
     write_net_obj(out.file("net.obj"), surface.net);
   wrote(w_net);
   const Json report = result && result->contains("report") ? (*result)["report"] : Json::object();
-  if (surface.complex && (exports.step || exports.html))
-    // Hook for the STEP and view.html exports of a complex (the complex exports of jobs/,
-    // write_complex_exports(out, exports, c, ComplexMesh{mesh, triangle_patch, vertex_patch, uv},
-    // fields, report, sampled.samples)); until they are there a complex job asking for them is
-    // refused when it is read (io/job.cpp).
-    throw UnsupportedProblem("export: a complex is written as meshes and result.json");
+  if (surface.complex) {  // surface.step (one sewn shell) and view.html of a complex: jobs/complex_exports.h
+    const ComplexMesh m{mesh, sampled.triangle_patch, sampled.vertex_patch, sampled.uv};
+    write_complex_exports(out, exports, *surface.complex, m, fields, report, sampled.samples);
+    out.commit();
+    return;
+  }
   if (exports.step) write_step(out.file("surface.step"), surface.net), wrote(w_step);
   if (exports.html)
     write_view_html(out.file("view.html"), surface.net, mesh, report, view_title(surface.net, report)), wrote(w_html);

@@ -50,66 +50,6 @@ void check_sweep_outputs(const std::string& out_dir) {
   }
 }
 
-std::vector<std::string> split_path(const std::string& path) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : path) {
-    if (c == '.') {
-      out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
-}
-
-bool all_digits(const std::string& s) {
-  if (s.empty()) return false;
-  for (char c : s)
-    if (c < '0' || c > '9') return false;
-  return true;
-}
-
-// Set `path` (dotted, see sweep.h) in `j` to `v`; ParameterError naming `where` if a segment
-// indexes something that is neither an object nor an array holding that index.
-void set_path(Json& j, const std::string& path, const Json& v, const std::string& where) {
-  Json* cur = &j;
-  const std::vector<std::string> seg = split_path(path);
-  for (size_t k = 0; k < seg.size(); ++k) {
-    const std::string& s = seg[k];
-    Json* next = nullptr;
-    if (cur->is_array() && all_digits(s)) {
-      const size_t i = s.size() > 6 ? cur->size() : std::stoul(s);
-      if (i >= cur->size())
-        throw ParameterError(where + ": \"" + path + "\": index " + s + " out of range (the array has " +
-                             std::to_string(cur->size()) + " elements)");
-      next = &(*cur)[i];
-    } else if (cur->is_object() || cur->is_null()) {
-      next = &(*cur)[s];
-    } else {
-      throw ParameterError(where + ": \"" + path + "\": \"" + s + "\" indexes a " + cur->type_name());
-    }
-    cur = next;
-  }
-  *cur = v;
-}
-
-const Json* get_path(const Json& j, const std::string& path) {
-  const Json* cur = &j;
-  for (const std::string& s : split_path(path)) {
-    if (cur->is_object() && cur->contains(s)) {
-      cur = &(*cur)[s];
-    } else if (cur->is_array() && all_digits(s) && s.size() <= 6 && std::stoul(s) < cur->size()) {
-      cur = &(*cur)[std::stoul(s)];
-    } else {
-      return nullptr;
-    }
-  }
-  return cur;
-}
-
 int builder_degree(const Json& degree, bool tensor) {
   const std::string where = "net.degree";
   int n = 0;
@@ -195,71 +135,10 @@ std::string csv_cell(const Json& v) {
 
 }  // namespace
 
-const std::vector<std::string> kSweepResultColumns = {"status",        "exit_code",
-                                                      "converged",     "energy",
-                                                      "residual",      "H",
-                                                      "H_min",         "H_max",
-                                                      "H_mean",        "check_self_intersections",
-                                                      "check_closed",  "check_volume",
-                                                      "seconds",       "error",
-                                                      "boundary_error"};
-
 SweepSpec sweep_from_json(const Json& j, const std::string& source, const std::string& base_dir) {
-  json_read::require_object(j, source);
-  json_read::check_keys(j, source, {"base", "axes", "boundary"});
-  SweepSpec spec;
-  const Json& base = json_read::field(j, source, "base");
-  if (base.is_string()) {
-    const fs::path p = fs::path(base_dir) / base.get<std::string>();
-    spec.base = read_json_file(p.string());
-  } else {
-    spec.base = base;
-  }
-  json_read::require_object(spec.base, source + ".base");
-  if (j.contains("boundary")) {
-    spec.boundary = json_read::string(j["boundary"], source + ".boundary");
-    const std::vector<std::string> names = sweep_boundary_names();
-    if (std::find(names.begin(), names.end(), spec.boundary) == names.end()) {
-      std::string list;
-      for (const std::string& n : names) {
-        if (!list.empty()) list += ", ";
-        list += n;
-      }
-      throw ParameterError(source + ".boundary: unknown boundary \"" + spec.boundary + "\" (known: " + list + ")");
-    }
-  }
-  long total = 1;
-  if (j.contains("axes")) {
-    const Json& axes = j["axes"];
-    json_read::require_object(axes, source + ".axes");
-    for (auto it = axes.begin(); it != axes.end(); ++it) {
-      const std::string where = source + ".axes." + it.key();
-      const std::vector<std::string> seg = split_path(it.key());
-      // As deep as the readers take (a deeper path writes a job.json that no reader accepts, and
-      // its recursive conversions, to Python for one, would overflow the stack).
-      if (seg.size() > static_cast<size_t>(kMaxJsonDepth))
-        throw ParseError(source + ".axes: the path \"" + it.key().substr(0, 40) + "...\" has " +
-                         std::to_string(seg.size()) + " segments, more than the limit of " +
-                         std::to_string(kMaxJsonDepth));
-      for (const std::string& s : seg)
-        if (s.empty()) throw ParseError(where + ": an axis is a dotted path of non-empty keys");
-      if (!it.value().is_array() || it.value().empty())
-        throw ParseError(where + ": expected a non-empty array of values");
-      // The row holds the axis values beside `index`, `job` and the result columns: an axis of
-      // one of those names would overwrite its column and repeat the CSV header name.
-      if (it.key() == "index" || it.key() == "job" ||
-          std::find(kSweepResultColumns.begin(), kSweepResultColumns.end(), it.key()) != kSweepResultColumns.end())
-        throw ParseError(where + ": \"" + it.key() + "\" is a column of the results table; name the axis by its path in the job");
-      SweepAxis axis;
-      axis.path = it.key();
-      for (const Json& v : it.value()) axis.values.push_back(v);
-      total *= static_cast<long>(axis.values.size());
-      if (total > kMaxSweepJobs)
-        throw SizeError(source + ".axes: more than " + std::to_string(kMaxSweepJobs) + " jobs");
-      spec.axes.push_back(std::move(axis));
-    }
-  }
-  return spec;
+  return parse_sweep_spec(
+      j, source, [&](const std::string& name) { return read_json_file((fs::path(base_dir) / name).string()); },
+      sweep_boundary_names());
 }
 
 SweepSpec read_sweep_file(const std::string& path) {
@@ -269,29 +148,16 @@ SweepSpec read_sweep_file(const std::string& path) {
 }
 
 std::vector<SweepJob> expand_sweep(const SweepSpec& spec) {
-  size_t total = 1;
-  for (const SweepAxis& a : spec.axes) total *= a.values.size();
+  const size_t total = sweep_job_count(spec);
   std::vector<SweepJob> jobs(total);
   for (size_t k = 0; k < total; ++k) {
     SweepJob& job = jobs[k];
     job.index = static_cast<int>(k);
     job.id = job_id(job.index, total);
-    job.job = spec.base;
-    // Mixed radix, the last axis fastest.
-    size_t rest = k;
-    std::vector<size_t> digit(spec.axes.size());
-    for (size_t a = spec.axes.size(); a-- > 0;) {
-      digit[a] = rest % spec.axes[a].values.size();
-      rest /= spec.axes[a].values.size();
-    }
     try {
-      for (size_t a = 0; a < spec.axes.size(); ++a) {
-        const Json& v = spec.axes[a].values[digit[a]];
-        job.values[spec.axes[a].path] = v;
-        set_path(job.job, spec.axes[a].path, v, job.id);
-      }
+      sweep_job_json(spec, k, job.job, job.values, job.id);
       if (!spec.boundary.empty()) {
-        const Json* degree = get_path(job.job, "net.degree");
+        const Json* degree = sweep_path_value(job.job, "net.degree");
         if (!degree) throw ParseError(job.id + ": net.degree: required by the boundary \"" + spec.boundary + "\"");
         job.job["net"] = build_sweep_boundary(spec.boundary, *degree);
       }

@@ -1,40 +1,20 @@
 #pragma once
 // Parameter sweeps (FORMATS.md "Sweeps", `bpde sweep SWEEP.json --out DIR [--jobs N]`): a base job
-// and axes, expanded into the product of jobs, each run as `bpde solve` runs it, with one row of
-// results per job. The expansion exists once, here: the command and the Python module
-// (bezierpde.sweep, also on a Dask cluster) both call expand_sweep and run_sweep_job.
-//
-//   {"base": JOB or "job.json",               // a job object, or a job file relative to the sweep file
-//    "boundary": "circle-three-arcs",         // optional: the net is built by name from its degree
-//    "axes": {"problem.H": [-0.5, -1, -1.5], "net.degree": [4, 6, 8]}}
-//
-// Axes are dotted paths into the job ("problem.H", "net.degree", "net.degree.0" for an array
-// element; missing objects are created) with a non-empty array of values each. Jobs are the
-// product of the axes, in the order of their paths (sorted, as JSON objects are), the last path
-// varying fastest: job-0000, job-0001, ... A named boundary builder makes the data follow the
-// degree axis: after the axes are applied, "net" is replaced by the builder's net for
+// and axes (io/sweep_spec.h: the file, its limits and the order of the jobs), expanded into the
+// product of jobs, each run as `bpde solve` runs it, with one row of results per job. The
+// expansion exists once, here: the command and the Python module (bezierpde.sweep, also on a Dask
+// cluster) both call expand_sweep and run_sweep_job. A named boundary builder makes the data
+// follow the degree axis: after the axes are applied, "net" is replaced by the builder's net for
 // net.degree (sweep_boundary_names() lists them; register_sweep_boundary adds one).
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "bezierpde/io/json_io.h"
+#include "bezierpde/io/sweep_spec.h"
 
 namespace bpde {
 
-struct SweepAxis {
-  std::string path;          ///< dotted path into the job, e.g. "problem.H"
-  std::vector<Json> values;  ///< non-empty
-};
-
-struct SweepSpec {
-  Json base = Json::object();   ///< the base job (before the axes are applied)
-  std::vector<SweepAxis> axes;  ///< sorted by path
-  std::string boundary;         ///< builder name, or empty
-};
-
-/// Largest number of jobs a sweep may expand to (SizeError beyond).
-inline constexpr long kMaxSweepJobs = 100000;
 /// Largest number of worker threads (`--jobs`) a sweep may ask for (ParameterError beyond).
 inline constexpr int kMaxSweepThreads = 1024;
 
@@ -49,8 +29,9 @@ struct SweepJob {
   std::string error;
 };
 
-/// Parse a sweep spec (strict keys: base, axes, boundary). A string "base" is a job file read
-/// relative to `base_dir`. Throws ParseError, FileError, SizeError naming `source`.
+/// Parse a sweep spec (io/sweep_spec.h parse_sweep_spec): a string "base" is a job file read
+/// relative to `base_dir`, "boundary" one of sweep_boundary_names(). Throws ParseError,
+/// FileError, SizeError, ParameterError naming `source`.
 SweepSpec sweep_from_json(const Json& j, const std::string& source = "sweep", const std::string& base_dir = ".");
 SweepSpec read_sweep_file(const std::string& path);
 
@@ -67,10 +48,8 @@ std::vector<std::string> sweep_boundary_names();
 /// ParameterError for an unknown name.
 Json build_sweep_boundary(const std::string& name, const Json& degree);
 
-/// Columns of results.csv: index, job, the axis paths, then kSweepResultColumns.
+/// Columns of results.csv: index, job, the axis paths, then kSweepResultColumns (io/sweep_spec.h).
 std::vector<std::string> sweep_columns(const SweepSpec& spec);
-/// The result columns of every row, after the axis values.
-extern const std::vector<std::string> kSweepResultColumns;
 
 /// Run one job into `dir` as `bpde solve` does (result.json and surface files), plus dir/job.json
 /// (the expanded job) and dir/row.json (its row). Never throws for the job's own failures: an

@@ -99,13 +99,13 @@ void bind_blend(py::module_& m) {
       .def_readonly("multipliers", &bpde::SmoothingSplineResult::multipliers, "4(k+1) x 3.")
       .def_readonly("summary", &bpde::SmoothingSplineResult::summary);
   m.def("solve_smoothing_spline", &bpde::solve_smoothing_spline, py::arg("problem"),
-        py::arg("options") = bpde::SmoothingSplineOptions(), py::call_guard<py::gil_scoped_release>(),
+        py::arg("options") = bpde::SmoothingSplineOptions(), py::call_guard<py::gil_scoped_release, InterruptibleSolve>(),
         "The discrete smoothing PDE spline (Theorem 6, eq. (8)) -> SmoothingSplineResult.");
   py::class_<bpde::SmoothingSplineSolver>(m, "SmoothingSplineSolver",
                                           "Assembled and factored once for a partition, a, epsilon and points.")
       .def(py::init<const bpde::SmoothingSplineProblem&, const bpde::SmoothingSplineOptions&>(), py::arg("problem"),
-           py::arg("options") = bpde::SmoothingSplineOptions(), py::call_guard<py::gil_scoped_release>())
-      .def("solve", &bpde::SmoothingSplineSolver::solve, py::arg("problem"), py::call_guard<py::gil_scoped_release>(),
+           py::arg("options") = bpde::SmoothingSplineOptions(), py::call_guard<py::gil_scoped_release, InterruptibleSolve>())
+      .def("solve", &bpde::SmoothingSplineSolver::solve, py::arg("problem"), py::call_guard<py::gil_scoped_release, InterruptibleSolve>(),
            "Solve for the edges, data and load of `problem` (same k, l, a, epsilon, points).");
 }
 

@@ -31,6 +31,7 @@ void bind_extremal(py::module_& m) {
         const bpde::EnergySpec spec = energy_arg(energy);
         const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
         py::gil_scoped_release release;
+        InterruptibleSolve ctrl_c;
         return bpde::solve_extremal(data, spec, f, options);
       },
       py::arg("data"), py::arg("energy"), py::arg("fixed") = "boundary", py::arg("options") = bpde::ExtremalOptions(),
@@ -45,6 +46,7 @@ void bind_extremal(py::module_& m) {
         check_limits(bpde::extremal_requirements(), {bpde::NetKind::Triangular, data.n(), data.n()}, f, "",
                      "solve_extremal");
         py::gil_scoped_release release;
+        InterruptibleSolve ctrl_c;
         return bpde::solve_extremal(data, spec, f, options);
       },
       py::arg("data"), py::arg("energy"), py::arg("fixed") = "boundary", py::arg("options") = bpde::ExtremalOptions());
@@ -55,6 +57,7 @@ void bind_extremal(py::module_& m) {
              const bpde::EnergySpec spec = energy_arg(energy);
              const bpde::FixedSet f = parse_fixed(text(fixed, "fixed"));
              py::gil_scoped_release release;
+             InterruptibleSolve ctrl_c;
              return bpde::ExtremalSolver(spec, n, m, f, o);
            }),
            py::arg("energy"), py::arg("n"), py::arg("m"), py::arg("fixed") = "boundary",
@@ -70,6 +73,7 @@ void bind_extremal(py::module_& m) {
              const Eigen::MatrixXd Q = Eigen::Map<const Eigen::MatrixXd>(a.data(), a.shape(0), a.shape(1));
              require_finite(Q, "gram");
              py::gil_scoped_release release;
+             InterruptibleSolve ctrl_c;
              return bpde::ExtremalSolver(Q, std::move(fixed), o);
            }),
            py::arg("gram"), py::arg("fixed_indices"), py::arg("options") = bpde::ExtremalOptions(),

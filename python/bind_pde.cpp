@@ -69,6 +69,7 @@ void bind_pde(py::module_& m) {
         check_limits(bpde::tetraharmonic_requirements(), {bpde::NetKind::Tensor, data.n(), data.m()},
                      bpde::FixedSet::BoundaryAdjacent, "", "solve_tetraharmonic");
         py::gil_scoped_release release;
+        InterruptibleSolve ctrl_c;
         bpde::TetraharmonicResult r = bpde::solve_tetraharmonic(data, options);
         return std::make_pair(std::move(r.net), r.summary);
       },

@@ -157,6 +157,9 @@ bpde::ProgressFn interruptible(bpde::ProgressFn inner) {
   };
 }
 
+InterruptibleSolve::InterruptibleSolve()
+    : scope_([check = interruptible()] { check("interruption check", 0, 0); }) {}
+
 void check_limits(const bpde::SolverRequirements& r, const bpde::NetShape& shape, bpde::FixedSet fixed,
                   const std::string& method, const std::string& where) {
   bpde::check_requirements(r, shape, fixed, method, where);

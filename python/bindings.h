@@ -22,6 +22,7 @@
 #include "bezierpde/core/progress.h"
 #include "bezierpde/energies/energy_spec.h"
 #include "bezierpde/io/json_io.h"
+#include "bezierpde/core/interruption.h"
 #include "bezierpde/jobs/job_progress.h"
 #include "bezierpde/solvers/requirements.h"
 
@@ -40,7 +41,8 @@ void bind_cmc(py::module_& m);       // CmcOptions, CmcResult*, solve_cmc (solve
 void bind_extremal(py::module_& m);  // extremals of quadratic energies (solvers/extremal.h)
 void bind_bspline(py::module_& m);   // B-spline extremals and PDE solutions (solvers/bspline/)
 void bind_blend(py::module_& m);     // smoothing PDE splines (solvers/blend/smoothing_spline.h)
-void bind_sweep(py::module_& m);     // sweeps (jobs/sweep.h)
+void bind_sweep(py::module_& m);
+void bind_complex(py::module_& m);  // patch complexes (complex/, solvers/complex/, solvers/cmc/complex_cmc.h)     // sweeps (jobs/sweep.h)
 
 // ------------------------------------------------------------------ dict <-> JSON
 // One-to-one: bool, int, float, str, None, list/tuple, dict with str keys. Floats keep every bit
@@ -58,14 +60,28 @@ py::object from_json(const Json& j);
 // exception. `inner` (the progress a caller installed) is called as before.
 bpde::ProgressFn interruptible(bpde::ProgressFn inner = {});
 
+// Installs an interruption check (core/interruption.h) that runs Python's signal handlers as
+// interruptible() does, for the C++ work of this thread while it lives: the dense and sparse
+// factorisations (extremals, tetraharmonic and biharmonic-load operators, the blend) stop on
+// Ctrl-C at their interruption points. A call guard of the solver entry points.
+class InterruptibleSolve {
+ public:
+  InterruptibleSolve();
+
+ private:
+  bpde::InterruptionScope scope_;
+};
+
 // Installs interruptible(the current job progress) for the jobs run on this thread while it lives
-// (jobs/job_progress.h): the cmc continuation and the other long stages check for signals.
+// (jobs/job_progress.h): the cmc continuation and the other long stages check for signals, and
+// the factorisations at their interruption points (InterruptibleSolve).
 class InterruptibleJobs {
  public:
   InterruptibleJobs() : scope_(interruptible(bpde::job_progress())) {}
 
  private:
   bpde::JobProgressScope scope_;
+  InterruptibleSolve solve_;
 };
 
 // The limits of FORMATS.md "Input limits" that a job checks before it runs (the degrees of the

@@ -34,4 +34,5 @@ PYBIND11_MODULE(_core, m) {
   bind_bspline(m);
   bind_blend(m);
   bind_sweep(m);
+  bind_complex(m);
 }

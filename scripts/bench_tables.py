@@ -141,6 +141,9 @@ FAMILIES = [
       ("ceres V ms", "CmcMeanCurvature/ceres-volume/circle")],
      [("ceres / newton", "CmcMeanCurvature/ceres/circle", "CmcMeanCurvature/newton/circle"),
       ("ceres / newton (V)", "CmcMeanCurvature/ceres-volume/circle", "CmcMeanCurvature/newton-volume/circle")]),
+    ("cmc-complex", "^CmcComplex/", "patches",
+     [("minimal surface ms", "CmcComplex/minimal"), ("Dirichlet extremal ms", "CmcComplex/extremal")],
+     [("minimal / extremal", "CmcComplex/minimal", "CmcComplex/extremal")]),
     ("area-form", "^AreaForm/", "n",
      [(f"{op} {dom} ms", f"AreaForm/{op}/{dom}") for op in ("gradient", "rows-and-scale", "hessian")
       for dom in ("triangle", "square")], []),

@@ -134,7 +134,8 @@ def facet_point(corners, mids, l1, l2):
 class Case:
     """One problem: the boundary, H, the exact sphere, the bpde jobs and the Evolver data file."""
 
-    def __init__(self, name, builder, H, centre, radius, area_exact, functionals):
+    def __init__(self, name, builder, H, centre, radius, area_exact, functionals, complex_job=False):
+        self.complex_job = complex_job  # the boundary as a COMPLEX job (the automatic fan of 6 patches)
         self.name = name
         self.builder = builder
         self.H = H
@@ -149,6 +150,9 @@ class Case:
         # would change the sphere case's boundary and the published tables; the circle's corners
         # are joined, so its arcs are refitted geometrically either way).
         boundary = {"type": "triangular", "degree": degree, "builder": self.builder, "fit": "interpolation"}
+        if self.complex_job:  # the unit circle as one circle curve, the fan of 6 triangular patches
+            boundary = {"type": "complex", "patch": "triangular", "degree": degree,
+                        "loops": [[{"type": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1}]]}
         problem = {"kind": "cmc", "H": self.H, "solver": "newton"}
         if functional != "dirichlet":
             problem["functional"] = functional
@@ -156,7 +160,10 @@ class Case:
             problem["mean_curvature_tolerance"] = mc_tolerance
         if start is not None:
             problem["start"] = start
-        return {"boundary": boundary, "fixed": "boundary", "problem": problem, "samples": 40}
+        job = {"boundary": boundary, "fixed": "boundary", "problem": problem, "samples": 40}
+        if self.complex_job:
+            del job["fixed"]  # a complex holds its boundary rows
+        return job
 
 
 def circle_case():
@@ -165,6 +172,12 @@ def circle_case():
     h = R - math.sqrt(R * R - 1.0)  # the cap's height over the unit circle
     return Case("circle", "circle-three-arcs", H, (0.0, 0.0, -math.sqrt(R * R - 1.0)), R, 2.0 * math.pi * R * h,
                 ["area", "mean-curvature"])
+
+
+def circle_complex_case():
+    """The circle's cap as a complex job: the same exact cap and Evolver file as `circle`."""
+    c = circle_case()
+    return Case("circle-complex", None, c.H, c.centre, c.radius, c.area_exact, ["area"], complex_job=True)
 
 
 def sphere_case():
@@ -348,7 +361,9 @@ def run_bpde(bpde, case, degree, functional, work, grid, mc_tolerance=None, star
         "seconds": rep.get("seconds"),
         "converged": rep.get("converged"),
         "residual": rep.get("residual"),
-        "error": net_sphere_error(result["net"], case.centre, case.radius, grid),
+        "error": (max(net_sphere_error(q, case.centre, case.radius, grid // 2) for q in result["net"]["patches"])
+                  if result["net"].get("type") == "complex" else net_sphere_error(result["net"], case.centre,
+                                                                                   case.radius, grid)),
         "area": rep.get("area"),
         "H_min": mc.get("min"),
         "H_max": mc.get("max"),
@@ -360,7 +375,7 @@ def run_evolver(evolver, case, level, quadratic, work):
     os.makedirs(d, exist_ok=True)
     fe = os.path.join(d, "file.fe")
     with open(fe, "w") as f:
-        f.write(fe_circle(case.H) if case.name == "circle" else fe_sphere(case.H))
+        f.write(fe_circle(case.H) if case.name in ("circle", "circle-complex") else fe_sphere(case.H))
     with open(os.path.join(d, "run.cmd"), "w") as f:
         f.write(run_cmd(level, quadratic))
     with open(os.devnull) as devnull:
@@ -512,7 +527,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--bpde", default="build/bpde")
     ap.add_argument("--evolver", default="evolver")
-    ap.add_argument("--case", default="circle", choices=["circle", "sphere", "all"])
+    ap.add_argument("--case", default="circle", choices=["circle", "sphere", "circle-complex", "all"])
     ap.add_argument("--degrees", default="4,5,6,7,8,10,12")
     ap.add_argument("--linear-levels", default="1..8")
     ap.add_argument("--quadratic-levels", default="1..6")
@@ -533,7 +548,8 @@ def main(argv=None):
                     help="print the names of the sections these arguments print (scripts/docs.py) and exit")
     args = ap.parse_args(argv)
     if args.list:
-        for name in {"circle": ["circle"], "sphere": ["sphere"], "all": ["circle", "sphere"]}[args.case]:
+        for name in {"circle": ["circle"], "sphere": ["sphere"], "circle-complex": ["circle-complex"],
+                     "all": ["circle", "sphere", "circle-complex"]}[args.case]:
             print("\n".join(section_names(name, bool(args.tolerances))))
         return 0
     try:
@@ -566,18 +582,20 @@ def main(argv=None):
               file=sys.stderr)
         return 2
     bpde = os.path.abspath(args.bpde)
-    cases = {"circle": [circle_case()], "sphere": [sphere_case()], "all": [circle_case(), sphere_case()]}[args.case]
+    cases = {"circle": [circle_case()], "sphere": [sphere_case()], "circle-complex": [circle_complex_case()],
+             "all": [circle_case(), sphere_case(), circle_complex_case()]}[args.case]
     work = args.out or tempfile.mkdtemp(prefix="evolver_compare-")
     os.makedirs(work, exist_ok=True)
     print("machine: %s, load average at start %.2f %.2f %.2f; work folder %s" % (
         os.uname().nodename, *os.getloadavg(), work))
     for case in cases:
-        degrees = parse_list(args.degrees)
+        # the complex jobs up to n = 10 (the fan at n = 12 and above takes minutes per solve)
+        degrees = [n for n in parse_list(args.degrees) if not case.complex_job or n <= 10]
         brows = [run_bpde(bpde, case, n, f, work, args.grid) for f in case.functionals for n in degrees]
         if "mean-curvature" in case.functionals:
             brows += [run_bpde(bpde, case, n, "mean-curvature", work, args.grid, t) for t in mc_tolerances
                       for n in degrees]
-        if args.area_dirichlet_start and "area" in case.functionals:
+        if args.area_dirichlet_start and "area" in case.functionals and not case.complex_job:
             brows += [run_bpde(bpde, case, n, "area", work, args.grid, start="dirichlet") for n in degrees]
         lrows = [run_library(os.path.abspath(args.library), case, n, t, args.grid) for n in degrees for t in tolerances] \
             if case.name == "circle" else []

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The libFuzzer targets of fuzz/ (net, job and blend readers; docs/robustness.md).
+# The libFuzzer targets of fuzz/ (net, job, blend, boundary-curve and sweep readers; docs/robustness.md).
 #   bash scripts/fuzz.sh [RUNS]     (default 1000000 inputs per target; CI runs 20000)
 # Builds fuzz/ with clang in ./build-fuzz (ASan + UBSan + libFuzzer, only the reader sources),
 # then runs each target for RUNS inputs from its seeds: fuzz/corpus/<target> (every JSON file of
@@ -15,7 +15,7 @@ launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S fuzz -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER="$CXX_FUZZ" "${launcher[@]}" >/dev/null
 cmake --build build-fuzz -j "$(nproc)"
-for t in net job blend curve; do
+for t in net job blend curve sweep; do
   mkdir -p "build-fuzz/corpus/$t"
   start=$(date +%s)
   # -max_len: the seeds include 100000-level nestings (200 kB); 2 MB leaves room to grow them.

@@ -1,5 +1,6 @@
 #include "bezierpde/solvers/extremal.h"
 
+#include "bezierpde/core/interruption.h"
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <algorithm>
@@ -230,7 +231,9 @@ ExtremalSolver::ExtremalSolver(const EnergySpec& energy, int n, int m, FixedSet 
   const TensorNet shape(n, m);  // DegreeError outside 1..kMaxDegree
   check_min_degree(n, m, fixed);
   const std::vector<QuadraticTerm> terms = energy.terms();
+  check_interruption();  // core/interruption.h: around the Gram matrix's assembly
   Q_ = tensor_gram(n, m, terms);
+  check_interruption();
   N_ = static_cast<int>(Q_.rows());
   fixed_ = shape.fixed_indices(fixed);
   free_ = shape.free_indices(fixed);
@@ -288,7 +291,11 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   auto f = std::make_shared<Factor>();
   // Cholesky (blocked, fast). Failure means indefinite or singular (a pivoted LDLT says which);
   // success with a reciprocal condition estimate below the tolerance means numerically singular.
+  // Interruption points (core/interruption.h) before and after the factorisation and the mould's
+  // solve, the steps that cannot stop (docs/robustness.md).
+  check_interruption();
   f->sym.compute(A_ff_);
+  check_interruption();
   const double rcond = f->sym.rcond();
   const bool ok = f->sym.cholesky() && rcond > options.singular_tolerance;
   const double dmin = f->sym.cholesky() ? rcond : f->sym.min_pivot();
@@ -304,6 +311,7 @@ void ExtremalSolver::factor(const Eigen::MatrixXd& Aff, const Eigen::MatrixXd& A
   }
   factor_ = f;
   mould_ = apply_basis(f->sym.solve(-A_fb_));
+  check_interruption();
 }
 
 Eigen::MatrixXd ExtremalSolver::apply_basis(const Eigen::MatrixXd& Y) const {
@@ -409,10 +417,13 @@ ExtremalResult solve_extremal_untimed(const TensorNet& net, const EnergySpec& en
   std::shared_ptr<const ExtremalSolver> solver =
       options.use_cache ? ExtremalSolver::cached(energy, net.n(), net.m(), fixed, options)
                         : std::make_shared<const ExtremalSolver>(energy, net.n(), net.m(), fixed, options);
+  check_interruption();  // core/interruption.h: between the solve and its figures
   ExtremalResult r{solver->solve(net), 0.0, {}};
+  check_interruption();
   r.energy = solver->extremal_energy(r.net.points());
   r.summary.iterations = 0;
   r.summary.residual = solver->reduced_residual(r.net.points());
+  check_interruption();
   const bool ok = r.summary.residual <= kConvergenceTolerance && std::isfinite(r.energy) && r.net.points().allFinite();
   std::ostringstream s;
   if (!ok)

@@ -77,6 +77,12 @@ from ._core import (  # noqa: F401
     solve_smoothing_spline,
     expand_sweep,
     sweep_boundary_names,
+    PatchComplex,
+    complex_from_boundary,
+    ComplexExtremalResult,
+    solve_complex_extremal,
+    CmcResultComplex,
+    sample_complex,
 )
 from .sweep import sweep  # noqa: F401
 

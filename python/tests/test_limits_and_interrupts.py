@@ -105,3 +105,49 @@ def test_ctrl_c_stops_a_long_solve(call):
     assert time.monotonic() - t < 10.0
     # the module is usable afterwards
     assert bezierpde.solve(circle_job(6))[1]["converged"]
+
+
+# Seconds from Ctrl-C to KeyboardInterrupt allowed in a long factorisation: the next interruption
+# point is well under a second away on an idle machine (docs/robustness.md, "Interrupting a solve");
+# without the points each call below runs to its end and raises nothing.
+LATENCY_BOUND = 20.0
+
+
+def sheet(n):
+    net = bezierpde.TensorNet(n, n)
+    net.points = np.array([[i / n, j / n, 0.2 * np.sin(3 * i / n) * np.cos(2 * j / n)]
+                           for i in range(n + 1) for j in range(n + 1)])
+    return net
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        # The largest sizes the limits allow: the dense tetraharmonic operator at degree 40 (86 s on
+        # an idle machine), the tensor extremal at degree 64 (its Gram matrix and Cholesky factor;
+        # 7.5 s on the loaded build machine) and a 256 x 256 blend job. Each stops at its next
+        # interruption point (core/interruption.h) instead of running to its end.
+        lambda: bezierpde.solve_tetraharmonic(sheet(40)),
+        lambda: bezierpde.solve_extremal(sheet(64), "biharmonic", "boundary"),
+        lambda: bezierpde.blend({"kind": "blend", "partition": [256, 256], "a": 1, "epsilon": 0.01, "samples": 4,
+                                 "surfaces": {"f": {"type": "tensor", "degree": [1, 1],
+                                                    "points": [[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0.5]]},
+                                              "g": {"type": "tensor", "degree": [1, 1],
+                                                    "points": [[0, 2, 0], [0, 3, 0], [1, 2, 0], [1, 3, 1]]}}}),
+    ],
+    ids=["tetraharmonic", "extremal", "blend"],
+)
+def test_ctrl_c_stops_a_long_factorisation(call, record_property):
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    timer = interrupt_after(1.0)
+    t = time.monotonic()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            call()
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, previous)
+    latency = time.monotonic() - t - 1.0
+    record_property("latency_s", latency)
+    assert latency < LATENCY_BOUND
+    assert bezierpde.solve(circle_job(6))[1]["converged"]

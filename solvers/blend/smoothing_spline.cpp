@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/interruption.h"
 
 namespace bpde {
 
@@ -404,8 +405,12 @@ void SmoothingSplineSolver::Impl::factor_kkt() {
   Eigen::SparseMatrix<double> K(n + nc, n + nc);
   K.setFromTriplets(t.begin(), t.end());
   K.makeCompressed();
+  // Interruption points (core/interruption.h) between the analysis and the factorisation.
+  check_interruption();
   lu.analyzePattern(K);
+  check_interruption();
   lu.factorize(K);
+  check_interruption();
   factored = lu.info() == Eigen::Success;
   if (!factored) factor_message = "the KKT matrix of eq. (8) is singular: " + lu.lastErrorMessage();
 }
@@ -554,12 +559,17 @@ void SmoothingSplineSolver::Impl::factor_reduced() {
   {
     std::unique_ptr<SerialCholmodOpenMP> serial;
     if (!options.threaded_factorization) serial = std::make_unique<SerialCholmodOpenMP>();
+    // Interruption points (core/interruption.h) between the analysis and the factorisation.
+    check_interruption();
     ldlt.analyzePattern(Cff);
+    check_interruption();
     ldlt.factorize(Cff);
   }
 #else
+  check_interruption();
   ldlt.compute(Cff);
 #endif
+  check_interruption();
 #ifdef BPDE_HAVE_CHOLMOD
   factored = ldlt.info() == Eigen::Success;  // a Cholesky factor exists only for SPD matrices
 #else
@@ -706,10 +716,13 @@ SmoothingSplineSolver::SmoothingSplineSolver(const SmoothingSplineProblem& probl
   m.key.points = problem.points;
   m.options = options;
   m.space = BfsSpace(problem.k, problem.l);
+  check_interruption();  // core/interruption.h: between the stages
   m.assemble(problem);
+  check_interruption();
   m.split_dofs();
   if (options.method == SmoothingSplineOptions::Method::kKktLu) m.factor_kkt();
   if (options.method == SmoothingSplineOptions::Method::kElimination) m.order_free_dofs();
+  check_interruption();
   m.split_system();  // frees C
   if (options.method == SmoothingSplineOptions::Method::kElimination) m.factor_reduced();
 }
@@ -746,8 +759,10 @@ SmoothingSplineResult SmoothingSplineSolver::Impl::solve(const SmoothingSplinePr
     summary.set_failed(Status::NotUnique, m.factor_message);
     alpha = Eigen::MatrixX3d::Zero(n, 3);
   } else {
+    check_interruption();
     alpha = m.solve_linear(F, y);
   }
+  check_interruption();
 
   const Residuals res = m.residuals(alpha, F, y);
   // The feasible field with the free dofs at 0: σ must do at least as well.

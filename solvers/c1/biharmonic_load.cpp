@@ -12,6 +12,7 @@
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/bernstein_ops.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/interruption.h"
 #include "bezierpde/core/keyed_cache.h"
 #include "bezierpde/core/kron.h"
 #include "bezierpde/solvers/c1/refine_mould.h"
@@ -69,8 +70,12 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
   auto op_entry = [&](int i, int j, int k, int l) -> quad {
     return (j == l ? t4(i, k) : quad(0)) + 2 * t2(i, k) * t2(j, l) + (i == k ? t4(j, l) : quad(0));
   };
+  // Interruption points (core/interruption.h): every 64 rows assembled or columns refined, and
+  // before and after the LU factorisation, the one step that cannot stop (docs/robustness.md).
+  constexpr int kBlock = 64;
   MatL A(ni, ni), B(ni, nf);
   for (int r = 0; r < ni; ++r) {
+    if (r % kBlock == 0) check_interruption();
     const int i = s->interior[static_cast<size_t>(r)] / n1, j = s->interior[static_cast<size_t>(r)] % n1;
     for (int c = 0; c < ni; ++c)
       A(r, c) = static_cast<long double>(
@@ -79,8 +84,11 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
       B(r, c) = static_cast<long double>(
           op_entry(i, j, s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1));
   }
+  check_interruption();
   const Eigen::PartialPivLU<MatL> lu(A);
+  check_interruption();
   MatL G = -lu.solve(B);
+  check_interruption();
   std::vector<quad> X(static_cast<size_t>(N));
   // Refine until the correction is below 1e-18 of G (at most 8 steps; 2 suffice up to n ~ 20).
   refine_mould(
@@ -88,6 +96,7 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
       [&](const MatL& cur) {
         MatL R(ni, nf);
         for (int c = 0; c < nf; ++c) {
+          if (c % kBlock == 0) check_interruption();
           mould_column(cur, c, s->interior, s->fixed, X);
           // Y = T2 X T2^T (then the other terms entrywise on the interior rows).
           std::vector<quad> XT(static_cast<size_t>(N), 0);
@@ -111,7 +120,11 @@ std::shared_ptr<const LoadSolver> build_load_solver(int n) {
         }
         return R;
       },
-      [&](const MatL& R) -> MatL { return lu.solve(R); });
+      [&](const MatL& R) -> MatL {
+        MatL C = lu.solve(R);
+        check_interruption();
+        return C;
+      });
   s->G = G.cast<double>();
   return s;
 }

@@ -13,6 +13,7 @@
 #include "bezierpde/core/bernstein.h"
 #include "bezierpde/core/bernstein_ops.h"
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/interruption.h"
 #include "bezierpde/core/keyed_cache.h"
 #include "bezierpde/core/kron.h"
 #include "bezierpde/solvers/c1/biharmonic_load.h"
@@ -41,11 +42,38 @@ void check_data(const TensorNet& data) {
 // (64-bit mantissa) and refine G with residuals computed in binary128 from exact matrix entries.
 using MatL = MatLD;
 
+// Eigen's HouseholderQR computed as Eigen computes it (householder_qr_inplace_blocked: panels of
+// 48 columns, each factored and then applied to the trailing columns) with an interruption point
+// (core/interruption.h) between the panels: the QR of the degree-40 operator takes tens of seconds.
+// The same numbers as HouseholderQR(A); solve() and the other members are HouseholderQR's.
+class InterruptibleQR : public Eigen::HouseholderQR<MatL> {
+ public:
+  explicit InterruptibleQR(const MatL& A) {
+    constexpr Eigen::Index kPanel = 48;  // Eigen's block size in HouseholderQR::computeInPlace
+    m_qr = A;
+    const Eigen::Index rows = A.rows(), cols = A.cols(), size = std::min(rows, cols);
+    m_hCoeffs.resize(size);
+    m_temp.resize(cols);
+    for (Eigen::Index k = 0; k < size; k += kPanel) {
+      check_interruption();
+      const Eigen::Index bs = std::min(size - k, kPanel), tcols = cols - k - bs, brows = rows - k;
+      Eigen::Block<MatL> A11_21 = m_qr.block(k, k, brows, bs);
+      auto h = m_hCoeffs.segment(k, bs);
+      Eigen::internal::householder_qr_inplace_unblocked(A11_21, h, m_temp.data());
+      if (tcols) {
+        Eigen::Block<MatL> A21_22 = m_qr.block(k, k + bs, brows, tcols);
+        Eigen::internal::apply_block_householder_on_the_left(A21_22, A11_21, h, false);
+      }
+    }
+    m_isInitialized = true;
+  }
+};
+
 struct LuSolver {
   std::vector<int> interior, fixed;
   Eigen::MatrixXd G;                               // interior = G * fixed
   std::vector<std::vector<quad>> T;                // T_0, T_2, .., T_8 in quad (index d)
-  std::unique_ptr<Eigen::HouseholderQR<MatL>> qr;  // of the interior columns, for refinement
+  std::unique_ptr<InterruptibleQR> qr;             // of the interior columns, for refinement
   std::vector<Eigen::MatrixXd> TD;  // T_0, T_2, .., T_8 rounded to double (index d/2)
   Eigen::MatrixXd pinv;  // the least-squares operator qr->solve(.) as an (interior x (n+1)^2) matrix
 };
@@ -85,7 +113,10 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
   s->interior = shape.free_indices(FixedSet::BoundaryAdjacent);
   const int n1 = n + 1, N = n1 * n1, ni = static_cast<int>(s->interior.size()), nf = static_cast<int>(s->fixed.size());
   std::vector<std::vector<quad>> T(9);
-  for (int d = 0; d <= 8; d += 2) T[static_cast<size_t>(d)] = derivative_at_degree_rm<quad>(n, d);
+  for (int d = 0; d <= 8; d += 2) {
+    check_interruption();  // core/interruption.h (each matrix takes seconds in binary128 at n = 40)
+    T[static_cast<size_t>(d)] = derivative_at_degree_rm<quad>(n, d);
+  }
   // Operator columns in long double: column (k,l) of sum_t C_t T_{8-2t} (x) T_{2t} is
   // sum_t C_t T_{8-2t}(:,k) T_{2t}(:,l)^T.
   auto column = [&](int k, int l, Eigen::Ref<VecLD> out) {
@@ -101,14 +132,33 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
       }
     }
   };
+  // Interruption points (core/interruption.h): every 64 columns assembled or solved, 16 refined, and
+  // between the panels of the QR factorisation (InterruptibleQR).
+  constexpr int kColumnBlock = 64;
   MatL AI(N, ni), AF(N, nf);
-  for (int c = 0; c < ni; ++c)
+  for (int c = 0; c < ni; ++c) {
+    if (c % kColumnBlock == 0) check_interruption();
     column(s->interior[static_cast<size_t>(c)] / n1, s->interior[static_cast<size_t>(c)] % n1, AI.col(c));
-  for (int c = 0; c < nf; ++c)
+  }
+  for (int c = 0; c < nf; ++c) {
+    if (c % kColumnBlock == 0) check_interruption();
     column(s->fixed[static_cast<size_t>(c)] / n1, s->fixed[static_cast<size_t>(c)] % n1, AF.col(c));
-  s->qr = std::make_unique<Eigen::HouseholderQR<MatL>>(AI);
+  }
+  check_interruption();
+  s->qr = std::make_unique<InterruptibleQR>(AI);
+  check_interruption();
   const Eigen::HouseholderQR<MatL>& qr = *s->qr;
-  MatL G = -qr.solve(AF);
+  // qr.solve by blocks of columns (each column of the right-hand side is solved on its own).
+  auto solve_by_blocks = [&](const auto& rhs) {
+    MatL X(ni, rhs.cols());
+    for (Eigen::Index c = 0; c < rhs.cols(); c += kColumnBlock) {
+      const Eigen::Index w = std::min<Eigen::Index>(kColumnBlock, rhs.cols() - c);
+      X.middleCols(c, w) = qr.solve(MatL(rhs.middleCols(c, w)));
+      check_interruption();
+    }
+    return X;
+  };
+  MatL G = -solve_by_blocks(AF);
   // Refinement: R = A_I G + A_F in quad (Kronecker form, X_c = G(:,c) on the interior + e_f),
   // then G -= QR \ R. The system is consistent (Theorem 1), so R -> 0.
   // Two steps (solvers/c1/refine_mould.h) suffice up to n ~ 20; none below n = 9.
@@ -118,13 +168,15 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
       [&](const MatL& cur) {
         MatL R(N, nf);
         for (int c = 0; c < nf; ++c) {
+          // every 16 columns: each applies the operator in binary128 (a tenth of a second at n = 40)
+          if (c % 16 == 0) check_interruption();
           mould_column(cur, c, s->interior, s->fixed, X);
           apply_operator(T, n, X, Y);
           for (int r = 0; r < N; ++r) R(r, c) = static_cast<long double>(Y[static_cast<size_t>(r)]);
         }
         return R;
       },
-      [&](const MatL& R) -> MatL { return qr.solve(R); });
+      [&](const MatL& R) -> MatL { return solve_by_blocks(R); });
   s->G = G.cast<double>();
   for (int d = 0; d <= 8; d += 2) {
     Eigen::MatrixXd M(n1, n1);
@@ -133,7 +185,7 @@ std::shared_ptr<const LuSolver> build_lu_solver(int n) {
         M(i, j) = static_cast<double>(T[static_cast<size_t>(d)][static_cast<size_t>(i * n1 + j)]);
     s->TD.push_back(std::move(M));
   }
-  s->pinv = qr.solve(MatL::Identity(N, N)).cast<double>();
+  s->pinv = solve_by_blocks(MatL::Identity(N, N)).cast<double>();
   s->T = std::move(T);
   return s;
 }

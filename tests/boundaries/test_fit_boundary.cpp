@@ -269,6 +269,62 @@ TEST(FitBoundary, SamplesOfACurveWithVaryingSpeedKeepTheSpectralConvergence) {
   EXPECT_LT(bpde::edge_error(many, f), 1e-8);
 }
 
+TEST(FitBoundary, ManySamplesAreFittedAtTheHighestDegrees) {
+  // 1000 and 100000 samples of a helix fitted at degree 50 and at the largest net degree: the
+  // Bernstein matrix's condition (about 2^n) puts singular values below 1e-12 of the largest from
+  // n = 47 on, yet n − 1 distinct inner parameters determine the fit (fit_samples.h,
+  // "Conditioning"). The fit must be the helix to rounding: at these degrees the helix's
+  // polynomial approximation error (3 rad, Chebyshev remainder) is far below 1e-15, so the
+  // distance from the helix is the fit's numerical error alone (measured up to 1e-13).
+  auto helix = [](double u) { return Vector3d(std::cos(3 * u), std::sin(3 * u), 0.9 * u); };
+  for (int M : {999, 99999}) {
+    Eigen::MatrixX3d S(M + 1, 3);
+    std::vector<double> s(static_cast<size_t>(M + 1));
+    for (int k = 0; k <= M; ++k) {
+      s[static_cast<size_t>(k)] = static_cast<double>(k) / M;
+      S.row(k) = helix(s[static_cast<size_t>(k)]).transpose();
+    }
+    const BoundaryCurve given = BoundaryCurve::samples(S, s);
+    for (int n : {50, bpde::kMaxDegree}) {
+      const bpde::CurveFit f = bpde::fit_edge(given, n);
+      double worst = 0;
+      for (int k = 0; k <= 256; ++k) worst = std::max(worst, (bezier(f.points, k / 256.0) - helix(k / 256.0)).norm());
+      EXPECT_LT(worst, 1e-11) << M + 1 << " samples, degree " << n;
+    }
+  }
+  // Without parameters (the chord length, corrected by the orthogonal fit): the fit passes the
+  // samples to rounding at its parameters, and its points lie on the helix.
+  Eigen::MatrixX3d S(1000, 3);
+  for (int k = 0; k < 1000; ++k) S.row(k) = helix(k / 999.0).transpose();
+  const BoundaryCurve corrected = BoundaryCurve::samples(S);
+  for (int n : {50, bpde::kMaxDegree}) {
+    const bpde::CurveFit f = bpde::fit_edge(corrected, n);
+    EXPECT_LT(bpde::edge_error(corrected, f), 1e-11) << n;
+    for (int k = 0; k <= 16; ++k) {
+      const Vector3d x = bezier(f.points, k / 16.0);
+      // On the helix: radius 1 about the z axis, and the angle 3u where u = z / 0.9.
+      EXPECT_NEAR(std::hypot(x(0), x(1)), 1.0, 1e-10) << n;
+      EXPECT_NEAR(std::cos(x(2) / 0.3), x(0), 1e-9) << n;
+    }
+  }
+  // Fewer distinct inner parameters than n − 1 still do not determine the fit.
+  Eigen::MatrixX3d few(51, 3);
+  std::vector<double> tf(51);
+  for (int k = 0; k <= 50; ++k) {
+    tf[static_cast<size_t>(k)] = k / 50.0;
+    few.row(k) = helix(tf[static_cast<size_t>(k)]).transpose();
+  }
+  EXPECT_THROW(bpde::least_squares_at(51, Eigen::Map<const Eigen::VectorXd>(tf.data(), 51), few), bpde::SizeError);
+  Eigen::VectorXd twice(52);
+  Eigen::MatrixX3d q2(52, 3);
+  for (int k = 0; k < 52; ++k) {
+    twice(k) = k < 26 ? k / 50.0 : (k - 1) / 50.0;  // 0.5 twice: 49 distinct inside (0,1)
+    q2.row(k) = helix(twice(k)).transpose();
+  }
+  EXPECT_THROW(bpde::least_squares_at(51, twice, q2), bpde::ParameterError);
+  EXPECT_NO_THROW(bpde::least_squares_at(50, twice, q2));
+}
+
 TEST(FitBoundary, TensorC1RingFromTangentFields) {
   // The boundary and the inward cross derivatives of a random polynomial patch reproduce its
   // outer two rings (interpolation of polynomials of the net's degree is exact).

@@ -155,7 +155,7 @@ TEST(ComplexJobs, BadInputExitsTwoWithOneLineAndNoFiles) {
   expect_refused("three_loops", job("", pentagon + ", " + polygon_loop(5, 1) + ", " + polygon_loop(5, 2)));
   expect_refused("cmc_mean_curvature",
                  job("", pentagon, R"("problem": {"kind": "cmc", "H": 0.5, "functional": "mean-curvature"})"));
-  expect_refused("export_step", job("", pentagon, kDirichlet + R"(, "export": ["step"])"));
+  expect_refused("export_unknown", job("", pentagon, kDirichlet + R"(, "export": ["stl"])"));
   expect_refused("unknown_patch", job("", pentagon).replace(job("", pentagon).find("triangular"), 10, "hexagonal"));
   expect_refused("circle_without_radius", job("", R"([{"type": "circle", "center": [0,0,0], "normal": [0,0,1]}])"));
   expect_refused("layout_mismatch",

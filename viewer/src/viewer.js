@@ -6,6 +6,9 @@
 //   vertex): base64 little-endian float32; regular: base64 uint8 (1 per vertex); indices: base64
 //   uint32 (3 per triangle); net: {points: base64 float32 (3 per point), lines: base64 uint32
 //   (2 per segment)}; range: [lo, hi] of the colour scale; report: the report object.
+//   A patch complex adds seams: {edges, interior, samples: counts; points: base64 float32 (3 per
+//   point), lines: base64 uint32 (2 per segment)}, the patch edges as polylines (shared edges once),
+//   shown with the check box #bpde-show-seams; its net is every patch's control net.
 // After the first frame the page writes what it drew into #bpde-status (data-vertices,
 // data-triangles, data-drawn: non-background pixels in the middle of the canvas) and the title.
 import * as THREE from 'three';
@@ -237,6 +240,17 @@ function main() {
   net.add(new THREE.Points(netGeometry, new THREE.PointsMaterial({ color: 0xc03020, size: 6, sizeAttenuation: false })));
   scene.add(net);
 
+  const toggles = [['bpde-show-net', net], ['bpde-show-wire', wire]];
+  if (data.seams) {
+    const seamGeometry = new THREE.BufferGeometry();
+    seamGeometry.setAttribute('position', new THREE.BufferAttribute(f32(data.seams.points), 3));
+    seamGeometry.setIndex(new THREE.BufferAttribute(u32(data.seams.lines), 1));
+    const seams = new THREE.LineSegments(seamGeometry, new THREE.LineBasicMaterial({ color: 0x1040c0 }));
+    scene.add(seams);
+    toggles.push(['bpde-show-seams', seams]);
+    document.getElementById('bpde-seams-label').hidden = false;
+  }
+
   scene.add(new THREE.AmbientLight(0xffffff, 1.2));
   const camera = new THREE.PerspectiveCamera(35, 1, 1e-3, 1e3);
   const head = new THREE.DirectionalLight(0xffffff, 1.8);
@@ -265,7 +279,7 @@ function main() {
   controls.update();
   controls.addEventListener('change', render);
   window.addEventListener('resize', () => { resize(); render(); });
-  for (const [id, object] of [['bpde-show-net', net], ['bpde-show-wire', wire]]) {
+  for (const [id, object] of toggles) {
     const box = document.getElementById(id);
     object.visible = box.checked;
     box.addEventListener('change', () => { object.visible = box.checked; render(); });

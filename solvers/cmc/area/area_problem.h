@@ -13,6 +13,7 @@
 
 #include "bezierpde/core/progress.h"
 #include "bezierpde/energies/area_functional.h"
+#include "bezierpde/solvers/cmc/area/sparse_terms.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 
 namespace bpde::cmc_detail {
@@ -26,7 +27,16 @@ inline constexpr std::string_view kAreaVContinuationStage = "cmc area v-continua
 struct AreaProblem {
   CmcProblem base;                    ///< the Dirichlet Gram and V, the free points and P
   std::shared_ptr<const AreaForm> a;  ///< the quadrature rule in use
-  Eigen::MatrixXd C;                  ///< the Dirichlet Gram over the free points ⊗ Id_3
+  /// The Dirichlet Gram over the free points ⊗ Id_3 (dense; empty where `sparse` is set: then
+  /// dense_C() builds it from sparse->C the first time a dense phase asks for it).
+  mutable Eigen::MatrixXd C;
+  /// A surface of several patches: the sparse Gram and Hessians (sparse_terms.h); the corrector
+  /// and the predictors then factor sparse matrices. Null for one patch.
+  std::shared_ptr<const SparseAreaTerms> sparse;
+  const Eigen::MatrixXd& dense_C() const {
+    if (C.size() == 0 && sparse) C = Eigen::MatrixXd(sparse->C);
+    return C;
+  }
   /// The weight of the Dirichlet regulariser: the functional is F_ε = A_H + ε(D - A)
   /// = (1-ε)A + εD + 2HV (ε = 1: the paper's D_H; ε = 0: A_H).
   double eps = 0.0;
@@ -53,6 +63,10 @@ struct AreaProblem {
   Eigen::VectorXd gradient(double H) const;
   /// 3k x 3k Hessian of F_ε over the free points.
   Eigen::MatrixXd hessian(double H) const;
+  /// The same, sparse (needs `sparse`).
+  Eigen::SparseMatrix<double> hessian_sparse(double H) const;
+  /// The Dirichlet Gram over the free points ⊗ Id_3, sparse (needs `sparse`).
+  const Eigen::SparseMatrix<double>& sparse_C() const { return sparse->C; }
   /// Free rows of ∇V (3k).
   Eigen::VectorXd volume_gradient() const { return base.volume_gradient(); }
   /// max |∇F_ε| / max ((1-ε)S_A + ε Σ_J|C_IJ||P_J| + 2|H| S_V) over the free rows (AreaForm /

@@ -108,11 +108,22 @@ double AreaSolve<Net>::vresidual(double V0, double H) const {
 // mode of the surface's normal motion crosses 0; past it the corrector finds no point.
 template <class Net>
 bool AreaSolve<Net>::strict_minimum(double H, Eigen::VectorXd* tangent) {
+  if (p.sparse) {  // a complex: the same test by the sparse factor
+    Eigen::SparseMatrix<double> K = p.hessian_sparse(H);
+    if (!Eigen::Map<const Eigen::VectorXd>(K.valuePtr(), K.nonZeros()).allFinite()) return false;
+    const Eigen::VectorXd d = K.diagonal().cwiseQuotient(Eigen::VectorXd(p.sparse_C().diagonal()));
+    const double scale = d.maxCoeff();
+    if (!(scale > 0) || !std::isfinite(scale)) return false;
+    SparseSymFactor f;
+    if (!f.compute(K + kStrictMinimumShift * scale * p.sparse_C())) return false;
+    if (tangent) *tangent = -2.0 * f.solve(p.volume_gradient());
+    return true;
+  }
   Eigen::MatrixXd K = p.hessian(H);
   if (!K.allFinite()) return false;
-  const double scale = K.diagonal().cwiseQuotient(p.C.diagonal()).maxCoeff();  // C's diagonal > 0 (a Gram)
+  const double scale = K.diagonal().cwiseQuotient(p.dense_C().diagonal()).maxCoeff();  // C's diagonal > 0 (a Gram)
   if (!(scale > 0) || !std::isfinite(scale)) return false;
-  K += kStrictMinimumShift * scale * p.C;
+  K += kStrictMinimumShift * scale * p.dense_C();
   Eigen::LLT<Eigen::MatrixXd> llt(K);
   if (llt.info() != Eigen::Success) return false;
   if (tangent) *tangent = -2.0 * llt.solve(p.volume_gradient());

@@ -48,7 +48,7 @@ CorrectorStats AreaSolve<Net>::bordered_correct(double V0, double& H, double tol
     const Eigen::VectorXd gV = p.volume_gradient(), y = p.get();
     bool accepted = false;
     for (int tries = 0; tries < damping.max_tries && !accepted; ++tries) {
-      const SymFactor fac(K + theta * st.residual * p.C);
+      const SymFactor fac(K + theta * st.residual * p.dense_C());
       const Eigen::VectorXd a = fac.solve(g), b = fac.solve(gV);
       const double den = 2.0 * gV.dot(b);
       if (!(std::abs(den) > 0) || !a.allFinite() || !b.allFinite()) {

@@ -38,9 +38,20 @@ Eigen::VectorXd AreaProblem::gradient(double H) const {
 }
 
 Eigen::MatrixXd AreaProblem::hessian(double H) const {
+  if (sparse) return Eigen::MatrixXd(hessian_sparse(H));
   Eigen::MatrixXd K = a->hessian(base.P, base.free);
   if (eps != 0.0) K = (1.0 - eps) * K + eps * C;
   if (H != 0.0) K += 2.0 * H * base.f->volume_form().hessian(base.P, base.free);
+  return K;
+}
+
+Eigen::SparseMatrix<double> AreaProblem::hessian_sparse(double H) const {
+  Eigen::SparseMatrix<double> K = sparse->area_hessian(*a, base.P);
+  if (eps != 0.0) {
+    K *= 1.0 - eps;
+    K = sparse->add(K, eps, sparse->C);
+  }
+  if (H != 0.0) K = sparse->add(K, 2.0 * H, sparse->volume_hessian(base.P));
   return K;
 }
 
@@ -49,11 +60,18 @@ double AreaProblem::residual_at(double H, double e, Eigen::VectorXd* g) const {
   Eigen::MatrixX3d G, S;
   a->gradient_rows_and_scale(base.P, base.free, &G, &S);
   if (e != 0.0) {
-    const Eigen::MatrixXd Cf = base.f->gram()(base.free, Eigen::all);
     Eigen::MatrixX3d GD(G.rows(), 3), SD(G.rows(), 3);
-    for (int c = 0; c < 3; ++c) {
-      GD.col(c) = Cf * base.P.col(c);
-      SD.col(c) = Cf.cwiseAbs() * base.P.col(c).cwiseAbs();
+    if (sparse) {  // the Gram's free rows, kept (sparse_terms.h)
+      for (int c = 0; c < 3; ++c) {
+        GD.col(c) = sparse->Cfa * base.P.col(c);
+        SD.col(c) = sparse->Cfa_abs * base.P.col(c).cwiseAbs();
+      }
+    } else {
+      const Eigen::MatrixXd Cf = base.f->gram()(base.free, Eigen::all);
+      for (int c = 0; c < 3; ++c) {
+        GD.col(c) = Cf * base.P.col(c);
+        SD.col(c) = Cf.cwiseAbs() * base.P.col(c).cwiseAbs();
+      }
     }
     G = (1.0 - e) * G + e * GD;
     S = (1.0 - e) * S + e * SD;
@@ -89,11 +107,28 @@ struct NewtonTrial {
   Eigen::VectorXd g;
 };
 
-NewtonTrial newton_trial(AreaProblem& p, double H, const Eigen::MatrixXd& K, const Eigen::VectorXd& y,
+// The factor of K + μC: dense Cholesky for one patch, sparse (sparse_terms.h) for a complex.
+struct DenseTrialFactor {
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  bool compute(const Eigen::MatrixXd& K, const AreaProblem& p, double mu) {
+    llt.compute(K + mu * p.C);
+    return llt.info() == Eigen::Success;
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return llt.solve(b); }
+};
+struct SparseTrialFactor {
+  SparseSymFactor& f;  // kept by the corrector: one symbolic analysis for all its factorisations
+  bool compute(const Eigen::SparseMatrix<double>& K, const AreaProblem& p, double mu) {
+    return f.refactor(p.sparse->add(K, mu, p.sparse_C()));
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return f.solve(b); }
+};
+
+template <class Mat, class Factor>
+NewtonTrial newton_trial(AreaProblem& p, double H, const Mat& K, Factor llt, const Eigen::VectorXd& y,
                          const Eigen::VectorXd& g, double f, double mu, double fscale, double accept_ratio) {
   NewtonTrial t;
-  Eigen::LLT<Eigen::MatrixXd> llt(K + mu * p.C);
-  if (llt.info() != Eigen::Success) return t;
+  if (!llt.compute(K, p, mu)) return t;
   Eigen::VectorXd d = -llt.solve(g);
   if (!d.allFinite()) return t;
   p.set(y + d);
@@ -113,7 +148,7 @@ NewtonTrial newton_trial(AreaProblem& p, double H, const Eigen::MatrixXd& K, con
     rn = rc;
     gn = gc;
   }
-  const double pred = g.dot(d) + 0.5 * d.dot(K * d);
+  const double pred = g.dot(d) + 0.5 * d.dot(Eigen::VectorXd(K * d));
   const double fn = p.value(H);
   if (std::isfinite(fn) && std::isfinite(rn) && p.a->min_normal(p.P()) > 0.0) {
     const bool falls = gn.norm() < g.norm();
@@ -145,6 +180,7 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
   const double fscale = std::abs(p.area()) + 2.0 * std::abs(H) * std::abs(p.base.f->volume(p.P())) + 1e-300;
   int stalled = 0;
   std::vector<double> history{st.residual};
+  SparseSymFactor factor;  // complexes (sparse_terms.h)
   for (int it = 0;; ++it) {
     if (!std::isfinite(st.residual)) return st;
     if (st.residual <= o.tolerance || (target > 0 && p.eps != 0.0 && p.residual_at(H, 0.0) <= target)) {
@@ -157,12 +193,21 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
     if (p.eps != 0.0 && theta >= kCrawlDamping && history.size() > kCrawlWindow &&
         st.residual > 0.5 * history[history.size() - 1 - kCrawlWindow])
       return st;
-    const Eigen::MatrixXd K = p.hessian(H);
-    if (!K.allFinite()) return st;
+    Eigen::MatrixXd K;
+    Eigen::SparseMatrix<double> Ks;
+    if (p.sparse) {  // a complex: the sparse Hessian and factor (sparse_terms.h)
+      Ks = p.hessian_sparse(H);
+      if (!Eigen::Map<const Eigen::VectorXd>(Ks.valuePtr(), Ks.nonZeros()).allFinite()) return st;
+    } else {
+      K = p.hessian(H);
+      if (!K.allFinite()) return st;
+    }
     const Eigen::VectorXd y = p.get();
     bool accepted = false;
     for (int tries = 0; tries < damping.max_tries && !accepted; ++tries) {
-      NewtonTrial t = newton_trial(p, H, K, y, g, f, theta * st.residual, fscale, damping.accept_ratio);
+      const double mu = theta * st.residual;
+      NewtonTrial t = p.sparse ? newton_trial(p, H, Ks, SparseTrialFactor{factor}, y, g, f, mu, fscale, damping.accept_ratio)
+                               : newton_trial(p, H, K, DenseTrialFactor{}, y, g, f, mu, fscale, damping.accept_ratio);
       if (!t.accepted) {
         damping.rejected(theta);
         continue;
@@ -274,7 +319,7 @@ CorrectorStats area_truncated_newton(AreaProblem& p, double H, const CmcOptions&
     }
     const Eigen::MatrixXd K = p.hessian(H);
     if (!K.allFinite()) break;
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, p.C);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, p.dense_C());
     if (es.info() != Eigen::Success) break;
     const double lmax = es.eigenvalues().cwiseAbs().maxCoeff();
     if (!(lmax > 0) || !std::isfinite(lmax)) break;

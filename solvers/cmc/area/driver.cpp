@@ -300,10 +300,18 @@ CmcResult<Net> solve(const Net& data, const CmcOptions& o) {
     DirichletStart start = dirichlet_start(data, o);
     CmcProblem& base = start.p;
     const Eigen::MatrixX3d extremal = base.P;
-    const Eigen::MatrixXd Cff = base.f->gram()(base.free, base.free);
     AreaProblem problem;
     problem.base = base;
-    problem.C = kron(Cff, Eigen::Matrix3d::Identity());
+    bool sparse = false;
+    if constexpr (std::is_same_v<Net, ComplexNet>) sparse = 3 * base.k() > kSparseFromCoordinates;
+    if (sparse) {
+      // Several patches, many points: sparse Gram and Hessians, sparse factors (sparse_terms.h).
+      if constexpr (std::is_same_v<Net, ComplexNet>)
+        problem.sparse = std::make_shared<const SparseAreaTerms>(*base.f, base.free, data.triangular(), data.n());
+    } else {
+      const Eigen::MatrixXd Cff = base.f->gram()(base.free, base.free);
+      problem.C = kron(Cff, Eigen::Matrix3d::Identity());
+    }
     AreaSolve<Net> s(data, o, std::move(problem), res.summary);
     if (o.progress) s.p.progress = &o.progress;
     Driver<Net> d(s, o, res, extremal, start.fixed_idx, o.V ? &*o.V : nullptr);

@@ -18,6 +18,11 @@ namespace bpde::cmc_detail::area_impl {
 template <class Net>
 CorrectorStats AreaSolve<Net>::finish(double H, int max_iterations) {
   CorrectorStats t;
+  if (p.sparse && 3 * p.k() > kDenseFinalPhasesLimit) {  // a large complex: no dense phases
+    t.residual = p.residual(H);
+    t.ok = t.residual <= o.tolerance;
+    return t;
+  }
   p.refresh_rule = [this] {
     if (!choose_rules_again || rule_change <= kRuleToleranceFactor * o.tolerance) return false;
     const std::shared_ptr<const AreaForm> a0 = p.a;

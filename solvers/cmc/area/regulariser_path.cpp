@@ -5,6 +5,7 @@
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <string>
 
@@ -126,13 +127,23 @@ void AreaSolve<Net>::predict(double& H, double eps, double next, bool fixed_volu
   Eigen::VectorXd g1, g0;
   p.residual_at(H, 1.0, &g1);
   p.residual_at(H, 0.0, &g0);
-  const Eigen::MatrixXd K = p.hessian(H);
+  // One patch: dense LDLᵀ; a complex: the sparse factor (sparse_terms.h), LDLᵀ where K_ε is not
+  // positive definite.
+  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> solve;
+  Eigen::LDLT<Eigen::MatrixXd> f;
+  SparseSymFactor fs;
+  if (p.sparse) {
+    fs.compute(p.hessian_sparse(H), /*ldlt_fallback=*/true);
+    solve = [&](const Eigen::VectorXd& b) { return fs.solve(b); };
+  } else {
+    f.compute(p.hessian(H));
+    solve = [&](const Eigen::VectorXd& b) { return Eigen::VectorXd(f.solve(b)); };
+  }
   p.eps = e0;
-  const Eigen::LDLT<Eigen::MatrixXd> f(K);
-  Eigen::VectorXd dy = -f.solve(g1 - g0);
+  Eigen::VectorXd dy = -solve(g1 - g0);
   double dH = 0.0;
   if (fixed_volume) {
-    const Eigen::VectorXd gV = p.volume_gradient(), b = f.solve(gV);
+    const Eigen::VectorXd gV = p.volume_gradient(), b = solve(gV);
     const double den = gV.dot(b);
     if (!(std::abs(den) > 0) || !b.allFinite()) return;
     dH = gV.dot(dy) / (2.0 * den);

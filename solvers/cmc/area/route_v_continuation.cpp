@@ -48,7 +48,7 @@ AreaOutcome AreaSolve<Net>::volume_continuation(const Eigen::MatrixX3d& start, i
 template <class Net>
 AreaOutcome AreaSolve<Net>::continue_volume(double Vs, double H, double V0, int& steps, double step_tol, bool fresh_damping) {
   auto tangent = [&](double h, Eigen::VectorXd& dY, double& dH) {
-    const SymFactor fac(p.hessian(h) + kVolumeTangentShift * p.C);
+    const SymFactor fac(p.hessian(h) + kVolumeTangentShift * p.dense_C());
     const Eigen::VectorXd gV = p.volume_gradient(), b = fac.solve(gV);
     const double s = gV.dot(b);
     if (!(std::abs(s) > 0) || !b.allFinite()) return false;

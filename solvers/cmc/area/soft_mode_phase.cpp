@@ -137,7 +137,7 @@ class SoftModeSystem {
     best_r_ = p_.residual(H_);
     K_ = p_.hessian(H_);
     if (!K_.allFinite() || !std::isfinite(best_r_)) return;
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K_, p_.C);
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K_, p_.dense_C());
     if (es.info() != Eigen::Success) return;
     const Eigen::VectorXd& lam = es.eigenvalues();
     lmax_ = lam.cwiseAbs().maxCoeff();
@@ -442,7 +442,7 @@ CorrectorStats area_soft_mode_phase(AreaProblem& p, double H, const CmcOptions& 
         const Eigen::RowVector3d centroid = p.P().colwise().mean();
         Eigen::VectorXd y = p.get();
         for (Eigen::Index i = 0; i < y.size(); ++i) y(i) -= centroid(i % 3);
-        const double radius = kFirstRadius * std::sqrt(std::max(y.dot(p.C * y), 0.0));
+        const double radius = kFirstRadius * std::sqrt(std::max(y.dot(p.dense_C() * y), 0.0));
         const TrustRegionOutcome t = minimise_trust_region(tr, o.tolerance, max_iterations, radius);
         st.trust_region_iterations = t.iterations;
         st.iterations += t.iterations;

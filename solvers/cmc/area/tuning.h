@@ -117,4 +117,15 @@ inline constexpr double kRuleToleranceFactor = 0.1;
 /// The final rule check refines at most this many times.
 inline constexpr int kRuleCheckRounds = 4;
 
+/// The final phases decompose dense matrices over all free coordinates (K v = λ C v): on a
+/// complex with more free coordinates than this they are not run (their cost, O((3k)³) time and
+/// O((3k)²) memory, would be minutes and gigabytes), and a corrector that stalls above the
+/// tolerance ends as a numerical limit.
+inline constexpr int kDenseFinalPhasesLimit = 3000;
+
+/// A complex with more free coordinates than this is solved with sparse matrices (sparse_terms.h);
+/// below, the dense ones of a single patch are as fast (the fan of 6 triangles at n = 8: 507
+/// coordinates) and the solve is the single-patch one exactly.
+inline constexpr int kSparseFromCoordinates = 1500;
+
 }  // namespace bpde::cmc_detail::area_impl
