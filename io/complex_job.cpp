@@ -4,6 +4,7 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/io/error_path.h"
 #include "bezierpde/io/boundary_json.h"
+#include "bezierpde/io/complex_json.h"
 #include "bezierpde/solvers/complex/complex_extremal.h"
 #include "bezierpde/tensor/tensor_net.h"
 #include "bezierpde/triangular/triangular_net.h"
@@ -49,19 +50,7 @@ LoopComplex user_layout(const Json& j, const std::string& path, PatchKind kind, 
   std::vector<LayoutBoundaryEdge> edges;
   for (std::size_t k = 0; k < boundary.size(); ++k) {
     const std::string bp = path + ".boundary[" + std::to_string(k) + "]";
-    const Json& b = boundary[k];
-    require_object(b, bp);
-    check_keys(b, bp, {"from", "to", "loop", "curve", "range"});
-    LayoutBoundaryEdge e;
-    e.a = integer(field(b, bp, "from"), bp + ".from");
-    e.b = integer(field(b, bp, "to"), bp + ".to");
-    e.piece.loop = integer(field(b, bp, "loop"), bp + ".loop");
-    e.piece.curve = integer(field(b, bp, "curve"), bp + ".curve");
-    if (b.contains("range")) {
-      const std::vector<double> r = numbers(b["range"], bp + ".range", 2);
-      e.piece.t0 = r[0], e.piece.t1 = r[1];
-    }
-    edges.push_back(e);
+    edges.push_back(layout_boundary_edge_from_json(boundary[k], bp));
   }
   return at_path(path, [&] { return layout_complex(L, n, loops, edges, options); });
 }
@@ -92,7 +81,6 @@ void build_refined(ComplexJobData& data, int n, const std::string& path) {
   }
 }
 
-Json vec(const Eigen::Vector3d& x) { return Json::array({x(0), x(1), x(2)}); }
 
 }  // namespace
 
@@ -178,24 +166,13 @@ ComplexJobData complex_job_at(const ComplexJobData& data, int n, int refine, con
 }
 
 Json complex_to_json(const ComplexJobData& data, const PatchComplex& solved) {
-  const PatchKind kind = solved.patches.front().kind;
-  Json patches = Json::array();
-  for (int p = 0; p < static_cast<int>(solved.patches.size()); ++p)
-    patches.push_back(kind == PatchKind::triangular ? net_to_json(triangular_net(solved, p)) : net_to_json(tensor_net(solved, p)));
-  const Layout& L = data.coarse.layout;
-  Json vertices = Json::array(), faces = Json::array(), boundary = Json::array();
-  for (int v = 0; v < L.vertices.rows(); ++v) vertices.push_back(vec(L.vertices.row(v).transpose()));
-  for (const auto& f : L.faces) faces.push_back(f);
-  for (const LayoutBoundaryEdge& e : data.coarse.boundary)
-    boundary.push_back({{"from", e.a}, {"to", e.b}, {"loop", e.piece.loop}, {"curve", e.piece.curve},
-                        {"range", Json::array({e.piece.t0, e.piece.t1})}});
-  return {{"type", "complex"},
-          {"patch", kind == PatchKind::triangular ? "triangular" : "tensor"},
-          {"degree", solved.patches.front().degree},
-          {"refine", data.refine},
-          {"refit", data.refit},
-          {"patches", patches},
-          {"layout", {{"vertices", vertices}, {"faces", faces}, {"boundary", boundary}}}};
+  ComplexNetFile file;
+  file.complex = solved;
+  file.layout = data.coarse.layout;
+  file.refine = data.refine;
+  file.refit = data.refit;
+  file.boundary = data.coarse.boundary;
+  return complex_net_to_json(file);
 }
 
 }  // namespace bpde

@@ -52,20 +52,7 @@ std::vector<LayoutBoundaryEdge> boundary_from_json(const Json& j, const std::str
   for (std::size_t k = 0; k < j.size(); ++k) {
     const std::string bp = at(path, k);
     const Json& b = j[k];
-    require_object(b, bp);
-    check_keys(b, bp, {"from", "to", "loop", "curve", "range"});
-    LayoutBoundaryEdge e;
-    e.a = integer(field(b, bp, "from"), bp + ".from");
-    e.b = integer(field(b, bp, "to"), bp + ".to");
-    e.piece.loop = integer(field(b, bp, "loop"), bp + ".loop");
-    e.piece.curve = integer(field(b, bp, "curve"), bp + ".curve");
-    if (e.piece.loop < 0 || e.piece.curve < 0)
-      throw ParameterError(bp + ": loop and curve are indices (>= 0), got " + std::to_string(e.piece.loop) + " and " +
-                           std::to_string(e.piece.curve));
-    if (b.contains("range")) {
-      const std::vector<double> r = numbers(b["range"], bp + ".range", 2);
-      e.piece.t0 = r[0], e.piece.t1 = r[1];
-    }
+    const LayoutBoundaryEdge e = layout_boundary_edge_from_json(b, bp);
     if (!expected.count({e.a, e.b}))
       throw LayoutMismatchError(bp + ": " + std::to_string(e.a) + " -> " + std::to_string(e.b) +
                                 " is not a boundary edge of the layout in the direction its face runs along it");
@@ -81,6 +68,25 @@ std::vector<LayoutBoundaryEdge> boundary_from_json(const Json& j, const std::str
 }
 
 }  // namespace
+
+LayoutBoundaryEdge layout_boundary_edge_from_json(const Json& b, const std::string& bp) {
+  using namespace json_read;
+  require_object(b, bp);
+  check_keys(b, bp, {"from", "to", "loop", "curve", "range"});
+  LayoutBoundaryEdge e;
+  e.a = integer(field(b, bp, "from"), bp + ".from");
+  e.b = integer(field(b, bp, "to"), bp + ".to");
+  e.piece.loop = integer(field(b, bp, "loop"), bp + ".loop");
+  e.piece.curve = integer(field(b, bp, "curve"), bp + ".curve");
+  if (e.piece.loop < 0 || e.piece.curve < 0)
+    throw ParameterError(bp + ": loop and curve are indices (>= 0), got " + std::to_string(e.piece.loop) + " and " +
+                         std::to_string(e.piece.curve));
+  if (b.contains("range")) {
+    const std::vector<double> r = numbers(b["range"], bp + ".range", 2);
+    e.piece.t0 = r[0], e.piece.t1 = r[1];
+  }
+  return e;
+}
 
 std::string patch_kind_name(PatchKind kind) { return kind == PatchKind::triangular ? "triangular" : "tensor"; }
 

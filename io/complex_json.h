@@ -61,6 +61,11 @@ ComplexNetFile complex_net_from_json(const Json& j, const std::string& path = "n
 /// The JSON object above (layout.boundary written only when c.boundary is not empty).
 Json complex_net_to_json(const ComplexNetFile& c);
 
+/// One entry of layout.boundary, {"from": a, "to": b, "loop": l, "curve": k, "range": [t0, t1]}
+/// ("range" optional): ParseError on unknown fields or wrong types, ParameterError on a negative
+/// loop or curve index. The edge is not checked against a layout here.
+LayoutBoundaryEdge layout_boundary_edge_from_json(const Json& b, const std::string& path);
+
 /// "triangular" or "tensor".
 std::string patch_kind_name(PatchKind kind);
 

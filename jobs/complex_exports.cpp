@@ -53,21 +53,26 @@ std::string view_title(const PatchComplex& c, const Json& report) {
          (P == 1 ? " patch" : " patches");
 }
 
-SurfaceFields complex_surface_fields(const PatchComplex& c, const ComplexMesh& m) {
-  const Eigen::Index nv = m.mesh.V.rows();
+SurfaceFields complex_surface_fields(const PatchComplex& c, const TriangleMesh& mesh,
+                                     const Eigen::VectorXi& vertex_patch, const Eigen::MatrixX2d& uv) {
+  const Eigen::Index nv = mesh.V.rows();
   SurfaceFields f;
-  f.uv = m.uv;
+  f.uv = uv;
   f.normal.resize(nv, 3);
-  f.H = m.mesh.H;
+  f.H = mesh.H;
   f.K.resize(nv);
   f.regular.resize(nv);
   for (Eigen::Index k = 0; k < nv; ++k) {
-    const FundamentalForms g = robust_geometry(c, m.vertex_patch(k), m.uv(k, 0), m.uv(k, 1));
+    const FundamentalForms g = robust_geometry(c, vertex_patch(k), uv(k, 0), uv(k, 1));
     f.normal.row(k) = g.normal.transpose();
     f.K(k) = g.K;
-    f.regular(k) = m.mesh.regular.size() ? m.mesh.regular(k) : 1;
+    f.regular(k) = mesh.regular.size() ? mesh.regular(k) : 1;
   }
   return f;
+}
+
+SurfaceFields complex_surface_fields(const PatchComplex& c, const ComplexMesh& m) {
+  return complex_surface_fields(c, m.mesh, m.vertex_patch, m.uv);
 }
 
 std::string complex_net_obj(const PatchComplex& c) {

@@ -27,6 +27,9 @@ std::string view_title(const PatchComplex& c, const Json& report);
 /// that patch is singular at the point nudged towards its domain's centre; H and `regular` from
 /// the mesh; uv those parameters.
 SurfaceFields complex_surface_fields(const PatchComplex& c, const ComplexMesh& m);
+/// The same for any sampled mesh of c: `vertex_patch` and `uv` give each vertex's patch and (u, v).
+SurfaceFields complex_surface_fields(const PatchComplex& c, const TriangleMesh& mesh,
+                                     const Eigen::VectorXi& vertex_patch, const Eigen::MatrixX2d& uv);
 
 /// net.obj of a complex: every control point once (row order of PatchComplex::points), then each
 /// patch's control-net segments once.

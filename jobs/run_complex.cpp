@@ -15,6 +15,7 @@
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/energies/volume.h"
 #include "bezierpde/io/atomic_file.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/io/boundary_json.h"
 #include "bezierpde/io/complex_job.h"
 #include "bezierpde/io/mesh_io.h"
@@ -26,40 +27,6 @@ namespace bpde {
 namespace {
 
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
-/// Geometry of patch p at (u, v), nudged towards the domain's centre where it is singular.
-FundamentalForms robust_geometry(const PatchComplex& c, int p, double u, double v) {
-  const bool tri = c.patches[p].kind == PatchKind::triangular;
-  const double cu = tri ? 1.0 / 3 : 0.5, cv = cu;
-  for (double h : {0.0, 1e-7, 1e-5, 1e-3, 1e-2}) {
-    const double a = u + h * (cu - u), b = v + h * (cv - v);
-    const FundamentalForms g = tri ? triangular_net(c, p).geometry(a, b) : tensor_net(c, p).geometry(a, b);
-    if (g.regular) return g;
-  }
-  FundamentalForms none;
-  none.normal = Eigen::Vector3d::UnitZ();
-  return none;
-}
-
-/// net.obj: every row once, each patch's control-net segments once.
-std::string net_obj(const PatchComplex& c) {
-  std::string s = "# bezierpde patch complex control net: " + std::to_string(c.patches.size()) + " patches\n";
-  char buf[96];
-  for (int r = 0; r < c.points.rows(); ++r) {
-    std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", c.points(r, 0), c.points(r, 1), c.points(r, 2));
-    s += buf;
-  }
-  std::set<std::pair<int, int>> lines;
-  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p) {
-    const Net net = c.patches[p].kind == PatchKind::triangular ? Net(triangular_net(c, p)) : Net(tensor_net(c, p));
-    for (const auto& [a, b] : net_segments(net)) {
-      const int ga = c.patches[p].points[a], gb = c.patches[p].points[b];
-      lines.insert({std::min(ga, gb), std::max(ga, gb)});
-    }
-  }
-  for (const auto& [a, b] : lines) s += "l " + std::to_string(a + 1) + " " + std::to_string(b + 1) + "\n";
-  return s;
-}
 
 // ---------------------------------------------------------------- the boundary error
 
@@ -389,23 +356,12 @@ SampledSurface sampled_complex(const PatchComplex& c, int samples) {
 }
 
 SurfaceFields complex_surface_fields(const PatchComplex& c, const SampledSurface& m) {
-  const Eigen::Index nv = m.mesh.V.rows();
-  SurfaceFields f;
-  f.uv = m.uv;
-  f.normal.resize(nv, 3);
-  f.H = m.mesh.H;
-  f.K.resize(nv);
-  f.regular.resize(nv);
-  for (Eigen::Index k = 0; k < nv; ++k) {
-    const FundamentalForms g = robust_geometry(c, m.vertex_patch(k), m.uv(k, 0), m.uv(k, 1));
-    f.normal.row(k) = g.normal.transpose();
-    f.K(k) = g.K;
-    f.regular(k) = m.mesh.regular.size() ? m.mesh.regular(k) : 1;
-  }
-  return f;
+  return complex_surface_fields(c, m.mesh, m.vertex_patch, m.uv);
 }
 
-void write_complex_net_obj(const std::string& path, const PatchComplex& c) { write_file_atomically(path, net_obj(c)); }
+void write_complex_net_obj(const std::string& path, const PatchComplex& c) {
+  write_file_atomically(path, complex_net_obj(c));
+}
 
 BoundaryError complex_boundary_error(const ComplexJobData& data) {
   // With refit the refined boundary is fitted piece by piece: its fits' errors (no location).
