@@ -1,5 +1,7 @@
 #include "app/inputs.h"
 
+#include <utility>
+
 #include "bezierpde/core/errors.h"
 #include "bezierpde/jobs/run_job.h"
 
@@ -30,11 +32,14 @@ AnyNet any_net_from_json(const Json& j, const std::string& path) {
   return net_from_json(j, path);
 }
 
-AnyNet read_any_net_input(const std::string& path) {
-  const Json j = read_json_file(path);
+namespace {
+
+// The net object of a net file or a result.json, and the path that names it; a job or a blend
+// config is refused naming the command that takes it.
+std::pair<const Json*, std::string> net_object(const Json& j, const std::string& path) {
   switch (input_kind(j)) {
     case InputKind::Result:
-      return any_net_from_json(j["net"], path + ".net");
+      return {&j["net"], path + ".net"};
     case InputKind::Job:
       wrong_command(path, "a job, not a net", "bpde solve");
     case InputKind::Blend:
@@ -43,28 +48,25 @@ AnyNet read_any_net_input(const std::string& path) {
     case InputKind::Unknown:
       break;
   }
-  return any_net_from_json(j, path);
+  return {&j, path};
+}
+
+}  // namespace
+
+AnyNet read_any_net_input(const std::string& path) {
+  const Json j = read_json_file(path);
+  const auto [net, where] = net_object(j, path);
+  return any_net_from_json(*net, where);
 }
 
 Net read_net_input(const std::string& path) {
   const Json j = read_json_file(path);
-  const bool result = input_kind(j) == InputKind::Result;
-  if (is_complex_net(result ? j["net"] : j))
-    throw UnsupportedProblem(path + (result ? ".net" : "") +
+  const auto [net, where] = net_object(j, path);
+  if (is_complex_net(*net))
+    throw UnsupportedProblem(where +
                              ": a patch complex; this subcommand takes a single net (`bpde sample`, `check`, "
                              "`view` and `export` take complexes)");
-  switch (input_kind(j)) {
-    case InputKind::Result:
-      return net_from_json(j["net"], path + ".net");
-    case InputKind::Job:
-      wrong_command(path, "a job, not a net", "bpde solve");
-    case InputKind::Blend:
-      wrong_command(path, "a blend config, not a net", "bpde blend");
-    case InputKind::Net:
-    case InputKind::Unknown:
-      break;
-  }
-  return net_from_json(j, path);
+  return net_from_json(*net, where);
 }
 
 Job read_job_input(const std::string& path) {

@@ -94,14 +94,7 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
   require_object(j, path);
   check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "loops", "layout", "fit", "corner_tolerance",
                        "continuity"});
-  const std::string patch = string(field(j, path, "patch"), path + ".patch");
-  if (patch != "triangular" && patch != "tensor")
-    throw ParseError(path + ".patch: expected \"triangular\" or \"tensor\", got \"" + patch + "\"");
-  const PatchKind kind = patch == "triangular" ? PatchKind::triangular : PatchKind::tensor;
-  const int n = integer(field(j, path, "degree"), path + ".degree");
-  if (n < 1 || n > kMaxComplexExtremalDegree)
-    throw DegreeError(path + ".degree: a complex takes degrees 1.." + std::to_string(kMaxComplexExtremalDegree) +
-                      " (the Bernstein Gram systems lose a digit per degree), got " + std::to_string(n));
+  const auto [kind, n] = complex_patch_and_degree(j, path);
   ComplexJobData data;
   if (j.contains("refine")) data.refine = integer(j["refine"], path + ".refine");
   if (data.refine < 0 || data.refine > kMaxComplexRefine)

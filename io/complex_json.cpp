@@ -69,6 +69,18 @@ std::vector<LayoutBoundaryEdge> boundary_from_json(const Json& j, const std::str
 
 }  // namespace
 
+std::pair<PatchKind, int> complex_patch_and_degree(const Json& j, const std::string& path) {
+  using namespace json_read;
+  const std::string patch = string(field(j, path, "patch"), path + ".patch");
+  if (patch != "triangular" && patch != "tensor")
+    throw ParseError(path + ".patch: expected \"triangular\" or \"tensor\", got \"" + patch + "\"");
+  const int n = integer(field(j, path, "degree"), path + ".degree");
+  if (n < 1 || n > kMaxComplexExtremalDegree)
+    throw DegreeError(path + ".degree: a complex takes degrees 1.." + std::to_string(kMaxComplexExtremalDegree) +
+                      " (the Bernstein Gram systems lose a digit per degree), got " + std::to_string(n));
+  return {patch == "triangular" ? PatchKind::triangular : PatchKind::tensor, n};
+}
+
 LayoutBoundaryEdge layout_boundary_edge_from_json(const Json& b, const std::string& bp) {
   using namespace json_read;
   require_object(b, bp);
@@ -98,14 +110,8 @@ ComplexNetFile complex_net_from_json(const Json& j, const std::string& path) {
   check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "patches", "layout"});
   const std::string type = string(field(j, path, "type"), path + ".type");
   if (type != "complex") throw ParseError(path + ".type: expected \"complex\", got \"" + type + "\"");
-  const std::string patch = string(field(j, path, "patch"), path + ".patch");
-  if (patch != "triangular" && patch != "tensor")
-    throw ParseError(path + ".patch: expected \"triangular\" or \"tensor\", got \"" + patch + "\"");
-  const PatchKind kind = patch == "triangular" ? PatchKind::triangular : PatchKind::tensor;
-  const int n = integer(field(j, path, "degree"), path + ".degree");
-  if (n < 1 || n > kMaxComplexExtremalDegree)
-    throw DegreeError(path + ".degree: a complex takes degrees 1.." + std::to_string(kMaxComplexExtremalDegree) +
-                      ", got " + std::to_string(n));
+  const auto [kind, n] = complex_patch_and_degree(j, path);
+  const std::string patch = patch_kind_name(kind);
   ComplexNetFile out;
   if (j.contains("refine")) out.refine = integer(j["refine"], path + ".refine");
   if (j.contains("refit")) {

@@ -23,6 +23,7 @@
 // `refine` 0..kMaxComplexRefine, at most kMaxComplexPatches patches and kMaxComplexGramEntries
 // patches · (points per patch)², checked before the row structure is built.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bezierpde/complex/layout.h"
@@ -60,6 +61,11 @@ ComplexNetFile complex_net_from_json(const Json& j, const std::string& path = "n
 
 /// The JSON object above (layout.boundary written only when c.boundary is not empty).
 Json complex_net_to_json(const ComplexNetFile& c);
+
+/// The "patch" and "degree" fields of a complex net or boundary object j: ParseError for a patch
+/// other than "triangular" or "tensor", DegreeError for a degree outside
+/// 1..kMaxComplexExtremalDegree.
+std::pair<PatchKind, int> complex_patch_and_degree(const Json& j, const std::string& path);
 
 /// One entry of layout.boundary, {"from": a, "to": b, "loop": l, "curve": k, "range": [t0, t1]}
 /// ("range" optional): ParseError on unknown fields or wrong types, ParameterError on a negative

@@ -108,6 +108,20 @@ int write_shape(const TopoDS_Shape& shape, const char* path, char* message, size
   return BPDE_STEP_OK;
 }
 
+// An entry point's body with OpenCASCADE silenced and every exception turned into a status and
+// message: nothing may leave the plugin's C interface as an exception.
+template <class Body>
+int guarded(char* message, size_t size, Body&& body) {
+  try {
+    silence_opencascade();
+    return body();
+  } catch (const Standard_Failure& e) {
+    return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
+  } catch (const std::exception& e) {
+    return fail(BPDE_STEP_REFUSED, e.what(), message, size);
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -116,8 +130,7 @@ __attribute__((visibility("default"))) int bpde_step_plugin_abi(void) { return B
 
 __attribute__((visibility("default"))) int bpde_step_plugin_write(const bpde_step_surface* s, const char* path,
                                                                   char* message, size_t size) {
-  try {
-    silence_opencascade();
+  return guarded(message, size, [&]() -> int {
     TopoDS_Face face;
     try {
       face = make_face(*s);
@@ -126,18 +139,13 @@ __attribute__((visibility("default"))) int bpde_step_plugin_write(const bpde_ste
                   size);
     }
     return write_shape(face, path, message, size);
-  } catch (const Standard_Failure& e) {
-    return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
-  } catch (const std::exception& e) {
-    return fail(BPDE_STEP_REFUSED, e.what(), message, size);
-  }
+  });
 }
 
 __attribute__((visibility("default"))) int bpde_step_plugin_read(const char* path, const double* uv, long rows,
                                                                  bpde_step_readback* out, double* points,
                                                                  char* message, size_t size) {
-  try {
-    silence_opencascade();
+  return guarded(message, size, [&]() -> int {
     STEPControl_Reader reader;
     if (reader.ReadFile(path) != IFSelect_RetDone) return fail(BPDE_STEP_FILE, "cannot read STEP file", message, size);
     reader.TransferRoots();
@@ -159,18 +167,13 @@ __attribute__((visibility("default"))) int bpde_step_plugin_read(const char* pat
       points[3 * k] = p.X(), points[3 * k + 1] = p.Y(), points[3 * k + 2] = p.Z();
     }
     return BPDE_STEP_OK;
-  } catch (const Standard_Failure& e) {
-    return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
-  } catch (const std::exception& e) {
-    return fail(BPDE_STEP_REFUSED, e.what(), message, size);
-  }
+  });
 }
 
 __attribute__((visibility("default"))) int bpde_step_plugin_write_shell(const bpde_step_surface* s, int count,
                                                                         double tolerance, const char* path,
                                                                         char* message, size_t size) {
-  try {
-    silence_opencascade();
+  return guarded(message, size, [&]() -> int {
     if (count < 1) return fail(BPDE_STEP_REFUSED, "no surfaces to write", message, size);
     TopoDS_Shape shape;
     try {
@@ -191,17 +194,12 @@ __attribute__((visibility("default"))) int bpde_step_plugin_write_shell(const bp
                   size);
     }
     return write_shape(shape, path, message, size);
-  } catch (const Standard_Failure& e) {
-    return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
-  } catch (const std::exception& e) {
-    return fail(BPDE_STEP_REFUSED, e.what(), message, size);
-  }
+  });
 }
 
 __attribute__((visibility("default"))) int bpde_step_plugin_topology(const char* path, bpde_step_topology* out,
                                                                      char* message, size_t size) {
-  try {
-    silence_opencascade();
+  return guarded(message, size, [&]() -> int {
     STEPControl_Reader reader;
     if (reader.ReadFile(path) != IFSelect_RetDone) return fail(BPDE_STEP_FILE, "cannot read STEP file", message, size);
     reader.TransferRoots();
@@ -232,11 +230,7 @@ __attribute__((visibility("default"))) int bpde_step_plugin_topology(const char*
       if (faces.Extent() == 1) ++out->free_edges;
     }
     return BPDE_STEP_OK;
-  } catch (const Standard_Failure& e) {
-    return fail(BPDE_STEP_REFUSED, std::string("OpenCASCADE: ") + e.GetMessageString(), message, size);
-  } catch (const std::exception& e) {
-    return fail(BPDE_STEP_REFUSED, e.what(), message, size);
-  }
+  });
 }
 
 }  // extern "C"
