@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/core/interruption.h"
 #include "bezierpde/energies/tensor_gram.h"
 #include "bezierpde/energies/triangular_gram.h"
 #include "bezierpde/solvers/complex/complex_c1.h"
@@ -121,7 +122,9 @@ void solve_c1(const PatchComplex& c, const SpMat& K, const std::vector<int>& fre
 #ifdef BPDE_HAVE_CHOLMOD
     factor.cholmod().print = 0;
 #endif
+    check_interruption();  // core/interruption.h: around the factorisation and between the steps
     factor.compute(Arho);
+    check_interruption();
     const double rcond = factor.info() == Eigen::Success ? rcond_estimate(Arho, factor) : 0.0;
     if (!(rcond > options.singular_tolerance))
       throw ParameterError("the C1 complex extremal's system is singular (reciprocal condition " + std::to_string(rcond) +
@@ -130,6 +133,7 @@ void solve_c1(const PatchComplex& c, const SpMat& K, const std::vector<int>& fre
     Eigen::MatrixX3d lambda = Eigen::MatrixX3d::Zero(Ch.rows(), 3), y;
     double last = INFINITY;
     for (int step = 0; step < 200; ++step) {
+      check_interruption();
       y = factor.solve(b - Ct * lambda + kC1Penalty * (Ct * dh));
       const Eigen::MatrixX3d r = Ch * y - dh;
       lambda += kC1Penalty * r;
@@ -251,7 +255,9 @@ ComplexExtremal solve_complex_extremal(const PatchComplex& c, const EnergySpec& 
 #ifdef BPDE_HAVE_CHOLMOD
   factor.cholmod().print = 0;  // a singular system is reported by the exception below, not on stderr
 #endif
+  check_interruption();  // core/interruption.h: around the factorisation
   factor.compute(A);
+  check_interruption();
   const double rcond = factor.info() == Eigen::Success ? rcond_estimate(A, factor) : 0.0;
   if (!(rcond > options.singular_tolerance))
     throw ParameterError("the complex extremal's system is singular or indefinite (reciprocal condition " +
