@@ -67,7 +67,7 @@ int cmd_sample(const std::string& net_path, const std::string& out_dir, int samp
   const MeshFormat format = mesh_format_from_string(mesh_format, "--mesh-format");
   const AnyNet input = read_any_net_input(net_path);
   check_output_dir(out_dir, surface_file_names());
-  if (const auto* complex = std::get_if<ComplexNet>(&input)) {
+  if (const auto* complex = std::get_if<ComplexNetFile>(&input)) {
     const ComplexMesh m = sampled(complex->complex, samples);
     {
       const ProgressStage stage(job_progress(), kWritingFilesStage);
@@ -95,8 +95,8 @@ int cmd_energy(const std::string& net_path, const std::string& energy, std::opti
 int cmd_check(const std::string& net_path, int samples) {
   check_samples(samples);
   const AnyNet input = read_any_net_input(net_path);
-  const TriangleMesh mesh = std::holds_alternative<ComplexNet>(input)
-                                ? sampled(std::get<ComplexNet>(input).complex, samples).mesh
+  const TriangleMesh mesh = std::holds_alternative<ComplexNetFile>(input)
+                                ? sampled(std::get<ComplexNetFile>(input).complex, samples).mesh
                                 : sampled(std::get<Net>(input), samples);
   Json report;
   {
@@ -128,7 +128,7 @@ int cmd_view(const std::string& dir, int samples, bool quiet) {
   const AnyNet input = any_net_from_json(json_read::field(result, path, "net"), path + ".net");
   const Json report = result.contains("report") ? result["report"] : Json::object();
   OutputFolder out(dir, {"view.html"});
-  if (const auto* complex = std::get_if<ComplexNet>(&input)) {
+  if (const auto* complex = std::get_if<ComplexNetFile>(&input)) {
     const PatchComplex& c = complex->complex;
     const ComplexMesh m = sampled(c, samples);
     write_view_html(out.file("view.html"), c, m, complex_surface_fields(c, m), report, view_title(c, report), samples);
@@ -143,7 +143,7 @@ int cmd_view(const std::string& dir, int samples, bool quiet) {
 
 int cmd_export(const std::string& net_path, const std::string& step_path, bool quiet) {
   const AnyNet input = read_any_net_input(net_path);
-  if (const auto* complex = std::get_if<ComplexNet>(&input))
+  if (const auto* complex = std::get_if<ComplexNetFile>(&input))
     write_step(step_path, complex->complex);
   else
     write_step(step_path, std::get<Net>(input));

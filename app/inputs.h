@@ -26,7 +26,7 @@ InputKind input_kind(const Json& j);
 /// subcommand takes a single net); otherwise the strict net reader decides.
 Net read_net_input(const std::string& path);
 /// A net or a patch complex (io/complex_json.h).
-using AnyNet = std::variant<Net, ComplexNet>;
+using AnyNet = std::variant<Net, ComplexNetFile>;
 /// A net file or complex net file, or the result.json bpde writes (its "net", a single net or a
 /// complex). A job or blend config is a ParseError naming the subcommand that takes it.
 AnyNet read_any_net_input(const std::string& path);

@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return bpde::fuzz::run_reader(data, size, [](const std::string& text) {
     const bpde::Json j = bpde::parse_json(text, "net");
     if (bpde::is_complex_net(j)) {
-      const bpde::ComplexNet c = bpde::complex_net_from_json(j, "net");
+      const bpde::ComplexNetFile c = bpde::complex_net_from_json(j, "net");
       (void)bpde::sample_complex(c.complex, 1);
       return;
     }

@@ -66,6 +66,32 @@ LoopComplex user_layout(const Json& j, const std::string& path, PatchKind kind, 
   return at_path(path, [&] { return layout_complex(L, n, loops, edges, options); });
 }
 
+/// data.complex: data.coarse refined data.refine times, after the patch and Gram-entry limits.
+void build_refined(ComplexJobData& data, int n, const std::string& path) {
+  const long long patches = static_cast<long long>(data.coarse.complex.patches.size()) << (2 * data.refine);
+  if (patches > kMaxComplexPatches)
+    throw SizeError(path + ": " + std::to_string(data.coarse.complex.patches.size()) + " patches refined " +
+                    std::to_string(data.refine) + " times are " + std::to_string(patches) + ", more than " +
+                    std::to_string(kMaxComplexPatches));
+  const long long per_patch = static_cast<long long>(data.coarse.complex.patches.front().points.size());
+  if (patches * per_patch * per_patch > kMaxComplexGramEntries)
+    throw SizeError(path + ": " + std::to_string(patches) + " patches of degree " + std::to_string(n) + " need " +
+                    std::to_string(patches * per_patch * per_patch) + " Gram entries, more than " +
+                    std::to_string(kMaxComplexGramEntries) + " (a lower degree or less refinement)");
+  data.complex = data.coarse.complex;
+  for (int r = 0; r < data.refine; ++r) data.complex = refine_h(data.complex);
+  if (data.refit)
+    data.coarse.fits = at_path(path + ".loops", [&] {
+      return refit_boundary(data.complex, data.coarse, data.refine, data.loops, data.options);
+    });
+  if (data.continuity == Continuity::C1) {
+    data.domain = at_path(path + ".continuity", [&] {
+      return layout_domain(data.coarse.layout, layout_domain_positions(data.coarse.layout));
+    });
+    for (int r = 0; r < data.refine; ++r) data.domain = refine_domain_h(data.domain);
+  }
+}
+
 Json vec(const Eigen::Vector3d& x) { return Json::array({x(0), x(1), x(2)}); }
 
 }  // namespace
@@ -117,30 +143,38 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
     options.corner_tolerance = number(j["corner_tolerance"], path + ".corner_tolerance");
     if (!(options.corner_tolerance > 0)) throw ParameterError(path + ".corner_tolerance: must be > 0");
   }
-  const std::vector<Loop> loops = loops_from_json(field(j, path, "loops"), path + ".loops");
-  data.coarse = j.contains("layout") ? user_layout(j["layout"], path + ".layout", kind, n, loops, options)
-                                     : at_path(path + ".loops", [&] { return loop_complex(kind, n, loops, options); });
-  const long long patches = static_cast<long long>(data.coarse.complex.patches.size()) << (2 * data.refine);
-  if (patches > kMaxComplexPatches)
-    throw SizeError(path + ": " + std::to_string(data.coarse.complex.patches.size()) + " patches refined " +
-                    std::to_string(data.refine) + " times are " + std::to_string(patches) + ", more than " +
-                    std::to_string(kMaxComplexPatches));
-  const long long per_patch = static_cast<long long>(data.coarse.complex.patches.front().points.size());
-  if (patches * per_patch * per_patch > kMaxComplexGramEntries)
-    throw SizeError(path + ": " + std::to_string(patches) + " patches of degree " + std::to_string(n) + " need " +
-                    std::to_string(patches * per_patch * per_patch) + " Gram entries, more than " +
-                    std::to_string(kMaxComplexGramEntries) + " (a lower degree or less refinement)");
-  data.complex = data.coarse.complex;
-  for (int r = 0; r < data.refine; ++r) data.complex = refine_h(data.complex);
-  if (data.refit)
-    data.coarse.fits = at_path(path + ".loops", [&] { return refit_boundary(data.complex, data.coarse, data.refine, loops, options); });
-  if (data.continuity == Continuity::C1) {
-    data.domain = at_path(path + ".continuity", [&] {
-      return layout_domain(data.coarse.layout, layout_domain_positions(data.coarse.layout));
-    });
-    for (int r = 0; r < data.refine; ++r) data.domain = refine_domain_h(data.domain);
+  data.loops = loops_from_json(field(j, path, "loops"), path + ".loops");
+  data.options = options;
+  if (j.contains("layout")) {
+    data.user_layout = true;
+    data.coarse = user_layout(j["layout"], path + ".layout", kind, n, data.loops, options);
+    data.layout = data.coarse.layout;
+    data.layout_boundary = data.coarse.boundary;
+  } else {
+    data.coarse = at_path(path + ".loops", [&] { return loop_complex(kind, n, data.loops, options); });
   }
+  build_refined(data, n, path);
   return data;
+}
+
+ComplexJobData complex_job_at(const ComplexJobData& data, int n, int refine, const std::string& path) {
+  if (n < 1 || n > kMaxComplexExtremalDegree)
+    throw DegreeError(path + ".degree: a complex takes degrees 1.." + std::to_string(kMaxComplexExtremalDegree) +
+                      " (the Bernstein Gram systems lose a digit per degree), got " + std::to_string(n));
+  if (refine < 0 || refine > kMaxComplexRefine)
+    throw SizeError(path + ".refine: must be in 0.." + std::to_string(kMaxComplexRefine) + ", got " +
+                    std::to_string(refine));
+  ComplexJobData out = data;
+  out.refine = refine;
+  const PatchKind kind = data.coarse.complex.patches.front().kind;
+  if (data.user_layout)
+    out.coarse = at_path(path + ".layout", [&] {
+      return layout_complex(data.layout, n, data.loops, data.layout_boundary, data.options);
+    });
+  else
+    out.coarse = at_path(path + ".loops", [&] { return loop_complex(kind, n, data.loops, data.options); });
+  build_refined(out, n, path);
+  return out;
 }
 
 Json complex_to_json(const ComplexJobData& data, const PatchComplex& solved) {

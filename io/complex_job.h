@@ -5,6 +5,7 @@
 // boundary fitted at `degree`, then refined), so every input error surfaces before anything runs.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bezierpde/complex/layout_loops.h"
 #include "bezierpde/complex/planar_domain.h"
@@ -21,6 +22,14 @@ struct ComplexJobData {
   LoopComplex coarse;
   PatchComplex complex;
   int refine = 0;
+  /// What the complex was built from, so that it can be built again at another degree or
+  /// refinement (complex_job_at: the tolerance rounds, jobs/run_complex.h): the loops, the fit
+  /// options and, for a user layout, the layout and its boundary pieces as given.
+  std::vector<Loop> loops;
+  LoopOptions options;
+  bool user_layout = false;
+  Layout layout;
+  std::vector<LayoutBoundaryEdge> layout_boundary;
   bool refit = false;
   Continuity continuity = Continuity::C0;  ///< "continuity": "C0" (default) or "C1" (triangular only)
   /// C1: the planar domain of `complex` (layout_domain_positions of the coarse layout, refined)
@@ -36,6 +45,11 @@ bool is_complex_boundary(const Json& job);
 /// more than kMaxComplexGramEntries Gram entries (solvers/complex/complex_extremal.h), loops), LoopNotClosedError, CurvesOutOfOrderError, LayoutMismatchError, ParameterError and the
 /// fits' errors, each message starting with its JSON path.
 ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMethod default_fit);
+
+/// The same job's complex at degree n, refined `refine` times: the boundary fitted again at n
+/// (a higher degree fits the loops more closely), the layout unchanged. Throws the DegreeError /
+/// SizeError of complex_from_json (the degree, refine, patch and Gram-entry limits), with `path`.
+ComplexJobData complex_job_at(const ComplexJobData& data, int n, int refine, const std::string& path);
 
 /// The result.json "net" of a complex: {"type": "complex", "patch", "degree", "refine", "refit",
 /// "patches": [NET, ...], "layout": {"vertices", "faces", "boundary": [{"from", "to", "loop",

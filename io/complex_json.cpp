@@ -86,10 +86,10 @@ std::string patch_kind_name(PatchKind kind) { return kind == PatchKind::triangul
 
 bool is_complex_net(const Json& j) { return j.is_object() && j.contains("type") && j["type"] == "complex"; }
 
-ComplexNet complex_net_from_json(const Json& j, const std::string& path) {
+ComplexNetFile complex_net_from_json(const Json& j, const std::string& path) {
   using namespace json_read;
   require_object(j, path);
-  check_keys(j, path, {"type", "patch", "degree", "refine", "patches", "layout"});
+  check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "patches", "layout"});
   const std::string type = string(field(j, path, "type"), path + ".type");
   if (type != "complex") throw ParseError(path + ".type: expected \"complex\", got \"" + type + "\"");
   const std::string patch = string(field(j, path, "patch"), path + ".patch");
@@ -100,8 +100,12 @@ ComplexNet complex_net_from_json(const Json& j, const std::string& path) {
   if (n < 1 || n > kMaxComplexExtremalDegree)
     throw DegreeError(path + ".degree: a complex takes degrees 1.." + std::to_string(kMaxComplexExtremalDegree) +
                       ", got " + std::to_string(n));
-  ComplexNet out;
+  ComplexNetFile out;
   if (j.contains("refine")) out.refine = integer(j["refine"], path + ".refine");
+  if (j.contains("refit")) {
+    if (!j["refit"].is_boolean()) throw ParseError(path + ".refit: expected true or false");
+    out.refit = j["refit"].get<bool>();
+  }
   if (out.refine < 0 || out.refine > kMaxComplexRefine)
     throw SizeError(path + ".refine: must be in 0.." + std::to_string(kMaxComplexRefine) + ", got " +
                     std::to_string(out.refine));
@@ -182,7 +186,7 @@ ComplexNet complex_net_from_json(const Json& j, const std::string& path) {
   return out;
 }
 
-Json complex_net_to_json(const ComplexNet& c) {
+Json complex_net_to_json(const ComplexNetFile& c) {
   const PatchComplex& pc = c.complex;
   const PatchKind kind = pc.patches.front().kind;
   Json patches = Json::array();
@@ -204,6 +208,7 @@ Json complex_net_to_json(const ComplexNet& c) {
           {"patch", patch_kind_name(kind)},
           {"degree", pc.patches.front().degree},
           {"refine", c.refine},
+          {"refit", c.refit},
           {"patches", patches},
           {"layout", layout}};
 }

@@ -33,10 +33,11 @@
 namespace bpde {
 
 /// A complex as a net file holds it.
-struct ComplexNet {
+struct ComplexNetFile {
   PatchComplex complex;  ///< the patches (refined), their shared rows, fixed = the boundary rows
   Layout layout;         ///< the unrefined layout (its vertices as written)
   int refine = 0;
+  bool refit = false;  ///< the boundary was fitted again at every refinement (FORMATS.md `refit`)
   std::vector<LayoutBoundaryEdge> boundary;  ///< layout.boundary as written (empty when absent)
 };
 
@@ -55,10 +56,10 @@ bool is_complex_net(const Json& j);
 /// entries), NonFiniteError (a non-finite coordinate), ParameterError (a layout that is not an
 /// oriented manifold, patches that disagree on a shared point, a boundary list that does not
 /// match the layout's boundary), each message starting with its JSON path.
-ComplexNet complex_net_from_json(const Json& j, const std::string& path = "net");
+ComplexNetFile complex_net_from_json(const Json& j, const std::string& path = "net");
 
 /// The JSON object above (layout.boundary written only when c.boundary is not empty).
-Json complex_net_to_json(const ComplexNet& c);
+Json complex_net_to_json(const ComplexNetFile& c);
 
 /// "triangular" or "tensor".
 std::string patch_kind_name(PatchKind kind);

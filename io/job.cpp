@@ -1,6 +1,7 @@
 #include "bezierpde/io/job.h"
 
 #include "bezierpde/complex/complex_mesh.h"
+#include "bezierpde/complex/refine.h"
 #include "bezierpde/solvers/complex/complex_extremal.h"
 
 #include <cmath>
@@ -230,11 +231,46 @@ void check_complex_job(const Job& job, const std::string& source) {
                          " mesh vertices, more than " + std::to_string(kMaxComplexSampleVertices));
 }
 
+// `"tolerance"` (FORMATS.md "Patch complexes"): complex jobs only; mean_curvature only for cmc.
+Tolerance tolerance_from_json(const Json& j, const std::string& path, const Job& job) {
+  using namespace json_read;
+  if (!job.complex)
+    throw UnsupportedProblem(path + ": tolerances and refinement rounds take a complex boundary "
+                             "(\"boundary\": {\"type\": \"complex\", ...}), not a single net");
+  require_object(j, path);
+  check_keys(j, path, {"mean_curvature", "seam_angle", "boundary", "max_degree", "max_refine", "max_rounds"});
+  Tolerance t;
+  auto positive = [&](const char* key) -> std::optional<double> {
+    if (!j.contains(key)) return std::nullopt;
+    const double x = number(j[key], path + "." + key);
+    if (!(x > 0) || !std::isfinite(x)) throw ParameterError(path + "." + key + ": must be a number > 0");
+    return x;
+  };
+  t.mean_curvature = positive("mean_curvature");
+  t.seam_angle = positive("seam_angle");
+  t.boundary = positive("boundary");
+  const bool cmc = job.problem.kind == ProblemKind::CmcH || job.problem.kind == ProblemKind::CmcV;
+  if (t.mean_curvature && !cmc)
+    throw UnsupportedProblem(path + ".mean_curvature: only a cmc problem has a mean-curvature certificate");
+  auto limit = [&](const char* key, int lo, int hi, int fallback) {
+    if (!j.contains(key)) return fallback;
+    const int v = integer(j[key], path + "." + key);
+    if (v < lo || v > hi)
+      throw ParameterError(path + "." + key + ": must be in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                           ", got " + std::to_string(v));
+    return v;
+  };
+  t.max_degree = limit("max_degree", 1, kMaxComplexExtremalDegree, kMaxToleranceDegree);
+  t.max_refine = limit("max_refine", 0, kMaxComplexRefine, kMaxComplexRefine);
+  t.max_rounds = limit("max_rounds", 1, 100, kMaxToleranceRounds);
+  return t;
+}
+
 }  // namespace
 
 Job parse_job(const Json& j, const std::string& source) {
   using namespace json_read;
-  check_keys(j, source, {"net", "boundary", "fixed", "problem", "samples", "mesh_format", "export"});
+  check_keys(j, source, {"net", "boundary", "fixed", "problem", "samples", "mesh_format", "export", "tolerance"});
   if (j.contains("net") == j.contains("boundary"))
     throw ParseError(source + ": a job gives exactly one of \"net\" and \"boundary\"");
   Job job;
@@ -286,6 +322,7 @@ Job parse_job(const Json& j, const std::string& source) {
     }
   }
   if (job.complex) check_complex_job(job, source);
+  if (j.contains("tolerance")) job.tolerance = tolerance_from_json(j["tolerance"], source + ".tolerance", job);
   return job;
 }
 

@@ -39,6 +39,23 @@ struct Problem {
   AreaStart area_start = AreaStart::MeanCurvature;
 };
 
+/// A job's `tolerance` (FORMATS.md "Patch complexes", "Tolerances and refinement"): what the
+/// result must meet, and the limits of the refinement rounds that try to meet it. Complex jobs
+/// only. Absent tolerances are not checked.
+struct Tolerance {
+  std::optional<double> mean_curvature;  ///< cmc: max |H(x) − H| over the certificate's samples
+  std::optional<double> seam_angle;      ///< degrees: seam_angle_max
+  std::optional<double> boundary;        ///< the certificate's boundary error (a distance)
+  int max_degree = 0;                    ///< the highest degree a round may use (default kMaxToleranceDegree)
+  int max_refine = 0;                    ///< the most h refinements (default kMaxComplexRefine)
+  int max_rounds = 0;                    ///< the most rounds (default kMaxToleranceRounds)
+};
+/// The defaults of Tolerance's limits: degree 10 (each round is a full solve: the cmc area solve
+/// of the spherical cap on a fan of 6 patches took 2 s at degree 4 and 22 s at degree 8 on the
+/// build machine, and the Gram systems lose a digit per degree), and 8 rounds.
+inline constexpr int kMaxToleranceDegree = 10;
+inline constexpr int kMaxToleranceRounds = 8;
+
 struct Job {
   Net net;
   FixedSet fixed = FixedSet::Boundary;
@@ -55,6 +72,8 @@ struct Job {
   /// A job whose boundary is a patch complex (FORMATS.md "Patch complexes"): the complex, built
   /// and refined when the job is read; `net` is then its first patch (for messages only).
   std::shared_ptr<const ComplexJobData> complex = nullptr;
+  /// `"tolerance"` (complex jobs): solve, measure, refine until it holds (jobs/run_complex.h).
+  std::optional<Tolerance> tolerance = std::nullopt;
 };
 
 // kMaxSamples (core/mesh.h): the largest accepted `samples`, bounded by the memory it needs.

@@ -22,6 +22,7 @@
 #include "bezierpde/io/output_folder.h"
 #include "bezierpde/io/step_export.h"
 #include "bezierpde/io/vtp_io.h"
+#include "bezierpde/jobs/complex_exports.h"
 #include "bezierpde/jobs/exports.h"
 #include "bezierpde/jobs/job_progress.h"
 #include "bezierpde/jobs/run_complex.h"
@@ -59,18 +60,6 @@ Json check_json(const MeshCheckReport& rep) {
   return j;
 }
 
-// (see jobs/run_job.h)
-Json stats_json(const MeanCurvatureStats& st) {
-  if (st.count == 0) return nullptr;
-  return {{"min", st.min},
-          {"max", st.max},
-          {"mean", st.mean},
-          {"count", st.count},
-          {"at_min", {st.at_min[0], st.at_min[1]}},
-          {"at_max", {st.at_max[0], st.at_max[1]}}};
-}
-
-
 // Energy values of non-finite nets (a failed solve) are reported as null, never NaN.
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
@@ -98,7 +87,7 @@ Json figures_report(const SolveFigures& f) {
 SolveOutcome outcome(const Job& job, Net net, const Summary& s) {
   const Status status = checked_status(s);
   SolveOutcome out{std::move(net), SolveFigures{}, Json::object(), Json::object(), status == Status::Converged, status,
-                   nullptr};
+                   nullptr, nullptr};
   out.figures.problem = job.problem.kind;
   out.figures.summary = s;
   if (s.iterations > 0) out.figures.iterations = s.iterations;
@@ -430,9 +419,15 @@ Status checked_status(const Summary& s) {
 }
 
 SolveOutcome run_job(const Job& job) {
+  if (job.tolerance && !job.complex)  // io/job.cpp refuses it when it reads the job
+    throw UnsupportedProblem("job.tolerance: tolerances and refinement rounds take a complex boundary");
   SolveOutcome out = job.complex ? run_complex_job(job) : checked_solver(job, "job").run(job);
   out.report.update(figures_report(out.figures));
-  if (!job.boundary_fit.is_null()) out.report["boundary_fit"] = job.boundary_fit;
+  // a complex's report has the fits of the complex it was solved on (the last tolerance round's)
+  if (!job.boundary_fit.is_null() && !out.report.contains("boundary_fit")) out.report["boundary_fit"] = job.boundary_fit;
+  if (!job.complex)
+    if (const std::optional<BoundaryError> e = fit_boundary_error(job.boundary_fit))
+      out.report["boundary_error"] = boundary_error_json(*e);
   return out;
 }
 
@@ -456,9 +451,116 @@ std::vector<std::string> output_file_names(bool with_result, const Exports& expo
 
 void check_output_dir(const std::string& dir, const std::vector<std::string>& names) { OutputFolder::check(dir, names); }
 
+ResultSurface result_surface(const Job& job, const SolveOutcome& out) {
+  ResultSurface s;
+  s.net = out.net;
+  if (out.complex && job.complex) s.complex = out.complex, s.complex_data = out.complex_data ? out.complex_data : job.complex;
+  return s;
+}
+
+SampledSurface sampled_net(const Net& net, TriangleMesh mesh, int samples) {
+  SampledSurface s;
+  const bool tri = std::holds_alternative<TriangularNet>(net);
+  const bool bspline = std::holds_alternative<BSplineNet>(net);
+  const Eigen::Index nv = mesh.V.rows();
+  s.vertex_patch = Eigen::VectorXi::Zero(nv);
+  s.uv.resize(nv, 2);
+  s.counted.setZero(nv);
+  const int N = samples;
+  const Eigen::Index expected = tri ? Eigen::Index(N + 1) * (N + 2) / 2 : Eigen::Index(N + 1) * (N + 1);
+  if (nv != expected || mesh.H.size() != nv)
+    throw SizeError("sampled_net: the mesh has " + std::to_string(nv) + " samples, expected " +
+                    std::to_string(expected) + " for N = " + std::to_string(N));
+  // The rules of energies/cmc.h mean_curvature_stats: singular samples skipped (not for the
+  // B-spline surfaces of blends, which count every sample at its robust H), and the corners.
+  const bool skip_singular = !bspline;
+  const bool flags = skip_singular && mesh.regular.size() == nv;
+  Eigen::Index id = 0;
+  auto put = [&](double u, double v, bool in_corner) {
+    s.uv(id, 0) = u, s.uv(id, 1) = v;
+    const bool ok = !in_corner && !(flags && !mesh.regular(id)) && !(skip_singular && !std::isfinite(mesh.H(id)));
+    s.counted(id) = ok ? 1 : 0;
+    ++id;
+  };
+  if (tri) {
+    const double lim = 1.0 - kStatsCornerMargin + 1e-12;
+    for (int a = 0; a <= N; ++a)
+      for (int b = 0; b <= N - a; ++b) {
+        const double u = double(a) / N, v = double(b) / N, w = 1.0 - u - v;
+        put(u, v, u > lim || v > lim || w > lim);
+      }
+  } else {
+    const double lim = kStatsCornerMargin - 1e-12;
+    for (int a = 0; a <= N; ++a)
+      for (int b = 0; b <= N; ++b) {
+        const double u = double(a) / N, v = double(b) / N;
+        put(u, v, std::min(u, 1 - u) < lim && std::min(v, 1 - v) < lim);
+      }
+  }
+  s.mesh = std::move(mesh);
+  s.samples = N;
+  return s;
+}
+
+SampledSurface sample_surface(const ResultSurface& r, int samples) {
+  const ProgressStage stage(job_progress(), kSamplingStage);
+  if (r.complex) return sampled_complex(*r.complex, samples);
+  return sampled_net(r.net, sample_net(r.net, samples, job_progress()), samples);
+}
+
+SurfaceStats surface_stats(const SampledSurface& s) {
+  SurfaceStats st;
+  double sum = 0;
+  for (Eigen::Index k = 0; k < s.mesh.H.size(); ++k) {
+    if (!s.counted(k)) continue;
+    const double h = s.mesh.H(k);
+    if (st.count == 0 || h < st.min) st.min = h, st.vertex_min = k;
+    if (st.count == 0 || h > st.max) st.max = h, st.vertex_max = k;
+    sum += h;
+    ++st.count;
+  }
+  if (st.count > 0) {
+    st.mean = sum / st.count;
+    st.at_min = {s.uv(st.vertex_min, 0), s.uv(st.vertex_min, 1)};
+    st.at_max = {s.uv(st.vertex_max, 0), s.uv(st.vertex_max, 1)};
+  }
+  return st;
+}
+
+Json surface_stats_json(const SurfaceStats& st, const SampledSurface& s) {
+  if (st.count == 0) return nullptr;
+  Json j = {{"min", st.min},
+            {"max", st.max},
+            {"mean", st.mean},
+            {"count", st.count},
+            {"at_min", {st.at_min[0], st.at_min[1]}},
+            {"at_max", {st.at_max[0], st.at_max[1]}}};
+  if (s.complex) j["patch_at_min"] = s.vertex_patch(st.vertex_min), j["patch_at_max"] = s.vertex_patch(st.vertex_max);
+  return j;
+}
+
+MeanCurvatureStats surface_mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
+  return surface_stats(sampled_net(net, mesh, samples));
+}
+
+Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
+  const SampledSurface s = sampled_net(net, mesh, samples);
+  return surface_stats_json(surface_stats(s), s);
+}
+
 void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh,
                         MeshFormat format, const Exports& exports) {
+  ResultSurface r;
+  r.net = net;
+  SampledSurface s;
+  s.mesh = mesh;
+  write_output_files(dir, result, r, s, format, exports);
+}
+
+void write_output_files(const std::string& dir, const Json* result, const ResultSurface& surface,
+                        const SampledSurface& sampled, MeshFormat format, const Exports& exports) {
   const std::vector<std::string> names = output_file_names(result != nullptr, exports);
+  const TriangleMesh& mesh = sampled.mesh;
   OutputFolder out(dir, names);
   // Progress: one step per file and one for the fields, each weighted by the bytes per vertex it
   // writes (measured at N = 1200: OBJ 108, PLY 128 in ASCII and 43 in binary, VTP 250 and 97,
@@ -472,7 +574,8 @@ void write_output_files(const std::string& dir, const Json* result, const Net& n
   double done = 0;
   auto wrote = [&](double weight) { bpde::report(job_progress(), kWritingFilesStage, done += weight, total); };
   if (result) write_json_file(out.file("result.json"), *result), wrote(w_result);
-  const SurfaceFields fields = surface_fields(net, mesh);
+  const SurfaceFields fields =
+      surface.complex ? complex_surface_fields(*surface.complex, sampled) : surface_fields(surface.net, mesh);
   // in ASCII, the vertex coordinates and H are formatted once for the three files
   std::optional<SharedNumberText> text;
   if (format == MeshFormat::Ascii) text.emplace(mesh, fields);
@@ -482,42 +585,48 @@ void write_output_files(const std::string& dir, const Json* result, const Net& n
   wrote(w_obj);
   write_ply(out.file("surface.ply"), mesh, fields, format, shared);
   wrote(w_ply);
-  write_vtp(out.file("surface.vtp"), mesh, fields, format, shared);
+  std::vector<std::int32_t> patch;  // a complex: the patch of each triangle as the VTP cell data
+  if (surface.complex) patch.assign(sampled.triangle_patch.data(), sampled.triangle_patch.data() + sampled.triangle_patch.size());
+  write_vtp(out.file("surface.vtp"), mesh, fields, format, shared, surface.complex ? &patch : nullptr);
   wrote(w_vtp);
-  write_net_obj(out.file("net.obj"), net);
+  if (surface.complex)
+    write_complex_net_obj(out.file("net.obj"), *surface.complex);
+  else
+    write_net_obj(out.file("net.obj"), surface.net);
   wrote(w_net);
   const Json report = result && result->contains("report") ? (*result)["report"] : Json::object();
-  if (exports.step) write_step(out.file("surface.step"), net), wrote(w_step);
-  if (exports.html) write_view_html(out.file("view.html"), net, mesh, report, view_title(net, report)), wrote(w_html);
+  if (surface.complex) {  // surface.step (one sewn shell) and view.html of a complex: jobs/complex_exports.h
+    const ComplexMesh m{mesh, sampled.triangle_patch, sampled.vertex_patch, sampled.uv};
+    write_complex_exports(out, exports, *surface.complex, m, fields, report, sampled.samples);
+    out.commit();
+    return;
+  }
+  if (exports.step) write_step(out.file("surface.step"), surface.net), wrote(w_step);
+  if (exports.html)
+    write_view_html(out.file("view.html"), surface.net, mesh, report, view_title(surface.net, report)), wrote(w_html);
   out.commit();
-}
-
-// The statistics of the mesh that the surface files are written from (one tabulated evaluation).
-// Tensor and triangular nets skip the singular samples (energies/cmc.h); B-spline surfaces (blends)
-// count every sample, at its robust H, as they always have.
-MeanCurvatureStats surface_mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
-  if (std::holds_alternative<TensorNet>(net))
-    return bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1);
-  if (std::holds_alternative<TriangularNet>(net))
-    return bpde::mean_curvature_stats(mesh, SampleLayout::TriangularGrid, samples, 0.1);
-  return bpde::mean_curvature_stats(mesh, SampleLayout::TensorGrid, samples, 0.1, false);
-}
-
-Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples) {
-  return stats_json(surface_mean_curvature_stats(net, mesh, samples));
 }
 
 Json check_report(const TriangleMesh& mesh) { return check_json(mesh_check(mesh)); }
 
 bool CmcCertificate::near_constant() const { return relative <= kCmcDeviationLimit; }
 
+namespace {
+Json point_json(const std::optional<std::array<double, 3>>& p) {
+  return p ? Json{(*p)[0], (*p)[1], (*p)[2]} : Json(nullptr);
+}
+}  // namespace
+
 Json certificate_json(const CmcCertificate& c) {
-  return {{"H", c.H},
-          {"mean_curvature_deviation", c.deviation},
-          {"at", c.at[0] >= 0 ? Json{c.at[0], c.at[1]} : Json(nullptr)},
-          {"reference_curvature", c.reference_curvature},
-          {"relative_deviation", c.relative},
-          {"near_constant", c.near_constant()}};
+  Json j = {{"H", c.H},
+            {"mean_curvature_deviation", c.deviation},
+            {"at", c.at[0] >= 0 ? Json{c.at[0], c.at[1]} : Json(nullptr)},
+            {"point", point_json(c.point)},
+            {"reference_curvature", c.reference_curvature},
+            {"relative_deviation", c.relative},
+            {"near_constant", c.near_constant()}};
+  if (c.patch >= 0) j["patch"] = c.patch;
+  return j;
 }
 
 CmcCertificate cmc_certificate(const MeanCurvatureStats& stats, double H, const TriangleMesh& mesh) {
@@ -532,24 +641,62 @@ CmcCertificate cmc_certificate(const MeanCurvatureStats& stats, double H, const 
   return c;
 }
 
+CmcCertificate cmc_certificate(const SurfaceStats& stats, double H, const SampledSurface& s) {
+  CmcCertificate c = cmc_certificate(static_cast<const MeanCurvatureStats&>(stats), H, s.mesh);
+  const Eigen::Index k = H - stats.min >= stats.max - H ? stats.vertex_min : stats.vertex_max;
+  if (k >= 0) {
+    c.point = std::array<double, 3>{s.mesh.V(k, 0), s.mesh.V(k, 1), s.mesh.V(k, 2)};
+    if (s.complex) c.patch = s.vertex_patch(k);
+  }
+  return c;
+}
+
+Json boundary_error_json(const BoundaryError& e) {
+  Json j = {{"max_error", finite_or_null(e.max_error)}, {"edge", e.edge}};
+  j["loop"] = e.loop ? Json(*e.loop) : Json(nullptr);
+  j["curve"] = e.curve ? Json(*e.curve) : Json(nullptr);
+  j["t"] = e.t ? Json(*e.t) : Json(nullptr);
+  j["point"] = point_json(e.point);
+  return j;
+}
+
+std::optional<BoundaryError> fit_boundary_error(const Json& boundary_fit) {
+  if (!boundary_fit.is_array() || boundary_fit.empty()) return std::nullopt;
+  BoundaryError e;
+  for (std::size_t k = 0; k < boundary_fit.size(); ++k) {
+    const Json& f = boundary_fit[k];
+    const double x = f.contains("max_error") && f["max_error"].is_number() ? f["max_error"].get<double>()
+                                                                           : std::numeric_limits<double>::quiet_NaN();
+    if (e.edge < 0 || !(x <= e.max_error)) e.max_error = x, e.edge = static_cast<int>(k);
+    if (std::isnan(x)) break;  // a NaN error is the answer
+  }
+  return e;
+}
+
 // The report's figures from the sampled mesh, where the solver did not set them.
 Json complete_report(const Net& net, const TriangleMesh& mesh, int samples, Json report, WrittenResult* added) {
+  return complete_report(sampled_net(net, mesh, samples), std::move(report), added);
+}
+
+Json complete_report(const SampledSurface& sampled, Json report, WrittenResult* added) {
   WrittenResult local;
   WrittenResult& written = added ? *added : local;
   if (!report.contains("mean_curvature")) {
     const ProgressStage stage(job_progress(), "mean curvature");
-    written.mean_curvature = surface_mean_curvature_stats(net, mesh, samples);
-    report["mean_curvature"] = stats_json(*written.mean_curvature);
+    written.mean_curvature = surface_stats(sampled);
+    report["mean_curvature"] = surface_stats_json(*written.mean_curvature, sampled);
   }
-  // A CMC result says how far it is from constant mean curvature (its mesh's samples, its H).
+  // A CMC result says how far it is from constant mean curvature (its mesh's samples, its H),
+  // and how far its boundary is from the curves the job gave.
   if (written.mean_curvature && written.mean_curvature->count > 0 && report.value("problem", "") == "cmc" &&
       report.contains("H") && report["H"].is_number()) {
-    written.certificate = cmc_certificate(*written.mean_curvature, report["H"].get<double>(), mesh);
+    written.certificate = cmc_certificate(*written.mean_curvature, report["H"].get<double>(), sampled);
     report["certificate"] = certificate_json(*written.certificate);
+    report["certificate"]["boundary"] = report.contains("boundary_error") ? report["boundary_error"] : Json(nullptr);
   }
   if (!report.contains("check")) {
     const ProgressStage stage(job_progress(), kMeshCheckStage);
-    written.check = mesh_check(mesh);
+    written.check = mesh_check(sampled.mesh);
     report["check"] = check_json(*written.check);
   }
   return report;
@@ -559,26 +706,45 @@ Json complete_report(const Net& net, const TriangleMesh& mesh, int samples, Json
 // (complete_report) unless the solver already set its figures.
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
                            const Json& extra, Status status, MeshFormat format, const Exports& exports) {
+  ResultSurface r;
+  r.net = net;
+  return write_result(dir, r, sampled_net(net, mesh, samples), std::move(report), extra, status, format, exports);
+}
+
+namespace {
+// result.json's "net": the net, or the complex with its layout.
+Json result_net_json(const ResultSurface& surface) {
+  return surface.complex ? complex_to_json(*surface.complex_data, *surface.complex) : net_to_json(surface.net);
+}
+}  // namespace
+
+Json job_result_json(const Job& job, const SolveOutcome& out) {
+  const ResultSurface surface = result_surface(job, out);
+  Json result = {{"net", result_net_json(surface)},
+                 {"report", complete_report(sample_surface(surface, job.samples), out.report)}};
+  for (auto it = out.extra.begin(); it != out.extra.end(); ++it) result[it.key()] = it.value();
+  return result;
+}
+
+WrittenResult write_result(const std::string& dir, const ResultSurface& surface, const SampledSurface& sampled,
+                           Json report, const Json& extra, Status status, MeshFormat format, const Exports& exports) {
   WrittenResult written;
-  report = complete_report(net, mesh, samples, std::move(report), &written);
+  report = complete_report(sampled, std::move(report), &written);
   const ProgressStage stage(job_progress(), kWritingFilesStage);
-  written.result = {{"net", net_to_json(net)}, {"report", report}};
+  written.result = {{"net", result_net_json(surface)}, {"report", report}};
   for (auto it = extra.begin(); it != extra.end(); ++it) written.result[it.key()] = it.value();
-  write_output_files(dir, &written.result, net, mesh, format, exports);
+  write_output_files(dir, &written.result, surface, sampled, format, exports);
   written.exit_code = exit_code(status);
   return written;
 }
 
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out) {
-  if (out.complex && job.complex) return write_complex_result(dir, job, out);
-  const TriangleMesh mesh = [&] {
-    const ProgressStage stage(job_progress(), kSamplingStage);
-    return sample_net(out.net, job.samples, job_progress());
-  }();
+  const ResultSurface surface = result_surface(job, out);
+  const SampledSurface sampled = sample_surface(surface, job.samples);
   Exports exports;
   exports.html = job.export_html;
   exports.step = job.export_step;
-  return write_result(dir, out.net, mesh, job.samples, out.report, out.extra, out.status, job.mesh_format, exports);
+  return write_result(dir, surface, sampled, out.report, out.extra, out.status, job.mesh_format, exports);
 }
 
 int write_outcome(const std::string& dir, const Job& job, const SolveOutcome& out) {

@@ -10,6 +10,7 @@
 // to that solver's requirements (solvers/requirements.h, declared next to each solver's Options).
 // The same table validates a job when it is read and dispatches it when it runs.
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -69,6 +70,9 @@ struct SolveOutcome {
   Status status = Status::Converged;
   /// A complex job (Job::complex): the solved complex; `net` is then its first patch.
   std::shared_ptr<const PatchComplex> complex = nullptr;
+  /// A complex job: the complex data it was solved on (the job's, or the last refinement
+  /// round's: its degree, refine and boundary fits); null: the job's.
+  std::shared_ptr<const ComplexJobData> complex_data = nullptr;
 };
 
 /// The CmcOptions of a cmc job (H or V form, functional, solver, fixed set, start, progress).
@@ -90,12 +94,60 @@ inline int exit_code(Status s) { return s == Status::Converged ? 0 : 1; }
 /// valid problem without a solution returns a non-Converged status with report["message"].
 SolveOutcome run_job(const Job& job);
 
-/// Mean-curvature statistics of a sampled net, away from the corners (energies/cmc.h
-/// mean_curvature_stats with corner margin 0.1; corners of a circle split into arcs are nearly
-/// singular); count 0 when no sample qualifies.
+/// What a result is written from: one net, or a solved patch complex with its job's complex data
+/// (result.json's "net", FORMATS.md "Patch complexes"). Everything after the solve (the
+/// report's sampled figures, the certificate, the summary, the files) takes this one form.
+struct ResultSurface {
+  Net net;                                             ///< the net (a complex: its first patch, unused)
+  std::shared_ptr<const PatchComplex> complex;         ///< a complex result, else null
+  std::shared_ptr<const ComplexJobData> complex_data;  ///< its layout and loops (with `complex`)
+  bool is_complex() const { return complex != nullptr; }
+};
+/// The surface of a job's outcome (out.complex with job.complex, else out.net).
+ResultSurface result_surface(const Job& job, const SolveOutcome& out);
+
+/// A result surface sampled: the mesh the files are written from and where each vertex lies.
+/// A single net: sample_net's mesh (its layout, core/mesh.h), patch 0, (u, v) the sample's domain
+/// point (a bspline net: relative to its knot domain, as the statistics have always counted it).
+/// A complex: the welded mesh of complex/complex_mesh.h, each vertex in the first patch that
+/// sampled it.
+struct SampledSurface {
+  TriangleMesh mesh;
+  Eigen::VectorXi vertex_patch;    ///< per vertex: its patch (a single net: 0)
+  Eigen::MatrixX2d uv;             ///< per vertex: its domain point (u, v) in that patch
+  Eigen::VectorXi triangle_patch;  ///< per triangle: its patch (a complex; empty for a single net)
+  /// per vertex: 1 when the mean-curvature statistics count it (below, kStatsCornerMargin)
+  Eigen::Matrix<std::uint8_t, Eigen::Dynamic, 1> counted;
+  bool complex = false;
+  int samples = 0;  ///< N: samples per (patch) edge it was sampled at
+};
+
+/// The corner margin of the mean-curvature statistics, in each patch's domain: a sample within
+/// it of a patch corner that lies on the surface's boundary is left out (the corners of a single
+/// net are all on its boundary; a circle split into arcs makes them nearly singular). A complex's
+/// inner corners (where patches meet inside) are counted: the statistics and the certificate
+/// cover its seams.
+inline constexpr double kStatsCornerMargin = 0.1;
+
+/// A net's sampled surface from its mesh at `samples` (sample_net(net, samples)).
+SampledSurface sampled_net(const Net& net, TriangleMesh mesh, int samples);
+/// A complex's welded mesh at `samples` per patch edge.
+SampledSurface sampled_complex(const PatchComplex& c, int samples);
+/// sampled_net or sampled_complex, reporting the sampling stage to job_progress().
+SampledSurface sample_surface(const ResultSurface& s, int samples);
+
+/// Mean-curvature statistics over the counted samples, with the vertices where min and max are
+/// taken (the first in vertex order; -1 when count is 0). at_min / at_max are their (u, v).
+struct SurfaceStats : MeanCurvatureStats {
+  Eigen::Index vertex_min = -1, vertex_max = -1;
+};
+SurfaceStats surface_stats(const SampledSurface& s);
+/// surface_stats(sampled_net(...)): the statistics of a sampled net, away from the corners.
 MeanCurvatureStats surface_mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples);
-/// The same as the report writes it: {min, max, mean, count}, null when no sample qualifies.
+/// The same as the report writes it: {min, max, mean, count, at_min, at_max} (a complex adds
+/// patch_at_min, patch_at_max), null when no sample qualifies.
 Json mean_curvature_stats(const Net& net, const TriangleMesh& mesh, int samples);
+Json surface_stats_json(const SurfaceStats& st, const SampledSurface& s);
 /// The object `bpde check` prints for a mesh (CGAL figures).
 Json check_report(const TriangleMesh& mesh);
 
@@ -117,6 +169,11 @@ void check_output_dir(const std::string& dir, const std::vector<std::string>& na
 /// as they were.
 void write_output_files(const std::string& dir, const Json* result, const Net& net, const TriangleMesh& mesh,
                         MeshFormat format = MeshFormat::Ascii, const Exports& exports = {});
+/// The same for any result surface: a complex writes its welded mesh (surface.vtp with the cell
+/// data `patch`) and net.obj with every control point once (jobs/run_complex.h).
+void write_output_files(const std::string& dir, const Json* result, const ResultSurface& surface,
+                        const SampledSurface& sampled, MeshFormat format = MeshFormat::Ascii,
+                        const Exports& exports = {});
 
 /// How far a CMC result is from what was asked (report.certificate, FORMATS.md): the largest
 /// |H(x) − H| over the report's samples away from the corners (the samples of
@@ -129,6 +186,8 @@ struct CmcCertificate {
   double H = 0;                       ///< the H of the result (asked in the H form, found in the V form)
   double deviation = 0;               ///< max |H(x) − H| over the samples
   std::array<double, 2> at{-1, -1};   ///< the domain point (u, v) of that sample
+  int patch = -1;                     ///< its patch (a complex; -1 for a single net)
+  std::optional<std::array<double, 3>> point;  ///< the sample's point x(u, v)
   double reference_curvature = 0;     ///< max(|H|, 1/R)
   double relative = 0;                ///< deviation / reference_curvature
   bool near_constant() const;         ///< relative <= kCmcDeviationLimit
@@ -139,15 +198,35 @@ struct CmcCertificate {
 inline constexpr double kCmcDeviationLimit = 0.05;
 /// The certificate of a CMC result from its mesh statistics (count > 0) and its H.
 CmcCertificate cmc_certificate(const MeanCurvatureStats& stats, double H, const TriangleMesh& mesh);
-/// report.certificate as FORMATS.md writes it (`at` null where the statistics have no location).
+/// The same located on its sampled surface: the patch and point of the worst sample.
+CmcCertificate cmc_certificate(const SurfaceStats& stats, double H, const SampledSurface& s);
+/// report.certificate as FORMATS.md writes it (`at` null where the statistics have no location;
+/// `patch` for a complex; `point` where located). `boundary` (report.boundary_error) is added by
+/// complete_report.
 Json certificate_json(const CmcCertificate& c);
+
+/// How far the surface's boundary is from the boundary curves the job gave (a job in the boundary
+/// form; report.boundary_error, and certificate.boundary of a cmc result). A complex: the largest
+/// distance from the loops' curves, sampled densely, to the boundary edges (jobs/run_complex.h),
+/// with where it is. A single net: the largest max_error of report.boundary_fit and its edge
+/// (the fit keeps no location: `at` null).
+struct BoundaryError {
+  double max_error = 0;
+  int edge = -1;                              ///< boundary_fit's entry (edge) where it is
+  std::optional<int> loop, curve;             ///< a complex: the loop and curve there
+  std::optional<double> t;                    ///< the curve's parameter there
+  std::optional<std::array<double, 3>> point; ///< the curve's point there
+};
+Json boundary_error_json(const BoundaryError& e);
+/// The boundary error of a single net from its boundary_fit list (null list: none).
+std::optional<BoundaryError> fit_boundary_error(const Json& boundary_fit);
 
 /// What was written: the whole result.json object, the exit code, and the figures write_result
 /// added to the report (empty where the report had them already).
 struct WrittenResult {
   Json result;
   int exit_code = 0;
-  std::optional<MeanCurvatureStats> mean_curvature;  ///< count 0: no sample away from the corners
+  std::optional<SurfaceStats> mean_curvature;  ///< count 0: no sample away from the corners
   std::optional<MeshCheckReport> check;
   std::optional<CmcCertificate> certificate;  ///< CMC results with samples away from the corners
 };
@@ -156,6 +235,8 @@ struct WrittenResult {
 /// present) and, for a cmc result, its `certificate`, from the sampled `mesh` of `net` (`samples`
 /// per side). The figures it computed go into `added` when given.
 Json complete_report(const Net& net, const TriangleMesh& mesh, int samples, Json report, WrittenResult* added = nullptr);
+/// The same for any sampled result surface.
+Json complete_report(const SampledSurface& sampled, Json report, WrittenResult* added = nullptr);
 
 /// Write DIR/result.json and surface.obj, surface.ply, surface.vtp, net.obj (write_output_files:
 /// all or nothing; PLY and VTP in `format`). The report is completed by complete_report. The exit
@@ -163,6 +244,14 @@ Json complete_report(const Net& net, const TriangleMesh& mesh, int samples, Json
 WrittenResult write_result(const std::string& dir, const Net& net, const TriangleMesh& mesh, int samples, Json report,
                            const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii,
                            const Exports& exports = {});
+/// The same for any result surface: result.json's "net" is the net, or the complex
+/// (io/complex_job.h complex_to_json).
+WrittenResult write_result(const std::string& dir, const ResultSurface& surface, const SampledSurface& sampled,
+                           Json report, const Json& extra, Status status, MeshFormat format = MeshFormat::Ascii,
+                           const Exports& exports = {});
+/// result.json's object for a job's outcome without writing files: the report completed as
+/// write_job_result completes it (the Python module's solve without an output folder).
+Json job_result_json(const Job& job, const SolveOutcome& out);
 /// write_result for a job's outcome, sampled at job.samples, in job.mesh_format, and the job's
 /// exports (job.export_step: DIR/surface.step; job.export_html: DIR/view.html; jobs/exports.h).
 WrittenResult write_job_result(const std::string& dir, const Job& job, const SolveOutcome& out);

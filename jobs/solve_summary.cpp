@@ -76,8 +76,9 @@ std::string solve_summary(const SolveOutcome& out, const WrittenResult& written,
                             number(h->mean, "%.6g") + " (away from the corners)"
                       : "none (no sample away from the corners)");
   if (const auto& c = written.certificate) {
-    const std::string where =
+    std::string where =
         c->at[0] >= 0 ? " at (u, v) = (" + number(c->at[0], "%.3g") + ", " + number(c->at[1], "%.3g") + ")" : "";
+    if (c->patch >= 0) where += " of patch " + std::to_string(c->patch);
     const std::string off = "|H(x) - H| up to " + number(c->deviation, "%.3g") + where + ", " +
                             number(100 * c->relative, "%.3g") + " % of the reference curvature";
     line(s, "certificate",
@@ -85,6 +86,27 @@ std::string solve_summary(const SolveOutcome& out, const WrittenResult& written,
                             : "NOT a constant-mean-curvature surface: " + off + " (more than " +
                                   number(100 * kCmcDeviationLimit, "%g") +
                                   " %); a critical point of the discrete problem, not a CMC surface at this degree");
+  }
+  // The boundary's distance from the job's curves (a job in the boundary form).
+  const Json& rep = written.result.contains("report") ? written.result["report"] : out.report;
+  if (rep.contains("boundary_error") && rep["boundary_error"].is_object()) {
+    const Json& b = rep["boundary_error"];
+    std::string text = b["max_error"].is_number() ? number(b["max_error"].get<double>(), "%.3g") : "none";
+    text += " (edge " + std::to_string(b["edge"].get<int>());
+    if (b["loop"].is_number())
+      text += ": loop " + std::to_string(b["loop"].get<int>()) + ", curve " + std::to_string(b["curve"].get<int>()) +
+              " at t = " + number(b["t"].get<double>(), "%.4g");
+    line(s, "boundary error", text + ")");
+  }
+  // The refinement rounds of a tolerance.
+  if (rep.contains("rounds") && rep["rounds"].is_array() && !rep["rounds"].empty()) {
+    const Json& r = rep["rounds"];
+    const Json &first = r.front(), &last = r.back();
+    line(s, "rounds",
+         std::to_string(r.size()) + " (degree " + std::to_string(first["degree"].get<int>()) + " to " +
+             std::to_string(last["degree"].get<int>()) + ", refine " + std::to_string(first["refine"].get<int>()) +
+             " to " + std::to_string(last["refine"].get<int>()) + "): tolerance " +
+             (last["failed"].empty() ? "met" : "NOT met"));
   }
   if (written.check) line(s, "self-intersections", std::to_string(written.check->self_intersections));
   return s + files_line(out_dir, files);

@@ -1,10 +1,6 @@
 // The command contract (same JSON as `bpde`): solve, sample, energy, check, plate, blend.
 #include "bindings.h"
 
-#include <unistd.h>
-
-#include <atomic>
-#include <filesystem>
 #include <optional>
 
 #include "bezierpde/io/blend_config.h"
@@ -19,34 +15,13 @@ namespace bpde::python {
 
 namespace {
 
-namespace fs = std::filesystem;
-
 // result.json's object for a job (the report completed with mean_curvature and check, as
 // write_result completes it), written to `out` when given.
 Json solve_result(const Json& job_json, const std::optional<std::string>& out) {
   const bpde::Job job = bpde::job_from_json(job_json, "job");
   const bpde::SolveOutcome outcome = bpde::run_job(job);
   if (out) return bpde::write_job_result(*out, job, outcome).result;
-  if (outcome.complex) {
-    // A complex's result (its patches, the welded mesh's figures) is the one write_job_result
-    // makes: written into a temporary folder, read, and the folder removed.
-    static std::atomic<unsigned> counter{0};
-    const fs::path dir = fs::temp_directory_path() /
-                         (".bezierpde-result-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    struct Remove {
-      fs::path dir;
-      ~Remove() {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-      }
-    } remove{dir};
-    return bpde::write_job_result(dir.string(), job, outcome).result;
-  }
-  const bpde::TriangleMesh mesh = bpde::sample_net(outcome.net, job.samples);
-  const Json report = bpde::complete_report(outcome.net, mesh, job.samples, outcome.report);
-  Json result = {{"net", bpde::net_to_json(outcome.net)}, {"report", report}};
-  for (auto it = outcome.extra.begin(); it != outcome.extra.end(); ++it) result[it.key()] = it.value();
-  return result;
+  return bpde::job_result_json(job, outcome);
 }
 
 void check_samples(int samples) {

@@ -248,7 +248,7 @@ GENERATORS = {
     "geometric-fit": ["scripts/geometric_fit_table.py", "{build}/test_boundaries"],  # seconds
     # the exact cases of patch complexes (docs/complex.md), examples/005-complex-exact; about 10 minutes
     "complex-exact": ["scripts/complex_exact_tables.py", "{build}/example_005_complex_exact"],
-    # Surface Evolver (`evolver`, Debian package evolver-nox) against bpde solve; about 15 minutes
+    # Surface Evolver (`evolver`, Debian package evolver-nox) against bpde solve; about 17 minutes
     "evolver": ["scripts/evolver_compare.py", "--bpde", "{build}/bpde", "--case", "all",
                 "--degrees", "4,5,6,7,8,9,10,12,14,16", "--linear-levels", "1..8", "--quadratic-levels", "1..8",
                 "--mc-tolerances", "1e-7,1e-8", "--area-dirichlet-start"],

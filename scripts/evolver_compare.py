@@ -109,6 +109,58 @@ def net_sphere_error(net, centre, radius, grid):
     return worst
 
 
+def eval_tensor(degree, points, u, v):
+    """x(u, v) = sum B_i^n(u) B_j^m(v) P_ij, P_ij at index i*(m+1) + j (FORMATS.md)."""
+    n, m = degree
+    bu = [math.comb(n, i) * u ** i * (1.0 - u) ** (n - i) for i in range(n + 1)]
+    bv = [math.comb(m, j) * v ** j * (1.0 - v) ** (m - j) for j in range(m + 1)]
+    x = [0.0, 0.0, 0.0]
+    for i in range(n + 1):
+        for j in range(m + 1):
+            b = bu[i] * bv[j]
+            p = points[i * (m + 1) + j]
+            for d in range(3):
+                x[d] += b * p[d]
+    return x
+
+
+# The catenoid between the unit circles at z = +-CATENOID_HALF_HEIGHT (examples/005-complex-exact,
+# catenoid.json): r(z) = a cosh(z / a) with a cosh(h / a) = 1, the larger root (the stable catenoid).
+CATENOID_HALF_HEIGHT = 0.5
+CATENOID_AREA = 5.99179697580228  # pi a (2h + a sinh(2h / a)), the job's exact area
+
+
+def catenoid_neck(h=CATENOID_HALF_HEIGHT):
+    """a with a cosh(h / a) = 1 on [0.6, 1] (the larger root for h = 0.5: a = 0.84833793809...)."""
+    lo, hi = 0.6, 1.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if (lo * math.cosh(h / lo) - 1.0) * (mid * math.cosh(h / mid) - 1.0) <= 0.0:
+            hi = mid
+        else:
+            lo = mid
+    return 0.5 * (lo + hi)
+
+
+def catenoid_area(a, h=CATENOID_HALF_HEIGHT):
+    return math.pi * a * (2.0 * h + a * math.sinh(2.0 * h / a))
+
+
+def catenoid_distance(x, a):
+    """| r - a cosh(z / a) |, r the distance to the z axis: the radial distance to the catenoid."""
+    return abs(math.hypot(x[0], x[1]) - a * math.cosh(x[2] / a))
+
+
+def net_max_distance(net, distance, grid):
+    """max distance(x) over a grid of a triangular (u = a/N, v = b/N, a + b <= N) or tensor
+    (u = a/N, v = b/N) patch."""
+    if net["type"] == "tensor":
+        return max(distance(eval_tensor(net["degree"], net["points"], a / grid, b / grid))
+                   for a in range(grid + 1) for b in range(grid + 1))
+    return max(distance(eval_triangular(net["degree"], net["points"], a / grid, b / grid))
+               for a in range(grid + 1) for b in range(grid + 1 - a))
+
+
 # Barycentric sample points of a facet for the "surface" error: the 15 points of a 4-grid.
 FACET_SAMPLES = [(a / 4, b / 4) for a in range(5) for b in range(5 - a)]
 
@@ -184,6 +236,36 @@ def sphere_case():
     return Case("sphere", "sphere-triangle", 1.0, (0.0, 0.0, 0.0), 1.0, None, ["dirichlet", "area", "mean-curvature"])
 
 
+class CatenoidCase:
+    """The catenoid as a complex job (examples/005-complex-exact/catenoid.json: the unit circles at
+    z = +-0.5 as two loops, the inner one the other way round, the annulus ring of tensor patches,
+    the area functional, H = 0) with its degree and refine set per row; the error is the relative
+    area error |A - A*| / A* against the exact area."""
+
+    name = "catenoid-complex"
+    H = 0.0
+    complex_job = True
+    functionals = ["area"]
+
+    def __init__(self, example_job):
+        self.example_job = example_job
+        self.neck = catenoid_neck()
+        self.area_exact = CATENOID_AREA
+
+    def job(self, degree, refine):
+        with open(self.example_job) as f:
+            job = json.load(f)
+        job["boundary"]["degree"] = degree
+        job["boundary"]["refine"] = refine
+        return job
+
+    def distance(self, x):
+        return catenoid_distance(x, self.neck)
+
+    def relative_area_error(self, area):
+        return abs(area - self.area_exact) / self.area_exact
+
+
 def evolver_pressure(H):
     """Evolver's prescribed pressure for bezierpde's H, with the facets oriented as x_u ^ x_v."""
     return -2.0 * H
@@ -218,6 +300,37 @@ def fe_circle(H):
     for k in range(6):
         lines.append("%d  %d %d  boundary 1 fixed" % (k + 1, k + 1, (k + 1) % 6 + 1))
     return "\n".join(lines + fan_faces_and_body(H))
+
+
+def fe_catenoid(sides=6):
+    """The .fe file of the catenoid: the unit circles at z = +-0.5 as two boundaries parametrised by
+    angle (refinement puts new boundary vertices on the exact circles), `sides` fixed vertices on each
+    at p1 = 2 pi k / sides, and the tube between them: per side a vertical edge (bottom k to top k), a
+    diagonal (bottom k to top k + 1) and two triangles. No body (H = 0: area alone). The start tube
+    is the prism of the two polygons; its middle ring, made at the first refinement, starts at radius 1
+    and moves in towards the neck (a = 0.848) under the gradient steps."""
+    K = sides
+    lines = [
+        "// bezierpde scripts/evolver_compare.py: catenoid between the unit circles at z = +-%g" % CATENOID_HALF_HEIGHT,
+        "boundary 1 parameters 1", "x1: cos(p1)", "x2: sin(p1)", "x3: %.17g" % CATENOID_HALF_HEIGHT,
+        "boundary 2 parameters 1", "x1: cos(p1)", "x2: sin(p1)", "x3: %.17g" % -CATENOID_HALF_HEIGHT,
+        "", "vertices",
+    ]
+    top = lambda k: k % K + 1  # noqa: E731  vertices 1..K on z = +0.5
+    bottom = lambda k: k % K + K + 1  # noqa: E731  vertices K+1..2K on z = -0.5
+    lines += ["%d  %d*pi/%d  boundary 1 fixed" % (top(k), 2 * k, K) for k in range(K)]
+    lines += ["%d  %d*pi/%d  boundary 2 fixed" % (bottom(k), 2 * k, K) for k in range(K)]
+    lines += ["", "edges"]
+    lines += ["%d  %d %d  boundary 1 fixed" % (k + 1, top(k), top(k + 1)) for k in range(K)]  # top ring
+    lines += ["%d  %d %d  boundary 2 fixed" % (K + k + 1, bottom(k), bottom(k + 1)) for k in range(K)]
+    lines += ["%d  %d %d" % (2 * K + k + 1, bottom(k), top(k)) for k in range(K)]  # verticals
+    lines += ["%d  %d %d" % (3 * K + k + 1, bottom(k), top(k + 1)) for k in range(K)]  # diagonals
+    lines += ["", "faces"]
+    for k in range(K):
+        vert_next = 2 * K + (k + 1) % K + 1
+        lines.append("%d  %d %d %d" % (2 * k + 1, K + k + 1, vert_next, -(3 * K + k + 1)))
+        lines.append("%d  %d %d %d" % (2 * k + 2, 3 * K + k + 1, -(k + 1), -(2 * K + k + 1)))
+    return "\n".join(lines) + "\n"
 
 
 def sphere_triangle_parameters():
@@ -262,7 +375,7 @@ def fe_sphere(H):
 REFINE_STEP = "r; g 5; u; V; V;"
 
 
-def run_cmd(levels, quadratic):
+def run_cmd(levels, quadratic, volume="body[1].volume"):
     """The Evolver command file: `levels` times (r; g 5; u; V; V: refine, relax, equiangulate, average
     the vertices), then the quadratic model if asked, g 10 and Hessian steps until the energy changes
     by less than 1e-14 relative (at most 12), then the mesh."""
@@ -285,14 +398,17 @@ def run_cmd(levels, quadratic):
         cmd.append('foreach facet ff do { printf "F"; foreach ff.edge ee do printf " %d %d 0", '
                    'ee.vertex[1].id, ee.vertex[2].id; printf "\\n" };')
     cmd += [
-        'printf "S %d %d %.17g %.17g %d\\n", facet_count, vertex_count, total_area, body[1].volume, hcount;',
+        'printf "S %%d %%d %%.17g %%.17g %%d\\n", facet_count, vertex_count, total_area, %s, hcount;' % volume,
         "q",
     ]
     return "\n".join(cmd) + "\n"
 
 
-def evolver_errors(output, centre, radius):
-    """Parse the run's output: (vertex error, surface error, facets, vertices, area, hessian steps)."""
+def evolver_errors(output, centre, radius, distance=None):
+    """Parse the run's output: (vertex error, surface error, facets, vertices, area, hessian steps);
+    the errors are the distance to the sphere (centre, radius), or distance(x) when given."""
+    if distance is None:
+        distance = lambda x: sphere_distance(x, centre, radius)  # noqa: E731
     verts = {}
     facets = []
     summary = None
@@ -307,14 +423,14 @@ def evolver_errors(output, centre, radius):
             summary = (int(f[1]), int(f[2]), float(f[3]), float(f[4]), int(f[5]))
     if summary is None or not verts:
         raise RuntimeError("Evolver printed no mesh (its output ends: %r)" % output[-300:])
-    vertex_err = max(sphere_distance(x, centre, radius) for x in verts.values())
+    vertex_err = max(distance(x) for x in verts.values())
     surface_err = 0.0
     for f in facets:
         # three oriented edges (tail, head, midpoint) in facet order: corners are the tails.
         corners = [verts[f[3 * e]] for e in range(3)]
         mids = None if f[2] == 0 else [verts[f[3 * e + 2]] for e in range(3)]
         for l1, l2 in FACET_SAMPLES:
-            surface_err = max(surface_err, sphere_distance(facet_point(corners, mids, l1, l2), centre, radius))
+            surface_err = max(surface_err, distance(facet_point(corners, mids, l1, l2)))
     return vertex_err, surface_err, summary[0], summary[1], summary[2], summary[4]
 
 
@@ -374,17 +490,128 @@ def run_evolver(evolver, case, level, quadratic, work):
     d = os.path.join(work, "evolver-%s-%s-l%d" % (case.name, "quadratic" if quadratic else "linear", level))
     os.makedirs(d, exist_ok=True)
     fe = os.path.join(d, "file.fe")
+    catenoid = isinstance(case, CatenoidCase)
     with open(fe, "w") as f:
-        f.write(fe_circle(case.H) if case.name in ("circle", "circle-complex") else fe_sphere(case.H))
+        f.write(fe_catenoid() if catenoid else fe_circle(case.H) if case.name in ("circle", "circle-complex")
+                else fe_sphere(case.H))
     with open(os.path.join(d, "run.cmd"), "w") as f:
-        f.write(run_cmd(level, quadratic))
+        f.write(run_cmd(level, quadratic, "0.0" if catenoid else "body[1].volume"))
     with open(os.devnull) as devnull:
         p, cpu = timed([evolver, "-x", "-f", "run.cmd", "file.fe"], cwd=d, stdin=devnull)
     with open(os.path.join(d, "evolver.log"), "w") as f:
         f.write(p.stdout)
+    if catenoid:
+        v_err, s_err, facets, verts, area, hsteps = evolver_errors(p.stdout, None, None, case.distance)
+        return {"level": level, "model": "quadratic" if quadratic else "linear", "cpu": cpu,
+                "error": case.relative_area_error(area), "distance": v_err, "surface": s_err, "facets": facets,
+                "vertices": verts, "area": area, "hessian": hsteps}
     v_err, s_err, facets, verts, area, hsteps = evolver_errors(p.stdout, case.centre, case.radius)
     return {"level": level, "model": "quadratic" if quadratic else "linear", "cpu": cpu, "error": v_err,
             "surface": s_err, "facets": facets, "vertices": verts, "area": area, "hessian": hsteps}
+
+
+def run_bpde_catenoid(bpde, case, degree, refine, work, grid):
+    """One `bpde solve` of the catenoid complex job at (degree, refine): the relative area error from
+    the report's area, and the largest distance to the catenoid over a grid of every patch."""
+    d = os.path.join(work, "bpde-%s-n%d-r%d" % (case.name, degree, refine))
+    os.makedirs(d, exist_ok=True)
+    job = os.path.join(d, "job.json")
+    with open(job, "w") as f:
+        json.dump(case.job(degree, refine), f, indent=1)
+    p, cpu = timed([bpde, "solve", job, "--out", os.path.join(d, "out")])
+    res_file = os.path.join(d, "out", "result.json")
+    row = {"degree": degree, "refine": refine, "functional": "area", "cpu": cpu}
+    if p.returncode not in (0, 1) or not os.path.exists(res_file):
+        return dict(row, failed=(p.stderr or p.stdout).strip())
+    with open(res_file) as f:
+        result = json.load(f)
+    rep = result["report"]
+    patches = result["net"]["patches"]
+    return dict(row, seconds=rep.get("seconds"), converged=rep.get("converged"), residual=rep.get("residual"),
+                area=rep.get("area"), patches=len(patches), error=case.relative_area_error(rep["area"]),
+                distance=max(net_max_distance(q, case.distance, grid) for q in patches))
+
+
+def loglog_time(rows, error):
+    """The CPU seconds a program needs for `error`: along its cheapest rows (each with a smaller error
+    than every cheaper row), log CPU interpolated linearly in log error between the two rows around
+    it; the cheapest row's time when it is already below `error`; None when no row reaches it."""
+    front = []
+    for r in sorted(rows, key=lambda r: r["cpu"]):
+        if r["error"] > 0 and (not front or r["error"] < front[-1]["error"]):
+            front.append(r)
+    if not front or front[-1]["error"] > error:
+        return None
+    if front[0]["error"] <= error:
+        return front[0]["cpu"]
+    for a, b in zip(front, front[1:]):
+        if b["error"] <= error < a["error"]:
+            s = math.log(error / a["error"]) / math.log(b["error"] / a["error"])
+            return math.exp(math.log(max(a["cpu"], 1e-3)) + s * (math.log(max(b["cpu"], 1e-3))
+                                                                 - math.log(max(a["cpu"], 1e-3))))
+    return None
+
+
+def catenoid_bpde_table(rows):
+    out = ["| n | refine | patches | \\|A − A*\\| / A* | distance to the catenoid (max over the grid) | residual "
+           "| converged | CPU s (process) | solve s (report, wall) |",
+           "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in rows:
+        if "failed" in r:
+            out.append("| %d | %d | | failed: %s | | | | %.2f | |" % (r["degree"], r["refine"], r["failed"], r["cpu"]))
+            continue
+        out.append("| %d | %d | %d | %s | %s | %s | %s | %.2f | %.2f |" % (
+            r["degree"], r["refine"], r["patches"], fmt(r["error"]), fmt(r["distance"]), fmt(r["residual"]),
+            "yes" if r["converged"] else "no", r["cpu"], r["seconds"] or 0.0))
+    return "\n".join(out)
+
+
+def catenoid_evolver_table(rows):
+    out = ["| model | refinements | facets | vertices | area | \\|A − A*\\| / A* | distance (max over the vertices) "
+           "| distance (facets sampled) | Hessian steps | CPU s |",
+           "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in rows:
+        out.append("| %s | %d | %d | %d | %.12f | %s | %s | %s | %d | %.2f |" % (
+            r["model"], r["level"], r["facets"], r["vertices"], r["area"], fmt(r["error"]), fmt(r["distance"]),
+            fmt(r["surface"]), r["hessian"], r["cpu"]))
+    return "\n".join(out)
+
+
+def catenoid_time_table(brows, erows, targets):
+    """Per relative area error: the least CPU seconds that reached it (the row), the log-log
+    interpolated time of each program and the ratio Evolver / bezierpde at that error (Evolver: the
+    faster of its two models)."""
+    bok = [r for r in brows if "failed" not in r and r["converged"]]
+    routes = [("bezierpde", bok)] + [("Evolver " + m, [r for r in erows if r["model"] == m])
+                                     for m in ("linear", "quadratic")]
+    out = ["| \\|A − A*\\| / A* ≤ | bezierpde (least CPU s reached) | Evolver linear | Evolver quadratic "
+           "| bezierpde interpolated | Evolver interpolated | Evolver / bezierpde |",
+           "| --- | --- | --- | --- | --- | --- | --- |"]
+    for t in targets:
+        cells = []
+        for name, rows in routes:
+            hits = [r for r in rows if r["error"] <= t]
+            b = min(hits, key=lambda r: r["cpu"]) if hits else None
+            if b is None:
+                cells.append("not reached")
+            elif name == "bezierpde":
+                cells.append("%.2f s (n = %d, refine %d)" % (b["cpu"], b["degree"], b["refine"]))
+            else:
+                cells.append("%.2f s (%d facets)" % (b["cpu"], b["facets"]))
+        tb = loglog_time(bok, t)
+        te = [x for x in (loglog_time(rows, t) for _, rows in routes[1:]) if x is not None]
+        te = min(te) if te else None
+        cells.append("%.3f s" % tb if tb is not None else "not reached")
+        cells.append("%.3f s" % te if te is not None else "not reached")
+        if tb is not None and te is not None:
+            cells.append("%.0f×" % (te / tb) if te / tb >= 10 else "%.1f×" % (te / tb))
+        elif tb is not None and erows:
+            lower = max(r["cpu"] for r in erows) / tb  # Evolver's costliest level did not reach it
+            cells.append(("> %.0f× (Evolver not reached)" if lower >= 10 else "> %.1f× (Evolver not reached)") % lower)
+        else:
+            cells.append("")
+        out.append("| %.0e | " % t + " | ".join(cells) + " |")
+    return "\n".join(out)
 
 
 def run_library(example, case, degree, tolerance, grid):
@@ -523,14 +750,41 @@ def marked(name, table, machine_dependent):
                                                                               table)
 
 
+def run_catenoid(bpde, evolver, case, args, work):
+    """The catenoid-complex case: bpde over degrees x refines, Evolver over its levels, three sections."""
+    brows = [run_bpde_catenoid(bpde, case, n, r, work, 20) for r in parse_list(args.catenoid_refines)
+             for n in parse_list(args.catenoid_degrees)]
+    erows = [run_evolver(evolver, case, k, False, work) for k in parse_list(args.catenoid_linear_levels)]
+    erows += [run_evolver(evolver, case, k, True, work) for k in parse_list(args.catenoid_quadratic_levels)]
+    names = dict(zip(["bezierpde", "evolver", "time"], section_names(case.name, False)))
+    print("\n### %s, H = 0 (bezierpde)\n" % case.name)
+    print(marked(names["bezierpde"], catenoid_bpde_table(brows), ["CPU s (process)", "solve s (report, wall)"]))
+    print()
+    print(marked(names["evolver"], catenoid_evolver_table(erows), ["CPU s"]))
+    print()
+    table = catenoid_time_table(brows, erows, [10.0 ** -k for k in range(3, 15)])
+    print(marked(names["time"], table, ["bezierpde (least CPU s reached)", "Evolver linear", "Evolver quadratic",
+                                        "bezierpde interpolated", "Evolver interpolated", "Evolver / bezierpde"]))
+    with open(os.path.join(work, "rows-%s.json" % case.name), "w") as f:
+        json.dump({"bpde": brows, "evolver": erows}, f, indent=1)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--bpde", default="build/bpde")
     ap.add_argument("--evolver", default="evolver")
-    ap.add_argument("--case", default="circle", choices=["circle", "sphere", "circle-complex", "all"])
+    ap.add_argument("--case", default="circle", choices=["circle", "sphere", "circle-complex", "catenoid-complex", "all"])
     ap.add_argument("--degrees", default="4,5,6,7,8,10,12")
     ap.add_argument("--linear-levels", default="1..8")
     ap.add_argument("--quadratic-levels", default="1..6")
+    ap.add_argument("--catenoid-degrees", default="3..8", help="catenoid-complex: the degrees of the complex job")
+    ap.add_argument("--catenoid-refines", default="0..1", help="catenoid-complex: the job's refine values")
+    ap.add_argument("--catenoid-linear-levels", default="1..7",
+                    help="catenoid-complex: Evolver's linear levels (level k: 12 * 4^k facets)")
+    ap.add_argument("--catenoid-quadratic-levels", default="1..7", help="catenoid-complex: Evolver's quadratic levels")
+    ap.add_argument("--example-job", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
+                                                          "examples", "005-complex-exact", "catenoid.json"),
+                    help="catenoid-complex: the complex job whose degree and refine the rows set")
     ap.add_argument("--grid", type=int, default=60, help="samples per side of the bezierpde error grid")
     ap.add_argument("--out", default=None,
                     help="keep the jobs, .fe and run.cmd files here (default: a temporary folder)")
@@ -549,7 +803,8 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if args.list:
         for name in {"circle": ["circle"], "sphere": ["sphere"], "circle-complex": ["circle-complex"],
-                     "all": ["circle", "sphere", "circle-complex"]}[args.case]:
+                     "catenoid-complex": ["catenoid-complex"],
+                     "all": ["circle", "sphere", "circle-complex", "catenoid-complex"]}[args.case]:
             print("\n".join(section_names(name, bool(args.tolerances))))
         return 0
     try:
@@ -583,12 +838,16 @@ def main(argv=None):
         return 2
     bpde = os.path.abspath(args.bpde)
     cases = {"circle": [circle_case()], "sphere": [sphere_case()], "circle-complex": [circle_complex_case()],
-             "all": [circle_case(), sphere_case(), circle_complex_case()]}[args.case]
+             "catenoid-complex": [CatenoidCase(args.example_job)],
+             "all": [circle_case(), sphere_case(), circle_complex_case(), CatenoidCase(args.example_job)]}[args.case]
     work = args.out or tempfile.mkdtemp(prefix="evolver_compare-")
     os.makedirs(work, exist_ok=True)
     print("machine: %s, load average at start %.2f %.2f %.2f; work folder %s" % (
         os.uname().nodename, *os.getloadavg(), work))
     for case in cases:
+        if isinstance(case, CatenoidCase):
+            run_catenoid(bpde, evolver, case, args, work)
+            continue
         # the complex jobs up to n = 10 (the fan at n = 12 and above takes minutes per solve)
         degrees = [n for n in parse_list(args.degrees) if not case.complex_job or n <= 10]
         brows = [run_bpde(bpde, case, n, f, work, args.grid) for f in case.functionals for n in degrees]

@@ -47,6 +47,24 @@ def test_solve_and_blend_equal_the_command_on_every_example(examples, tmp_path):
                 assert (pyout / name).read_bytes() == (out / name).read_bytes(), f"{path}: {name}"
 
 
+def test_complex_job_equals_the_command(tmp_path):
+    # A patch complex (FORMATS.md "Patch complexes") with a tolerance: result.json's complex net,
+    # the located certificate and the rounds, as the command writes them.
+    job = {"boundary": {"type": "complex", "patch": "triangular", "degree": 3,
+                        "loops": [[{"type": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1}]]},
+           "problem": {"kind": "cmc", "H": -0.5}, "samples": 8, "tolerance": {"boundary": 1e-5}}
+    path = tmp_path / "complex.json"
+    path.write_text(json.dumps(job), encoding="utf-8")
+    code, _, err = run_bpde("solve", path, "--out", tmp_path / "cli")
+    assert code == 0, err
+    with open(tmp_path / "cli" / "result.json", encoding="utf-8") as f:
+        cli = json.load(f)
+    full = bezierpde.solve_result(job)
+    assert full["net"]["type"] == "complex"
+    assert len(full["report"]["rounds"]) >= 2
+    assert bits(strip_seconds(full)) == bits(strip_seconds(cli))
+
+
 @pytest.mark.parametrize("index", [0, 16, 30])
 def test_sample_energy_check_equal_the_command(examples, tmp_path, index):
     path, job, _ = examples[index]

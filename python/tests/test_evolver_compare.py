@@ -198,3 +198,64 @@ def test_refuses_malformed_mc_tolerances(capsys):
         assert ec.main(["--mc-tolerances", bad]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "--mc-tolerances" in err
+
+
+def test_catenoid_neck_and_area_are_the_example_job_s():
+    # examples/005-complex-exact/README.md: the unit circles at z = +-0.5, A = 5.99179697580228.
+    a = ec.catenoid_neck()
+    assert a * math.cosh(0.5 / a) == pytest.approx(1.0, abs=1e-14)
+    assert 0.8 < a < 0.9  # the larger root: the stable catenoid, not the one near the discs
+    assert ec.catenoid_area(a) == pytest.approx(ec.CATENOID_AREA, rel=1e-14)
+    assert ec.catenoid_distance((a, 0.0, 0.0), a) == pytest.approx(0.0, abs=1e-15)
+    assert ec.catenoid_distance((0.0, 1.0, 0.5), a) == pytest.approx(0.0, abs=1e-14)
+    assert ec.catenoid_distance((0.0, 1.2, 0.0), a) == pytest.approx(1.2 - a, rel=1e-14)
+
+
+def test_catenoid_file_is_one_consistently_oriented_tube():
+    fe = ec.fe_catenoid(6)
+    section = lambda name: fe.split("\n" + name + "\n")[1].split("\n\n")[0].strip().splitlines()
+    pos = {}
+    for line in section("vertices"):
+        k, ang, _, b = line.split()[:4]
+        pos[int(k)] = (math.cos(int(ang.split("*")[0]) * math.pi / 6), math.sin(int(ang.split("*")[0]) * math.pi / 6),
+                       0.5 if b == "1" else -0.5)
+    assert "boundary 1" in fe and "boundary 2" in fe and "bodies" not in fe
+    edges = {int(l.split()[0]): (int(l.split()[1]), int(l.split()[2])) for l in section("edges")}
+    uses = {e: [] for e in edges}
+    faces = section("faces")
+    assert len(faces) == 12
+    for line in faces:
+        signed = list(map(int, line.split()[1:4]))
+        oriented = [edges[e] if e > 0 else edges[-e][::-1] for e in signed]
+        assert all(oriented[k][1] == oriented[(k + 1) % 3][0] for k in range(3))  # a closed loop
+        for e in signed:
+            uses[abs(e)].append(e > 0)
+        a, b, c = (pos[o[0]] for o in oriented)
+        n = [(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+             (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+             (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])]
+        centroid = [(a[d] + b[d] + c[d]) / 3 for d in range(3)]
+        assert n[0] * centroid[0] + n[1] * centroid[1] > 0  # every normal points away from the axis
+    for e, used in uses.items():
+        if e <= 12:  # the two boundary rings: one facet each
+            assert len(used) == 1
+        else:  # verticals and diagonals: two facets, traversed both ways
+            assert sorted(used) == [False, True]
+
+
+def test_run_cmd_without_a_body_prints_no_volume():
+    assert "body[1]" not in ec.run_cmd(2, quadratic=True, volume="0.0")
+    assert "body[1].volume" in ec.run_cmd(2, quadratic=True)
+
+
+def test_loglog_time_interpolates_a_power_law_along_the_cheapest_rows():
+    rows = [{"cpu": 0.1, "error": 1e-4}, {"cpu": 1.0, "error": 1e-8}, {"cpu": 5.0, "error": 1e-6}]  # the last: off the front
+    assert ec.loglog_time(rows, 1e-6) == pytest.approx(10 ** -0.5, rel=1e-12)  # error ~ cpu^-4 between the two
+    assert ec.loglog_time(rows, 1e-3) == 0.1  # the cheapest row is already below it
+    assert ec.loglog_time(rows, 1e-9) is None
+    table = ec.catenoid_time_table(
+        [dict(r, degree=4, refine=0, converged=True) for r in rows[:2]],
+        [{"model": "quadratic", "cpu": 10.0, "error": 1e-6, "facets": 768}], [1e-6, 1e-8])
+    lines = table.splitlines()
+    assert lines[2].endswith("| 0.316 s | 10.000 s | 32× |")
+    assert "> 10× (Evolver not reached)" in lines[3]

@@ -217,7 +217,7 @@ TEST(ComplexOutputs, BadComplexNetsExitTwoAndWriteNothing) {
 TEST(ComplexNetReader, ResultNetReadsBackExactlyWithItsSharedRows) {
   const fs::path dir = solved("fan_read", "triangular", 3, 1);
   const Json net = bpde::read_json_file((dir / "result.json").string())["net"];
-  const bpde::ComplexNet c = bpde::complex_net_from_json(net, "net");
+  const bpde::ComplexNetFile c = bpde::complex_net_from_json(net, "net");
   EXPECT_EQ(c.complex.patches.size(), 24u);
   EXPECT_EQ(c.refine, 1);
   // rows: 19 vertices + 42 edges · 2 + 24 inner points at degree 3
@@ -256,7 +256,7 @@ TEST(ComplexNetReader, TypedErrors) {
   EXPECT_THROW(complex_net_from_json(with([&](Json& j) { j["layout"]["vertices"][1][0] = nan; }), "net"),
                NonFiniteError);
   // the bare layout.boundary is optional
-  const ComplexNet plain = complex_net_from_json(with([](Json& j) { j["layout"].erase("boundary"); }), "net");
+  const ComplexNetFile plain = complex_net_from_json(with([](Json& j) { j["layout"].erase("boundary"); }), "net");
   EXPECT_TRUE(plain.boundary.empty());
   EXPECT_EQ(plain.complex.patches.size(), 6u);
 }

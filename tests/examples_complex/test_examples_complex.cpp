@@ -132,13 +132,14 @@ TEST(ExamplesComplex, CatenoidRatesInH) {
 
 // The rectangle at H = 0.2: at its four corners every polynomial patch has H = 0 (two orthogonal
 // straight lines through a point of a smooth surface: their normal curvatures, both 0, add up to
-// 2H), so the certificate, corners included, is |H| = 0.2 exactly; in the middle third the
+// 2H); the certificate leaves out the samples within the corner margin of the boundary corners
+// (FORMATS.md "Patch complexes"), so it stays far below that |H| = 0.2; in the middle third the
 // Dirichlet functional's surface is within 1e-3 of H (measured 3.3e-4 at degree 6, refine 1), and
 // its control net stays within the surface's bounding box (reach 0.5 of the diagonal).
 TEST(ExamplesComplex, RectangleCornersHaveZeroMeanCurvature) {
   const Solved r = run(job_file("rectangle"), 6, 1);
   ASSERT_EQ(r.exit, 0) << r.report.dump();
-  EXPECT_NEAR(r.report["certificate"]["mean_curvature_deviation"].get<double>(), 0.2, 1e-9);
+  EXPECT_LT(r.report["certificate"]["mean_curvature_deviation"].get<double>(), 0.05);  // measured 0.010
   const bpde::ComplexMesh m = bpde::sample_complex(r.complex, 16);
   double middle = 0, corner = 1;
   for (Eigen::Index v = 0; v < m.mesh.V.rows(); ++v) {
