@@ -59,9 +59,8 @@ BENCHMARK(BM_ComplexRefine)->Name("ComplexRefine")->ArgsProduct({{4, 8}, {1, 2, 
 //                                   tangential valley);
 //   CmcComplex/extremal/<patches>   the Dirichlet extremal of the same complex (one sparse
 //                                   Cholesky solve): the baseline of the ratio.
-// At fixed degree the ratio should stay about constant as the patches grow (both linear). The
-// 1024-patch row takes about 9 s and 5 GB: the assembled D_H (energies/cmc.h) still holds its
-// Gram dense over all points.
+// At fixed degree the ratio should stay about constant as the patches grow (both linear); the
+// 1024-patch row takes about 6 s.
 namespace {
 
 bpde::PatchComplex catenoid_ring(int refinements) {
