@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <map>
 #include <set>
 
 #include "bezierpde/complex/complex_mesh.h"
@@ -328,9 +329,27 @@ SampledSurface sampled_complex(const PatchComplex& c, int samples) {
   s.vertex_patch = m.vertex_patch;
   s.uv = m.uv;
   s.triangle_patch = m.patch;
-  // Corners of each patch on the surface's boundary (a boundary row at a patch corner).
-  const std::vector<int> brows = boundary_rows(c);
-  const std::set<int> boundary(brows.begin(), brows.end());
+  // Corners of each patch where the surface's boundary turns: a boundary row at the end of two
+  // boundary edges whose tangents there (from the control points next to it) differ by more than
+  // kStatsCornerAngle. Where a smooth loop is merely cut (a circle in arcs), the samples count.
+  std::map<int, std::vector<Eigen::Vector3d>> tangents;  // boundary corner row -> outgoing directions
+  for (const ComplexEdge& edge : complex_edges(c)) {
+    if (!edge.boundary() || edge.rows.size() < 2) continue;
+    const std::vector<int>& r = edge.rows;
+    const std::size_t last = r.size() - 1;
+    tangents[r.front()].push_back(c.points.row(r[1]) - c.points.row(r.front()));
+    tangents[r.back()].push_back(c.points.row(r[last - 1]) - c.points.row(r.back()));
+  }
+  std::set<int> boundary;
+  for (const auto& [row, d] : tangents) {
+    if (d.size() != 2 || d[0].norm() == 0 || d[1].norm() == 0) {  // degenerate: treat as a corner
+      boundary.insert(row);
+      continue;
+    }
+    // outgoing directions of a smooth boundary are opposite: the turn is the angle from -d0 to d1
+    const double cosang = std::clamp((-d[0]).normalized().dot(d[1].normalized()), -1.0, 1.0);
+    if (std::acos(cosang) > kStatsCornerAngle) boundary.insert(row);
+  }
   const int np = static_cast<int>(c.patches.size());
   const PatchKind kind = c.patches.front().kind;
   const int n = c.patches.front().degree, corners = patch_edge_count(kind);

@@ -124,10 +124,15 @@ struct SampledSurface {
 
 /// The corner margin of the mean-curvature statistics, in each patch's domain: a sample within
 /// it of a patch corner that lies on the surface's boundary is left out (the corners of a single
-/// net are all on its boundary; a circle split into arcs makes them nearly singular). A complex's
-/// inner corners (where patches meet inside) are counted: the statistics and the certificate
-/// cover its seams.
+/// net are all on its boundary; a circle split into arcs makes them nearly singular). A complex
+/// leaves out only its boundary corners where the boundary turns (kStatsCornerAngle); its inner
+/// corners (where patches meet inside) and the layout vertices on smooth stretches of a loop are
+/// counted: the statistics and the certificate cover its seams.
 inline constexpr double kStatsCornerMargin = 0.1;
+/// A complex's boundary corner is left out only where the boundary turns by more than this angle
+/// (radians, 2°: the default `smooth_corner_angle` of single nets): at a layout vertex on a smooth
+/// stretch of a loop the samples count.
+inline constexpr double kStatsCornerAngle = 0.03490658503988659;
 
 /// A net's sampled surface from its mesh at `samples` (sample_net(net, samples)).
 SampledSurface sampled_net(const Net& net, TriangleMesh mesh, int samples);

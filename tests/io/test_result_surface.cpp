@@ -48,7 +48,7 @@ TEST(ResultSurface, SingleNetStatisticsAreThoseOfTheMesh) {
 // A complex (the unit circle's fan of 6 triangles around a centre vertex): the samples within the
 // margin of a patch corner on the circle are left out, those at the centre, where the patches
 // meet inside, are counted; every vertex's (u, v) in its patch gives its position.
-TEST(ResultSurface, ComplexCountsItsInnerCornersAndLeavesOutItsBoundaryCorners) {
+TEST(ResultSurface, ComplexCountsItsInnerCornersAndTheVerticesOnASmoothLoop) {
   const Json boundary = Json::parse(R"({"type": "complex", "patch": "triangular", "degree": 4, "loops": [[
       {"type": "circle", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1}]]})");
   const bpde::ComplexJobData data = bpde::complex_from_json(boundary, "boundary", bpde::FitMethod::Interpolation);
@@ -76,9 +76,9 @@ TEST(ResultSurface, ComplexCountsItsInnerCornersAndLeavesOutItsBoundaryCorners) 
       const Eigen::Vector3d corner = c.points.row(j);  // rows 0.. are the layout's vertices
       if (corner.head<2>().norm() > 0.99 && (x - corner).norm() < 0.08) at_rim_corner = true;
     }
-    if (at_rim_corner) {
+    if (at_rim_corner) {  // the circle does not turn there: counted
       ++near_rim_corner;
-      EXPECT_EQ(s.counted(k), 0) << "vertex " << k << " at " << x.transpose();
+      EXPECT_EQ(s.counted(k), 1) << "vertex " << k << " at " << x.transpose();
     }
     if (r < 0.05) {
       ++near_centre;
@@ -99,3 +99,34 @@ TEST(ResultSurface, ComplexCountsItsInnerCornersAndLeavesOutItsBoundaryCorners) 
 }
 
 }  // namespace
+
+TEST(ResultSurface, ComplexLeavesOutTheCornersWhereItsBoundaryTurns) {
+  // a square of four segments: the loop turns by 90° at its four corners, which are layout
+  // vertices; the fan's other boundary vertices (if any) and its centre are counted
+  const Json boundary = Json::parse(R"({"type": "complex", "patch": "triangular", "degree": 3, "loops": [[
+      {"type": "segment", "from": [1, 0, 0], "to": [0, 1, 0]},
+      {"type": "segment", "from": [0, 1, 0], "to": [-1, 0, 0]},
+      {"type": "segment", "from": [-1, 0, 0], "to": [0, -1, 0]},
+      {"type": "segment", "from": [0, -1, 0], "to": [1, 0, 0]}]]})");
+  const bpde::ComplexJobData data = bpde::complex_from_json(boundary, "boundary", bpde::FitMethod::Interpolation);
+  const bpde::SampledSurface s = bpde::sampled_complex(data.complex, 20);
+  const Eigen::Vector3d corners[4] = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  int near_corner = 0, near_mid_edge = 0;
+  for (Eigen::Index k = 0; k < s.mesh.V.rows(); ++k) {
+    const Eigen::Vector3d x = s.mesh.V.row(k).transpose();
+    for (const Eigen::Vector3d& q : corners)
+      if ((x - q).norm() < 1e-9) {
+        ++near_corner;
+        EXPECT_EQ(s.counted(k), 0) << "corner vertex " << k << " at " << x.transpose();
+      }
+    // the middle of each side (a layout vertex of the fan when it has more than 4 patches, else a
+    // point inside a patch edge): the segment is straight there, so it counts
+    for (int j = 0; j < 4; ++j)
+      if ((x - 0.5 * (corners[j] + corners[(j + 1) % 4])).norm() < 1e-9) {
+        ++near_mid_edge;
+        EXPECT_EQ(s.counted(k), 1) << "mid-side vertex " << k << " at " << x.transpose();
+      }
+  }
+  EXPECT_GE(near_corner, 4);
+  EXPECT_EQ(near_mid_edge, 4);
+}
