@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <string>
 #include <utility>
 
@@ -56,22 +57,64 @@ std::shared_ptr<const CmcFunctional> CmcFunctional::cached_tensor(int n, int m) 
   return cache.get({n, m}, [](const std::pair<int, int>& d) { return tensor(d.first, d.second); });
 }
 
+struct CmcFunctional::DenseGram {
+  std::once_flag once;
+  Eigen::MatrixXd M;
+};
+
+namespace {
+
+// An assembled functional over at most this many points also keeps its Gram dense and uses the
+// dense products (the solves of small complexes stay those of one patch, bit for bit; 500 points
+// are the 1500 coordinates from which the complex solves turn sparse, solvers/cmc/area/tuning.h).
+constexpr int kDenseAssembledGramPoints = 500;
+
+// Σ_p S_pᵀ M S_p (#global square, sparse).
+Eigen::SparseMatrix<double> assembled_sparse(const PatchAssembly& a, const Eigen::MatrixXd& M) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(a.maps.size() * static_cast<std::size_t>(M.size()));
+  for (const std::vector<int>& map : a.maps)
+    for (std::size_t j = 0; j < map.size(); ++j)
+      for (std::size_t i = 0; i < map.size(); ++i) {
+        const double v = M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+        if (v != 0.0) t.emplace_back(map[i], map[j], v);
+      }
+  Eigen::SparseMatrix<double> S(a.size, a.size);
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+}  // namespace
+
 CmcFunctional CmcFunctional::assembled(std::shared_ptr<const CmcFunctional> patch,
                                        std::shared_ptr<const PatchAssembly> assembly) {
   if (!patch || !assembly) throw ParameterError("CmcFunctional::assembled: needs a patch functional and an assembly");
   CmcFunctional f;
   f.volume_ = VolumeForm::assembled(std::shared_ptr<const VolumeForm>(patch, &patch->volume_), assembly);
-  f.gram_ = assembled_matrix(*assembly, patch->gram_);
-  f.abs_gram_ = assembled_matrix(*assembly, patch->abs_gram_);
+  f.sgram_ = assembled_sparse(*assembly, patch->gram_);
+  f.sabs_gram_ = assembled_sparse(*assembly, patch->abs_gram_);
+  f.dense_ = std::make_shared<DenseGram>();
+  if (assembly->size <= kDenseAssembledGramPoints) {  // small: the dense products, as one patch
+    f.gram_ = assembled_matrix(*assembly, patch->gram_);
+    f.abs_gram_ = assembled_matrix(*assembly, patch->abs_gram_);
+  }
   return f;
 }
 
+const Eigen::MatrixXd& CmcFunctional::gram() const {
+  if (gram_.size() > 0 || !assembly()) return gram_;
+  std::call_once(dense_->once, [this] { dense_->M = Eigen::MatrixXd(sgram_); });
+  return dense_->M;
+}
+
 std::size_t CmcFunctional::memory_bytes() const {
-  return volume_.memory_bytes() + sizeof(double) * static_cast<std::size_t>(gram_.size());
+  return volume_.memory_bytes() + sizeof(double) * static_cast<std::size_t>(gram_.size()) +
+         (sizeof(double) + sizeof(int)) * static_cast<std::size_t>(sgram_.nonZeros() + sabs_gram_.nonZeros());
 }
 
 double CmcFunctional::dirichlet(const Eigen::MatrixX3d& P) const {
-  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  if (P.rows() != size()) throw SizeError("CmcFunctional: wrong number of points");
+  if (gram_.size() == 0) return 0.5 * (P.transpose() * Eigen::MatrixX3d(sgram_ * P)).trace();
   return 0.5 * (P.transpose() * gram_ * P).trace();
 }
 
@@ -80,8 +123,8 @@ double CmcFunctional::value(const Eigen::MatrixX3d& P, double H) const {
 }
 
 Eigen::MatrixX3d CmcFunctional::gradient(const Eigen::MatrixX3d& P, double H) const {
-  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
-  Eigen::MatrixX3d G = gram_ * P;
+  if (P.rows() != size()) throw SizeError("CmcFunctional: wrong number of points");
+  Eigen::MatrixX3d G = gram_.size() == 0 ? Eigen::MatrixX3d(sgram_ * P) : Eigen::MatrixX3d(gram_ * P);
   if (H != 0.0) G += 2.0 * H * volume_.gradient(P);
   return G;
 }
@@ -90,17 +133,18 @@ Eigen::MatrixXd CmcFunctional::hessian(const Eigen::MatrixX3d& P, double H, cons
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
   Eigen::MatrixXd Hs = Eigen::MatrixXd::Zero(3 * k, 3 * k);
   if (H != 0.0) Hs = 2.0 * H * volume_.hessian(P, idx);
+  const Eigen::MatrixXd& C = gram();
   for (Eigen::Index a = 0; a < k; ++a)
     for (Eigen::Index b = 0; b < k; ++b) {
-      const double c = gram_(idx[static_cast<size_t>(a)], idx[static_cast<size_t>(b)]);
+      const double c = C(idx[static_cast<size_t>(a)], idx[static_cast<size_t>(b)]);
       for (int r = 0; r < 3; ++r) Hs(3 * a + r, 3 * b + r) += c;
     }
   return Hs;
 }
 
 Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx) const {
-  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
-  const Eigen::MatrixX3d CP = times(gram_, P);
+  if (P.rows() != size()) throw SizeError("CmcFunctional: wrong number of points");
+  const Eigen::MatrixX3d CP = gram_.size() == 0 ? Eigen::MatrixX3d(sgram_ * P) : times(gram_, P);
   Eigen::MatrixX3d G = CP(idx, Eigen::all);
   if (H != 0.0) G += 2.0 * H * volume_.gradient_rows(P, idx);
   return G;
@@ -108,9 +152,11 @@ Eigen::MatrixX3d CmcFunctional::gradient_rows(const Eigen::MatrixX3d& P, double 
 
 double CmcFunctional::residual(const Eigen::MatrixX3d& P, double H, const std::vector<int>& idx, Eigen::MatrixX3d* Fout,
                                double* scale) const {
-  if (P.rows() != gram_.rows()) throw SizeError("CmcFunctional: wrong number of points");
+  if (P.rows() != size()) throw SizeError("CmcFunctional: wrong number of points");
   const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
-  const Eigen::MatrixX3d CP = times(gram_, P), CS = times(abs_gram_, P.cwiseAbs());
+  const Eigen::MatrixX3d CP = gram_.size() == 0 ? Eigen::MatrixX3d(sgram_ * P) : times(gram_, P);
+  const Eigen::MatrixX3d CS =
+      gram_.size() == 0 ? Eigen::MatrixX3d(sabs_gram_ * P.cwiseAbs()) : times(abs_gram_, P.cwiseAbs());
   Eigen::MatrixX3d F = CP(idx, Eigen::all), S = CS(idx, Eigen::all);
   if (H != 0.0) {
     Eigen::MatrixX3d GV, SV;

@@ -19,6 +19,7 @@
 // point indices idx use the entry 3a + c for (idx[a], coordinate c).
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <memory>
 #include <vector>
@@ -42,17 +43,21 @@ class CmcFunctional {
   static std::shared_ptr<const CmcFunctional> cached_triangular(int n);
   static std::shared_ptr<const CmcFunctional> cached_tensor(int n, int m);
   /// D_H of a surface of several patches (energies/patch_assembly.h) on its #global x 3 points:
-  /// the Gram is the patch's summed through the local -> global maps (dense, #global x #global),
+  /// the Gram is the patch's summed through the local -> global maps (held sparse, #global x
+  /// #global: sparse_gram(); up to 500 points also dense, with the dense products of one patch),
   /// the volume form VolumeForm::assembled; every method below then holds for the complex, with
   /// point indices and rows global. The residual's term sizes use the summed |C| of the patches.
   static CmcFunctional assembled(std::shared_ptr<const CmcFunctional> patch, std::shared_ptr<const PatchAssembly> assembly);
   /// The assembly of an assembled functional (null for a single patch).
   const std::shared_ptr<const PatchAssembly>& assembly() const { return volume_.assembly(); }
 
-  int size() const { return static_cast<int>(gram_.rows()); }
+  int size() const { return static_cast<int>(assembly() ? sgram_.rows() : gram_.rows()); }
   /// Dirichlet Gram C (N x N): D = 1/2 sum_c P_c^T C P_c. Triangular: eq. (2)–(4); tensor:
   /// kron(K_u, M_v) + kron(M_u, K_v) of the 1-D integrals ∫B_i' B_k' and ∫B_j B_l.
-  const Eigen::MatrixXd& gram() const { return gram_; }
+  /// An assembled functional forms this dense copy of its sparse Gram on the first call only.
+  const Eigen::MatrixXd& gram() const;
+  /// The assembled Gram, sparse (both triangles stored; empty for a single patch).
+  const Eigen::SparseMatrix<double>& sparse_gram() const { return sgram_; }
   const VolumeForm& volume_form() const { return volume_; }
   /// Bytes held (Gram + volume tables).
   std::size_t memory_bytes() const;
@@ -76,7 +81,10 @@ class CmcFunctional {
                   double* scale = nullptr) const;
 
  private:
-  Eigen::MatrixXd gram_, abs_gram_;
+  struct DenseGram;  // the dense copy of an assembled Gram, formed once on demand
+  Eigen::MatrixXd gram_, abs_gram_;                  // one patch
+  Eigen::SparseMatrix<double> sgram_, sabs_gram_;    // assembled
+  std::shared_ptr<DenseGram> dense_;
   VolumeForm volume_;
 };
 

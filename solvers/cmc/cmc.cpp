@@ -153,29 +153,48 @@ std::shared_ptr<const CmcFunctional> functional_for(const TensorNet& net) {
   return CmcFunctional::cached_tensor(net.n(), net.m());
 }
 
+namespace {
+
+// A Cholesky factor of the free Gram C_ff, shifted by up to 1e-2 of its diagonal where rounding
+// makes it indefinite; the identity where even that fails.
+Eigen::MatrixXd shifted_cholesky(const Eigen::MatrixXd& Cff) {
+  const Eigen::Index k = Cff.rows();
+  const double d = k ? Cff.diagonal().cwiseAbs().maxCoeff() : 1.0;
+  for (double shift = 1e-14; shift < 1e-2; shift *= 10) {
+    Eigen::LLT<Eigen::MatrixXd> llt(Cff + shift * d * Eigen::MatrixXd::Identity(k, k));
+    if (llt.info() == Eigen::Success) return llt.matrixL();
+  }
+  return Eigen::MatrixXd::Identity(k, k);
+}
+
+}  // namespace
+
 DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx) {
   const Eigen::MatrixXd& C = p.f->gram();
-  const int k = p.k();
   const Eigen::MatrixXd Cff = C(p.free, p.free), Cfx = C(p.free, fixed_idx);
   const Eigen::MatrixX3d Px = p.P(fixed_idx, Eigen::all);
   DirichletFactor f;
   f.gram = std::make_unique<SymFactor>(Cff);
   const Eigen::MatrixX3d Y = -f.gram->solve(Cfx * Px);
   p.P(p.free, Eigen::all) = Y;
-  if (f.gram->cholesky()) {
-    f.L = f.gram->matrixL();
-  } else {
-    const double d = k ? Cff.diagonal().cwiseAbs().maxCoeff() : 1.0;
-    for (double shift = 1e-14; shift < 1e-2; shift *= 10) {
-      Eigen::LLT<Eigen::MatrixXd> llt(Cff + shift * d * Eigen::MatrixXd::Identity(k, k));
-      if (llt.info() == Eigen::Success) {
-        f.L = llt.matrixL();
-        break;
-      }
-    }
-    if (f.L.size() == 0) f.L = Eigen::MatrixXd::Identity(k, k);
-  }
+  f.L = f.gram->cholesky() ? Eigen::MatrixXd(f.gram->matrixL()) : shifted_cholesky(Cff);
   return f;
+}
+
+Eigen::MatrixX3d DirichletFactor::solve(const Eigen::MatrixX3d& B) const {
+  if (!sparse) return gram->solve(B);
+  Eigen::MatrixX3d X(B.rows(), 3);
+  for (int c = 0; c < 3; ++c) X.col(c) = sparse->solve(B.col(c));
+  return X;
+}
+
+const Eigen::MatrixXd& preconditioner(DirichletFactor& f, const CmcProblem& p) {
+  if (f.L.size() == 0 && p.k() > 0) {
+    const Eigen::MatrixXd Cff = p.f->gram()(p.free, p.free);
+    Eigen::LLT<Eigen::MatrixXd> llt(Cff);
+    f.L = llt.info() == Eigen::Success ? Eigen::MatrixXd(llt.matrixL()) : shifted_cholesky(Cff);
+  }
+  return f.L;
 }
 
 TriangularNet make_net(const TriangularNet& data, const Eigen::MatrixX3d& P) {
@@ -238,12 +257,12 @@ Outcome dirichlet_outcome(const CmcProblem& p, const CmcOptions& o) {
 }
 
 // Tangent of the branch at H = 0: C_ff dY/dH = -2 dV/dP (free rows).
-Eigen::VectorXd initial_tangent(const CmcProblem& p, const SymFactor& gram) {
+Eigen::VectorXd initial_tangent(const CmcProblem& p, const DirichletFactor& gram) {
   Eigen::VectorXd tangent(3 * p.k());
   const Eigen::VectorXd gV = p.volume_gradient();
   Eigen::MatrixX3d G(p.k(), 3);
   for (int a = 0; a < p.k(); ++a) G.row(a) = gV.segment<3>(3 * a).transpose();
-  const Eigen::MatrixXd T = gram.solve(G);
+  const Eigen::MatrixX3d T = gram.solve(G);
   for (int a = 0; a < p.k(); ++a) tangent.segment<3>(3 * a) = -2.0 * T.row(a).transpose();
   return tangent;
 }
@@ -303,11 +322,12 @@ bool strict_minimum(const CmcProblem& p, double H, bool last, int corrector_pd, 
 // H mode, H != 0: continuation from the Dirichlet extremal in p.P to o.H. Predictor: the tangent;
 // corrector: the chosen solver; a step is accepted when the corrector converged, stayed on the
 // branch and the Hessian is positive definite. Adds the corrector iterations to summary.
-Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFactor& dir,
+Outcome continue_branch(CmcProblem& p, const CmcOptions& o, DirichletFactor& dir,
                         const std::vector<int>& fixed_idx, Summary& summary, int& continuation_steps) {
   const double Ht = o.H;
-  const bool gram_singular = !dir.gram->cholesky();
-  Eigen::VectorXd tangent = initial_tangent(p, *dir.gram);
+  const bool gram_singular = !dir.cholesky();
+  Eigen::VectorXd tangent = initial_tangent(p, dir);
+  const Eigen::MatrixXd& L = o.solver == CmcSolver::NLopt ? preconditioner(dir, p) : dir.L;
   Eigen::VectorXd y = p.get();
   StepController control(Ht, first_step(Ht, p.P, fixed_idx), o);
   int polish = 0;
@@ -323,7 +343,7 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, const DirichletFacto
     const bool last = step.hn == Ht;
     const Eigen::VectorXd pred = y + tangent * step.s;  // tangent predictor
     p.set(pred);
-    const CorrectorStats st = correct(p, step.hn, o, dir.L);
+    const CorrectorStats st = correct(p, step.hn, o, L);
     summary.iterations += st.iterations + st.polish_steps;
     Eigen::VectorXd next_tangent;
     if (st.ok && on_branch(y, pred, p.get()) && strict_minimum(p, step.hn, last, st.pd, next_tangent)) {
@@ -356,8 +376,8 @@ CmcResult<Net> solve_impl(const Net& data, const CmcOptions& o) {
     DirichletStart start = dirichlet_start(data, o);
     CmcProblem& p = start.p;
     const std::vector<int>& fixed_idx = start.fixed_idx;
-    const DirichletFactor& dir = start.dir;
-    const Outcome out = o.V          ? volume_solve(p, o, dir.L, res.summary)
+    DirichletFactor& dir = start.dir;
+    const Outcome out = o.V          ? volume_solve(p, o, preconditioner(dir, p), res.summary)
                         : o.H == 0.0 ? dirichlet_outcome(p, o)
                                      : continue_branch(p, o, dir, fixed_idx, res.summary, res.continuation_steps);
     finish(res, data, p, o, out);

@@ -11,10 +11,12 @@
 #include "bezierpde/core/fixed_set.h"
 #include "bezierpde/core/symmetric_factor.h"
 #include "bezierpde/energies/cmc.h"
+#include "bezierpde/solvers/cmc/area/sparse_terms.h"
 #include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde {
 class ComplexNet;  // solvers/cmc/complex_net.h
+struct PatchComplex;
 }
 
 namespace bpde::cmc_detail {
@@ -111,12 +113,39 @@ ComplexNet make_net(const ComplexNet& data, const Eigen::MatrixX3d& P);
 // Dirichlet extremal into p.P (Cholesky, or pivoted LDL^T when rounding makes the Bernstein Gram
 // indefinite). Returns the factor used for the tangent at H = 0 and a Cholesky factor L of the
 // (if needed slightly shifted) free Gram for the NLopt preconditioner.
+//
+// A complex with more than area_impl::kSparseFromCoordinates free coordinates (area/tuning.h) starts sparse
+// (dirichlet_solve_sparse): the free Gram is the sparse Gram of the complex (solvers/complex/
+// complex_extremal.h: complex_gram, the patches' Grams summed), factored by SparseSymFactor
+// (CHOLMOD; LDL^T where the Cholesky factor fails); `gram` is then null and `sparse` holds the
+// factor, and L is formed (dense) only when a route asks for it (preconditioner()).
 struct DirichletFactor {
   std::unique_ptr<SymFactor> gram;
+  std::shared_ptr<const SparseSymFactor> sparse;
   Eigen::MatrixXd L;
+
+  /// Cholesky factor of the free Gram (the test of a singular Gram).
+  bool cholesky() const { return sparse ? sparse->cholesky() : gram->cholesky(); }
+  /// C_ff^{-1} B (k x 3) by the factor held.
+  Eigen::MatrixX3d solve(const Eigen::MatrixX3d& B) const;
 };
 
 DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx);
+/// The sparse start of a complex (above); p.f is the complex's assembled D_H and `c` the complex
+/// (its points are not read: the fixed rows come from p.P). Falls back to dirichlet_solve when
+/// neither sparse factor succeeds.
+DirichletFactor dirichlet_solve_sparse(CmcProblem& p, const std::vector<int>& fixed_idx, const PatchComplex& c);
+/// The start of each net type: a complex above kSparseFromCoordinates free coordinates sparse.
+DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx, const ComplexNet& net);
+inline DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx, const TriangularNet&) {
+  return dirichlet_solve(p, fixed_idx);
+}
+inline DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx, const TensorNet&) {
+  return dirichlet_solve(p, fixed_idx);
+}
+/// The NLopt preconditioner L of `f` (formed from p's dense free Gram on first use after a
+/// sparse start).
+const Eigen::MatrixXd& preconditioner(DirichletFactor& f, const CmcProblem& p);
 
 /// The common start of the D_H and the A_H solves: the options and the degree checked, the problem
 /// on the free points of `data` (fixed rows checked finite, free rows zeroed) with the Dirichlet
@@ -135,7 +164,7 @@ DirichletStart dirichlet_start(const Net& data, const CmcOptions& o) {
                    data.fixed_indices(o.fixed), {}};
   require_finite_rows(s.p.P, s.fixed_idx, "cmc");
   for (int r : s.p.free) s.p.P.row(r).setZero();
-  s.dir = dirichlet_solve(s.p, s.fixed_idx);
+  s.dir = dirichlet_solve(s.p, s.fixed_idx, data);
   return s;
 }
 

@@ -15,9 +15,12 @@
 #include "bezierpde/core/errors.h"
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/energies/complex_functionals.h"
+#include "bezierpde/energies/energy_spec.h"
 #include "bezierpde/solvers/cmc/area/area_problem.h"
+#include "bezierpde/solvers/cmc/area/tuning.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
 #include "bezierpde/solvers/cmc/complex_cmc.h"
+#include "bezierpde/solvers/complex/complex_extremal.h"
 
 namespace bpde {
 namespace {
@@ -78,6 +81,36 @@ void check_degree(const ComplexNet& net, FixedSet fixed) {
 std::shared_ptr<const CmcFunctional> functional_for(const ComplexNet& net) { return net.functional(); }
 
 ComplexNet make_net(const ComplexNet& data, const Eigen::MatrixX3d& P) { return ComplexNet(data, P); }
+
+DirichletFactor dirichlet_solve_sparse(CmcProblem& p, const std::vector<int>& fixed_idx, const PatchComplex& c) {
+  // K = Σ_p S_pᵀ C_p S_p over all points (complex_extremal.h), split into K_ff and K_fx.
+  const Eigen::SparseMatrix<double> K = complex_gram(c, EnergySpec::dirichlet());
+  std::vector<int> position(static_cast<std::size_t>(K.rows()), -1);
+  for (int a = 0; a < p.k(); ++a) position[static_cast<std::size_t>(p.free[static_cast<std::size_t>(a)])] = a;
+  std::vector<Eigen::Triplet<double>> tf;
+  tf.reserve(static_cast<std::size_t>(K.nonZeros()));
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(p.k(), 3);
+  for (int col = 0; col < K.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, col); it; ++it) {
+      const int i = position[static_cast<std::size_t>(it.row())], j = position[static_cast<std::size_t>(col)];
+      if (i < 0) continue;
+      if (j >= 0) tf.emplace_back(i, j, it.value());
+      else rhs.row(i) -= it.value() * p.P.row(col);
+    }
+  Eigen::SparseMatrix<double> Kff(p.k(), p.k());
+  Kff.setFromTriplets(tf.begin(), tf.end());
+  auto factor = std::make_shared<SparseSymFactor>();
+  if (!factor->compute(Kff, /*ldlt_fallback=*/true)) return dirichlet_solve(p, fixed_idx);
+  DirichletFactor f;
+  f.sparse = factor;
+  p.P(p.free, Eigen::all) = f.solve(rhs);
+  return f;
+}
+
+DirichletFactor dirichlet_solve(CmcProblem& p, const std::vector<int>& fixed_idx, const ComplexNet& net) {
+  const bool sparse = 3 * p.k() > area_impl::kSparseFromCoordinates && complex_gram_entries(net.complex()) <= kMaxComplexGramEntries;
+  return sparse ? dirichlet_solve_sparse(p, fixed_idx, net.complex()) : dirichlet_solve(p, fixed_idx);
+}
 
 namespace {
 

@@ -11,7 +11,9 @@
 
 #include "bezierpde/complex/refine.h"
 #include "bezierpde/energies/complex_functionals.h"
+#include "bezierpde/solvers/cmc/cmc_problem.h"
 #include "bezierpde/solvers/cmc/complex_cmc.h"
+#include "bezierpde/solvers/cmc/complex_net.h"
 #include "tests/cmc/cmc_test_util.h"
 #include "tests/cmc/complex_test_util.h"
 
@@ -214,6 +216,71 @@ TEST(ComplexCmc, CatenoidOnTheRefinedRingSolvesOnSparseMatrices) {
   EXPECT_LT(std::abs(r.A - 5.99179697580228), 6e-9);
   const MeanCurvatureStats h = mean_curvature_stats(r.net);
   EXPECT_LT(std::max(std::abs(h.min), std::abs(h.max)), 5e-5);  // measured 1.4e-5 (1/R ~ 1)
+}
+
+// The sparse start of a complex (cmc_problem.h, dirichlet_solve_sparse: the complex's sparse Gram,
+// CHOLMOD) against the dense one (the assembled Gram, dense Cholesky) on mid-size complexes: the
+// same Dirichlet extremal and the same solves with the free Gram (the tangent at H = 0).
+void expect_sparse_start_matches_dense(const PatchComplex& c) {
+  const ComplexNet net(c);
+  const std::vector<int> fixed = net.fixed_indices(FixedSet::Boundary);
+  cmc_detail::CmcProblem dense{net.functional(), net.free_indices(FixedSet::Boundary), net.points()};
+  for (int r : dense.free) dense.P.row(r).setZero();
+  cmc_detail::CmcProblem sparse = dense;
+  const cmc_detail::DirichletFactor fd = cmc_detail::dirichlet_solve(dense, fixed);
+  const cmc_detail::DirichletFactor fs = cmc_detail::dirichlet_solve_sparse(sparse, fixed, c);
+  ASSERT_TRUE(fs.sparse);
+  EXPECT_FALSE(fs.gram);
+  EXPECT_TRUE(fd.cholesky());
+  EXPECT_TRUE(fs.cholesky());
+  const double size = dense.P.cwiseAbs().maxCoeff();
+  EXPECT_GT(size, 0.5);
+  EXPECT_LT((sparse.P - dense.P).cwiseAbs().maxCoeff(), 1e-11 * size);
+  // the extremal: the free rows of ∇D vanish (to rounding of the terms' size)
+  EXPECT_LT(dense.residual(0.0), 1e-11);
+  EXPECT_LT(sparse.residual(0.0), 1e-11);
+  // the free Gram's solves agree (the tangent at H = 0, initial_tangent)
+  const Eigen::MatrixX3d B = Eigen::MatrixX3d::Random(dense.k(), 3);
+  const Eigen::MatrixX3d Xd = fd.solve(B), Xs = fs.solve(B);
+  EXPECT_LT((Xs - Xd).cwiseAbs().maxCoeff(), 1e-9 * Xd.cwiseAbs().maxCoeff());
+  // and the preconditioner formed on demand is a Cholesky factor of the free Gram
+  cmc_detail::DirichletFactor fl = cmc_detail::dirichlet_solve_sparse(sparse, fixed, c);
+  const Eigen::MatrixXd& L = cmc_detail::preconditioner(fl, sparse);
+  const Eigen::MatrixXd Cff = net.functional()->gram()(dense.free, dense.free);
+  EXPECT_LT((L * L.transpose() - Cff).cwiseAbs().maxCoeff(), 1e-12 * Cff.cwiseAbs().maxCoeff());
+}
+
+TEST(ComplexCmc, SparseAndDenseStartsAgreeOnTheRefinedRing) {
+  const PatchComplex c = refine_h(refine_h(circle_ring(4, 4, 0.5)));  // 64 tensor patches
+  ASSERT_GT(3 * complex_free_rows(c).size(), 1500u);
+  expect_sparse_start_matches_dense(c);
+}
+
+TEST(ComplexCmc, SparseAndDenseStartsAgreeOnTheRefinedFan) {
+  expect_sparse_start_matches_dense(refine_h(circle_fan(6, 6)));  // 24 triangular patches
+}
+
+// The D_H route above the sparse threshold (the ring of 4 patches at degree 12, 1584 free
+// coordinates): the continuation starts from the sparse factor's tangent, and the Newton and the
+// NLopt correctors (the latter with the preconditioner formed on demand) reach the same critical
+// point, away from the H = 0 extremal.
+TEST(ComplexCmc, DirichletFunctionalFromTheSparseStartAgreesAcrossCorrectors) {
+  const PatchComplex c = circle_ring(4, 12, 0.5);
+  ASSERT_GT(3 * complex_free_rows(c).size(), 1500u);
+  CmcOptions o = cmc_options(CmcFunctionalKind::Dirichlet, 0.3);
+  o.tolerance = 1e-12;
+  o.solver = CmcSolver::Newton;
+  const CmcResult<PatchComplex> rn = solve_cmc(c, o);
+  o.solver = CmcSolver::NLopt;
+  const CmcResult<PatchComplex> rl = solve_cmc(c, o);
+  ASSERT_TRUE(rn.summary.converged) << rn.summary.message;
+  ASSERT_TRUE(rl.summary.converged) << rl.summary.message;
+  EXPECT_GT(rn.continuation_steps, 0);
+  // measured: V and D agree to 3e-12, the points to 1.7e-6 (the degree-12 Gram's soft modes)
+  EXPECT_NEAR(rn.V, rl.V, 1e-9);
+  EXPECT_NEAR(rn.D, rl.D, 1e-9);
+  EXPECT_LT((rn.net.points - rl.net.points).cwiseAbs().maxCoeff(), 2e-5);
+  EXPECT_GT(std::abs(rn.V - solve_cmc(c, cmc_options(CmcFunctionalKind::Dirichlet, 0.0)).V), 1e-3);
 }
 
 }  // namespace
