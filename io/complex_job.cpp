@@ -94,7 +94,9 @@ ComplexJobData complex_from_json(const Json& j, const std::string& path, FitMeth
   require_object(j, path);
   check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "loops", "layout", "fit", "corner_tolerance",
                        "continuity"});
-  const auto [kind, n] = complex_patch_and_degree(j, path);
+  const std::pair<PatchKind, int> patch_and_degree = complex_patch_and_degree(j, path);
+  const PatchKind kind = patch_and_degree.first;  // (not a structured binding: lambdas capture these)
+  const int n = patch_and_degree.second;
   ComplexJobData data;
   if (j.contains("refine")) data.refine = integer(j["refine"], path + ".refine");
   if (data.refine < 0 || data.refine > kMaxComplexRefine)

@@ -110,7 +110,9 @@ ComplexNetFile complex_net_from_json(const Json& j, const std::string& path) {
   check_keys(j, path, {"type", "patch", "degree", "refine", "refit", "patches", "layout"});
   const std::string type = string(field(j, path, "type"), path + ".type");
   if (type != "complex") throw ParseError(path + ".type: expected \"complex\", got \"" + type + "\"");
-  const auto [kind, n] = complex_patch_and_degree(j, path);
+  const std::pair<PatchKind, int> patch_and_degree = complex_patch_and_degree(j, path);
+  const PatchKind kind = patch_and_degree.first;  // (not a structured binding: lambdas capture these)
+  const int n = patch_and_degree.second;
   const std::string patch = patch_kind_name(kind);
   ComplexNetFile out;
   if (j.contains("refine")) out.refine = integer(j["refine"], path + ".refine");
