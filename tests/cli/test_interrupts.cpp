@@ -34,7 +34,14 @@ std::string tensor_net(int n) {
     for (int j = 0; j <= n; ++j) {
       if (i || j) s += ", ";
       const double x = static_cast<double>(i) / n, y = static_cast<double>(j) / n;
-      s += "[" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(0.2 * std::sin(3 * x) * std::cos(2 * y)) + "]";
+      // appended piece by piece: GCC 12's -Wrestrict misreads "literal" + std::to_string(...)
+      s += '[';
+      s += std::to_string(x);
+      s += ", ";
+      s += std::to_string(y);
+      s += ", ";
+      s += std::to_string(0.2 * std::sin(3 * x) * std::cos(2 * y));
+      s += ']';
     }
   return s + "]}";
 }
