@@ -25,12 +25,6 @@ std::vector<Loop> loops_from_json(const Json& j, const std::string& path) {
   return loops;
 }
 
-std::vector<int> ints(const Json& j, const std::string& path) {
-  if (!j.is_array()) throw ParseError(path + ": expected an array of integers");
-  std::vector<int> v;
-  for (std::size_t k = 0; k < j.size(); ++k) v.push_back(json_read::integer(j[k], path + "[" + std::to_string(k) + "]"));
-  return v;
-}
 
 /// The user's layout: {"vertices": [[x,y,z], ...], "faces": [[a,b,c(,d)], ...],
 /// "boundary": [{"from": a, "to": b, "loop": l, "curve": k, "range": [t0, t1]}, ...]}.
@@ -39,12 +33,7 @@ LoopComplex user_layout(const Json& j, const std::string& path, PatchKind kind, 
   using namespace json_read;
   require_object(j, path);
   check_keys(j, path, {"vertices", "faces", "boundary"});
-  Layout L;
-  L.kind = kind;
-  L.vertices = points(field(j, path, "vertices"), path + ".vertices");
-  const Json& faces = field(j, path, "faces");
-  if (!faces.is_array()) throw ParseError(path + ".faces: expected an array of faces");
-  for (std::size_t f = 0; f < faces.size(); ++f) L.faces.push_back(ints(faces[f], path + ".faces[" + std::to_string(f) + "]"));
+  const Layout L = layout_vertices_and_faces_from_json(j, path, kind);
   const Json& boundary = field(j, path, "boundary");
   if (!boundary.is_array()) throw ParseError(path + ".boundary: expected an array of boundary edges");
   std::vector<LayoutBoundaryEdge> edges;

@@ -16,26 +16,11 @@ namespace {
 
 std::string at(const std::string& path, std::size_t k) { return path + "[" + std::to_string(k) + "]"; }
 
-std::vector<int> ints(const Json& j, const std::string& path) {
-  if (!j.is_array()) throw ParseError(path + ": expected an array of integers");
-  std::vector<int> v;
-  for (std::size_t k = 0; k < j.size(); ++k) v.push_back(json_read::integer(j[k], at(path, k)));
-  return v;
-}
 
 Layout layout_from_json(const Json& j, const std::string& path, PatchKind kind) {
-  using namespace json_read;
-  require_object(j, path);
-  check_keys(j, path, {"vertices", "faces", "boundary"});
-  Layout L;
-  L.kind = kind;
-  L.vertices = points(field(j, path, "vertices"), path + ".vertices");
-  const Json& faces = field(j, path, "faces");
-  if (!faces.is_array()) throw ParseError(path + ".faces: expected an array of faces");
-  if (faces.size() > static_cast<std::size_t>(kMaxComplexPatches))
-    throw SizeError(path + ".faces: at most " + std::to_string(kMaxComplexPatches) + " faces, got " +
-                    std::to_string(faces.size()));
-  for (std::size_t f = 0; f < faces.size(); ++f) L.faces.push_back(ints(faces[f], at(path + ".faces", f)));
+  json_read::require_object(j, path);
+  json_read::check_keys(j, path, {"vertices", "faces", "boundary"});
+  Layout L = layout_vertices_and_faces_from_json(j, path, kind);
   at_path(path, [&] { validate_layout(L); });
   return L;
 }
@@ -79,6 +64,26 @@ std::pair<PatchKind, int> complex_patch_and_degree(const Json& j, const std::str
     throw DegreeError(path + ".degree: a complex takes degrees 1.." + std::to_string(kMaxComplexExtremalDegree) +
                       " (the Bernstein Gram systems lose a digit per degree), got " + std::to_string(n));
   return {patch == "triangular" ? PatchKind::triangular : PatchKind::tensor, n};
+}
+
+Layout layout_vertices_and_faces_from_json(const Json& j, const std::string& path, PatchKind kind) {
+  using namespace json_read;
+  Layout L;
+  L.kind = kind;
+  L.vertices = points(field(j, path, "vertices"), path + ".vertices");
+  const Json& faces = field(j, path, "faces");
+  if (!faces.is_array()) throw ParseError(path + ".faces: expected an array of faces");
+  if (faces.size() > static_cast<std::size_t>(kMaxComplexPatches))
+    throw SizeError(path + ".faces: at most " + std::to_string(kMaxComplexPatches) + " faces, got " +
+                    std::to_string(faces.size()));
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const std::string fp = at(path + ".faces", f);
+    if (!faces[f].is_array()) throw ParseError(fp + ": expected an array of integers");
+    std::vector<int> face;
+    for (std::size_t k = 0; k < faces[f].size(); ++k) face.push_back(integer(faces[f][k], at(fp, k)));
+    L.faces.push_back(std::move(face));
+  }
+  return L;
 }
 
 LayoutBoundaryEdge layout_boundary_edge_from_json(const Json& b, const std::string& bp) {

@@ -67,6 +67,11 @@ Json complex_net_to_json(const ComplexNetFile& c);
 /// 1..kMaxComplexExtremalDegree.
 std::pair<PatchKind, int> complex_patch_and_degree(const Json& j, const std::string& path);
 
+/// A layout's "vertices" ([[x, y, z], ...]) and "faces" ([[a, b, c(, d)], ...]) of the object j,
+/// nothing else read or checked: ParseError on wrong JSON types, NonFiniteError on a non-finite
+/// coordinate, SizeError for more than kMaxComplexPatches faces.
+Layout layout_vertices_and_faces_from_json(const Json& j, const std::string& path, PatchKind kind);
+
 /// One entry of layout.boundary, {"from": a, "to": b, "loop": l, "curve": k, "range": [t0, t1]}
 /// ("range" optional): ParseError on unknown fields or wrong types, ParameterError on a negative
 /// loop or curve index. The edge is not checked against a layout here.

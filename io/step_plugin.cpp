@@ -108,6 +108,15 @@ int write_shape(const TopoDS_Shape& shape, const char* path, char* message, size
   return BPDE_STEP_OK;
 }
 
+// The shape a STEP file holds (all its roots transferred); false when the file cannot be read.
+bool read_shape(const char* path, TopoDS_Shape& shape) {
+  STEPControl_Reader reader;
+  if (reader.ReadFile(path) != IFSelect_RetDone) return false;
+  reader.TransferRoots();
+  shape = reader.OneShape();
+  return true;
+}
+
 // An entry point's body with OpenCASCADE silenced and every exception turned into a status and
 // message: nothing may leave the plugin's C interface as an exception.
 template <class Body>
@@ -146,10 +155,8 @@ __attribute__((visibility("default"))) int bpde_step_plugin_read(const char* pat
                                                                  bpde_step_readback* out, double* points,
                                                                  char* message, size_t size) {
   return guarded(message, size, [&]() -> int {
-    STEPControl_Reader reader;
-    if (reader.ReadFile(path) != IFSelect_RetDone) return fail(BPDE_STEP_FILE, "cannot read STEP file", message, size);
-    reader.TransferRoots();
-    const TopoDS_Shape shape = reader.OneShape();
+    TopoDS_Shape shape;
+    if (!read_shape(path, shape)) return fail(BPDE_STEP_FILE, "cannot read STEP file", message, size);
     *out = bpde_step_readback{};
     out->surface = 2;
     TopoDS_Face first;
@@ -200,10 +207,8 @@ __attribute__((visibility("default"))) int bpde_step_plugin_write_shell(const bp
 __attribute__((visibility("default"))) int bpde_step_plugin_topology(const char* path, bpde_step_topology* out,
                                                                      char* message, size_t size) {
   return guarded(message, size, [&]() -> int {
-    STEPControl_Reader reader;
-    if (reader.ReadFile(path) != IFSelect_RetDone) return fail(BPDE_STEP_FILE, "cannot read STEP file", message, size);
-    reader.TransferRoots();
-    const TopoDS_Shape shape = reader.OneShape();
+    TopoDS_Shape shape;
+    if (!read_shape(path, shape)) return fail(BPDE_STEP_FILE, "cannot read STEP file", message, size);
     *out = bpde_step_topology{};
     if (shape.IsNull()) return BPDE_STEP_OK;
     out->valid = BRepCheck_Analyzer(shape).IsValid() ? 1 : 0;
