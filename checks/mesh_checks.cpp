@@ -20,11 +20,14 @@
 //     surface must be closed up to those loops; each loop is capped by a fan from its centroid,
 //     whose contribution is -(1/3) <c - o, A> with A the loop's area vector.
 //  7. cone volume: (1/6) sum det(a, b, c) over the input triangles, in input coordinates.
+// Step 4 first tries the projection proof (checks/mesh_checks.h): one disk whose projection along
+// a coordinate axis is injective has no self-intersection, and the pairwise tests are skipped.
 #include "bezierpde/checks/mesh_checks.h"
 
 #include "bezierpde/core/eigen.h"
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
+#include <CGAL/Intersections_2/Segment_2_Segment_2.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -381,6 +384,101 @@ bool is_closed_manifold(const std::vector<Tri>& tris, const EdgeMap& de, int num
   return true;
 }
 
+// ------------------------------------------------------------------ projection proof
+using Point2 = Kernel::Point_2;
+using Segment2 = Kernel::Segment_2;
+
+/// The one loop of the algebraic boundary of the soup (the directed edges of net multiplicity
+/// +1, followed from vertex to vertex), or empty when an edge has multiplicity beyond +-1, a
+/// vertex has more than one boundary edge out or in, or the boundary edges are not one loop.
+std::vector<int> single_boundary_loop(const EdgeMap& de, int num_vertices) {
+  std::vector<int> next(static_cast<std::size_t>(num_vertices), -1), in(static_cast<std::size_t>(num_vertices), 0);
+  std::size_t edges = 0;
+  int first = -1;
+  for (const auto& e : de.edges) {
+    const int net = e.forward - e.backward;
+    if (net == 0) continue;
+    if (net > 1 || net < -1) return {};
+    const int from = net > 0 ? e.a : e.b, to = net > 0 ? e.b : e.a;
+    if (next[static_cast<std::size_t>(from)] >= 0 || in[static_cast<std::size_t>(to)]++ > 0) return {};
+    next[static_cast<std::size_t>(from)] = to;
+    if (first < 0) first = from;
+    ++edges;
+  }
+  if (edges < 3) return {};
+  std::vector<int> loop;
+  loop.reserve(edges);
+  int v = first;
+  do {
+    loop.push_back(v);
+    v = next[static_cast<std::size_t>(v)];
+  } while (v >= 0 && v != first && loop.size() <= edges);
+  if (v != first || loop.size() != edges) return {};
+  return loop;
+}
+
+/// The closed polygon q[0], q[1], ..., q[m-1] is simple (exact predicates): its points are
+/// distinct, adjacent segments meet only at their common point, non-adjacent ones not at all.
+bool simple_polygon(const std::vector<Point2>& q) {
+  const std::size_t m = q.size();
+  std::vector<Point2> sorted(q);
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  for (std::size_t i = 0; i < m; ++i) {
+    const Point2 &a = q[(i + m - 1) % m], &b = q[i], &c = q[(i + 1) % m];
+    if (CGAL::collinear(a, b, c) && !CGAL::collinear_are_strictly_ordered_along_line(a, b, c)) return false;
+  }
+  // non-adjacent segments: a sweep over the segments sorted by their smallest x
+  struct Seg {
+    double x0, x1, y0, y1;
+    std::size_t i;
+  };
+  std::vector<Seg> seg(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const Point2 &a = q[i], &b = q[(i + 1) % m];
+    seg[i] = {std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y()), i};
+  }
+  std::sort(seg.begin(), seg.end(), [](const Seg& s, const Seg& t) { return s.x0 < t.x0; });
+  for (std::size_t s = 0; s < m; ++s)
+    for (std::size_t t = s + 1; t < m && seg[t].x0 <= seg[s].x1; ++t) {
+      const std::size_t i = seg[s].i, j = seg[t].i, d = i > j ? i - j : j - i;
+      if (d == 1 || d == m - 1) continue;  // adjacent: checked above
+      if (seg[t].y0 > seg[s].y1 || seg[s].y0 > seg[t].y1) continue;
+      if (CGAL::do_intersect(Segment2(q[i], q[(i + 1) % m]), Segment2(q[j], q[(j + 1) % m]))) return false;
+    }
+  return true;
+}
+
+/// The projection proof of checks/mesh_checks.h: true when the soup is one disk whose projection
+/// along one coordinate axis is injective (hence no two triangles intersect).
+bool embedded_by_projection(const std::vector<Tri>& tris, const std::vector<Point>& P, const EdgeMap& de) {
+  if (tris.empty()) return false;
+  const std::vector<int> loop = single_boundary_loop(de, static_cast<int>(P.size()));
+  if (loop.empty()) return false;
+  Eigen::Vector3d area = Eigen::Vector3d::Zero();
+  auto at = [&](int v) { return Eigen::Vector3d(P[v].x(), P[v].y(), P[v].z()); };
+  for (const auto& t : tris) area += (at(t[1]) - at(t[0])).cross(at(t[2]) - at(t[0]));
+  std::array<int, 3> axes{0, 1, 2};
+  std::sort(axes.begin(), axes.end(), [&](int a, int b) { return std::abs(area[a]) > std::abs(area[b]); });
+  for (int k : axes) {
+    if (!(std::abs(area[k]) > 0)) break;
+    auto q = [&](int v) { return Point2(P[v][(k + 1) % 3], P[v][(k + 2) % 3]); };
+    const CGAL::Orientation expected = area[k] > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+    bool ok = true;
+    for (const auto& t : tris)
+      if (CGAL::orientation(q(t[0]), q(t[1]), q(t[2])) != expected) {
+        ok = false;
+        break;
+      }
+    if (!ok) continue;
+    std::vector<Point2> polygon;
+    polygon.reserve(loop.size());
+    for (int v : loop) polygon.push_back(q(v));
+    if (simple_polygon(polygon)) return true;
+  }
+  return false;
+}
+
 double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) { return a.dot(b.cross(c)); }
 
 /// Volume of the soup closed by planar caps over its boundary loops, or empty when the boundary
@@ -530,10 +628,12 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
   }
 
   progress(kPairsFrom);
-  std::tie(report.self_intersections, report.box_pairs) = count_self_intersections(
-      tris, P, options.broad_phase, [&](double f) { progress(kListed + f * (kPairsTo - kListed)); });
-  progress(kPairsTo);
   const auto de = directed_edges(tris);
+  report.embedded_by_projection = options.projection_proof && embedded_by_projection(tris, P, de);
+  if (!report.embedded_by_projection)
+    std::tie(report.self_intersections, report.box_pairs) = count_self_intersections(
+        tris, P, options.broad_phase, [&](double f) { progress(kListed + f * (kPairsTo - kListed)); });
+  progress(kPairsTo);
   report.closed = is_closed_manifold(tris, de, nm);
   progress(kClosed);
   report.volume = capped_volume(tris, de, Y, o, report.closed);
