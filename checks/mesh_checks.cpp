@@ -87,16 +87,26 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
       return h;
     }
   };
-  // cell -> last point inserted in it; next_in_cell chains the others
-  std::unordered_map<std::array<std::int64_t, 3>, int, CellHash> grid;
-  grid.reserve(static_cast<std::size_t>(n) * 2);
+  // cell -> last point inserted in it (open addressing: a power-of-2 table of at least twice the
+  // points, linear probing); next_in_cell chains the others
+  using Key = std::array<std::int64_t, 3>;
+  std::size_t slots = 16;
+  while (slots < 2 * static_cast<std::size_t>(n)) slots *= 2;
+  std::vector<Key> keys(slots);
+  std::vector<int> head(slots, -1);
+  auto slot_of = [&](const Key& key) {
+    std::size_t at = (CellHash{}(key) * 0x9e3779b97f4a7c15ull) >> 20 & (slots - 1);
+    while (head[at] >= 0 && (keys[at][0] != key[0] || keys[at][1] != key[1] || keys[at][2] != key[2]))
+      at = (at + 1) & (slots - 1);
+    return at;  // the key's slot, or the empty slot where it goes
+  };
   std::vector<int> next_in_cell(n, -1);
   const double tol2 = tol * tol;
   const int every = std::max(1, n / 50);
   for (int i = 0; i < n; ++i) {
     if (i % every == 0 && i > 0) step(static_cast<double>(i) / n);
     if ((p[i].array() < lo.array()).any() || (p[i].array() > hi.array()).any()) continue;
-    std::array<std::int64_t, 3> c{0, 0, 0}, side{0, 0, 0};
+    Key c{0, 0, 0}, side{0, 0, 0};
     if (cell > 0)
       for (int a = 0; a < 3; ++a) {
         // (p - lo) / cell <= diagonal / (2e-10 diagonal): no overflow of the cell index
@@ -106,22 +116,19 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
       }
     for (int mask = 0; mask < 8; ++mask) {
       if (cell == 0 && mask) break;
-      const std::array<std::int64_t, 3> key{c[0] + ((mask & 1) ? side[0] : 0), c[1] + ((mask & 2) ? side[1] : 0),
-                                            c[2] + ((mask & 4) ? side[2] : 0)};
-      auto it = grid.find(key);
-      if (it == grid.end()) continue;
-      for (int j = it->second; j >= 0; j = next_in_cell[j]) {
+      const Key key{c[0] + ((mask & 1) ? side[0] : 0), c[1] + ((mask & 2) ? side[1] : 0),
+                    c[2] + ((mask & 4) ? side[2] : 0)};
+      for (int j = head[slot_of(key)]; j >= 0; j = next_in_cell[j]) {
         if ((p[i] - p[j]).squaredNorm() <= tol2) {
           const int ri = find_root(parent, i), rj = find_root(parent, j);
           if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
         }
       }
     }
-    auto [it, inserted] = grid.try_emplace(c, i);
-    if (!inserted) {
-      next_in_cell[i] = it->second;
-      it->second = i;
-    }
+    const std::size_t at = slot_of(c);
+    next_in_cell[i] = head[at];
+    keys[at] = c;
+    head[at] = i;
   }
   std::vector<int> rep(n);
   for (int i = 0; i < n; ++i) rep[i] = find_root(parent, i);
@@ -326,16 +333,29 @@ struct EdgeMap {
   std::vector<Entry> edges;
 };
 
-EdgeMap directed_edges(const std::vector<Tri>& tris) {
-  std::vector<std::uint64_t> all;
-  all.reserve(tris.size() * 3);
+EdgeMap directed_edges(const std::vector<Tri>& tris, int num_vertices) {
+  // the keys sorted: a counting sort by the low vertex, then each (short) run by insertion
+  std::vector<int> start(static_cast<std::size_t>(num_vertices) + 1, 0);
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) ++start[static_cast<std::size_t>(std::min(t[k], t[(k + 1) % 3])) + 1];
+  for (int v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
+  std::vector<std::uint64_t> all(tris.size() * 3);
+  std::vector<int> fill(start.begin(), start.end() - 1);
   for (const auto& t : tris)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
       const auto lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
-      all.push_back(((static_cast<std::uint64_t>(lo) << 32 | hi) << 1) | (a > b ? 1u : 0u));
+      all[static_cast<std::size_t>(fill[lo]++)] = ((static_cast<std::uint64_t>(lo) << 32 | hi) << 1) | (a > b ? 1u : 0u);
     }
-  std::sort(all.begin(), all.end());
+  for (int v = 0; v < num_vertices; ++v) {
+    const auto first = all.begin() + start[v], last = all.begin() + start[v + 1];
+    if (last - first <= 16) {
+      for (auto i = first + 1; i < last; ++i)
+        for (auto j = i; j > first && *(j - 1) > *j; --j) std::iter_swap(j - 1, j);
+    } else {
+      std::sort(first, last);
+    }
+  }
   EdgeMap e;
   e.edges.reserve(all.size() / 2 + 1);
   for (std::size_t s = 0, f = 0; s < all.size(); s = f) {
@@ -628,7 +648,7 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
   }
 
   progress(kPairsFrom);
-  const auto de = directed_edges(tris);
+  const auto de = directed_edges(tris, nm);
   report.embedded_by_projection = options.projection_proof && embedded_by_projection(tris, P, de);
   if (!report.embedded_by_projection)
     std::tie(report.self_intersections, report.box_pairs) = count_self_intersections(
