@@ -143,8 +143,10 @@ std::vector<Case> cases() {
                {3, 4, 6, 8}, {0, 1, 2}, {{3, 0}, {3, 1}, {3, 2}, {4, 0}, {4, 1}, {6, 0}, {8, 0}}});
   c.push_back({"rectangle", "the 4 x 0.5 rectangle at H = 0.2 (8 x 1 squares, the Dirichlet functional)", "", nullptr,
                std::nullopt, std::nullopt, {}, {4, 6, 8}, {0, 1}, {{4, 0}, {4, 1}, {6, 0}, {6, 1}, {8, 0}, {8, 1}}});
-  c.push_back({"rectangle-area", "the 4 x 0.5 rectangle at H = 0.2 (8 x 1 squares, the area functional)", "rectangle",
-               Json{{"kind", "cmc"}, {"H", 0.2}, {"functional", "area"}}, std::nullopt, std::nullopt, {}, {4, 6, 8},
+  // (start dirichlet: mean-curvature-start gives way on this job after 75 s of CPU, docs/complex.md)
+  c.push_back({"rectangle-area", "the 4 x 0.5 rectangle at H = 0.2 (8 x 1 squares, the area functional, start dirichlet)",
+               "rectangle", Json{{"kind", "cmc"}, {"H", 0.2}, {"functional", "area"}, {"start", "dirichlet"}}, std::nullopt,
+               std::nullopt, {}, {4, 6, 8},
                {0, 1}, {{4, 0}, {6, 0}}});
   // The Dirichlet extremal of the unit circle (cap-circle.json's boundary, interpolation fits): a
   // planar disc, whose area error is the boundary fits' alone; dist: its largest |z|.
