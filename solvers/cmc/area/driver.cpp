@@ -247,7 +247,7 @@ struct Driver {
   }
 };
 
-/// Triangular complexes solved dense (at most kSparseFromCoordinates free coordinates), H form: a converged end taken on towards kComplexPolishFactor × the tolerance by the
+/// Triangular complexes of at most kComplexPolishCoordinates free coordinates, H form: a converged end taken on towards kComplexPolishFactor × the tolerance by the
 /// final phases, on a rule chosen for that tolerance. On the fans of triangles the surface's
 /// distance from the exact one is 1e3 … 1e4 × the first variation (the soft modes are nearly
 /// reparametrisations: the residual they hold leaves the parametrisation, and with it the surface,
@@ -259,9 +259,9 @@ void polish(AreaSolve<Net>& s, const AreaOutcome& out, const CmcOptions& o, Summ
             std::string& note) {
   if constexpr (std::is_same_v<Net, ComplexNet>) {
     // Triangular fans, dense: the tensor ring's soft modes do not hold its surface back (the
-    // catenoid at degree 8: 6.6e-10 from the exact surface at the tolerance), and on the sparse
-    // complexes the dense phases would cost tens of seconds.
-    if (!out.ok || o.V || !s.tri || s.p.sparse) return;
+    // catenoid at degree 8: 6.6e-10 from the exact surface at the tolerance), and on the larger
+    // complexes the dense phases cost minutes (kComplexPolishCoordinates).
+    if (!out.ok || o.V || !s.tri || s.p.sparse || 3 * s.p.k() > kComplexPolishCoordinates) return;
     CmcOptions deep = o;
     deep.tolerance = std::max(kComplexPolishFloor, kComplexPolishFactor * o.tolerance);
     if (!(deep.tolerance < o.tolerance)) return;

@@ -131,6 +131,10 @@ inline constexpr int kDenseFinalPhasesLimit = 3000;
 /// × 1e3 … 1e4).
 inline constexpr double kComplexPolishFactor = 1e-2;
 inline constexpr double kComplexPolishFloor = 1e-14;
+/// The polish runs on complexes of at most this many free coordinates: the fan of 6 up to degree 8
+/// and the fan refined once at degree 4 (507 each; 6 s of CPU on top at degree 8). The fan refined
+/// twice at degree 3 (1191) took 72 s of CPU with it, 28 s without.
+inline constexpr int kComplexPolishCoordinates = 600;
 
 /// A complex with more free coordinates than this is solved with sparse matrices (sparse_terms.h);
 /// below, the dense ones of a single patch are as fast (the fan of 6 triangles at n = 8: 507
