@@ -214,6 +214,9 @@ struct Outcome {
   bool ok = false;
   Status why = Status::NoConvergence;  ///< the reason when !ok
   std::string message;
+  /// Eq. (11)'s residual at p.P and H as CmcFunctional::residual computes it, where the corrector
+  /// that ended there computed it (NaN: finish() computes it).
+  double residual = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The result from p.P at out.H. Never reports a net as converged unless eq. (11) holds to the
@@ -227,7 +230,7 @@ void finish(CmcResult<Net>& res, const Net& data, const CmcProblem& p, const Cmc
   res.energy = res.DH;
   res.A = area(make_net(data, p.P));
   res.net = make_net(data, p.P);
-  res.summary.residual = p.residual(out.H);
+  res.summary.residual = std::isnan(out.residual) ? p.residual(out.H) : out.residual;
   if (out.ok && !(res.summary.residual <= o.tolerance)) {
     out.ok = false;
     out.why = Status::NumericalLimit;
@@ -400,6 +403,7 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, DirichletFactor& dir
   Eigen::VectorXd y = p.get();
   StepController control(Ht, first_step(Ht, p.P, fixed_idx), o);
   int polish = 0;
+  double final_residual = std::numeric_limits<double>::quiet_NaN();  // the corrector's, at the last point accepted
   while (!control.reached_target()) {
     if (!control.attempt()) {
       p.set(y);
@@ -418,6 +422,7 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, DirichletFactor& dir
     if (st.ok && on_branch(y, pred, p.get()) && strict_minimum(p, step.hn, last, st.pd, next_series)) {
       polish += st.polish_steps;
       y = p.get();
+      final_residual = st.residual;
       if (!last) series = std::move(next_series);
       ++continuation_steps;
       control.accept(step, st.iterations);
@@ -432,7 +437,7 @@ Outcome continue_branch(CmcProblem& p, const CmcOptions& o, DirichletFactor& dir
   std::string msg = "reached H = " + std::to_string(Ht) + " in " + std::to_string(continuation_steps) +
                     " continuation step(s) with " + to_string(o.solver);
   if (polish > 0) msg += " (+" + std::to_string(polish) + " Newton polish step(s))";
-  return {Ht, true, Status::Converged, msg};
+  return {Ht, true, Status::Converged, msg, final_residual};
 }
 
 template <class Net>
