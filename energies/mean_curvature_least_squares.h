@@ -38,10 +38,39 @@
 //
 // Shapes: P is #points by 3 in the net's order (FORMATS.md); idx lists the free points; J is
 // #nodes by 3·#idx, column 3a + c for point idx[a], coordinate c.
+//
+// Assembled mode (assembled(): a surface of several patches sharing control points, energies/
+// patch_assembly.h):
+//
+//     Φ = Σ_p Φ_patch(P(map_p)) + Σ_seams ∫₀¹ |n_p(t) − n_q(t)|² dt,
+//
+// each patch in its own parameter domain with its own corner weight, plus the seam term: over every
+// inner edge shared by two patches p and q (the same n + 1 global control points), the squared
+// difference of their unit normals n = x_u ∧ x_v / |x_u ∧ x_v| at the same point of the edge, by
+// the edge's parameter t (dimensionless, as Φ). Why: the shared points make the surface only C⁰,
+// and the patches' Φ alone is 0 for pieces of CMC surfaces meeting at kinks (measured on the cap's
+// fan of 6 triangles at degree 4: √Φ = 7.9e-6 with seams kinked by 23° and the surface 0.25 off the
+// sphere); pieces of constant mean curvature H whose normals agree along the seams form one CMC
+// surface. A seam whose patches run along it in the same direction (orientations that disagree)
+// compares n_p with −n_q. Residuals: patch 0's nodes, then patch 1's, … (patches × the patch
+// form's nodes), then per seam its Gauss–Legendre nodes (q of the patch form's rule, weights w_g
+// on [0, 1]) with three residuals √w_g (n_p − n_q) each (a node where either parametrisation is
+// singular contributes 0). The Jacobian over the global rows idx has column 3a + c for idx[a];
+// patch p's block of rows is the patch form's Jacobian over its local rows among idx, its columns
+// moved to their positions in idx (a point shared by several patches has entries in the rows of
+// each); a seam's rows have the unit normals' derivatives (ceres::Jet on x_u, x_v) times the basis
+// derivatives of both patches at the node; ∂r/∂H is 0 on the seam rows. J is dense (#nodes by 3·#idx), so the assembled mode serves
+// complexes of moderate size (the cmc solve takes it up to area_impl::kSparseFromCoordinates free
+// coordinates: solvers/cmc/complex_net.h). The node-by-node calls (derivatives, node_residual,
+// h_derivative, basis_derivative) are the patch form's (patch_form()); on the assembled form they
+// throw UnsupportedProblem.
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <vector>
+
+#include "bezierpde/energies/patch_assembly.h"
 
 namespace bpde {
 
@@ -53,10 +82,18 @@ class MeanCurvatureLeastSquares {
   /// Tensor net of degree (n, m) (each 2..kMaxDegree), corner-collapsed rule with q points per
   /// direction (2..200).
   static MeanCurvatureLeastSquares tensor(int n, int m, int q);
+  /// The sum of `patch` (a single-patch form) over the patches of `assembly` (assembled mode, above).
+  /// ParameterError for a missing or assembled patch form; SizeError when the assembly's patch
+  /// size is not the form's or a map row is out of range.
+  static MeanCurvatureLeastSquares assembled(std::shared_ptr<const MeanCurvatureLeastSquares> patch,
+                                             std::shared_ptr<const PatchAssembly> assembly);
 
-  int size() const { return static_cast<int>(w_.size() ? D_[0].cols() : 0); }  ///< points of the net
-  int nodes() const { return static_cast<int>(w_.size()); }
+  int size() const;   ///< points of the net (assembled: the global points)
+  int nodes() const;  ///< residuals (assembled: of all patches)
   int points_per_direction() const { return q_; }
+  bool is_assembled() const { return assembly_ != nullptr; }
+  /// The single-patch form (itself when not assembled).
+  const MeanCurvatureLeastSquares& patch_form() const { return patch_ ? *patch_ : *this; }
 
   /// The residuals r (#nodes) at P for the target H, and, when J is given, their Jacobian over the
   /// points idx (#nodes by 3·#idx), and, when dH is given, ∂r/∂H (#nodes, as h_derivative(), from the
@@ -79,11 +116,31 @@ class MeanCurvatureLeastSquares {
   Eigen::VectorXd h_derivative(const NodeDerivatives& X) const;
   /// ∂_t of the basis at the nodes (#nodes by #points), t as in derivatives(): ∂r_q/∂P_{I,c} =
   /// Σ_t dr(3t + c) basis_derivative(t)(q, I).
-  const Eigen::MatrixXd& basis_derivative(int t) const { return D_[size_t(t)]; }
+  const Eigen::MatrixXd& basis_derivative(int t) const {
+    check_single("basis_derivative");
+    return D_[size_t(t)];
+  }
 
  private:
   MeanCurvatureLeastSquares() = default;
+  /// An inner edge of an assembled form: patches p and q, the basis derivatives ∂_u, ∂_v of each at
+  /// the edge's nodes (#nodes by patch points), the weights, and the sign of n_q.
+  struct Seam {
+    int p = 0, q = 0;
+    Eigen::MatrixXd Bu_p, Bv_p, Bu_q, Bv_q;
+    Eigen::VectorXd w;
+    double sign = 1.0;
+  };
+  void find_seams();
+  void assembled_residuals(const Eigen::MatrixX3d& P, double H, Eigen::VectorXd* r, const std::vector<int>* idx,
+                           Eigen::MatrixXd* J, Eigen::VectorXd* dH) const;
+  void check_single(const char* what) const;
   int q_ = 0;
+  bool square_ = false;  ///< tensor (square domain) or triangular
+  int n_ = 0, m_ = 0;    ///< degrees (triangular: m_ = n_)
+  std::vector<Seam> seams_;  ///< assembled mode: the inner edges
+  std::shared_ptr<const MeanCurvatureLeastSquares> patch_;  ///< assembled mode: the patch form
+  std::shared_ptr<const PatchAssembly> assembly_;          ///< assembled mode: the patches' maps
   /// Derivatives of the basis at the nodes (#nodes by #points): ∂_u, ∂_v, ∂_uu, ∂_uv, ∂_vv.
   std::array<Eigen::MatrixXd, 5> D_;
   Eigen::VectorXd w_;

@@ -211,16 +211,16 @@ FitMethod default_boundary_fit(const Json& j) {
   return f == "area" || f == "mean-curvature" ? FitMethod::Geometric : FitMethod::Interpolation;
 }
 
-// What a complex job takes (FORMATS.md "Patch complexes"): the extremal problem or cmc (dirichlet
-// or area functional), C⁰ data.
+// What a complex job takes (FORMATS.md "Patch complexes"): the extremal problem or cmc (the
+// mean-curvature functional by solver newton only), C⁰ data.
 void check_complex_job(const Job& job, const std::string& source) {
   const bool cmc = job.problem.kind == ProblemKind::CmcH || job.problem.kind == ProblemKind::CmcV;
   if (job.problem.kind != ProblemKind::Extremal && !cmc)
     throw UnsupportedProblem(source + ".problem: a complex boundary takes problem \"extremal\" or \"cmc\", not \"" +
                              to_string(job.problem.kind) + "\"");
-  if (cmc && job.problem.functional == CmcFunctionalKind::MeanCurvature)
-    throw UnsupportedProblem(source + ".problem.functional: a complex boundary takes the \"dirichlet\" or \"area\" "
-                             "functional, not \"mean-curvature\"");
+  if (cmc && job.problem.functional == CmcFunctionalKind::MeanCurvature && job.problem.solver == CmcSolver::Ceres)
+    throw UnsupportedProblem(source + ".problem.solver: the \"mean-curvature\" functional on a complex boundary takes "
+                             "the solver \"newton\", not \"ceres\"");
   if (job.fixed != FixedSet::Boundary)
     throw UnsupportedProblem(source + ".fixed: a complex boundary takes fixed \"boundary\" (C0 data) only");
   const PatchComplex& c = job.complex->complex;

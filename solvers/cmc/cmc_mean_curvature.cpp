@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,6 +22,7 @@
 #include "bezierpde/solvers/cmc/cmc.h"
 #include "bezierpde/solvers/cmc/area/area_problem.h"
 #include "bezierpde/solvers/cmc/cmc_problem.h"
+#include "bezierpde/solvers/cmc/complex_net.h"
 #include "bezierpde/solvers/optim/levenberg_marquardt.h"
 #include "bezierpde/energies/mean_curvature_least_squares.h"
 #include "bezierpde/solvers/cmc/mean_curvature_minimise.h"
@@ -41,6 +43,14 @@ MeanCurvatureLeastSquares form_for(const TriangularNet& net, int extra) {
 }
 MeanCurvatureLeastSquares form_for(const TensorNet& net, int extra) {
   return MeanCurvatureLeastSquares::tensor(net.n(), net.m(), rule_q(std::max(net.n(), net.m()), extra));
+}
+// A complex: the patch's rule (all patches have one kind and degree), summed over the patches.
+MeanCurvatureLeastSquares form_for(const ComplexNet& net, int extra) {
+  const int q = rule_q(net.n(), extra);
+  auto patch = std::make_shared<const MeanCurvatureLeastSquares>(
+      net.triangular() ? MeanCurvatureLeastSquares::triangular(net.n(), q)
+                       : MeanCurvatureLeastSquares::tensor(net.n(), net.n(), q));
+  return MeanCurvatureLeastSquares::assembled(std::move(patch), net.assembly());
 }
 
 }  // namespace
@@ -211,7 +221,9 @@ LsRun minimise_checked(const Net& data, const CmcOptions& o, Eigen::MatrixX3d& P
     run.f.emplace(form_for(data, run.extra));
     run.check.emplace(form_for(data, run.extra + 1));
     const int left = max_iterations - iterations;
-    if (o.solver == CmcSolver::Ceres)
+    // The Ceres route's blocks are the nodes of one patch: an assembled form (a complex) is
+    // minimised by the library's loop whatever the solver (complex_net.h).
+    if (o.solver == CmcSolver::Ceres && !run.f->is_assembled())
       run.ls = minimise_ceres(*run.f, &*run.check, P, free, H, v, target, left, progress);
     else if (v)
       run.ls = lm_loop(*run.f, &*run.check, P, free, H, v, target, left, o.geodesic_acceleration, progress);
@@ -499,7 +511,7 @@ void fill_result(const Net& data, const CmcOptions& o, const CmcFunctional& cf, 
                                           : "") +
                           ")"
                     : std::string();
-  const bool ceres = o.solver == CmcSolver::Ceres;
+  const bool ceres = o.solver == CmcSolver::Ceres && !run.f->is_assembled();
   const std::string what = "least squares of the mean curvature " + end.start_note + refined + ": √Φ = " +
                            num(res.summary.residual, 3) + (o.V ? " at H = " + num(H, 6) : std::string()) +
                            " after " + std::to_string(end.iterations) +
@@ -585,6 +597,22 @@ CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const C
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options,
                                           const CmcResult<TensorNet>* dirichlet) {
   return solve_mean_curvature_impl(data, options, dirichlet);
+}
+// A complex: at most kMaxMeanCurvatureCoordinates free coordinates (the loop is dense), and asked
+// for directly, solver newton (the Ceres route has no assembled form); from the area solve's
+// mean-curvature-start (with its D start) any solver, minimised by the newton loop.
+CmcResult<ComplexNet> solve_mean_curvature(const ComplexNet& data, const CmcOptions& options,
+                                           const CmcResult<ComplexNet>* dirichlet) {
+  if (!mean_curvature_fits(data))
+    throw UnsupportedProblem("cmc on a complex: the mean-curvature functional takes at most " +
+                             std::to_string(kMaxMeanCurvatureCoordinates) + " free coordinates (this complex has " +
+                             std::to_string(3 * data.free_indices(options.fixed).size()) + ")");
+  return solve_mean_curvature_impl(data, options, dirichlet);
+}
+CmcResult<ComplexNet> solve_mean_curvature(const ComplexNet& data, const CmcOptions& options) {
+  if (options.solver == CmcSolver::Ceres)
+    throw UnsupportedProblem("cmc on a complex: the mean-curvature functional takes the solver newton");
+  return solve_mean_curvature(data, options, nullptr);
 }
 
 }  // namespace bpde::cmc_detail

@@ -60,6 +60,10 @@ std::vector<int> ComplexNet::free_indices(FixedSet fixed) const {
   return complex_free_rows(c_);
 }
 
+bool mean_curvature_fits(const ComplexNet& net) {
+  return 3 * static_cast<long long>(complex_free_rows(net.complex()).size()) <= kMaxMeanCurvatureCoordinates;
+}
+
 Eigen::MatrixX3d ComplexNet::patch_points(int p) const { return bpde::patch_points(*assembly_, p, c_.points); }
 
 double area(const ComplexNet& net) {
@@ -148,14 +152,6 @@ double normal_gap(const ComplexNet& a, const ComplexNet& b) {
     g = std::max(g, gp);
   }
   return g;
-}
-
-CmcResult<ComplexNet> solve_mean_curvature(const ComplexNet&, const CmcOptions&) {
-  throw UnsupportedProblem("cmc on a complex: the mean-curvature functional is defined on single patches only");
-}
-CmcResult<ComplexNet> solve_mean_curvature(const ComplexNet& data, const CmcOptions& options,
-                                           const CmcResult<ComplexNet>*) {
-  return solve_mean_curvature(data, options);
 }
 
 }  // namespace cmc_detail

@@ -28,6 +28,7 @@
 #include "bezierpde/energies/cmc.h"
 #include "bezierpde/energies/patch_assembly.h"
 #include "bezierpde/solvers/cmc/cmc.h"
+#include "bezierpde/solvers/cmc/area/tuning.h"
 
 namespace bpde {
 
@@ -64,11 +65,22 @@ class ComplexNet {
 /// The sum of the patches' areas (energies/area_functional.h, area(net)).
 double area(const ComplexNet& net);
 
-/// The CMC solve of a complex (cmc.h, the same routes as for one patch): functional dirichlet or
-/// area, H or V form, fixed set boundary. The mean-curvature functional is defined on single
-/// patches only (UnsupportedProblem); the area functional skips mean-curvature-start (its record
-/// says why). The area functional's regularity verdict is the patches' (each on its own grid);
-/// quadrature_nodes counts the nodes of all patches.
+/// The least squares of the mean curvature on a complex (MeanCurvatureLeastSquares::assembled,
+/// cmc_mean_curvature.cpp) take at most this many free coordinates (3 per free point): their
+/// Levenberg–Marquardt loop is dense (a #nodes x 3k Jacobian, a 3k x 3k normal matrix), and above it
+/// the area solve's own matrices are sparse (area_impl::kSparseFromCoordinates, the same count).
+inline constexpr int kMaxMeanCurvatureCoordinates = cmc_detail::area_impl::kSparseFromCoordinates;
+/// Whether net's free coordinates are at most kMaxMeanCurvatureCoordinates.
+bool mean_curvature_fits(const ComplexNet& net);
+
+/// The CMC solve of a complex (cmc.h, the same routes as for one patch): functional dirichlet,
+/// area or mean-curvature, H or V form, fixed set boundary. The mean-curvature functional (and the
+/// area functional's mean-curvature-start) takes complexes of at most kMaxMeanCurvatureCoordinates
+/// free coordinates and the solver newton (its own Levenberg–Marquardt loop; the Ceres route has one
+/// residual block per node of one patch): UnsupportedProblem otherwise, and the area functional
+/// skips mean-curvature-start there (its record says why; with solver ceres it minimises the least
+/// squares by the newton loop, the A_H corrections after it by ceres). The regularity verdict is the
+/// patches' (each on its own grid); quadrature_nodes counts the nodes of all patches.
 CmcResult<ComplexNet> solve_cmc(const ComplexNet& data, const CmcOptions& options);
 
 }  // namespace bpde

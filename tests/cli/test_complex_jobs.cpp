@@ -153,8 +153,9 @@ TEST(ComplexJobs, BadInputExitsTwoWithOneLineAndNoFiles) {
                                             {"type": "segment", "from": [0,1,0], "to": [0,0,0]},
                                             {"type": "segment", "from": [1,0,0], "to": [0,1,0]}])"));
   expect_refused("three_loops", job("", pentagon + ", " + polygon_loop(5, 1) + ", " + polygon_loop(5, 2)));
-  expect_refused("cmc_mean_curvature",
-                 job("", pentagon, R"("problem": {"kind": "cmc", "H": 0.5, "functional": "mean-curvature"})"));
+  expect_refused("cmc_mean_curvature_ceres",
+                 job("", pentagon,
+                     R"("problem": {"kind": "cmc", "H": 0.5, "functional": "mean-curvature", "solver": "ceres"})"));
   expect_refused("export_unknown", job("", pentagon, kDirichlet + R"(, "export": ["stl"])"));
   expect_refused("unknown_patch", job("", pentagon).replace(job("", pentagon).find("triangular"), 10, "hexagonal"));
   expect_refused("circle_without_radius", job("", R"([{"type": "circle", "center": [0,0,0], "normal": [0,0,1]}])"));

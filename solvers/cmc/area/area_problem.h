@@ -177,8 +177,8 @@ double normal_gap(const ComplexNet& a, const ComplexNet& b);
 /// The least-squares mean-curvature functional (cmc.h; cmc_mean_curvature.cpp). options are validated.
 CmcResult<TriangularNet> solve_mean_curvature(const TriangularNet& data, const CmcOptions& options);
 CmcResult<TensorNet> solve_mean_curvature(const TensorNet& data, const CmcOptions& options);
-/// Not defined on complexes: throws UnsupportedProblem (the area solve does not try
-/// mean-curvature-start there, driver.cpp).
+/// A complex: at most kMaxMeanCurvatureCoordinates free coordinates and solver newton
+/// (UnsupportedProblem otherwise; complex_net.h).
 CmcResult<ComplexNet> solve_mean_curvature(const ComplexNet& data, const CmcOptions& options);
 /// The same from the D start already solved (`dirichlet`: solve_cmc of data with options' H and V,
 /// functional dirichlet, solver newton in the H form and nlopt in the V form), taken instead of

@@ -148,7 +148,8 @@ struct Driver {
     if (!has_mean_curvature_start(s.data)) {
       AreaRouteRecord rec;
       rec.route = AreaRoute::MeanCurvatureStart;
-      rec.why = "the least squares of the mean curvature is defined on single patches";
+      rec.why = "the least squares of the mean curvature are dense: a complex of at most " +
+                std::to_string(kMaxMeanCurvatureCoordinates) + " free coordinates";
       log().records.push_back(rec);
       return false;
     }
