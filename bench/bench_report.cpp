@@ -78,10 +78,12 @@ BENCHMARK(ReportBlend)->Name("Report/blend")->Apply(BlendSizes);
 
 namespace {
 
-// Check/<kind>/<n>: the CGAL checks alone (check_mesh of the sampled mesh, as check_report runs
-// them), with the grid broad phase (the default) and with CGAL::box_self_intersection_d
-// (Check-cgal-boxes/<kind>/<n>), for the tensor kinds of Report/<kind>/<n>.
-void CheckJob(benchmark::State& state, const std::string& kind, bpde::BroadPhase broad_phase) {
+// Check/<kind>/<n>: the pairwise self-intersection tests of the CGAL checks (check_mesh of the
+// sampled mesh with the projection proof off), with the grid broad phase (the default) and with
+// CGAL::box_self_intersection_d (Check-cgal-boxes/<kind>/<n>); Check-report/<kind>/<n>: the checks
+// as check_report runs them (the projection proof first, checks/mesh_checks.h), for the tensor
+// kinds of Report/<kind>/<n>.
+void CheckJob(benchmark::State& state, const std::string& kind, bpde::BroadPhase broad_phase, bool proof) {
   using namespace bpde;
   const Job job = bpde_bench::job(kind, static_cast<int>(state.range(0)));
   const TriangleMesh mesh = sample_net(run_job(job).net, job.samples);
@@ -94,18 +96,26 @@ void CheckJob(benchmark::State& state, const std::string& kind, bpde::BroadPhase
   MeshCheckReport rep;
   MeshCheckOptions options;
   options.broad_phase = broad_phase;
+  options.projection_proof = proof;
   for (auto _ : state) benchmark::DoNotOptimize(rep = check_mesh(V, F, options));
   state.counters["box_pairs"] = static_cast<double>(rep.box_pairs);
   state.counters["self_intersections"] = rep.self_intersections;
+  state.counters["embedded_by_projection"] = rep.embedded_by_projection ? 1 : 0;
 }
 
 }  // namespace
 
-BENCHMARK_CAPTURE(CheckJob, pde, std::string("pde"), bpde::BroadPhase::kGrid)->Name("Check/pde")->Apply(Degrees);
-BENCHMARK_CAPTURE(CheckJob, pde_cgal, std::string("pde"), bpde::BroadPhase::kCgalBoxes)
+BENCHMARK_CAPTURE(CheckJob, pde, std::string("pde"), bpde::BroadPhase::kGrid, false)->Name("Check/pde")->Apply(Degrees);
+BENCHMARK_CAPTURE(CheckJob, pde_cgal, std::string("pde"), bpde::BroadPhase::kCgalBoxes, false)
     ->Name("Check-cgal-boxes/pde")
     ->Apply(Degrees);
-BENCHMARK_CAPTURE(CheckJob, cmc, std::string("cmc"), bpde::BroadPhase::kGrid)->Name("Check/cmc")->Apply(CmcDegrees);
-BENCHMARK_CAPTURE(CheckJob, cmc_cgal, std::string("cmc"), bpde::BroadPhase::kCgalBoxes)
+BENCHMARK_CAPTURE(CheckJob, pde_report, std::string("pde"), bpde::BroadPhase::kGrid, true)
+    ->Name("Check-report/pde")
+    ->Apply(Degrees);
+BENCHMARK_CAPTURE(CheckJob, cmc, std::string("cmc"), bpde::BroadPhase::kGrid, false)->Name("Check/cmc")->Apply(CmcDegrees);
+BENCHMARK_CAPTURE(CheckJob, cmc_cgal, std::string("cmc"), bpde::BroadPhase::kCgalBoxes, false)
     ->Name("Check-cgal-boxes/cmc")
+    ->Apply(CmcDegrees);
+BENCHMARK_CAPTURE(CheckJob, cmc_report, std::string("cmc"), bpde::BroadPhase::kGrid, true)
+    ->Name("Check-report/cmc")
     ->Apply(CmcDegrees);

@@ -20,11 +20,14 @@
 //     surface must be closed up to those loops; each loop is capped by a fan from its centroid,
 //     whose contribution is -(1/3) <c - o, A> with A the loop's area vector.
 //  7. cone volume: (1/6) sum det(a, b, c) over the input triangles, in input coordinates.
+// Step 4 first tries the projection proof (checks/mesh_checks.h): one disk whose projection along
+// a coordinate axis is injective has no self-intersection, and the pairwise tests are skipped.
 #include "bezierpde/checks/mesh_checks.h"
 
 #include "bezierpde/core/eigen.h"
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
+#include <CGAL/Intersections_2/Segment_2_Segment_2.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -84,16 +87,26 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
       return h;
     }
   };
-  // cell -> last point inserted in it; next_in_cell chains the others
-  std::unordered_map<std::array<std::int64_t, 3>, int, CellHash> grid;
-  grid.reserve(static_cast<std::size_t>(n) * 2);
+  // cell -> last point inserted in it (open addressing: a power-of-2 table of at least twice the
+  // points, linear probing); next_in_cell chains the others
+  using Key = std::array<std::int64_t, 3>;
+  std::size_t slots = 16;
+  while (slots < 2 * static_cast<std::size_t>(n)) slots *= 2;
+  std::vector<Key> keys(slots);
+  std::vector<int> head(slots, -1);
+  auto slot_of = [&](const Key& key) {
+    std::size_t at = (CellHash{}(key) * 0x9e3779b97f4a7c15ull) >> 20 & (slots - 1);
+    while (head[at] >= 0 && (keys[at][0] != key[0] || keys[at][1] != key[1] || keys[at][2] != key[2]))
+      at = (at + 1) & (slots - 1);
+    return at;  // the key's slot, or the empty slot where it goes
+  };
   std::vector<int> next_in_cell(n, -1);
   const double tol2 = tol * tol;
   const int every = std::max(1, n / 50);
   for (int i = 0; i < n; ++i) {
     if (i % every == 0 && i > 0) step(static_cast<double>(i) / n);
     if ((p[i].array() < lo.array()).any() || (p[i].array() > hi.array()).any()) continue;
-    std::array<std::int64_t, 3> c{0, 0, 0}, side{0, 0, 0};
+    Key c{0, 0, 0}, side{0, 0, 0};
     if (cell > 0)
       for (int a = 0; a < 3; ++a) {
         // (p - lo) / cell <= diagonal / (2e-10 diagonal): no overflow of the cell index
@@ -103,22 +116,19 @@ std::vector<int> merge_coincident(const std::vector<Eigen::Vector3d>& p, double 
       }
     for (int mask = 0; mask < 8; ++mask) {
       if (cell == 0 && mask) break;
-      const std::array<std::int64_t, 3> key{c[0] + ((mask & 1) ? side[0] : 0), c[1] + ((mask & 2) ? side[1] : 0),
-                                            c[2] + ((mask & 4) ? side[2] : 0)};
-      auto it = grid.find(key);
-      if (it == grid.end()) continue;
-      for (int j = it->second; j >= 0; j = next_in_cell[j]) {
+      const Key key{c[0] + ((mask & 1) ? side[0] : 0), c[1] + ((mask & 2) ? side[1] : 0),
+                    c[2] + ((mask & 4) ? side[2] : 0)};
+      for (int j = head[slot_of(key)]; j >= 0; j = next_in_cell[j]) {
         if ((p[i] - p[j]).squaredNorm() <= tol2) {
           const int ri = find_root(parent, i), rj = find_root(parent, j);
           if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
         }
       }
     }
-    auto [it, inserted] = grid.try_emplace(c, i);
-    if (!inserted) {
-      next_in_cell[i] = it->second;
-      it->second = i;
-    }
+    const std::size_t at = slot_of(c);
+    next_in_cell[i] = head[at];
+    keys[at] = c;
+    head[at] = i;
   }
   std::vector<int> rep(n);
   for (int i = 0; i < n; ++i) rep[i] = find_root(parent, i);
@@ -323,16 +333,29 @@ struct EdgeMap {
   std::vector<Entry> edges;
 };
 
-EdgeMap directed_edges(const std::vector<Tri>& tris) {
-  std::vector<std::uint64_t> all;
-  all.reserve(tris.size() * 3);
+EdgeMap directed_edges(const std::vector<Tri>& tris, int num_vertices) {
+  // the keys sorted: a counting sort by the low vertex, then each (short) run by insertion
+  std::vector<int> start(static_cast<std::size_t>(num_vertices) + 1, 0);
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) ++start[static_cast<std::size_t>(std::min(t[k], t[(k + 1) % 3])) + 1];
+  for (int v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
+  std::vector<std::uint64_t> all(tris.size() * 3);
+  std::vector<int> fill(start.begin(), start.end() - 1);
   for (const auto& t : tris)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
       const auto lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
-      all.push_back(((static_cast<std::uint64_t>(lo) << 32 | hi) << 1) | (a > b ? 1u : 0u));
+      all[static_cast<std::size_t>(fill[lo]++)] = ((static_cast<std::uint64_t>(lo) << 32 | hi) << 1) | (a > b ? 1u : 0u);
     }
-  std::sort(all.begin(), all.end());
+  for (int v = 0; v < num_vertices; ++v) {
+    const auto first = all.begin() + start[v], last = all.begin() + start[v + 1];
+    if (last - first <= 16) {
+      for (auto i = first + 1; i < last; ++i)
+        for (auto j = i; j > first && *(j - 1) > *j; --j) std::iter_swap(j - 1, j);
+    } else {
+      std::sort(first, last);
+    }
+  }
   EdgeMap e;
   e.edges.reserve(all.size() / 2 + 1);
   for (std::size_t s = 0, f = 0; s < all.size(); s = f) {
@@ -379,6 +402,101 @@ bool is_closed_manifold(const std::vector<Tri>& tris, const EdgeMap& de, int num
     if (cur != first || steps != hi - lo) return false;  // one cycle through every link edge
   }
   return true;
+}
+
+// ------------------------------------------------------------------ projection proof
+using Point2 = Kernel::Point_2;
+using Segment2 = Kernel::Segment_2;
+
+/// The one loop of the algebraic boundary of the soup (the directed edges of net multiplicity
+/// +1, followed from vertex to vertex), or empty when an edge has multiplicity beyond +-1, a
+/// vertex has more than one boundary edge out or in, or the boundary edges are not one loop.
+std::vector<int> single_boundary_loop(const EdgeMap& de, int num_vertices) {
+  std::vector<int> next(static_cast<std::size_t>(num_vertices), -1), in(static_cast<std::size_t>(num_vertices), 0);
+  std::size_t edges = 0;
+  int first = -1;
+  for (const auto& e : de.edges) {
+    const int net = e.forward - e.backward;
+    if (net == 0) continue;
+    if (net > 1 || net < -1) return {};
+    const int from = net > 0 ? e.a : e.b, to = net > 0 ? e.b : e.a;
+    if (next[static_cast<std::size_t>(from)] >= 0 || in[static_cast<std::size_t>(to)]++ > 0) return {};
+    next[static_cast<std::size_t>(from)] = to;
+    if (first < 0) first = from;
+    ++edges;
+  }
+  if (edges < 3) return {};
+  std::vector<int> loop;
+  loop.reserve(edges);
+  int v = first;
+  do {
+    loop.push_back(v);
+    v = next[static_cast<std::size_t>(v)];
+  } while (v >= 0 && v != first && loop.size() <= edges);
+  if (v != first || loop.size() != edges) return {};
+  return loop;
+}
+
+/// The closed polygon q[0], q[1], ..., q[m-1] is simple (exact predicates): its points are
+/// distinct, adjacent segments meet only at their common point, non-adjacent ones not at all.
+bool simple_polygon(const std::vector<Point2>& q) {
+  const std::size_t m = q.size();
+  std::vector<Point2> sorted(q);
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  for (std::size_t i = 0; i < m; ++i) {
+    const Point2 &a = q[(i + m - 1) % m], &b = q[i], &c = q[(i + 1) % m];
+    if (CGAL::collinear(a, b, c) && !CGAL::collinear_are_strictly_ordered_along_line(a, b, c)) return false;
+  }
+  // non-adjacent segments: a sweep over the segments sorted by their smallest x
+  struct Seg {
+    double x0, x1, y0, y1;
+    std::size_t i;
+  };
+  std::vector<Seg> seg(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const Point2 &a = q[i], &b = q[(i + 1) % m];
+    seg[i] = {std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y()), i};
+  }
+  std::sort(seg.begin(), seg.end(), [](const Seg& s, const Seg& t) { return s.x0 < t.x0; });
+  for (std::size_t s = 0; s < m; ++s)
+    for (std::size_t t = s + 1; t < m && seg[t].x0 <= seg[s].x1; ++t) {
+      const std::size_t i = seg[s].i, j = seg[t].i, d = i > j ? i - j : j - i;
+      if (d == 1 || d == m - 1) continue;  // adjacent: checked above
+      if (seg[t].y0 > seg[s].y1 || seg[s].y0 > seg[t].y1) continue;
+      if (CGAL::do_intersect(Segment2(q[i], q[(i + 1) % m]), Segment2(q[j], q[(j + 1) % m]))) return false;
+    }
+  return true;
+}
+
+/// The projection proof of checks/mesh_checks.h: true when the soup is one disk whose projection
+/// along one coordinate axis is injective (hence no two triangles intersect).
+bool embedded_by_projection(const std::vector<Tri>& tris, const std::vector<Point>& P, const EdgeMap& de) {
+  if (tris.empty()) return false;
+  const std::vector<int> loop = single_boundary_loop(de, static_cast<int>(P.size()));
+  if (loop.empty()) return false;
+  Eigen::Vector3d area = Eigen::Vector3d::Zero();
+  auto at = [&](int v) { return Eigen::Vector3d(P[v].x(), P[v].y(), P[v].z()); };
+  for (const auto& t : tris) area += (at(t[1]) - at(t[0])).cross(at(t[2]) - at(t[0]));
+  std::array<int, 3> axes{0, 1, 2};
+  std::sort(axes.begin(), axes.end(), [&](int a, int b) { return std::abs(area[a]) > std::abs(area[b]); });
+  for (int k : axes) {
+    if (!(std::abs(area[k]) > 0)) break;
+    auto q = [&](int v) { return Point2(P[v][(k + 1) % 3], P[v][(k + 2) % 3]); };
+    const CGAL::Orientation expected = area[k] > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+    bool ok = true;
+    for (const auto& t : tris)
+      if (CGAL::orientation(q(t[0]), q(t[1]), q(t[2])) != expected) {
+        ok = false;
+        break;
+      }
+    if (!ok) continue;
+    std::vector<Point2> polygon;
+    polygon.reserve(loop.size());
+    for (int v : loop) polygon.push_back(q(v));
+    if (simple_polygon(polygon)) return true;
+  }
+  return false;
 }
 
 double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) { return a.dot(b.cross(c)); }
@@ -530,10 +648,12 @@ MeshCheckReport check_mesh(const std::vector<double>& vertices, const std::vecto
   }
 
   progress(kPairsFrom);
-  std::tie(report.self_intersections, report.box_pairs) = count_self_intersections(
-      tris, P, options.broad_phase, [&](double f) { progress(kListed + f * (kPairsTo - kListed)); });
+  const auto de = directed_edges(tris, nm);
+  report.embedded_by_projection = options.projection_proof && embedded_by_projection(tris, P, de);
+  if (!report.embedded_by_projection)
+    std::tie(report.self_intersections, report.box_pairs) = count_self_intersections(
+        tris, P, options.broad_phase, [&](double f) { progress(kListed + f * (kPairsTo - kListed)); });
   progress(kPairsTo);
-  const auto de = directed_edges(tris);
   report.closed = is_closed_manifold(tris, de, nm);
   progress(kClosed);
   report.volume = capped_volume(tris, de, Y, o, report.closed);

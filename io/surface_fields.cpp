@@ -58,8 +58,9 @@ SurfaceFields surface_fields(const Net& net, const TriangleMesh& mesh) {
   out.H.setZero(nv);
   out.K.setZero(nv);
   out.regular.setZero(nv);
-  // The jets at the vertices: tabulated for tensor and triangular nets (one Bernstein table per
-  // derivative, as sample_mesh does), pointwise for bspline nets.
+  // The jets at the vertices, tabulated as sample_mesh tabulates them: one Bernstein table per
+  // derivative for tensor and triangular nets, one B-spline basis table per direction and
+  // derivative for bspline nets.
   auto classify = [&](Eigen::Index k, const SurfaceJet& jet) {
     const double cross = jet.xu.cross(jet.xv).norm(), scale = jet.xu.norm() * jet.xv.norm();
     if (!(scale > 0) || !(cross >= kRegularSine * scale)) return;
@@ -92,8 +93,24 @@ SurfaceFields surface_fields(const Net& net, const TriangleMesh& mesh) {
     };
     tabulated(D(1, 0), D(0, 1), D(2, 0), D(1, 1), D(0, 2));
   } else {
+    // the grid products of sample_mesh(BSplineNet): basis tables of the sample parameters in each
+    // direction, Bu (P Bv^T) per coordinate
     const auto& b = std::get<BSplineNet>(net);
-    for (Eigen::Index k = 0; k < nv; ++k) classify(k, surface_jet(b, out.uv(k, 0), out.uv(k, 1)));
+    Eigen::VectorXd tu(N + 1), tv(N + 1);
+    for (int a = 0; a <= N; ++a) tu(a) = out.uv(a * (N + 1), 0), tv(a) = out.uv(a, 1);
+    using RowMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    auto grid = [&](int du, int dv) {
+      const Eigen::MatrixXd Bu = BSplineNet::basis_table(b.p(), b.knots_u(), tu, du);
+      const Eigen::MatrixXd Bv = BSplineNet::basis_table(b.q(), b.knots_v(), tv, dv);
+      Eigen::MatrixX3d X((N + 1) * (N + 1), 3);
+      for (int c = 0; c < 3; ++c) {
+        const Eigen::Map<const RowMat, 0, Eigen::OuterStride<>> Pc(b.points().col(c).data(), b.nu(), b.nv(),
+                                                                   Eigen::OuterStride<>(b.nv()));
+        Eigen::Map<RowMat>(X.col(c).data(), N + 1, N + 1) = Bu * (Pc * Bv.transpose());
+      }
+      return X;
+    };
+    tabulated(grid(1, 0), grid(0, 1), grid(2, 0), grid(1, 1), grid(0, 2));
   }
   // Irregular vertices, ring by ring: first those with a regular neighbour get the mean over their
   // regular neighbours; then those next to a vertex filled in an earlier ring get the mean over

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <string_view>
 #include <vector>
 
 #include "bezierpde/core/errors.h"
@@ -28,7 +29,11 @@ class ArrayWriter {
       std::vector<float> f(values, values + count);
       payload(f.data(), f.size() * sizeof(float));
     } else {
-      for (size_t k = 0; k < count; ++k) number(values[k], k, components);
+      for (size_t k = 0; k < count; ++k) {
+        const std::string_view t = text_of(values[k]);
+        out_.append(t.data(), t.size());
+        separator(k, components);
+      }
     }
     close();
   }
@@ -86,8 +91,29 @@ class ArrayWriter {
     out_ += base64_encode(block.data(), block.size());
   }
 
+  // The shortest round-trip text of x (std::to_chars), through a direct-mapped cache of the last
+  // value per slot: the uv parameters of a sampled net repeat (N + 1 distinct values per
+  // direction), and a hit costs a fraction of a conversion.
+  std::string_view text_of(double x) {
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+    CachedText& c = cache_[(bits * 0x9e3779b97f4a7c15ull) >> (64 - kCacheBits)];
+    if (c.size == 0 || c.bits != bits) {
+      const auto r = std::to_chars(c.chars, c.chars + sizeof c.chars, x);
+      c.size = static_cast<std::uint8_t>(r.ptr - c.chars);
+      c.bits = bits;
+    }
+    return {c.chars, c.size};
+  }
+  static constexpr int kCacheBits = 8;
+  struct CachedText {
+    std::uint64_t bits = 0;
+    std::uint8_t size = 0;  // 0: empty
+    char chars[31];
+  };
+
   std::string& out_;
   bool binary_;
+  std::vector<CachedText> cache_ = std::vector<CachedText>(std::size_t{1} << kCacheBits);
 };
 
 }  // namespace

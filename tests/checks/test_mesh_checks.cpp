@@ -410,5 +410,124 @@ TEST(MeshChecks, BadInputThrowsTypedErrors) {
   }
 }
 
+
+// ------------------------------------------------------------------ the projection proof
+
+MeshCheckReport pairwise(const Soup& s) {
+  MeshCheckOptions o;
+  o.projection_proof = false;
+  return check_mesh(s.v, s.t, o);
+}
+
+TEST(ProjectionProof, AGraphIsEmbeddedByProjectionWithTheSameReport) {
+  // z = sin(3x) cos(2y) over a tilted square: a graph over the (x, y) plane, normals up.
+  Soup s;
+  add_grid(s, 30, 30, -1, 1, -1, 1, [](double u, double v) {
+    return std::array<double, 3>{u + 0.3 * v, v, std::sin(3 * u) * std::cos(2 * v)};
+  });
+  const auto r = check_mesh(s.v, s.t), all = pairwise(s);
+  EXPECT_TRUE(r.embedded_by_projection);
+  EXPECT_EQ(r.box_pairs, 0);
+  EXPECT_FALSE(all.embedded_by_projection);
+  EXPECT_GT(all.box_pairs, 30 * 30 * 2);  // every triangle's box meets its neighbours'
+  EXPECT_EQ(r.self_intersections, 0);
+  EXPECT_EQ(all.self_intersections, 0);
+  EXPECT_EQ(r.closed, all.closed);
+  EXPECT_EQ(r.merged_vertices, all.merged_vertices);
+  EXPECT_EQ(r.volume.has_value(), all.volume.has_value());
+  EXPECT_EQ(r.cone_volume, all.cone_volume);
+  // the same sheet seen from below (reversed triangles) and turned onto the x axis
+  Soup down;
+  add_grid(down, 30, 30, -1, 1, -1, 1, [](double u, double v) {
+    return std::array<double, 3>{std::sin(3 * v) * std::cos(2 * u), u, v + 0.3 * u};
+  });
+  EXPECT_TRUE(check_mesh(down.v, down.t).embedded_by_projection);
+  EXPECT_EQ(check_mesh(down.v, down.t).self_intersections, 0);
+}
+
+TEST(ProjectionProof, AFoldedSheetIsNotClaimedAndTheExactTestsFindTheCrossing) {
+  // The sheet over the prolate cycloid (t - 2 sin t, s, -2 cos t), t in [-pi, pi]: its loop
+  // crosses itself at t = +-1.895 (the grid's t steps miss it), so the sheet cuts itself along a
+  // line of y.
+  Soup s;
+  add_grid(s, 40, 4, -kPi, kPi, 0, 1, [](double t, double y) {
+    return std::array<double, 3>{t - 2 * std::sin(t), y, -2 * std::cos(t)};
+  });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_FALSE(r.embedded_by_projection);
+  EXPECT_GE(r.self_intersections, 4);  // at least one crossing pair per row of cells
+  EXPECT_EQ(r.self_intersections, pairwise(s).self_intersections);
+}
+
+TEST(ProjectionProof, PositiveNormalsWithAnOverlappingBoundaryFallBackToTheExactTests) {
+  // A spiral ramp (r cos t, r sin t, t / 4), r in [1, 2], t in [0, 2.5 pi]: the normal's z
+  // component is r > 0 everywhere, but the projected boundary overlaps itself (the ramp turns more
+  // than once). The ramp's turns are 2 pi / 4 apart in height: no intersection.
+  Soup s;
+  add_grid(s, 8, 60, 1, 2, 0, 2.5 * kPi, [](double r, double t) {
+    return std::array<double, 3>{r * std::cos(t), r * std::sin(t), t / 4};
+  });
+  const auto r = check_mesh(s.v, s.t);
+  EXPECT_FALSE(r.embedded_by_projection);
+  EXPECT_GT(r.box_pairs, 0);  // the pairwise tests ran
+  EXPECT_EQ(r.self_intersections, 0);
+  // with the height (r - 1.5)(t - 1.25 pi) the first and the last quarter turn cross each other
+  // along r = 1.5 (not a grid line), and the normal's z component is still r: the exact tests find
+  // the crossing
+  Soup cut;
+  add_grid(cut, 7, 60, 1, 2, 0, 2.5 * kPi, [](double r, double t) {
+    return std::array<double, 3>{r * std::cos(t), r * std::sin(t), (r - 1.5) * (t - 1.25 * kPi)};
+  });
+  const auto c = check_mesh(cut.v, cut.t);
+  EXPECT_FALSE(c.embedded_by_projection);
+  EXPECT_GE(c.self_intersections, 12);  // at least one pair per cell along the crossing line
+  EXPECT_EQ(c.self_intersections, pairwise(cut).self_intersections);
+}
+
+TEST(ProjectionProof, NeverClaimsWhatTheExactTestsRefute) {
+  // Jittered 6 x 6 grids (in-plane jitter up to about a cell, so that some fold over; random
+  // heights): wherever the proof holds, the pairwise tests find no intersection. Both outcomes occur.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-1, 1);
+  int claimed = 0, refused = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const double amount = 0.25 * (trial % 5) / 6.0, height = 0.5 * (trial % 3);
+    Soup s;
+    add_grid(s, 6, 6, 0, 1, 0, 1, [&](double u, double v) {
+      return std::array<double, 3>{u + amount * jitter(rng), v + amount * jitter(rng), height * jitter(rng)};
+    });
+    const auto r = check_mesh(s.v, s.t);
+    if (r.embedded_by_projection) {
+      ++claimed;
+      EXPECT_EQ(pairwise(s).self_intersections, 0) << trial;
+    } else {
+      ++refused;
+      EXPECT_EQ(r.self_intersections, pairwise(s).self_intersections) << trial;
+    }
+  }
+  EXPECT_GT(claimed, 30);
+  EXPECT_GT(refused, 30);
+}
+
+TEST(ProjectionProof, ClosedSurfacesAndTwoSheetsAreNotClaimed) {
+  Soup ball;
+  add_grid(ball, 12, 24, 0, kPi, 0, 2 * kPi, sphere);
+  EXPECT_FALSE(check_mesh(ball.v, ball.t).embedded_by_projection);  // no boundary
+  // two disjoint parallel squares: two boundary loops
+  Soup two;
+  add_grid(two, 3, 3, 0, 1, 0, 1, [](double u, double v) { return std::array<double, 3>{u, v, 0}; });
+  add_grid(two, 3, 3, 0, 1, 0, 1, [](double u, double v) { return std::array<double, 3>{u, v, 1}; });
+  const auto r = check_mesh(two.v, two.t);
+  EXPECT_FALSE(r.embedded_by_projection);
+  EXPECT_EQ(r.self_intersections, 0);
+  // a square pierced by a separate triangle (two loops)
+  Soup t;
+  add_grid(t, 2, 2, 0, 1, 0, 1, [](double u, double v) { return std::array<double, 3>{u, v, 0}; });
+  t.t.insert(t.t.end(), {t.add_vertex(0.1, 0.1, -0.5), t.add_vertex(0.4, 0.1, 0.5), t.add_vertex(0.1, 0.4, 0.5)});
+  EXPECT_FALSE(check_mesh(t.v, t.t).embedded_by_projection);
+  EXPECT_GE(check_mesh(t.v, t.t).self_intersections, 1);
+  EXPECT_EQ(check_mesh(t.v, t.t).self_intersections, pairwise(t).self_intersections);
+}
+
 }  // namespace
 }  // namespace bpde
