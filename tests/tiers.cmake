@@ -26,7 +26,6 @@ set(BPDE_INTEGRATION_TEST_FOLDERS cli viewer examples_c1 examples_cmc examples_c
 # "switch" solve one problem twice, a switch on and off, and compare: they measure the switch.
 string(JOIN ":" BPDE_SLOW_TESTS_cmc
   CmcArea.VolumeFormReachesTheLargerCapByContinuationInV               # 111 s
-  ComplexCmc.CapFanConvergesWithDegreeAndTheSeamsClose                 #  64 s, three area solves on a fan, n = 4, 5, 6
   CmcArea.MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit    #  51 s
   CmcArea.RuleIsChosenAgainWhereTheStartNearlyFolds                    #  34 s
   CmcArea.TrustRegionPartConvergesWhereTheSoftModeLoopStops            #  three area solves, n = 4, 6, 10
@@ -45,6 +44,9 @@ string(JOIN ":" BPDE_SLOW_TESTS_cmc
 )
 string(JOIN ":" BPDE_SLOW_TESTS_pde
   PdeAccuracy.Table                                                    #   7 s, the paper's degree table
+)
+string(JOIN ":" BPDE_SLOW_TESTS_examples_complex
+  ExamplesComplex.RectangleByTheAreaFunctional                        #  26 s, the area solve at degree 6
 )
 string(JOIN ":" BPDE_SLOW_TESTS_cli
   Cli.CmcMeanCurvatureJob                                              #  25 s
