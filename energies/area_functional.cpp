@@ -360,7 +360,7 @@ std::shared_ptr<const QuadratureRuleTriangle> report_rule(int kind, int q) {
 // kReportTableCache, while a table holds at most this many doubles (4 MB: the report rule up to
 // triangular n = 10, tensor n = m = 6); larger ones stream.
 constexpr Eigen::Index kReportTableDoubles = Eigen::Index(1) << 19;
-constexpr std::size_t kReportTableCache = 24;
+constexpr std::size_t kReportTableCache = 16;
 // The ladder of area(): its first rule and the change (relative) at which a rule is taken. The
 // rules converge exponentially in q on regular patches, so the rule whose change from the previous
 // one is within 1e-14 is accurate far below it (measured: tests/energies/test_area_functional.cpp,
