@@ -52,7 +52,9 @@ TEST(CmcSolver, BranchSeriesFollowsTheBranch) {
       const double err = (cmc_detail::branch_prediction(y0, series, s) - y).norm();
       const double tangent_err = (y0 + s * series[0] - y).norm();
       EXPECT_LT(err, 1e-3 * tangent_err) << "H0 = " << H0 << ", s = " << s;
-      if (prev > 0) EXPECT_GT(prev / err, 20.0) << "H0 = " << H0;
+      if (prev > 0) {
+        EXPECT_GT(prev / err, 20.0) << "H0 = " << H0;
+      }
       prev = err;
     }
   }

@@ -34,11 +34,13 @@ namespace bpde::cmc_detail::area_impl {
 inline bool is_triangular(const TriangularNet&) { return true; }
 inline bool is_triangular(const TensorNet&) { return false; }
 inline bool is_triangular(const ComplexNet& c) { return c.triangular(); }
-/// Whether mean-curvature-start can run: on a complex up to kMaxMeanCurvatureCoordinates free
-/// coordinates (complex_net.h: the least squares' loop is dense).
+/// Whether mean-curvature-start runs: on a complex up to kMeanCurvatureStartCoordinates free
+/// coordinates (tuning.h: the least squares' loop is dense and costs minutes above it).
 inline bool has_mean_curvature_start(const TriangularNet&) { return true; }
 inline bool has_mean_curvature_start(const TensorNet&) { return true; }
-inline bool has_mean_curvature_start(const ComplexNet& c) { return mean_curvature_fits(c); }
+inline bool has_mean_curvature_start(const ComplexNet& c) {
+  return 3 * static_cast<long long>(c.free_indices(FixedSet::Boundary).size()) <= kMeanCurvatureStartCoordinates;
+}
 
 /// How a route ended: H reached, whether it produced a point (ok; possibly above the tolerance,
 /// a numerical limit), why not, and its own words.

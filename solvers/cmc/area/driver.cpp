@@ -149,7 +149,7 @@ struct Driver {
       AreaRouteRecord rec;
       rec.route = AreaRoute::MeanCurvatureStart;
       rec.why = "the least squares of the mean curvature are dense: a complex of at most " +
-                std::to_string(kMaxMeanCurvatureCoordinates) + " free coordinates";
+                std::to_string(kMeanCurvatureStartCoordinates) + " free coordinates";
       log().records.push_back(rec);
       return false;
     }

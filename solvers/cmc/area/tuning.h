@@ -136,6 +136,14 @@ inline constexpr double kComplexPolishFloor = 1e-14;
 /// twice at degree 3 (1191) took 72 s of CPU with it, 28 s without.
 inline constexpr int kComplexPolishCoordinates = 600;
 
+/// mean-curvature-start runs on complexes of at most this many free coordinates (the least squares'
+/// Levenberg–Marquardt loop is dense: a #nodes x 3k Jacobian and a 3k x 3k normal matrix per
+/// iteration). Measured: the fan of 6 at degree 8 (507) lands 20x nearer the sphere in 5 s; the
+/// tensor catenoid ring at degree 8 (672) took 6.9 s instead of 1 s by minimal-surface and ended
+/// with a 6x larger certificate; the 4 x 0.5 rectangle at degree 6 (705) spent 75 s before giving
+/// way; the fan refined twice at degree 3 (1191) took more than 4 minutes.
+inline constexpr int kMeanCurvatureStartCoordinates = 600;
+
 /// A complex with more free coordinates than this is solved with sparse matrices (sparse_terms.h);
 /// below, the dense ones of a single patch are as fast (the fan of 6 triangles at n = 8: 507
 /// coordinates) and the solve is the single-patch one exactly.
