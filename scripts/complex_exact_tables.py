@@ -13,7 +13,7 @@ import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-CASES = ["cap-circle", "cap-arcs-5", "cap-arcs-6", "cap-arcs-8", "enneper", "catenoid", "rectangle", "dirichlet-disc"]
+CASES = ["cap-circle", "cap-arcs-5", "cap-arcs-6", "cap-arcs-8", "enneper", "catenoid", "rectangle", "rectangle-area", "dirichlet-disc"]
 
 
 def main():

@@ -46,6 +46,9 @@ string(JOIN ":" BPDE_SLOW_TESTS_cmc
 string(JOIN ":" BPDE_SLOW_TESTS_pde
   PdeAccuracy.Table                                                    #   7 s, the paper's degree table
 )
+string(JOIN ":" BPDE_SLOW_TESTS_examples_complex
+  ExamplesComplex.RectangleByTheAreaFunctional                        #  26 s, the area solve at degree 6
+)
 string(JOIN ":" BPDE_SLOW_TESTS_cli
   Cli.CmcMeanCurvatureJob                                              #  25 s
   HostileInput.SizeLimitsHoldAtTheLimitAndRefuseOnePastIt              #  11 s

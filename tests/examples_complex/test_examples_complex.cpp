@@ -153,3 +153,34 @@ TEST(ExamplesComplex, RectangleCornersHaveZeroMeanCurvature) {
   const double reach = (r.complex.points.rowwise() - (0.5 * (lo + hi)).transpose()).rowwise().norm().maxCoeff() / (hi - lo).norm();
   EXPECT_LT(reach, 1.0);
 }
+
+// The rectangle at H = 0.2 by the area functional (A_H, whose critical points have mean curvature
+// H whatever the parametrisation), degree 6 on the 8 x 1 squares. Away from the two squares at
+// each end (|x| ≤ 1: the patches next to the corners carry the corners' H = 0 into the surface, so
+// the region left out is fixed in the plane, not a margin of the patch domain) |H(x) − H| is 1.5e-5
+// (measured), where the Dirichlet functional's surface stalls at 3.4e-4 there (not conformal). The
+// corners' H = 0 holds here too, the solve converges, and the control net stays within the
+// surface's bounding box but for the corner patches, which grade themselves towards the corners
+// (reach 0.68 of the diagonal, measured). Slow (about 25 s on one core; the job's start is
+// "dirichlet": mean-curvature-start gives way on this job after another 75 s, the same end).
+TEST(ExamplesComplex, RectangleByTheAreaFunctional) {
+  Json j = job_file("rectangle");
+  j["problem"]["functional"] = "area";
+  j["problem"]["start"] = "dirichlet";
+  const Solved r = run(j, 6, 0);
+  ASSERT_EQ(r.exit, 0) << r.report.dump();
+  EXPECT_TRUE(r.report["converged"].get<bool>());
+  EXPECT_LE(r.report["residual"].get<double>(), 1e-11);
+  const bpde::ComplexMesh m = bpde::sample_complex(r.complex, 16);
+  double inner = 0, corner = 1;
+  for (Eigen::Index v = 0; v < m.mesh.V.rows(); ++v) {
+    const Eigen::Vector3d x = m.mesh.V.row(v).transpose();
+    if (std::abs(x(0)) <= 1.0) inner = std::max(inner, std::abs(m.mesh.H(v) - 0.2));
+    if (std::abs(std::abs(x(0)) - 2) < 1e-12 && std::abs(std::abs(x(1)) - 0.25) < 1e-12) corner = std::min(corner, 1 - std::abs(m.mesh.H(v)));
+  }
+  EXPECT_LT(inner, 3e-5);  // measured 1.5e-5
+  EXPECT_NEAR(corner, 1.0, 1e-9);
+  const Eigen::Vector3d lo = m.mesh.V.colwise().minCoeff(), hi = m.mesh.V.colwise().maxCoeff();
+  const double reach = (r.complex.points.rowwise() - (0.5 * (lo + hi)).transpose()).rowwise().norm().maxCoeff() / (hi - lo).norm();
+  EXPECT_LT(reach, 1.5);  // measured 0.68; within a few diameters
+}

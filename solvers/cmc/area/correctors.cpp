@@ -180,6 +180,8 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
   const double fscale = std::abs(p.area()) + 2.0 * std::abs(H) * std::abs(p.base.f->volume(p.P())) + 1e-300;
   int stalled = 0;
   std::vector<double> history{st.residual};
+  double best_residual = st.residual;  // the lowest residual met and its point
+  Eigen::VectorXd best_y = p.get();
   SparseSymFactor factor;  // complexes (sparse_terms.h)
   for (int it = 0;; ++it) {
     if (!std::isfinite(st.residual)) return st;
@@ -193,6 +195,23 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
     if (p.eps != 0.0 && theta >= kCrawlDamping && history.size() > kCrawlWindow &&
         st.residual > 0.5 * history[history.size() - 1 - kCrawlWindow])
       return st;
+    // At ε = 0 on a complex small enough for the final phases (kDenseFinalPhasesLimit): a
+    // corrector whose lowest residual of the last kCrawlWindow + 1 iterations is not half the
+    // lowest before wanders along the tangential valley (the ring of 4 tensor patches of the
+    // catenoid at n = 5 and 6 went on between 1e-7 and 1e-6 for 40 iterations, then crawled at
+    // θ ≈ 2e4, up to the 60 iterations allowed); it stops at the lowest point it met and leaves the
+    // rest to the final phases. Single patches keep their path (measured and tested on it).
+    const bool final_phases_follow = p.base.f->assembly() && !(p.sparse && 3 * p.k() > kDenseFinalPhasesLimit);
+    if (p.eps == 0.0 && final_phases_follow && history.size() > kCrawlWindow + 1) {
+      const auto recent = history.end() - (kCrawlWindow + 1);
+      if (*std::min_element(recent, history.end()) > 0.5 * *std::min_element(history.begin(), recent)) {
+        if (best_residual < st.residual) {
+          p.set(best_y);
+          st.residual = best_residual;
+        }
+        return st;
+      }
+    }
     Eigen::MatrixXd K;
     Eigen::SparseMatrix<double> Ks;
     if (p.sparse) {  // a complex: the sparse Hessian and factor (sparse_terms.h)
@@ -220,6 +239,10 @@ CorrectorStats area_newton_correct(AreaProblem& p, double H, const CmcOptions& o
       if (!t.on_gradient_alone) damping.accepted(theta, t.rho);
     }
     ++st.iterations;
+    if (accepted && st.residual < best_residual) {
+      best_residual = st.residual;
+      best_y = p.get();
+    }
     history.push_back(st.residual);
     if (!accepted) return st;
   }
