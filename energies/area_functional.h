@@ -133,8 +133,12 @@ class AreaForm {
 
 class TriangularNet;
 class TensorNet;
-/// A of a net by a rule fine enough for double precision on regular patches (q = 3n + 8, the
-/// larger degree for tensor nets; tests/cmc/test_area_functional.cpp).
+/// A of a net to double precision on regular patches, by a ladder of the rules above (plain, on the
+/// derivative nets): q = 10, 14, 19, 26, … (q + ⌈q/3⌉), the first rule whose value changes by at
+/// most 1e-14 (relative) from the one before taken; the ladder ends at the rule q = 3n + 8 (n the
+/// larger degree for tensor nets), whose value is returned where no earlier rule settles, and at
+/// once where |x_u ∧ x_v| at a corner of the domain is below 0.1 x its mean (a degenerate or
+/// nearly degenerate corner). tests/energies/test_area_functional.cpp.
 double area(const TriangularNet& net);
 double area(const TensorNet& net);
 

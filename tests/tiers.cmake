@@ -26,7 +26,6 @@ set(BPDE_INTEGRATION_TEST_FOLDERS cli viewer examples_c1 examples_cmc examples_c
 # "switch" solve one problem twice, a switch on and off, and compare: they measure the switch.
 string(JOIN ":" BPDE_SLOW_TESTS_cmc
   CmcArea.VolumeFormReachesTheLargerCapByContinuationInV               # 111 s
-  ComplexCmc.CapFanConvergesWithDegreeAndTheSeamsClose                 #  64 s, three area solves on a fan, n = 4, 5, 6
   CmcArea.MeanCurvatureStartEndIsKeptWhenItIsTheLowerNumericalLimit    #  51 s
   CmcArea.RuleIsChosenAgainWhereTheStartNearlyFolds                    #  34 s
   CmcArea.TrustRegionPartConvergesWhereTheSoftModeLoopStops            #  three area solves, n = 4, 6, 10

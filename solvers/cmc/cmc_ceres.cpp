@@ -40,6 +40,7 @@ double stop_residual(AreaProblem& p, double H, double, double&, Eigen::VectorXd&
 // met the tolerance, or the Jacobian at an accepted point was not finite.
 struct Converged {
   Eigen::VectorXd y;
+  double residual;  // the stopping test's residual at y (computed whole there: it met the tolerance)
 };
 struct JacobianFailed {};
 
@@ -124,7 +125,7 @@ class AllResiduals {
     }
     R = last_R_;
     if (!R.allFinite()) return fail(R, jacobian);
-    if (last_r_ <= tol_) throw Converged{y};
+    if (last_r_ <= tol_) throw Converged{y, last_r_};
     if (jacobian) {
       p_->set(y);
       const Eigen::MatrixXd Hs = p_->hessian(H_);
@@ -170,17 +171,19 @@ CorrectorStats ceres_correct_impl(Problem& p, double H, const CmcOptions& o) {
   solver.options.cost_threshold = 0.0;
   // J is square and non-singular on the branch: start as Gauss–Newton (= Newton on eq. (11)).
   solver.options.initial_trust_region_radius = 1e12;
+  double reached = std::numeric_limits<double>::quiet_NaN();
   try {
     solver.Solve(f, &y);  // y: TinySolver's iterate, the last accepted point when it throws
     st.iterations = std::min(solver.summary.iterations, o.max_corrector_iterations);
   } catch (const Converged& c) {
     y = c.y;
+    reached = c.residual;
     st.iterations = solver.summary.iterations;  // the step that reached it is the one under way
   } catch (const JacobianFailed&) {
     st.iterations = std::max(solver.summary.iterations, 0);
   }
   p.set(y);
-  st.residual = p.residual(H);
+  st.residual = std::isnan(reached) ? p.residual(H) : reached;
   st.ok = std::isfinite(st.residual) && st.residual <= o.tolerance;
   return st;
 }

@@ -4,6 +4,7 @@
 #include "bezierpde/core/eigen.h"
 #include <Eigen/Core>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -167,6 +168,17 @@ DirichletStart dirichlet_start(const Net& data, const CmcOptions& o) {
   s.dir = dirichlet_solve(s.p, s.fixed_idx, data);
   return s;
 }
+
+/// The order of the branch's Taylor series that predicts each continuation step (cmc.cpp).
+constexpr int kBranchSeriesOrder = 4;
+/// The coefficients m = 1 … kBranchSeriesOrder of the branch P(H0 + s) = Σ_m P_m s^m through the
+/// critical point p.P at H0 (free rows, 3k vectors): K P_m = -2 (H0 S'_m + S_{m-1}) from the
+/// quadratic ∇V (cmc.cpp); g0 = ∇V at p.P (free rows), solve_K solves with the Hessian K of D_H
+/// there (the Dirichlet Gram at H0 = 0). Fewer where a solve is not finite.
+std::vector<Eigen::VectorXd> branch_series(const CmcProblem& p, double H0, const Eigen::VectorXd& g0,
+                                           const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& solve_K);
+/// y + Σ_m series[m-1] s^m over the terms while their size falls.
+Eigen::VectorXd branch_prediction(const Eigen::VectorXd& y, const std::vector<Eigen::VectorXd>& series, double s);
 
 /// First step: the whole way to Ht, but not beyond |H| = 16 / (size of the fixed data).
 double first_step(double Ht, const Eigen::MatrixX3d& P, const std::vector<int>& fixed_idx);

@@ -34,12 +34,13 @@ double cap_distance(const PatchComplex& c) {
   return d;
 }
 
-// Measured on the fan of K = 6 triangular patches (area functional, H form, newton; Release, 2 cores):
+// Measured on the fan of K = 6 triangular patches (area functional, H form, newton; Release, 2 cores;
+// from mean-curvature-start):
 //   n   A − A_cap    V − V_cap    max ||x − c| − 2|   H range on the samples   max seam angle   time
-//   4   −9.9e-06     −2.5e-06     9.7e-06             [−0.50390, −0.49249]     2.6e-04 rad      2 s
-//   5    1.8e-07      4.2e-08     3.5e-06             [−0.50263, −0.49873]     1.3e-04 rad     11 s
-//   6    2.5e-09      5.4e-10     8.8e-07             [−0.50052, −0.49868]     2.3e-05 rad     50 s
-//   8   −3.6e-12     −4.2e-12     1.2e-07             [−0.50030, −0.49880]     1.1e-05 rad    160 s
+//   4   −9.9e-06     −2.5e-06     4.8e-06             [−0.50391, −0.49775]     2.6e-04 rad     0.8 s
+//   5    1.9e-07      4.7e-08     8.9e-07             [−0.50006, −0.49992]     1.9e-05 rad     2.4 s
+//   6    2.6e-09      6.5e-10     2.0e-07             [−0.50008, −0.49996]     4.4e-06 rad     3.2 s
+//   8   −6.6e-13      5.0e-14     5.1e-09             [−0.50001, −0.49999]     2.7e-07 rad     2.5 s
 // The Dirichlet functional's critical points (D_H, newton) stay off the sphere: A − A_cap = −1.4e-2,
 // −1.1e-2, −9.2e-3, −7.6e-3 at n = 4, 5, 6, 8 (the fan's parametrisation is not conformal), with
 // seam angles 8.7e-2, 5.6e-2, 4.4e-2, 2.9e-2 rad.

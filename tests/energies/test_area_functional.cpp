@@ -13,6 +13,8 @@
 #include "bezierpde/energies/volume.h"
 #include "bezierpde/energies/area_functional.h"
 #include "bezierpde/energies/area_rule.h"
+#include "bezierpde/boundaries/reference_boundaries.h"
+#include "bezierpde/solvers/cmc/cmc.h"
 
 namespace bpde {
 namespace {
@@ -340,6 +342,47 @@ TEST(AreaFunctional, ReportedAreaTabledAndStreamedAgreeWithTheForm) {
       EXPECT_NEAR(area(net), want, 1e-13 * want) << "tensor n = " << n << ", seed " << seed;
     }
   }
+}
+
+// The ladder of area(net) (q = 10, 14, 19, …, taken where the change falls within 1e-14) against
+// a fine rule (q = 80) that the ladder never reaches: the D_H results on the sphere's data (the
+// nets of the Cmc/newton benchmark), the Dirichlet extremals of that data, and perturbed sphere
+// patches, triangular n = 4 … 12 and tensor 3 … 7. The coarser rules miss by 1e-11 … 1e-6 on these
+// nets (q = 8, and q = 4), so the test tells a ladder that stops early from one that settles.
+TEST(AreaFunctional, ReportedAreaLadderAgreesWithAFineRule) {
+  for (int n = 4; n <= 12; n += 2) {
+    const TriangularNet data = triangular_boundary(n, sphere_triangle);
+    CmcOptions o;
+    o.H = 1.0;
+    const CmcResult<TriangularNet> r = solve_cmc(data, o);
+    ASSERT_TRUE(r.summary.converged);
+    TriangularNet perturbed(n);
+    perturbed.points() = perturbed_sphere_triangle(n, 7u);
+    for (const TriangularNet& net : {r.net, dirichlet_extremal(data, FixedSet::Boundary), perturbed}) {
+      const double fine = AreaForm::triangular(n, 80).value(net.points());
+      EXPECT_NEAR(area(net), fine, 1e-13 * fine) << "triangular n = " << n;
+      EXPECT_NEAR(r.A, area(r.net), 1e-15 * fine);  // the result's A is area(net)
+      EXPECT_GT(std::abs(AreaForm::triangular(n, 4).value(net.points()) - fine), 1e-8 * fine);
+    }
+  }
+  for (int n = 3; n <= 7; ++n) {
+    TensorNet net(n, n);
+    net.points() = perturbed_sphere_tensor(n, n, 5u);
+    const double fine = AreaForm::tensor(n, n, 80).value(net.points());
+    EXPECT_NEAR(area(net), fine, 1e-13 * fine) << "tensor n = " << n;
+  }
+}
+
+// Where a corner is degenerate the ladder is skipped and the report rule q = 3n + 8 taken: the
+// circle's arcs at degree 4 fold at the corners, where the rules q = 10 and 14 both miss the fold
+// and agree to the last digit (1e-7 from the report rule).
+TEST(AreaFunctional, ReportedAreaAtADegenerateCornerIsTheReportRule) {
+  const TriangularNet net = dirichlet_extremal(circle_three_arcs(4), FixedSet::Boundary);
+  const double report = AreaForm::triangular(4, 20).value(net.points());
+  EXPECT_NEAR(area(net), report, 1e-14 * report);
+  const double q10 = AreaForm::triangular(4, 10).value(net.points()), q14 = AreaForm::triangular(4, 14).value(net.points());
+  EXPECT_NEAR(q10, q14, 1e-14 * report);
+  EXPECT_GT(std::abs(q14 - report), 1e-9 * report);
 }
 
 TEST(AreaFunctional, BadInput) {
