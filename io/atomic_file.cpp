@@ -73,10 +73,9 @@ void commit(const std::string& tmp, const std::string& path) {
   sync_close_rename(fd, tmp, path);
 }
 
-}  // namespace
-
-void write_file_atomically(const std::string& path, std::string_view bytes) {
-  const std::string tmp = temp_path_for(path);
+// Create `tmp` (exclusively) and write `bytes` to it; returns the open descriptor. On failure
+// removes `tmp` and throws FileError naming `path`.
+int create_and_write(const std::string& tmp, const std::string& path, std::string_view bytes) {
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) fail(path, "create", errno);
   const char* p = bytes.data();
@@ -93,7 +92,23 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
     p += n;
     left -= static_cast<size_t>(n);
   }
-  sync_close_rename(fd, tmp, path);
+  return fd;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, std::string_view bytes) {
+  const std::string tmp = temp_path_for(path);
+  sync_close_rename(create_and_write(tmp, path, bytes), tmp, path);
+}
+
+void write_new_file(const std::string& path, std::string_view bytes) {
+  const int fd = create_and_write(path, path, bytes);
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(path.c_str());
+    fail(path, "close", err);
+  }
 }
 
 void replace_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write_to) {

@@ -23,4 +23,10 @@ void write_file_atomically(const std::string& path, std::string_view bytes);
 /// temporary is removed and the target is as it was. Rethrows write_to's exception, else FileError.
 void replace_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write_to);
 
+/// Create the new file `path` (it must not exist) with `bytes`, in one pass: every write and the
+/// close are checked; on failure the partial file is removed and FileError is thrown. No
+/// temporary, no rename, no fsync: for a file inside a private staging folder that is published
+/// as a whole by a rename afterwards (io/output_folder.h, the write policy there).
+void write_new_file(const std::string& path, std::string_view bytes);
+
 }  // namespace bpde

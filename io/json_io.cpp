@@ -103,9 +103,9 @@ Json read_json_file(const std::string& path) {
   return parse_json(text, path);
 }
 
-void write_json_file(const std::string& path, const Json& j) {
-  write_file_atomically(path, j.dump(2) + "\n");
-}
+std::string json_file_text(const Json& j) { return j.dump(2) + "\n"; }
+
+void write_json_file(const std::string& path, const Json& j) { write_file_atomically(path, json_file_text(j)); }
 
 namespace json_read {
 

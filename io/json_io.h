@@ -40,6 +40,8 @@ Json parse_json(const std::string& text, const std::string& source);
 Json read_json_file(const std::string& path);
 /// Write `j` to a file (pretty-printed, full double precision). Throws FileError.
 void write_json_file(const std::string& path, const Json& j);
+/// The bytes write_json_file writes: `j` indented by 2, and a final newline.
+std::string json_file_text(const Json& j);
 
 /// Strict readers used by every parser of io/ (path is the JSON path for messages).
 namespace json_read {

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 
@@ -18,6 +19,7 @@
 #include <utility>
 
 #include "bezierpde/core/errors.h"
+#include "bezierpde/io/atomic_file.h"
 
 namespace bpde {
 
@@ -216,6 +218,8 @@ std::string OutputFolder::file(const std::string& name) {
   return (fs::path(staging_) / name).string();
 }
 
+void OutputFolder::write(const std::string& name, std::string_view bytes) { write_new_file(file(name), bytes); }
+
 void OutputFolder::commit() {
   for (size_t i = 0; i < names_.size(); ++i)
     if (!written_[i]) throw InternalError("OutputFolder: '" + names_[i] + "' was not written");
@@ -238,43 +242,63 @@ void OutputFolder::commit() {
     slot_ = -1;
     return;
   }
-  // DIR exists: replace its files one by one, keeping the old ones until the last move succeeded.
+  // DIR exists: replace its files one by one, keeping the old ones in the staging folder until the
+  // last move succeeded. An old file is swapped with the new one (renameat2 RENAME_EXCHANGE: one
+  // atomic step that leaves the old file at the new one's staging name); on a file system without
+  // the exchange it is first moved into `.previous`, then the new one renamed into place.
   const fs::path backup = s / ".previous";
-  fs::create_directory(backup, ec);
-  if (ec) throw FileError("cannot write output directory '" + dir_ + "': " + ec.message());
+  enum class How { New, Exchanged, Backed };
   struct Moved {
     std::string name;
-    bool had_old;
+    How how;
   };
   std::vector<Moved> moved;
+  bool exchange = true;
   const auto undo = [&] {
     std::error_code ignore;
     for (auto m = moved.rbegin(); m != moved.rend(); ++m) {
-      fs::rename(t / m->name, s / m->name, ignore);
-      if (m->had_old) fs::rename(backup / m->name, t / m->name, ignore);
+      const fs::path staged = s / m->name, placed = t / m->name;
+      if (m->how == How::Exchanged) {
+        ::renameat2(AT_FDCWD, staged.c_str(), AT_FDCWD, placed.c_str(), RENAME_EXCHANGE);
+      } else {
+        fs::rename(placed, staged, ignore);
+        if (m->how == How::Backed) fs::rename(backup / m->name, placed, ignore);
+      }
     }
   };
+  const auto failed = [&](const std::string& n, const std::string& why) {
+    undo();
+    throw FileError("cannot write '" + (fs::path(dir_) / n).string() + "': " + why);
+  };
   for (const std::string& n : names_) {
-    const bool had_old = exists_no_follow(t / n);
-    if (had_old) {
-      if (is_dir(t / n)) {  // (checked above; a directory must never be moved away)
-        undo();
-        throw FileError("cannot write '" + (fs::path(dir_) / n).string() + "': it is a directory");
+    const fs::path staged = s / n, placed = t / n;
+    if (is_dir(placed)) failed(n, "it is a directory");  // (checked above; a directory is never moved away)
+    if (exchange) {
+      if (::renameat2(AT_FDCWD, staged.c_str(), AT_FDCWD, placed.c_str(), RENAME_EXCHANGE) == 0) {
+        moved.push_back({n, How::Exchanged});
+        continue;
       }
-      fs::rename(t / n, backup / n, ec);
-      if (ec) {
-        undo();
-        throw FileError("cannot write '" + (fs::path(dir_) / n).string() + "': " + ec.message());
+      const int err = errno;
+      if (err == EINVAL || err == ENOSYS || err == EOPNOTSUPP) {
+        exchange = false;  // not on this file system: the backup folder instead
+      } else if (err != ENOENT) {
+        failed(n, std::strerror(err));
       }
     }
-    fs::rename(s / n, t / n, ec);
+    const bool had_old = exists_no_follow(placed);
+    if (had_old) {
+      ec.clear();
+      if (!is_dir(backup)) fs::create_directory(backup, ec);
+      if (!ec) fs::rename(placed, backup / n, ec);
+      if (ec) failed(n, ec.message());
+    }
+    fs::rename(staged, placed, ec);
     if (ec) {
       std::error_code ignore;
-      if (had_old) fs::rename(backup / n, t / n, ignore);
-      undo();
-      throw FileError("cannot write '" + (fs::path(dir_) / n).string() + "': " + ec.message());
+      if (had_old) fs::rename(backup / n, placed, ignore);
+      failed(n, ec.message());
     }
-    moved.push_back({n, had_old});
+    moved.push_back({n, had_old ? How::Backed : How::New});
   }
   committed_ = true;
   fs::remove_all(s, ec);  // the replaced files (a leftover folder is harmless)

@@ -15,10 +15,21 @@
 //   after checking that DIR is a writable directory and no DIR/<name> is a directory. The files
 //   it replaces are kept in the staging folder until the last move succeeded: a failed move puts
 //   every file back. DIR's other files are never touched.
+// Write policy inside the staging folder: the folder is private to this object (a fresh name, no
+// other writer), so every file in it is created new and written in one pass (write(), or a
+// writer given file(), such as write_obj), each write and the close checked; no temporary file,
+// no rename per file and no fsync. A file that fails leaves the run to throw and the staging
+// folder to be removed: DIR only ever sees complete files, published by the renames of commit().
+// Durability: the outputs are complete or absent for every failure of the process (an error, a
+// signal, SIGKILL); after a crash of the operating system or a power loss within the kernel's
+// write-back interval (about 30 s on Linux) a published file may be empty or short, as with any
+// program that does not fsync. Syncing each file would add a disk flush per file to every run,
+// several times the report's CPU cost in wall time on a busy disk (docs/performance.md).
 // Destroyed without a successful commit() (an exception on the way: a file that cannot be
 // written, bad input found late), it removes the staging folder and every parent of DIR it
 // created, so DIR and its parents are exactly as they were.
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bpde {
@@ -38,6 +49,9 @@ class OutputFolder {
   /// The path to write the file `name` (one of the names) to, inside the staging folder (created,
   /// with DIR's missing parents, on first use; FileError if that fails).
   std::string file(const std::string& name);
+  /// Write the file `name` (one of the names) with `bytes` into the staging folder
+  /// (write_new_file: one pass, checked, no temporary: see the write policy above).
+  void write(const std::string& name, std::string_view bytes);
   /// Put every file into DIR (see above). Throws FileError (DIR as it was) when it cannot.
   void commit();
 

@@ -118,8 +118,8 @@ class ArrayWriter {
 
 }  // namespace
 
-void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format,
-               const SharedNumberText* text, const std::vector<std::int32_t>* patch) {
+std::string vtp_text(const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format,
+                     const SharedNumberText* text, const std::vector<std::int32_t>* patch) {
   const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
   if (fields.H.size() != nv || fields.K.size() != nv || fields.normal.rows() != nv || fields.uv.rows() != nv ||
       fields.regular.size() != nv)
@@ -172,8 +172,12 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceF
   w.ints("Int32", "connectivity", connectivity, 1);
   w.ints("Int32", "offsets", offsets, 1);
   s += "      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  return s;
+}
 
-  write_file_atomically(path, s);
+void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format,
+               const SharedNumberText* text, const std::vector<std::int32_t>* patch) {
+  write_file_atomically(path, vtp_text(mesh, fields, format, text, patch));
 }
 
 }  // namespace bpde

@@ -24,6 +24,9 @@ namespace bpde {
 /// `text`, if given, is the SharedNumberText of the same mesh and fields (io/mesh_io.h).
 /// `patch` (a patch complex's mesh, complex/complex_mesh.h): one patch id per triangle, written
 /// as the Int32 CellData array "patch" (the active cell scalars).
+/// The bytes write_vtp writes (for a file written through io/output_folder.h).
+std::string vtp_text(const TriangleMesh& mesh, const SurfaceFields& fields, MeshFormat format = MeshFormat::Ascii,
+                     const SharedNumberText* text = nullptr, const std::vector<std::int32_t>* patch = nullptr);
 void write_vtp(const std::string& path, const TriangleMesh& mesh, const SurfaceFields& fields,
                MeshFormat format = MeshFormat::Ascii, const SharedNumberText* text = nullptr,
                const std::vector<std::int32_t>* patch = nullptr);

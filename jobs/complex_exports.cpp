@@ -108,8 +108,8 @@ void write_complex_surface_files(const std::string& dir, const PatchComplex& c, 
   OutputFolder folder(dir, {"surface.obj", "surface.ply", "surface.vtp", "net.obj"});
   write_obj(folder.file("surface.obj"), m.mesh);
   write_ply(folder.file("surface.ply"), m.mesh, fields, format);
-  write_vtp(folder.file("surface.vtp"), m.mesh, fields, format, nullptr, &patch);
-  write_file_atomically(folder.file("net.obj"), complex_net_obj(c));
+  folder.write("surface.vtp", vtp_text(m.mesh, fields, format, nullptr, &patch));
+  folder.write("net.obj", complex_net_obj(c));
   folder.commit();
 }
 

@@ -573,7 +573,7 @@ void write_output_files(const std::string& dir, const Json* result, const Result
                        (exports.step ? w_step : 0) + (exports.html ? w_html : 0) + 1;
   double done = 0;
   auto wrote = [&](double weight) { bpde::report(job_progress(), kWritingFilesStage, done += weight, total); };
-  if (result) write_json_file(out.file("result.json"), *result), wrote(w_result);
+  if (result) out.write("result.json", json_file_text(*result)), wrote(w_result);
   const SurfaceFields fields =
       surface.complex ? complex_surface_fields(*surface.complex, sampled) : surface_fields(surface.net, mesh);
   // in ASCII, the vertex coordinates and H are formatted once for the three files
@@ -587,10 +587,10 @@ void write_output_files(const std::string& dir, const Json* result, const Result
   wrote(w_ply);
   std::vector<std::int32_t> patch;  // a complex: the patch of each triangle as the VTP cell data
   if (surface.complex) patch.assign(sampled.triangle_patch.data(), sampled.triangle_patch.data() + sampled.triangle_patch.size());
-  write_vtp(out.file("surface.vtp"), mesh, fields, format, shared, surface.complex ? &patch : nullptr);
+  out.write("surface.vtp", vtp_text(mesh, fields, format, shared, surface.complex ? &patch : nullptr));
   wrote(w_vtp);
   if (surface.complex)
-    write_complex_net_obj(out.file("net.obj"), *surface.complex);
+    out.write("net.obj", complex_net_obj(*surface.complex));
   else
     write_net_obj(out.file("net.obj"), surface.net);
   wrote(w_net);

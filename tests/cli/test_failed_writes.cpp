@@ -168,3 +168,44 @@ TEST(FailedWrites, SignalDuringTheWritePhaseRemovesTheStagingFolder) {
     fs::remove_all(parent);
   }
 }
+
+// `bpde solve` over an existing output folder whose files cannot grow past a limit: every limit
+// fails one of the files the staging folder receives (result.json first, then the surface files),
+// and each run exits 2 with DIR byte for byte as it was (its own files and a foreign one), no
+// staging folder beside it; into a missing DIR, the folder is not created.
+TEST(FailedWrites, SolveLeavesTheOutputFolderAsItWasOnAFullDisk) {
+  const std::string job_text = std::string(R"({"net": )") + kNet +
+                               R"(, "problem": {"kind": "extremal", "energy": {"name": "dirichlet"}}, "samples": 30})";
+  const fs::path job = write("fw_solve_job.json", job_text);
+  const fs::path parent = tmpdir() / "fw_solve";
+  fs::remove_all(parent);
+  fs::create_directories(parent);
+  const fs::path out = parent / "out";
+  const std::string args = "solve " + job.string() + " --out " + out.string();
+  CmdResult r = run(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  write("fw_solve/out/keep.txt", "a file of the user's");
+  std::vector<std::string> names;
+  std::vector<std::string> bytes;
+  std::uintmax_t largest = 0;
+  for (const auto& e : fs::directory_iterator(out)) {
+    names.push_back(e.path().filename().string());
+    bytes.push_back(slurp(e.path()));
+    largest = std::max<std::uintmax_t>(largest, fs::file_size(e.path()));
+  }
+  ASSERT_GE(names.size(), 6u);  // result.json, surface.obj/.ply/.vtp, net.obj and keep.txt
+  ASSERT_GT(largest, 20000u);
+  for (const rlim_t limit : {rlim_t{0}, rlim_t{100}, rlim_t{5000}, rlim_t{20000}}) {
+    r = run_with_file_limit(args, limit);
+    EXPECT_EQ(r.status, 2) << "limit " << limit;
+    for (size_t k = 0; k < names.size(); ++k) EXPECT_EQ(slurp(out / names[k]), bytes[k]) << names[k] << ", limit " << limit;
+    EXPECT_EQ(extra_files(out, names), std::vector<std::string>{}) << "limit " << limit;
+    EXPECT_EQ(extra_files(parent, {"out"}), std::vector<std::string>{}) << "limit " << limit;
+  }
+  const fs::path fresh = parent / "fresh";
+  r = run_with_file_limit("solve " + job.string() + " --out " + fresh.string(), 5000);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(fs::exists(fresh));
+  EXPECT_EQ(extra_files(parent, {"out"}), std::vector<std::string>{});
+  fs::remove_all(parent);
+}
