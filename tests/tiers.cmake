@@ -48,6 +48,7 @@ string(JOIN ":" BPDE_SLOW_TESTS_pde
 )
 string(JOIN ":" BPDE_SLOW_TESTS_examples_complex
   ExamplesComplex.RectangleByTheAreaFunctional                        #  26 s, the area solve at degree 6
+  ExamplesComplex.EnneperAtDegree10ReachesTheAreaTo1e10               #  45-60 s, the area solve at degree 10
 )
 string(JOIN ":" BPDE_SLOW_TESTS_cli
   Cli.CmcMeanCurvatureJob                                              #  25 s
