@@ -138,7 +138,7 @@ std::vector<Case> cases() {
                  "the cap, " + std::to_string(k) + " arcs (fan of " + std::to_string(k) + " triangles)", "", nullptr, kCapArea,
                  kCapVolume, sphere_distance, {3, 4, 6}, {0, 1}, {{3, 0}, {3, 1}, {4, 0}, {6, 0}}});
   c.push_back({"enneper", "Enneper's surface, r = 0.8 (fan of 6 triangles)", "", nullptr, kEnneperArea, std::nullopt,
-               enneper_distance, {3, 4, 6, 8, 10}, {0, 1, 2}, {{3, 0}, {3, 1}, {4, 0}, {4, 1}, {6, 0}, {8, 0}, {10, 0}}});
+               enneper_distance, {3, 4, 6, 8, 10}, {0, 1, 2}, {{3, 0}, {3, 1}, {4, 0}, {6, 0}, {8, 0}, {10, 0}}});
   c.push_back({"catenoid", "the catenoid (ring of 4 quads)", "", nullptr, kCatenoidArea, std::nullopt, catenoid_distance,
                {3, 4, 6, 8}, {0, 1, 2}, {{3, 0}, {3, 1}, {3, 2}, {4, 0}, {4, 1}, {4, 2}, {6, 0}, {8, 0}}});
   c.push_back({"rectangle", "the 4 x 0.5 rectangle at H = 0.2 (8 x 1 squares, the Dirichlet functional)", "", nullptr,
