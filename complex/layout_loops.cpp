@@ -322,6 +322,11 @@ std::vector<EdgeFit> refit_boundary(PatchComplex& refined, const LoopComplex& co
                                     const std::vector<Loop>& loops, const LoopOptions& options) {
   if (refine <= 0) return coarse.fits;
   const Layout& L = coarse.layout;
+  // each refinement splits every patch into 4 (complex/refine.h)
+  if (refine > 15 || refined.patches.size() != (L.faces.size() << (2 * refine)))
+    throw SizeError("refit_boundary: the complex has " + std::to_string(refined.patches.size()) +
+                    " patches, not the coarse layout's " + std::to_string(L.faces.size()) + " refined " +
+                    std::to_string(refine) + " times");
   const int n = refined.patches.front().degree;
   // (patch, local edge, piece) of every boundary edge, split along with the patches: a part k of
   // patch p is patch 4p + k; coarse edge e of a patch is edges e of parts first[e], second[e]
@@ -354,8 +359,6 @@ std::vector<EdgeFit> refit_boundary(PatchComplex& refined, const LoopComplex& co
     }
     pieces = std::move(next);
   }
-  if (pieces.empty() || pieces.back().patch >= static_cast<int>(refined.patches.size()))
-    throw SizeError("refit_boundary: the complex is not the coarse one refined " + std::to_string(refine) + " times");
   std::vector<EdgeFit> out = coarse.fits;
   for (EdgeFit& f : out) f.max_error = 0;
   std::map<int, std::pair<Eigen::Vector3d, int>> corners;

@@ -41,8 +41,8 @@ void bind_cmc(py::module_& m);       // CmcOptions, CmcResult*, solve_cmc (solve
 void bind_extremal(py::module_& m);  // extremals of quadratic energies (solvers/extremal.h)
 void bind_bspline(py::module_& m);   // B-spline extremals and PDE solutions (solvers/bspline/)
 void bind_blend(py::module_& m);     // smoothing PDE splines (solvers/blend/smoothing_spline.h)
-void bind_sweep(py::module_& m);
-void bind_complex(py::module_& m);  // patch complexes (complex/, solvers/complex/, solvers/cmc/complex_cmc.h)     // sweeps (jobs/sweep.h)
+void bind_sweep(py::module_& m);     // sweeps (jobs/sweep.h)
+void bind_complex(py::module_& m);   // patch complexes (complex/, solvers/complex/, solvers/cmc/complex_cmc.h)
 
 // ------------------------------------------------------------------ dict <-> JSON
 // One-to-one: bool, int, float, str, None, list/tuple, dict with str keys. Floats keep every bit

@@ -805,7 +805,7 @@ def main(argv=None):
         for name in {"circle": ["circle"], "sphere": ["sphere"], "circle-complex": ["circle-complex"],
                      "catenoid-complex": ["catenoid-complex"],
                      "all": ["circle", "sphere", "circle-complex", "catenoid-complex"]}[args.case]:
-            print("\n".join(section_names(name, bool(args.tolerances))))
+            print("\n".join(section_names(name, bool(args.tolerances) and name == "circle")))
         return 0
     try:
         tolerances = [float(t) for t in args.tolerances.split(",") if t]
