@@ -18,7 +18,9 @@
 // Write policy inside the staging folder: the folder is private to this object (a fresh name, no
 // other writer), so every file in it is created new and written in one pass (write(), or a
 // writer given file(), such as write_obj), each write and the close checked; no temporary file,
-// no rename per file and no fsync. A file that fails leaves the run to throw and the staging
+// no rename per file and no fsync. Writers that take a path and write it atomically themselves
+// (the STEP plugin's write_step, write_view_html) still use their own temporary and fsync for
+// the files they write (surface.step, view.html). A file that fails leaves the run to throw and the staging
 // folder to be removed: DIR only ever sees complete files, published by the renames of commit().
 // Durability: the outputs are complete or absent for every failure of the process (an error, a
 // signal, SIGKILL); after a crash of the operating system or a power loss within the kernel's
