@@ -19,28 +19,12 @@
 #include "bezierpde/solvers/complex/complex_extremal.h"
 #include "tests/cli/cli_run.h"
 #include "tests/io/mesh_readers.h"
+#include "tests/viewer/page_data.h"
 
 using namespace bpde;
 using namespace bpde::testing;
 
 namespace {
-
-template <class T>
-std::vector<T> decode(const Json& j) {
-  const std::vector<unsigned char> bytes = base64_decode(j.get<std::string>());
-  EXPECT_EQ(bytes.size() % sizeof(T), 0u);
-  std::vector<T> out(bytes.size() / sizeof(T));
-  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
-  return out;
-}
-
-Json page_data(const std::string& page) {
-  const std::string open = "<script id=\"bpde-data\" type=\"application/json\">";
-  const size_t a = page.find(open);
-  EXPECT_NE(a, std::string::npos);
-  const size_t b = page.find("</script>", a);
-  return Json::parse(page.substr(a + open.size(), b - a - open.size()));
-}
 
 /// The fan over the unit circle, refined `refine` times, its inside the Dirichlet extremal.
 PatchComplex fan(int degree, int refine) {

@@ -10,31 +10,10 @@
 #include "bezierpde/jobs/run_demo.h"
 #include "bezierpde/jobs/run_job.h"
 #include "tests/io/mesh_readers.h"
+#include "tests/viewer/page_data.h"
 
 using namespace bpde;
 using namespace bpde::testing;
-
-namespace {
-
-template <class T>
-std::vector<T> decode(const Json& j) {
-  const std::vector<unsigned char> bytes = base64_decode(j.get<std::string>());
-  EXPECT_EQ(bytes.size() % sizeof(T), 0u);
-  std::vector<T> out(bytes.size() / sizeof(T));
-  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
-  return out;
-}
-
-// The JSON text between <script id="bpde-data" ...> and the next </script>.
-Json page_data(const std::string& page) {
-  const std::string open = "<script id=\"bpde-data\" type=\"application/json\">";
-  const size_t a = page.find(open);
-  EXPECT_NE(a, std::string::npos);
-  const size_t b = page.find("</script>", a);
-  return Json::parse(page.substr(a + open.size(), b - a - open.size()));
-}
-
-}  // namespace
 
 TEST(ViewPage, SelfContainedWithTheMeshAsFloat32) {
   const SolveOutcome out = run_job(demo_job());
