@@ -134,6 +134,12 @@ TEST(ComplexMeanCurvature, AssembledResidualsAreThePatchesStackedAndTheJacobianI
                    std::make_shared<const MeanCurvatureLeastSquares>(MeanCurvatureLeastSquares::triangular(5, 6)),
                    net.assembly()),
                SizeError);
+  // Above degree 24 the seams' edge probe no longer tells an edge's points from rounding.
+  const ComplexNet high(circle_fan(3, 25));
+  EXPECT_THROW(MeanCurvatureLeastSquares::assembled(
+                   std::make_shared<const MeanCurvatureLeastSquares>(MeanCurvatureLeastSquares::triangular(25, 17)),
+                   high.assembly()),
+               DegreeError);
 }
 
 double cap_distance(const PatchComplex& c) {
